@@ -1,0 +1,23 @@
+# Compiler flags of ldfcz: warnings everywhere, a Debug build that traps invalid operations, division by zero
+# and overflow, and checks bounds (the tests use it), an optimised Release build.
+if(CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
+  set(LDFCZ_FORTRAN_WARNINGS -Wall -Wextra -fimplicit-none -Wno-compare-reals -Wno-maybe-uninitialized)
+  set(CMAKE_Fortran_FLAGS_DEBUG "-g -O0 -fcheck=all -ffpe-trap=invalid,zero,overflow -fbacktrace -finit-real=snan")
+  set(CMAKE_Fortran_FLAGS_RELEASE "-O2")
+  set(CMAKE_Fortran_FLAGS_RELWITHDEBINFO "-O2 -g -fbacktrace")
+  # Fixed-form Abaqus-style sources (ABA_PARAM.INC's implicit typing) are compiled without -fimplicit-none.
+  set(LDFCZ_FIXED_FORM_FLAGS -fno-implicit-none -ffixed-line-length-132)
+elseif(CMAKE_Fortran_COMPILER_ID MATCHES "LLVMFlang|Flang")
+  set(LDFCZ_FORTRAN_WARNINGS "")
+  set(CMAKE_Fortran_FLAGS_DEBUG "-g -O0")
+  set(CMAKE_Fortran_FLAGS_RELEASE "-O2")
+  set(LDFCZ_FIXED_FORM_FLAGS "")
+else()
+  set(LDFCZ_FORTRAN_WARNINGS "")
+  set(LDFCZ_FIXED_FORM_FLAGS "")
+endif()
+
+# Apply the project's warnings to a target's own sources.
+function(ldfcz_warnings target)
+  target_compile_options(${target} PRIVATE $<$<COMPILE_LANGUAGE:Fortran>:${LDFCZ_FORTRAN_WARNINGS}>)
+endfunction()

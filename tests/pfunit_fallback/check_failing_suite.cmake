@@ -1,0 +1,17 @@
+# Runs the deliberately failing suite and checks that the fallback reports what a user needs.
+execute_process(COMMAND "${SUITE}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(all "${out}${err}")
+if(rc EQUAL 0)
+  message(FATAL_ERROR "a suite with failing assertions exited 0:\n${all}")
+endif()
+foreach(needle "test_pf_failing.pf" "test_pf_failing.pf:13" "expected 1.5000000000000000E+00" "but found 1.2500000000000000E+00"
+               "first failure" "expected value 0" "0 passed, 3 failed")
+  string(FIND "${all}" "${needle}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "the failure report lacks '${needle}':\n${all}")
+  endif()
+endforeach()
+string(FIND "${all}" "must not be reached" pos)
+if(NOT pos EQUAL -1)
+  message(FATAL_ERROR "the test went on after a failed assertion:\n${all}")
+endif()

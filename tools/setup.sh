@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Install what is missing (Debian 12 packages), then configure and build ldfcz.
+#   tools/setup.sh [Release|Debug]     build directory: build/ (Release) or build-debug/ (Debug), or $LDFCZ_BUILD_DIR
+# Extra CMake options may be passed in $LDFCZ_CMAKE_ARGS (e.g. -DCMAKE_PREFIX_PATH=/path/to/pfunit).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build_type=${1:-Release}
+case "$build_type" in
+  Release) default_dir="$root/build" ;;
+  Debug) default_dir="$root/build-debug" ;;
+  *) echo "setup.sh: unknown build type '$build_type' (Release or Debug)" >&2; exit 2 ;;
+esac
+build_dir=${LDFCZ_BUILD_DIR:-$default_dir}
+
+packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib
+          libmumps-seq-dev libmetis-dev liblapack-dev libopenblas-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup.sh: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+# shellcheck disable=SC2086
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" -DPython3_EXECUTABLE=/usr/bin/python3 \
+      ${LDFCZ_CMAKE_ARGS:-} > "$build_dir.configure.log" 2>&1 || { cat "$build_dir.configure.log" >&2; exit 1; }
+cmake --build "$build_dir" -j "$jobs" > "$build_dir.build.log" 2>&1 || { tail -n 60 "$build_dir.build.log" >&2; exit 1; }
+echo "setup.sh: built ldfcz ($build_type) in $build_dir"
