@@ -14,6 +14,9 @@ build_dir=${LDFCZ_BUILD_DIR:-$default_dir}
 
 packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib
           libmumps-seq-dev libmetis-dev liblapack-dev libopenblas-dev)
+# More packages for a particular use (tools/test.sh adds LLVM flang for the portability check).
+read -r -a extra <<< "${LDFCZ_EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
