@@ -1,0 +1,277 @@
+!> Thin wrapper of one sequential MUMPS 5.5 instance (double precision, centralized assembled COO input).
+!>
+!> Phases (MUMPS 5.5 user guide): JOB = -1 initialise, 1 analyse (with the host's METIS ordering passed as a user
+!> ordering, ICNTL(7) = 1 and PERM_IN), 2 factorize, 3 solve, -2 terminate. SYM = 2 is the general symmetric
+!> LDL^T factorization (indefinite matrices allowed: a softening cohesive zone makes the tangent indefinite);
+!> SYM = 0 the unsymmetric LU. All state lives in the mumps_solver_t instance: no module variables.
+!>
+!> Debian's sequential MUMPS (libdmumps_seq + libmpiseq_seq) ships a stub MPI: MPI_INIT is a no-op there and
+!> the communicator is only passed through to the stub, so COMM is set to MPI_COMM_WORLD of the stub mpif.h
+!> (/usr/include/mumps_seq/mpif.h) and no MPI_INIT is called.
+!>
+!> Output of MUMPS is silenced (ICNTL(1:4)) unless the environment variable LDFCZ_MUMPS_VERBOSE is set to a value
+!> other than '' or '0'.
+module mumps_solver
+  use ldfcz_kinds, only: dp, i8
+  implicit none
+  private
+  public :: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy
+  public :: mumps_factor_entries, mumps_pivot_order, mumps_is_analysed, mumps_is_factored
+
+  include 'mpif.h'
+  include 'dmumps_struc.h'
+
+  integer, parameter :: job_init = -1, job_end = -2, job_analyse = 1, job_factorize = 2, job_solve = 3
+  integer, parameter :: max_workspace_retries = 6   !< ICNTL(14) doublings tried before giving up
+  integer, parameter :: icntl14_start = 30          !< initial workspace relaxation in percent (default 20)
+
+  !> One MUMPS instance and what the wrapper knows about it.
+  type :: mumps_solver_t
+    private
+    type(dmumps_struc) :: id                         !< the MUMPS instance
+    logical :: initialised = .false.                 !< JOB = -1 done
+    logical :: analysed = .false.                    !< JOB = 1 done
+    logical :: factored = .false.                    !< JOB = 2 done with the current values
+    integer :: n = 0                                 !< order of the matrix
+  end type mumps_solver_t
+
+contains
+
+  !> Initialise the instance and run the analysis of the pattern (irn, jcn) with the user pivot order.
+  subroutine mumps_analyse(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< instance (must be fresh or destroyed)
+    logical, intent(in) :: symmetric                 !< SYM = 2 (LDL^T, upper triangle given) or SYM = 0
+    integer, intent(in) :: n                         !< order
+    integer, intent(in) :: irn(:)                    !< row index of each entry
+    integer, intent(in) :: jcn(:)                    !< column index of each entry
+    integer, intent(in) :: pivot_position(:)         !< position of each variable in the pivot order (PERM_IN)
+    integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFO(1)
+    character(len=*), intent(out) :: errmsg          !< reason on failure
+    character(len=*), parameter :: here = 'mumps_analyse'
+
+    stat = 0
+    errmsg = ''
+    if (ms%initialised) call mumps_destroy(ms)
+    ms%id%COMM = MPI_COMM_WORLD
+    ms%id%PAR = 1
+    ms%id%SYM = merge(2, 0, symmetric)
+    ms%id%JOB = job_init
+    call dmumps(ms%id)
+    if (ms%id%INFOG(1) < 0) then
+      stat = ms%id%INFOG(1)
+      call describe(here//' (initialisation)', ms%id%INFOG(1), ms%id%INFOG(2), errmsg)
+      return
+    end if
+    ms%initialised = .true.
+    call set_controls(ms%id)
+    ms%n = n
+    ms%id%N = n
+    ms%id%NNZ = int(size(irn), i8)
+    allocate(ms%id%IRN(size(irn)), ms%id%JCN(size(jcn)), ms%id%A(size(irn)), ms%id%PERM_IN(n), ms%id%RHS(n))
+    ms%id%IRN = irn
+    ms%id%JCN = jcn
+    ms%id%A = 0.0_dp
+    ms%id%PERM_IN = pivot_position
+    ms%id%RHS = 0.0_dp
+    ms%id%JOB = job_analyse
+    call dmumps(ms%id)
+    if (ms%id%INFOG(1) < 0) then
+      stat = ms%id%INFOG(1)
+      call describe(here, ms%id%INFOG(1), ms%id%INFOG(2), errmsg)
+      return
+    end if
+    ms%analysed = .true.
+    ms%factored = .false.
+  end subroutine mumps_analyse
+
+  !> Numeric factorization of the given values (same order as irn/jcn at the analysis). Workspace shortage
+  !> (INFO(1) = -8, -9, -14, -15, -17, -20: "increase ICNTL(14)") is retried with a doubled ICNTL(14).
+  subroutine mumps_factorize(ms, values, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< analysed instance
+    real(dp), intent(in) :: values(:)                !< matrix entries
+    integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1) (-10: singular)
+    character(len=*), intent(out) :: errmsg          !< reason on failure
+    character(len=*), parameter :: here = 'mumps_factorize'
+    integer :: attempt
+
+    stat = 0
+    errmsg = ''
+    ms%factored = .false.
+    if (.not. ms%analysed) then
+      stat = -1000
+      errmsg = here//': called before a successful analysis'
+      return
+    end if
+    if (size(values) /= size(ms%id%A)) then
+      stat = -1001
+      errmsg = here//': value array size differs from the analysed pattern'
+      return
+    end if
+    ms%id%A = values
+    do attempt = 0, max_workspace_retries
+      ms%id%JOB = job_factorize
+      call dmumps(ms%id)
+      select case (ms%id%INFOG(1))
+      case (-8, -9, -14, -15, -17, -20)
+        ms%id%ICNTL(14) = 2 * ms%id%ICNTL(14)
+      case default
+        exit
+      end select
+    end do
+    if (ms%id%INFOG(1) < 0) then
+      stat = ms%id%INFOG(1)
+      call describe(here, ms%id%INFOG(1), ms%id%INFOG(2), errmsg)
+      return
+    end if
+    ms%factored = .true.
+  end subroutine mumps_factorize
+
+  !> Solve with the last factors: rhs in, solution out.
+  subroutine mumps_solve(ms, rhs, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< factored instance
+    real(dp), intent(inout) :: rhs(:)                !< right-hand side in, solution out (size n)
+    integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1)
+    character(len=*), intent(out) :: errmsg          !< reason on failure
+    character(len=*), parameter :: here = 'mumps_solve'
+
+    stat = 0
+    errmsg = ''
+    if (.not. ms%factored) then
+      stat = -1002
+      errmsg = here//': no valid factorization (factorize first)'
+      return
+    end if
+    if (size(rhs) /= ms%n) then
+      stat = -1003
+      errmsg = here//': right-hand side size differs from the matrix order'
+      return
+    end if
+    ms%id%RHS = rhs
+    ms%id%NRHS = 1
+    ms%id%LRHS = ms%n
+    ms%id%JOB = job_solve
+    call dmumps(ms%id)
+    if (ms%id%INFOG(1) < 0) then
+      stat = ms%id%INFOG(1)
+      call describe(here, ms%id%INFOG(1), ms%id%INFOG(2), errmsg)
+      return
+    end if
+    rhs = ms%id%RHS
+  end subroutine mumps_solve
+
+  !> Terminate the instance (JOB = -2) and free the arrays given to it.
+  subroutine mumps_destroy(ms)
+    type(mumps_solver_t), intent(inout) :: ms        !< instance
+    if (ms%initialised) then
+      ms%id%JOB = job_end
+      call dmumps(ms%id)
+      if (associated(ms%id%IRN)) deallocate(ms%id%IRN)
+      if (associated(ms%id%JCN)) deallocate(ms%id%JCN)
+      if (associated(ms%id%A)) deallocate(ms%id%A)
+      if (associated(ms%id%PERM_IN)) deallocate(ms%id%PERM_IN)
+      if (associated(ms%id%RHS)) deallocate(ms%id%RHS)
+    end if
+    ms%initialised = .false.
+    ms%analysed = .false.
+    ms%factored = .false.
+    ms%n = 0
+  end subroutine mumps_destroy
+
+  !> Entries in the factors: after a factorization INFOG(29) (effective), before it INFOG(20) (estimate);
+  !> MUMPS stores values above 2**31 as minus millions.
+  integer(i8) function mumps_factor_entries(ms) result(nf)
+    type(mumps_solver_t), intent(in) :: ms           !< instance
+    integer :: v
+
+    nf = 0
+    if (.not. ms%analysed) return
+    if (ms%factored) then
+      v = ms%id%INFOG(29)
+    else
+      v = ms%id%INFOG(20)
+    end if
+    if (v >= 0) then
+      nf = int(v, i8)
+    else
+      nf = -int(v, i8) * 1000000_i8
+    end if
+  end function mumps_factor_entries
+
+  !> The pivot order MUMPS used (SYM_PERM after the analysis: position of each variable), for checks.
+  subroutine mumps_pivot_order(ms, position)
+    type(mumps_solver_t), intent(in) :: ms           !< analysed instance
+    integer, allocatable, intent(out) :: position(:) !< position of each variable (empty if not analysed)
+    if (ms%analysed .and. associated(ms%id%SYM_PERM)) then
+      allocate(position(ms%n))
+      position = ms%id%SYM_PERM(1:ms%n)
+    else
+      allocate(position(0))
+    end if
+  end subroutine mumps_pivot_order
+
+  logical function mumps_is_analysed(ms)
+    type(mumps_solver_t), intent(in) :: ms           !< instance
+    mumps_is_analysed = ms%analysed
+  end function mumps_is_analysed
+
+  logical function mumps_is_factored(ms)
+    type(mumps_solver_t), intent(in) :: ms           !< instance
+    mumps_is_factored = ms%factored
+  end function mumps_is_factored
+
+  !> Controls: streams and print level, centralized assembled input, user ordering, workspace relaxation.
+  subroutine set_controls(id)
+    type(dmumps_struc), intent(inout) :: id          !< instance after JOB = -1
+    character(len=16) :: val
+    integer :: length, status
+
+    call get_environment_variable('LDFCZ_MUMPS_VERBOSE', val, length, status)
+    if (status == 0 .and. length > 0 .and. trim(val) /= '0') then
+      id%ICNTL(1) = 6
+      id%ICNTL(2) = 0
+      id%ICNTL(3) = 6
+      id%ICNTL(4) = 2
+    else
+      id%ICNTL(1) = -1     ! error messages suppressed: the wrapper reports INFOG(1) through stat/errmsg
+      id%ICNTL(2) = -1     ! diagnostics suppressed
+      id%ICNTL(3) = -1     ! global information suppressed
+      id%ICNTL(4) = 0      ! print level: none
+    end if
+    id%ICNTL(5) = 0        ! assembled input
+    id%ICNTL(18) = 0       ! centralized on the host
+    id%ICNTL(7) = 1        ! user ordering in PERM_IN (the host's METIS nested dissection)
+    id%ICNTL(14) = icntl14_start
+    id%ICNTL(20) = 0       ! dense right-hand side
+    id%ICNTL(21) = 0       ! centralized solution (overwrites RHS)
+  end subroutine set_controls
+
+  !> Message for a MUMPS error code (MUMPS 5.5 user guide, section "Error diagnostics").
+  subroutine describe(where, info1, info2, errmsg)
+    character(len=*), intent(in) :: where            !< calling routine
+    integer, intent(in) :: info1                      !< INFOG(1)
+    integer, intent(in) :: info2                      !< INFOG(2)
+    character(len=*), intent(out) :: errmsg           !< message
+    character(len=96) :: what
+
+    select case (info1)
+    case (-10)
+      what = 'numerically singular matrix'
+    case (-5, -13)
+      what = 'memory allocation failed'
+    case (-6)
+      what = 'structurally singular matrix'
+    case (-7)
+      what = 'invalid PERM_IN (user ordering)'
+    case (-8, -9, -14, -15, -17, -20)
+      what = 'workspace too small even after increasing ICNTL(14)'
+    case (-16)
+      what = 'N out of range'
+    case (-22)
+      what = 'an array pointer was not associated'
+    case default
+      what = 'see the MUMPS user guide'
+    end select
+    write(errmsg, '(a,a,i0,a,i0,a,a)') where, ': MUMPS INFOG(1) = ', info1, ', INFOG(2) = ', info2, ': ', trim(what)
+  end subroutine describe
+
+end module mumps_solver

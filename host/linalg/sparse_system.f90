@@ -1,0 +1,351 @@
+!> The host's sparse linear system: fixed pattern, element -> slot maps, METIS node ordering, MUMPS solver.
+!>
+!> Life cycle: sparse_setup once per pattern (pattern, slot maps, METIS ordering, MUMPS analysis); then per Newton
+!> iteration sparse_zero, sparse_add_element for every element (thread-safe), sparse_factorize, sparse_solve (as often
+!> as wanted with the same factors); sparse_destroy at the end. The analysis is never repeated for the same pattern.
+!>
+!> Thread safety of the assembly: sparse_add_element adds each entry with `!$omp atomic update`, so the element loop
+!> may run in any OpenMP schedule without colouring. Atomic adds make the sum order (and so the last bits of a
+!> value shared by several elements) depend on the schedule; the tests compare threaded and serial assembly to a
+!> relative tolerance for that reason. The library must be compiled with OpenMP for the directive to act (the
+!> CMake target links OpenMP::OpenMP_Fortran when found).
+!>
+!> Symmetric systems store the upper triangle (row <= column) and are factorized by MUMPS as LDL^T (SYM = 2);
+!> the caller passes a symmetric ke and only its entries that map to the upper triangle are added.
+module sparse_system
+  use ldfcz_kinds, only: dp, i8
+  use sparse_pattern, only: build_pattern, build_slot_map
+  use metis_ordering, only: node_graph_from_elements, metis_node_order, equation_order_from_nodes, is_permutation
+  use mumps_solver, only: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy, &
+                          mumps_factor_entries, mumps_pivot_order
+  implicit none
+  private
+  public :: sparse_system_t
+  public :: sparse_setup, sparse_zero, sparse_add_element, sparse_factorize, sparse_solve, sparse_matvec
+  public :: sparse_destroy
+  public :: sparse_nnz, sparse_neq, sparse_factor_entries, sparse_time_analysis, sparse_time_factor
+  public :: sparse_time_solve, sparse_factor_count, sparse_analysis_count, sparse_solve_count
+  public :: sparse_ordering, sparse_pivot_order, sparse_to_dense, sparse_is_symmetric
+
+  !> A sparse system with its pattern, values, ordering and MUMPS instance (components private).
+  type :: sparse_system_t
+    private
+    integer :: neq = 0                              !< number of equations
+    logical :: symmetric = .true.                   !< upper triangle stored, LDL^T
+    logical :: ready = .false.                      !< setup completed
+    integer, allocatable :: row_ptr(:)              !< CSR row pointers (size neq+1)
+    integer, allocatable :: irn(:)                  !< row of each entry
+    integer, allocatable :: jcn(:)                  !< column of each entry
+    real(dp), allocatable :: val(:)                 !< values
+    integer, allocatable :: elem_size(:)            !< dofs of each element
+    integer(i8), allocatable :: slot_ptr(:)         !< start of each element's slot map
+    integer, allocatable :: slot(:)                 !< element entry -> value index (0 = skipped)
+    integer, allocatable :: eq_position(:)          !< pivot position of each equation (METIS, expanded)
+    type(mumps_solver_t) :: solver                  !< the MUMPS instance
+    real(dp) :: t_analysis = 0.0_dp                 !< wall seconds in setup (pattern, ordering, analysis)
+    real(dp) :: t_factor = 0.0_dp                   !< wall seconds in factorizations
+    real(dp) :: t_solve = 0.0_dp                    !< wall seconds in solves
+    integer :: n_analysis = 0                       !< analyses done
+    integer :: n_factor = 0                         !< successful factorizations
+    integer :: n_solve = 0                          !< solves done
+  end type sparse_system_t
+
+contains
+
+  !> Build the pattern, the element -> slot maps, the METIS ordering and the MUMPS analysis, once.
+  subroutine sparse_setup(sys, neq, elem_ptr, elem_eq, eq_node, symmetric, stat, errmsg, use_metis)
+    type(sparse_system_t), intent(inout) :: sys     !< system (any previous content is destroyed)
+    integer, intent(in) :: neq                      !< number of free equations (1..neq)
+    integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
+    integer, intent(in) :: elem_eq(:)               !< equation of each element dof in element order; 0 = constrained
+    integer, intent(in) :: eq_node(:)               !< size neq: node (1..nnodes) of each equation
+    logical, intent(in) :: symmetric                !< true: upper triangle, LDL^T (SYM = 2); false: LU (SYM = 0)
+    integer, intent(out) :: stat                    !< 0 on success
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    logical, intent(in), optional :: use_metis      !< false: natural order (for comparisons); default true
+    character(len=*), parameter :: here = 'sparse_setup'
+    integer, allocatable :: xadj(:), adjncy(:), node_position(:)
+    integer :: nnode, nelem, i
+    integer(i8) :: c0
+    logical :: metis
+
+    stat = 0
+    errmsg = ''
+    c0 = clock_count()
+    call sparse_destroy(sys)
+    metis = .true.
+    if (present(use_metis)) metis = use_metis
+    nelem = size(elem_ptr) - 1
+    if (neq < 1) then
+      stat = 1
+      write(errmsg, '(a,a,i0)') here, ': no equations, neq = ', neq
+      return
+    end if
+    if (size(eq_node) /= neq) then
+      stat = 1
+      errmsg = here//': eq_node must have neq entries'
+      return
+    end if
+    if (nelem < 1 .or. elem_ptr(1) /= 1 .or. elem_ptr(nelem + 1) - 1 > size(elem_eq)) then
+      stat = 1
+      errmsg = here//': elem_ptr is not a valid CSR pointer array into elem_eq'
+      return
+    end if
+    if (any(elem_ptr(2:) < elem_ptr(:nelem))) then
+      stat = 1
+      errmsg = here//': elem_ptr decreases'
+      return
+    end if
+    if (any(eq_node < 1)) then
+      stat = 1
+      errmsg = here//': eq_node holds a node index < 1'
+      return
+    end if
+    sys%neq = neq
+    sys%symmetric = symmetric
+
+    call build_pattern(neq, elem_ptr, elem_eq(1:elem_ptr(nelem + 1) - 1), symmetric, sys%row_ptr, sys%jcn, &
+                       stat, errmsg)
+    if (stat /= 0) return
+    allocate(sys%irn(size(sys%jcn)), sys%val(size(sys%jcn)))
+    do i = 1, neq
+      sys%irn(sys%row_ptr(i):sys%row_ptr(i + 1) - 1) = i
+    end do
+    sys%val = 0.0_dp
+    call build_slot_map(elem_ptr, elem_eq, symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot)
+    allocate(sys%elem_size(nelem))
+    sys%elem_size = elem_ptr(2:) - elem_ptr(:nelem)
+
+    ! Fill-reducing order: METIS nested dissection of the node graph, expanded to equations.
+    nnode = maxval(eq_node)
+    allocate(sys%eq_position(neq))
+    if (metis) then
+      call node_graph_from_elements(nnode, elem_ptr, elem_eq, eq_node, xadj, adjncy)
+      call metis_node_order(nnode, xadj, adjncy, node_position, stat, errmsg)
+      if (stat /= 0) return
+    else
+      node_position = [(i, i = 1, nnode)]
+    end if
+    call equation_order_from_nodes(nnode, node_position, eq_node, sys%eq_position)
+    if (.not. is_permutation(sys%eq_position)) then
+      stat = 2
+      errmsg = here//': the expanded equation order is not a permutation'
+      return
+    end if
+
+    call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg)
+    sys%n_analysis = sys%n_analysis + 1
+    sys%t_analysis = sys%t_analysis + seconds_since(c0)
+    if (stat /= 0) return
+    sys%ready = .true.
+  end subroutine sparse_setup
+
+  !> Set all matrix values to zero (pattern kept).
+  subroutine sparse_zero(sys)
+    type(sparse_system_t), intent(inout) :: sys     !< system
+    if (allocated(sys%val)) sys%val = 0.0_dp
+  end subroutine sparse_zero
+
+  !> Add the element matrix ke (n_e x n_e, element dof order) of element ielem into its slots.
+  !> Safe when called concurrently from OpenMP threads for different (or the same) elements: atomic adds.
+  subroutine sparse_add_element(sys, ielem, ke)
+    type(sparse_system_t), intent(inout) :: sys     !< system
+    integer, intent(in) :: ielem                    !< element number (1..nelem)
+    real(dp), intent(in) :: ke(:, :)                !< element matrix, full (symmetric when the system is)
+    integer :: a, b, n, s
+    integer(i8) :: p
+
+    n = sys%elem_size(ielem)
+    p = sys%slot_ptr(ielem)
+    do b = 1, n
+      do a = 1, n
+        s = sys%slot(p)
+        p = p + 1
+        if (s == 0) cycle
+        !$omp atomic update
+        sys%val(s) = sys%val(s) + ke(a, b)
+      end do
+    end do
+  end subroutine sparse_add_element
+
+  !> Numeric factorization of the current values (MUMPS JOB = 2, workspace retries inside).
+  subroutine sparse_factorize(sys, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< system after sparse_setup
+    integer, intent(out) :: stat                    !< 0 on success; MUMPS INFOG(1) otherwise (-10: singular)
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    integer(i8) :: c0
+
+    if (.not. sys%ready) then
+      stat = -1000
+      errmsg = 'sparse_factorize: system not set up'
+      return
+    end if
+    c0 = clock_count()
+    call mumps_factorize(sys%solver, sys%val, stat, errmsg)
+    sys%t_factor = sys%t_factor + seconds_since(c0)
+    if (stat == 0) sys%n_factor = sys%n_factor + 1
+  end subroutine sparse_factorize
+
+  !> Solve A x = rhs with the last factors (MUMPS JOB = 3): rhs in, x out.
+  subroutine sparse_solve(sys, rhs, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< factored system
+    real(dp), intent(inout) :: rhs(:)               !< right-hand side (size neq) in, solution out
+    integer, intent(out) :: stat                    !< 0 on success
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    integer(i8) :: c0
+
+    if (.not. sys%ready) then
+      stat = -1000
+      errmsg = 'sparse_solve: system not set up'
+      return
+    end if
+    c0 = clock_count()
+    call mumps_solve(sys%solver, rhs, stat, errmsg)
+    sys%t_solve = sys%t_solve + seconds_since(c0)
+    if (stat == 0) sys%n_solve = sys%n_solve + 1
+  end subroutine sparse_solve
+
+  !> y = A x with the current values (the stored triangle mirrored when symmetric).
+  subroutine sparse_matvec(sys, x, y)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    real(dp), intent(in) :: x(:)                    !< vector (size neq)
+    real(dp), intent(out) :: y(:)                   !< product (size neq)
+    integer :: k, i, j
+
+    y = 0.0_dp
+    if (.not. allocated(sys%val)) return
+    do k = 1, size(sys%val)
+      i = sys%irn(k)
+      j = sys%jcn(k)
+      y(i) = y(i) + sys%val(k) * x(j)
+      if (sys%symmetric .and. i /= j) y(j) = y(j) + sys%val(k) * x(i)
+    end do
+  end subroutine sparse_matvec
+
+  !> Terminate MUMPS (JOB = -2) and free everything; the timers and counters are reset too.
+  subroutine sparse_destroy(sys)
+    type(sparse_system_t), intent(inout) :: sys     !< system
+    call mumps_destroy(sys%solver)
+    if (allocated(sys%row_ptr)) deallocate(sys%row_ptr)
+    if (allocated(sys%irn)) deallocate(sys%irn)
+    if (allocated(sys%jcn)) deallocate(sys%jcn)
+    if (allocated(sys%val)) deallocate(sys%val)
+    if (allocated(sys%elem_size)) deallocate(sys%elem_size)
+    if (allocated(sys%slot_ptr)) deallocate(sys%slot_ptr)
+    if (allocated(sys%slot)) deallocate(sys%slot)
+    if (allocated(sys%eq_position)) deallocate(sys%eq_position)
+    sys%neq = 0
+    sys%ready = .false.
+    sys%t_analysis = 0.0_dp
+    sys%t_factor = 0.0_dp
+    sys%t_solve = 0.0_dp
+    sys%n_analysis = 0
+    sys%n_factor = 0
+    sys%n_solve = 0
+  end subroutine sparse_destroy
+
+  !> Stored entries (upper triangle only when symmetric).
+  integer(i8) function sparse_nnz(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_nnz = 0
+    if (allocated(sys%val)) sparse_nnz = size(sys%val, kind=i8)
+  end function sparse_nnz
+
+  !> Number of equations.
+  integer function sparse_neq(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_neq = sys%neq
+  end function sparse_neq
+
+  !> True for an LDL^T (upper triangle) system.
+  logical function sparse_is_symmetric(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_is_symmetric = sys%symmetric
+  end function sparse_is_symmetric
+
+  !> Entries in the factors (MUMPS INFOG(29) after a factorization, the INFOG(20) estimate before).
+  integer(i8) function sparse_factor_entries(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_factor_entries = mumps_factor_entries(sys%solver)
+  end function sparse_factor_entries
+
+  !> Cumulative wall seconds in setup (pattern, slot maps, ordering, MUMPS analysis).
+  real(dp) function sparse_time_analysis(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_time_analysis = sys%t_analysis
+  end function sparse_time_analysis
+
+  !> Cumulative wall seconds in numeric factorizations.
+  real(dp) function sparse_time_factor(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_time_factor = sys%t_factor
+  end function sparse_time_factor
+
+  !> Cumulative wall seconds in solves.
+  real(dp) function sparse_time_solve(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_time_solve = sys%t_solve
+  end function sparse_time_solve
+
+  !> Number of successful factorizations.
+  integer function sparse_factor_count(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_factor_count = sys%n_factor
+  end function sparse_factor_count
+
+  !> Number of analyses (1 after setup: the analysis is never repeated for a pattern).
+  integer function sparse_analysis_count(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_analysis_count = sys%n_analysis
+  end function sparse_analysis_count
+
+  !> Number of successful solves.
+  integer function sparse_solve_count(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_solve_count = sys%n_solve
+  end function sparse_solve_count
+
+  !> The equation order handed to MUMPS (position of each equation).
+  subroutine sparse_ordering(sys, position)
+    type(sparse_system_t), intent(in) :: sys        !< system after setup
+    integer, allocatable, intent(out) :: position(:) !< pivot position of each equation
+    if (allocated(sys%eq_position)) then
+      position = sys%eq_position
+    else
+      allocate(position(0))
+    end if
+  end subroutine sparse_ordering
+
+  !> The pivot order MUMPS reports after its analysis (SYM_PERM).
+  subroutine sparse_pivot_order(sys, position)
+    type(sparse_system_t), intent(in) :: sys        !< system after setup
+    integer, allocatable, intent(out) :: position(:) !< position of each equation
+    call mumps_pivot_order(sys%solver, position)
+  end subroutine sparse_pivot_order
+
+  !> Dense copy of the matrix (both triangles), for tests and small-model diagnostics.
+  subroutine sparse_to_dense(sys, a)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    real(dp), intent(out) :: a(:, :)                !< dense matrix (neq x neq)
+    integer :: k
+
+    a = 0.0_dp
+    if (.not. allocated(sys%val)) return
+    do k = 1, size(sys%val)
+      a(sys%irn(k), sys%jcn(k)) = a(sys%irn(k), sys%jcn(k)) + sys%val(k)
+      if (sys%symmetric .and. sys%irn(k) /= sys%jcn(k)) a(sys%jcn(k), sys%irn(k)) = a(sys%irn(k), sys%jcn(k))
+    end do
+  end subroutine sparse_to_dense
+
+  integer(i8) function clock_count()
+    call system_clock(clock_count)
+  end function clock_count
+
+  real(dp) function seconds_since(c0)
+    integer(i8), intent(in) :: c0                   !< clock_count() at the start
+    integer(i8) :: c1, rate
+    call system_clock(c1, rate)
+    seconds_since = real(c1 - c0, dp) / real(max(rate, 1_i8), dp)
+  end function seconds_since
+
+end module sparse_system
