@@ -1,0 +1,611 @@
+!> Continuum elements C3D8 (8-node hexahedron, 2x2x2 Gauss) and CPE4 (4-node plane-strain quadrilateral, 2x2 Gauss)
+!> with the F-bar method of de Souza Neto, Peric, Dutko and Owen (1996, Int. J. Solids Struct. 33, 3277-3296),
+!> calling their material exactly as Abaqus/Standard calls a UMAT (../../../shared/CONVENTIONS.md).
+!>
+!> Kinematics at Gauss point p (updated Lagrange, NLGEOM):
+!>   F = dx/dX at t_n (F0, from u - du) and t_n+1 (F1, from u); J = det F; J_c = det F at the element centre.
+!>   F-bar:  Fbar = (J_c / J)^(1/m) F  on the in-plane block, m = 3 (C3D8) or m = 2 (CPE4, F33 = 1), so det Fbar = J_c.
+!>   Hughes-Winget mid-point increment: G = (Fbar1 - Fbar0) ((Fbar0 + Fbar1) / 2)^-1 = grad(du) w.r.t. x_mid,
+!>   DSTRAN = sym G (engineering shears), W = skw G, DROT = (I - W/2)^-1 (I + W/2).
+!>   STRESS and STRAN are rotated by DROT before the call; DFGRD0 = Fbar0, DFGRD1 = Fbar1.
+!> Without NLGEOM: DSTRAN = sym of grad(du) w.r.t. X with its trace replaced by the centre value (B-bar, the small
+!>   strain limit of F-bar), DROT = I, f_int and K on the reference configuration.
+!>
+!> Internal force and tangent (current configuration, dv = J dV):
+!>   f_(a i) = int sigma_ij dN_a/dx_j dv
+!>   A_ijkl  = DDSDDE_ijkl - 1/2 (d_ik s_jl + d_il s_jk + s_ik d_jl + s_il d_jk) + d_ik s_jl   (material + geometric)
+!>   q_ij    = (1/m) sum_(a in-plane) A_ijaa - (1 - 1/m) s_ij                               (F-bar term)
+!>   K_(a i)(b k) = int [ dN_a/dx_j A_ijkl dN_b/dx_l + dN_a/dx_j q_ij (dN_b/dx_k|centre - dN_b/dx_k) ] dv
+!> The derivation (linearisation of J sigma(Fbar) with d(Fbar) Fbar^-1 = dL + (1/m)(tr dL_c - tr dL) I) is in
+!> docs/elements.md; it is exact when DDSDDE is the exact Jaumann tangent of a stress that depends on DFGRD1 only.
+!> Without NLGEOM the same formulas hold with x = X, sigma-terms dropped (A = DDSDDE, q = (1/m) sum_a A_ijaa).
+!> DDSDDE is symmetrised first unless the material is a UMAT with UNSYMM (Abaqus semantics). k_e itself is NOT
+!> symmetrised: the F-bar term (and under NLGEOM the Jaumann/geometric terms) make it unsymmetric, and a
+!> symmetrised k_e would cost the quadratic convergence of Newton (it is symmetric for a homogeneous state only).
+module solid_element
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use ldfcz_kinds, only: dp
+  use solid_umat_interface, only: umat_interface
+  use solid_shape, only: solid_shape_eval, solid_gauss_point, SHAPE_C3D8, SHAPE_CPE4
+  use solid_elastic, only: elastic_update, elastic_check
+  implicit none
+  private
+  public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
+  public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
+
+  integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
+  integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer
+  real(dp), parameter :: SOLID_PNEWDT_LARGE = 1.0e36_dp  !< PNEWDT handed to each UMAT call ("a large value")
+  integer, parameter :: maxnode = 8, maxip = 8
+
+  !> Material (and section) data of an element set.
+  type :: solid_material_t
+    integer :: kind = SOLID_MAT_ELASTIC                 !< SOLID_MAT_ELASTIC or SOLID_MAT_UMAT
+    real(dp) :: e = 0.0_dp                              !< *ELASTIC Young's modulus (MPa)
+    real(dp) :: nu = 0.0_dp                             !< *ELASTIC Poisson's ratio
+    real(dp), allocatable :: props(:)                   !< *USER MATERIAL constants (PROPS)
+    integer :: nstatv = 0                               !< *DEPVAR count (NSTATV)
+    character(len=80) :: cmname = ' '                   !< material name as passed in CMNAME (upper case in Abaqus)
+    logical :: unsymm = .false.                         !< *USER MATERIAL, UNSYMM: keep the unsymmetric tangent
+    real(dp) :: thickness = 1.0_dp                      !< *SOLID SECTION thickness of plane elements (CPE4)
+    procedure(umat_interface), pointer, nopass :: umat => null()  !< the UMAT to call when kind = SOLID_MAT_UMAT
+  end type solid_material_t
+
+contains
+
+  !> Sizes of an element type: nodes, spatial dimensions, integration points, stress components.
+  !> Unknown etype: every output 0.
+  pure subroutine solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
+    character(len=*), intent(in) :: etype  !< 'C3D8' or 'CPE4' (case-insensitive)
+    integer, intent(out) :: nnode          !< nodes per element
+    integer, intent(out) :: ndim           !< coordinates and displacement dofs per node
+    integer, intent(out) :: nip            !< integration points
+    integer, intent(out) :: ntens          !< stress components (ndi + nshr)
+    integer, intent(out) :: ndi            !< direct stress components
+    integer, intent(out) :: nshr           !< shear stress components
+
+    select case (shape_of(etype))
+    case (SHAPE_C3D8)
+      nnode = 8; ndim = 3; nip = 8; ntens = 6; ndi = 3; nshr = 3
+    case (SHAPE_CPE4)
+      nnode = 4; ndim = 2; nip = 4; ntens = 4; ndi = 3; nshr = 1
+    case default
+      nnode = 0; ndim = 0; nip = 0; ntens = 0; ndi = 0; nshr = 0
+    end select
+  end subroutine solid_element_info
+
+  !> Internal force, tangent and updated integration-point state of one element for the current Newton estimate.
+  !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
+  subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
+      kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
+      energy_ip_old, energy_ip_new)
+    character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
+    real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
+    real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
+    real(dp), intent(in) :: du(:)                     !< (ndim*nnode) increment since the last converged state
+    type(solid_material_t), intent(in) :: mat         !< material and section
+    real(dp), intent(in) :: stress_old(:, :)          !< (ntens, nip) converged Cauchy stress
+    real(dp), intent(in) :: stran_old(:, :)           !< (ntens, nip) converged strain (engineering shears)
+    real(dp), intent(in) :: statev_old(:, :)          !< (>= nstatv, nip) converged state variables
+    real(dp), intent(in) :: time(2)                   !< step time and total time at the start of the increment
+    real(dp), intent(in) :: dtime                     !< time increment
+    integer, intent(in) :: kstep                      !< step number
+    integer, intent(in) :: kinc                       !< increment number
+    integer, intent(in) :: noel                       !< element label (NOEL)
+    logical, intent(in) :: nlgeom                     !< geometric nonlinearity
+    logical, intent(in) :: want_k                     !< compute k_e (otherwise k_e = 0)
+    real(dp), intent(out) :: f_int(:)                 !< (ndim*nnode) internal force
+    real(dp), intent(out) :: k_e(:, :)                !< (ndim*nnode)^2 tangent d f_int / d u (unsymmetric)
+    real(dp), intent(out) :: stress_new(:, :)         !< (ntens, nip) Cauchy stress at the end of the increment
+    real(dp), intent(out) :: stran_new(:, :)          !< (ntens, nip) rotated old strain + DSTRAN
+    real(dp), intent(out) :: statev_new(:, :)         !< (>= nstatv, nip) state variables from the material
+    real(dp), intent(out) :: energy(2)                !< element integrals of SSE and SPD (N mm)
+    real(dp), intent(inout) :: pnewdt                 !< min over points of the materials' PNEWDT (unchanged if none)
+    integer, intent(out) :: stat                      !< 0 ok; 1 inverted element; 2 bad input; 3 non-finite material
+    character(len=*), intent(out) :: errmsg           !< message when stat /= 0
+    real(dp), intent(in), optional :: energy_ip_old(:, :)  !< (3, nip) converged SSE, SPD, SCD (zeros if absent)
+    real(dp), intent(out), optional :: energy_ip_new(:, :) !< (3, nip) updated SSE, SPD, SCD
+
+    integer :: shape, nnode, ndim, nip, ntens, ndi, nshr, ndof, nsv, np
+    integer :: a, b, i, j, k, l, ip, r, c, jstep(4)
+    real(dp) :: xref(3, maxnode), un(3, maxnode), u1(3, maxnode), dun(3, maxnode)
+    real(dp) :: nfun(maxnode, maxip), dndx_ref(maxnode, 3, maxip), wdet(maxip)
+    real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), dndx_c(maxnode, 3), dndxi(maxnode, 3), dndx_0c(maxnode, 3)
+    real(dp) :: xi(3), w, jac(3, 3), jinv(3, 3), detj, fc0(3, 3), fc1(3, 3), jc0, jc1, j0, j1, vol, celent
+    real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3), eye(3, 3)
+    real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), finv(3, 3), dv, gc(3, 3), trc, trg, m
+    real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
+    real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), s, bc(maxnode, 3)
+    real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
+    character(len=80) :: cmname
+    character(len=*), parameter :: here = 'solid_element_compute: '
+
+    stat = 0
+    errmsg = ''
+    f_int = 0.0_dp
+    k_e = 0.0_dp
+    energy = 0.0_dp
+    shape = shape_of(etype)
+    call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
+    ndof = ndim * nnode
+    nsv = mat%nstatv
+    np = nprops_of(mat)
+
+    ! ---- argument checks (bad input: stat = 2)
+    if (nnode == 0) then
+      call fail(2, here // 'unknown element type "' // trim(etype) // '"')
+      return
+    end if
+    if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
+        size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
+        size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
+        size(stran_old, 2) /= nip .or. size(stress_new, 1) /= ntens .or. size(stress_new, 2) /= nip .or. &
+        size(stran_new, 1) /= ntens .or. size(stran_new, 2) /= nip .or. size(statev_old, 1) < nsv .or. &
+        size(statev_old, 2) /= nip .or. size(statev_new, 1) < nsv .or. size(statev_new, 2) /= nip) then
+      call fail(2, here // 'array sizes do not match element type ' // trim(etype))
+      return
+    end if
+    if (present(energy_ip_old)) then
+      if (size(energy_ip_old, 1) < 3 .or. size(energy_ip_old, 2) /= nip) then
+        call fail(2, here // 'energy_ip_old must be (3, nip)')
+        return
+      end if
+    end if
+    if (present(energy_ip_new)) then
+      if (size(energy_ip_new, 1) < 3 .or. size(energy_ip_new, 2) /= nip) then
+        call fail(2, here // 'energy_ip_new must be (3, nip)')
+        return
+      end if
+    end if
+    select case (mat%kind)
+    case (SOLID_MAT_ELASTIC)
+      call elastic_check(mat%e, mat%nu, i, errmsg)
+      if (i /= 0) then
+        call fail(2, here // trim(errmsg))
+        return
+      end if
+    case (SOLID_MAT_UMAT)
+      if (.not. associated(mat%umat)) then
+        call fail(2, here // 'material kind UMAT without a UMAT procedure')
+        return
+      end if
+    case default
+      call fail(2, here // 'unknown material kind')
+      return
+    end select
+    if (.not. (mat%thickness > 0.0_dp)) then
+      call fail(2, here // 'section thickness must be > 0')
+      return
+    end if
+
+    eye = identity()
+    m = real(ndim, dp)
+    xref = 0.0_dp
+    un = 0.0_dp
+    u1 = 0.0_dp
+    dun = 0.0_dp
+    do a = 1, nnode
+      xref(1:ndim, a) = coords0(:, a)
+      u1(1:ndim, a) = u(ndim * (a - 1) + 1:ndim * a)
+      dun(1:ndim, a) = du(ndim * (a - 1) + 1:ndim * a)
+      un(1:ndim, a) = u1(1:ndim, a) - dun(1:ndim, a)
+    end do
+
+    ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
+    xi = 0.0_dp
+    call shape_derivatives(xi, nfun(:, 1), dndx_0c, detj)
+    if (.not. (detj > 0.0_dp)) then
+      call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre)')
+      return
+    end if
+    fc0 = def_grad(un, dndx_0c)
+    fc1 = def_grad(u1, dndx_0c)
+    jc0 = det3(fc0)
+    jc1 = det3(fc1)
+    if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
+      call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at the centre)')
+      return
+    end if
+    if (nlgeom) then
+      finv = inv3(fc1)
+      dndx_c = 0.0_dp
+      dndx_c(1:nnode, 1:ndim) = matmul(dndx_0c(1:nnode, 1:ndim), finv(1:ndim, 1:ndim))
+    else
+      dndx_c = dndx_0c
+    end if
+
+    ! ---- first pass: kinematics at the integration points, checks, volume for CELENT
+    vol = 0.0_dp
+    do ip = 1, nip
+      call solid_gauss_point(shape, ip, xi, w)
+      call shape_derivatives(xi, nfun(:, ip), dndx_ref(:, :, ip), detj)
+      if (.not. (detj > 0.0_dp)) then
+        call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at integration point ' &
+                  // itoa(ip) // ')')
+        return
+      end if
+      wdet(ip) = w * detj
+      fg0(:, :, ip) = def_grad(un, dndx_ref(:, :, ip))
+      fg1(:, :, ip) = def_grad(u1, dndx_ref(:, :, ip))
+      j0 = det3(fg0(:, :, ip))
+      j1 = det3(fg1(:, :, ip))
+      if (.not. (j0 > 0.0_dp .and. j1 > 0.0_dp)) then
+        call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')')
+        return
+      end if
+      vol = vol + wdet(ip) * merge(j1, 1.0_dp, nlgeom)
+    end do
+    celent = vol**(1.0_dp / m)
+
+    jstep = [kstep, 1, merge(1, 0, nlgeom), 0]
+    cmname = mat%cmname
+    if (np > 0) pr(1:np) = mat%props
+
+    ! ---- second pass: material calls, internal force, tangent
+    do ip = 1, nip
+      j0 = det3(fg0(:, :, ip))
+      j1 = det3(fg1(:, :, ip))
+      fb0 = fg0(:, :, ip)
+      fb1 = fg1(:, :, ip)
+      fb0(1:ndim, 1:ndim) = (jc0 / j0)**(1.0_dp / m) * fb0(1:ndim, 1:ndim)
+      fb1(1:ndim, 1:ndim) = (jc1 / j1)**(1.0_dp / m) * fb1(1:ndim, 1:ndim)
+
+      if (nlgeom) then
+        ! Hughes-Winget: G = grad(du) w.r.t. x_mid, with the F-bar modified gradients
+        fm = 0.5_dp * (fb0 + fb1)
+        if (.not. (det3(fm) > 0.0_dp)) then
+          call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
+                    // itoa(ip) // ')')
+          return
+        end if
+        g = matmul(fb1 - fb0, inv3(fm))
+        wsk = 0.5_dp * (g - transpose(g))
+        drot = matmul(inv3(eye - 0.5_dp * wsk), eye + 0.5_dp * wsk)
+      else
+        ! small strain: grad(du) w.r.t. X with the centre dilatation (B-bar)
+        g = def_grad(dun, dndx_ref(:, :, ip)) - eye
+        gc = def_grad(dun, dndx_0c) - eye
+        trg = 0.0_dp
+        trc = 0.0_dp
+        do i = 1, ndim
+          trg = trg + g(i, i)
+          trc = trc + gc(i, i)
+        end do
+        do i = 1, ndim
+          g(i, i) = g(i, i) + (trc - trg) / m
+        end do
+        drot = eye
+      end if
+      call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
+
+      ! rotate the converged stress and strain by DROT (identity without NLGEOM)
+      call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+      sig = matmul(matmul(drot, sig), transpose(drot))
+      call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
+      call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+      eps = matmul(matmul(drot, eps), transpose(drot))
+      call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
+
+      sse = 0.0_dp
+      spd = 0.0_dp
+      scd = 0.0_dp
+      if (present(energy_ip_old)) then
+        sse = energy_ip_old(1, ip)
+        spd = energy_ip_old(2, ip)
+        scd = energy_ip_old(3, ip)
+      end if
+      ddsdde = 0.0_dp
+      pn = SOLID_PNEWDT_LARGE
+      select case (mat%kind)
+      case (SOLID_MAT_ELASTIC)
+        call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), sse)
+      case default
+        sv = 0.0_dp
+        if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
+        do i = 1, 3
+          coords(i) = dot_product(nfun(1:nnode, ip), xref(i, 1:nnode) + u1(i, 1:nnode))
+        end do
+        call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
+          ntens, nsv, pr, np, coords, drot, pn, celent, fb0, fb1, noel, ip, jstep, kinc)
+        statev_new(1:nsv, ip) = sv(1:nsv)
+      end select
+      pnewdt = min(pnewdt, pn)
+      if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
+        call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
+                  // itoa(ip))
+        return
+      end if
+      if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
+      if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
+      stress_new(:, ip) = stress(1:ntens)
+      stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
+      if (present(energy_ip_new)) then
+        energy_ip_new(:, ip) = 0.0_dp
+        energy_ip_new(1:3, ip) = [sse, spd, scd]
+      end if
+
+      ! spatial derivatives and volume element
+      dndx = 0.0_dp
+      if (nlgeom) then
+        finv = inv3(fg1(:, :, ip))
+        dndx(1:nnode, 1:ndim) = matmul(dndx_ref(1:nnode, 1:ndim, ip), finv(1:ndim, 1:ndim))
+        dv = wdet(ip) * j1 * mat%thickness
+      else
+        dndx(1:nnode, 1:ndim) = dndx_ref(1:nnode, 1:ndim, ip)
+        dv = wdet(ip) * mat%thickness
+      end if
+      energy = energy + [sse, spd] * dv
+
+      call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+      ! bc(b, k) = dN_b/dx_k at the centre minus at the point: the F-bar (B-bar) dilatation operator
+      bc(1:nnode, 1:ndim) = dndx_c(1:nnode, 1:ndim) - dndx(1:nnode, 1:ndim)
+      do a = 1, nnode
+        do i = 1, ndim
+          r = ndim * (a - 1) + i
+          f_int(r) = f_int(r) + dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) * dv
+        end do
+      end do
+
+      if (want_k) then
+        if (.not. (mat%kind == SOLID_MAT_UMAT .and. mat%unsymm)) then
+          ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
+          ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
+        end if
+        call spatial_tangent(ddsdde, sig, ndim, ntens, nlgeom, a4, q)
+        do b = 1, nnode
+          do k = 1, ndim
+            c = ndim * (b - 1) + k
+            do a = 1, nnode
+              do i = 1, ndim
+                r = ndim * (a - 1) + i
+                s = 0.0_dp
+                do j = 1, ndim
+                  do l = 1, ndim
+                    s = s + dndx(a, j) * a4(i, j, k, l) * dndx(b, l)
+                  end do
+                  s = s + dndx(a, j) * q(i, j) * bc(b, k)
+                end do
+                k_e(r, c) = k_e(r, c) + s * dv
+              end do
+            end do
+          end do
+        end do
+      end if
+    end do
+
+  contains
+
+    !> Record a failure: zero force and tangent, old state kept, cutback requested for an inverted element.
+    subroutine fail(code, msg)
+      integer, intent(in) :: code
+      character(len=*), intent(in) :: msg
+      stat = code
+      errmsg = msg
+      f_int = 0.0_dp
+      k_e = 0.0_dp
+      energy = 0.0_dp
+      if (size(stress_new, 1) == size(stress_old, 1) .and. size(stress_new, 2) == size(stress_old, 2)) &
+        stress_new = stress_old
+      if (size(stran_new, 1) == size(stran_old, 1) .and. size(stran_new, 2) == size(stran_old, 2)) &
+        stran_new = stran_old
+      if (size(statev_new, 1) == size(statev_old, 1) .and. size(statev_new, 2) == size(statev_old, 2)) &
+        statev_new = statev_old
+      if (present(energy_ip_new)) then
+        energy_ip_new = 0.0_dp
+        if (present(energy_ip_old)) then
+          if (size(energy_ip_new, 1) == size(energy_ip_old, 1) .and. size(energy_ip_new, 2) == size(energy_ip_old, 2)) &
+            energy_ip_new = energy_ip_old
+        end if
+      end if
+      if (code == 1 .or. code == 3) pnewdt = min(pnewdt, 0.25_dp)
+    end subroutine fail
+
+    !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi).
+    subroutine shape_derivatives(xi_p, n_p, dndx_p, detj_p)
+      real(dp), intent(in) :: xi_p(3)
+      real(dp), intent(out) :: n_p(maxnode), dndx_p(maxnode, 3), detj_p
+      integer :: aa
+      dndxi = 0.0_dp
+      n_p = 0.0_dp
+      call solid_shape_eval(shape, xi_p(1:ndim), n_p(1:nnode), dndxi(1:nnode, 1:ndim))
+      jac = eye
+      jac(1:ndim, 1:ndim) = 0.0_dp
+      do aa = 1, nnode
+        jac(1:ndim, 1:ndim) = jac(1:ndim, 1:ndim) + spread(xref(1:ndim, aa), 2, ndim) * &
+                              spread(dndxi(aa, 1:ndim), 1, ndim)
+      end do
+      detj_p = det3(jac)
+      dndx_p = 0.0_dp
+      if (detj_p > 0.0_dp) then
+        jinv = inv3(jac)
+        dndx_p(1:nnode, 1:ndim) = matmul(dndxi(1:nnode, 1:ndim), jinv(1:ndim, 1:ndim))
+      end if
+    end subroutine shape_derivatives
+
+    !> Deformation gradient I + sum_a disp_a (x) dN_a/dX (3x3, F33 = 1 in plane strain).
+    pure function def_grad(disp, dn) result(f)
+      real(dp), intent(in) :: disp(3, maxnode), dn(maxnode, 3)
+      real(dp) :: f(3, 3)
+      f = identity()
+      f(1:ndim, 1:ndim) = f(1:ndim, 1:ndim) + matmul(disp(1:ndim, 1:nnode), dn(1:nnode, 1:ndim))
+    end function def_grad
+
+  end subroutine solid_element_compute
+
+  !> Call the UMAT through the pointer with contiguous explicit-shape copies of every argument (a user routine
+  !> may overwrite any of them; only STRESS, STATEV, DDSDDE, SSE, SPD, SCD and PNEWDT are taken back).
+  subroutine call_umat(umat, stress, statev, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
+      ntens, nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, jstep, kinc)
+    procedure(umat_interface) :: umat                    !< the UMAT
+    integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, kinc, jstep(4)
+    real(dp), intent(inout) :: stress(6), statev(:), ddsdde(6, 6), sse, spd, scd, pnewdt
+    real(dp), intent(in) :: stran(6), dstran(6), time(2), dtime, coords(3), drot(3, 3), celent
+    real(dp), intent(in) :: props(:), dfgrd0(3, 3), dfgrd1(3, 3)
+    character(len=80), intent(in) :: cmname
+    real(dp) :: c_stress(ntens), c_ddsdde(ntens, ntens), c_ddsddt(ntens), c_drplde(ntens), c_stran(ntens)
+    real(dp) :: c_dstran(ntens), c_statev(size(statev)), c_props(size(props)), c_rpl, c_drpldt
+    real(dp) :: c_time(2), c_dtime, c_temp, c_dtemp, c_predef(1), c_dpred(1)
+    real(dp) :: c_coords(3), c_drot(3, 3), c_celent, c_f0(3, 3), c_f1(3, 3)
+    integer :: c_ndi, c_nshr, c_ntens, c_nstatv, c_nprops, c_noel, c_npt, c_layer, c_kspt, c_jstep(4), c_kinc
+    character(len=80) :: c_cmname
+
+    c_stress = stress(1:ntens); c_ddsdde = 0.0_dp; c_ddsddt = 0.0_dp; c_drplde = 0.0_dp
+    c_stran = stran(1:ntens); c_dstran = dstran(1:ntens); c_statev = statev; c_props = props
+    c_rpl = 0.0_dp; c_drpldt = 0.0_dp
+    c_time = time; c_dtime = dtime; c_temp = 0.0_dp; c_dtemp = 0.0_dp; c_predef = 0.0_dp; c_dpred = 0.0_dp
+    c_coords = coords; c_drot = drot; c_celent = celent; c_f0 = dfgrd0; c_f1 = dfgrd1
+    c_ndi = ndi; c_nshr = nshr; c_ntens = ntens; c_nstatv = nstatv; c_nprops = nprops; c_noel = noel; c_npt = npt
+    c_layer = 1; c_kspt = 1; c_jstep = jstep; c_kinc = kinc; c_cmname = cmname
+    call umat(c_stress, c_statev, c_ddsdde, sse, spd, scd, c_rpl, c_ddsddt, c_drplde, c_drpldt, c_stran, c_dstran, &
+      c_time, c_dtime, c_temp, c_dtemp, c_predef, c_dpred, c_cmname, c_ndi, c_nshr, c_ntens, c_nstatv, c_props, &
+      c_nprops, c_coords, c_drot, pnewdt, c_celent, c_f0, c_f1, c_noel, c_npt, c_layer, c_kspt, c_jstep, c_kinc)
+    stress(1:ntens) = c_stress
+    ddsdde(1:ntens, 1:ntens) = c_ddsdde
+    statev = c_statev
+  end subroutine call_umat
+
+  !> Spatial tangent A_ijkl (material + geometric, from DDSDDE by the Jaumann correction of CONVENTIONS.md) and the
+  !> F-bar coefficient q_ij; without NLGEOM A = DDSDDE and q = (1/m) sum_a A_ijaa.
+  pure subroutine spatial_tangent(ddsdde, sig, ndim, ntens, nlgeom, a4, q)
+    real(dp), intent(in) :: ddsdde(6, 6), sig(3, 3)
+    integer, intent(in) :: ndim, ntens
+    logical, intent(in) :: nlgeom
+    real(dp), intent(out) :: a4(3, 3, 3, 3), q(3, 3)
+    integer :: i, j, k, l
+    real(dp) :: d(3, 3), m
+
+    d = identity()
+    m = real(ndim, dp)
+    a4 = 0.0_dp
+    q = 0.0_dp
+    do l = 1, ndim
+      do k = 1, ndim
+        do j = 1, ndim
+          do i = 1, ndim
+            a4(i, j, k, l) = ddsdde(voigt_index(i, j, ntens), voigt_index(k, l, ntens))
+            if (nlgeom) then
+              a4(i, j, k, l) = a4(i, j, k, l) &
+                - 0.5_dp * (d(i, k) * sig(j, l) + d(i, l) * sig(j, k) + sig(i, k) * d(j, l) + sig(i, l) * d(j, k)) &
+                + d(i, k) * sig(j, l)
+            end if
+          end do
+        end do
+      end do
+    end do
+    do k = 1, ndim
+      q(1:ndim, 1:ndim) = q(1:ndim, 1:ndim) + a4(1:ndim, 1:ndim, k, k) / m
+    end do
+    if (nlgeom) q(1:ndim, 1:ndim) = q(1:ndim, 1:ndim) - (1.0_dp - 1.0_dp / m) * sig(1:ndim, 1:ndim)
+  end subroutine spatial_tangent
+
+  !> Number of PROPS of a material (0 when none were given).
+  pure integer function nprops_of(mat)
+    type(solid_material_t), intent(in) :: mat
+    nprops_of = 0
+    if (allocated(mat%props)) nprops_of = size(mat%props)
+  end function nprops_of
+
+  !> Voigt position of tensor component (i,j): 11,22,33,12,13,23 (0 when absent, e.g. 13 in plane strain).
+  pure integer function voigt_index(i, j, ntens)
+    integer, intent(in) :: i, j, ntens
+    integer :: lo, hi
+    lo = min(i, j)
+    hi = max(i, j)
+    if (lo == hi) then
+      voigt_index = lo
+    else if (lo == 1 .and. hi == 2) then
+      voigt_index = 4
+    else if (ntens < 6) then
+      voigt_index = 0
+    else if (lo == 1) then
+      voigt_index = 5
+    else
+      voigt_index = 6
+    end if
+  end function voigt_index
+
+  !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain.
+  pure subroutine voigt_to_tensor(v, ntens, t, shear_factor)
+    real(dp), intent(in) :: v(:)
+    integer, intent(in) :: ntens
+    real(dp), intent(out) :: t(3, 3)
+    real(dp), intent(in) :: shear_factor
+    t = 0.0_dp
+    t(1, 1) = v(1); t(2, 2) = v(2); t(3, 3) = v(3)
+    t(1, 2) = shear_factor * v(4); t(2, 1) = t(1, 2)
+    if (ntens >= 6) then
+      t(1, 3) = shear_factor * v(5); t(3, 1) = t(1, 3)
+      t(2, 3) = shear_factor * v(6); t(3, 2) = t(2, 3)
+    end if
+  end subroutine voigt_to_tensor
+
+  !> Voigt components of a symmetric tensor; shear_factor 1 for stress, 2 for engineering strain.
+  pure subroutine tensor_to_voigt(t, ntens, v, shear_factor)
+    real(dp), intent(in) :: t(3, 3)
+    integer, intent(in) :: ntens
+    real(dp), intent(out) :: v(6)
+    real(dp), intent(in) :: shear_factor
+    v = 0.0_dp
+    v(1) = t(1, 1); v(2) = t(2, 2); v(3) = t(3, 3)
+    v(4) = shear_factor * t(1, 2)
+    if (ntens >= 6) then
+      v(5) = shear_factor * t(1, 3)
+      v(6) = shear_factor * t(2, 3)
+    end if
+  end subroutine tensor_to_voigt
+
+  pure integer function shape_of(etype)
+    character(len=*), intent(in) :: etype
+    character(len=len(etype)) :: up
+    integer :: i
+    up = etype
+    do i = 1, len(up)
+      if (up(i:i) >= 'a' .and. up(i:i) <= 'z') up(i:i) = achar(iachar(up(i:i)) - 32)
+    end do
+    select case (trim(adjustl(up)))
+    case ('C3D8')
+      shape_of = SHAPE_C3D8
+    case ('CPE4')
+      shape_of = SHAPE_CPE4
+    case default
+      shape_of = 0
+    end select
+  end function shape_of
+
+  pure function identity() result(e)
+    real(dp) :: e(3, 3)
+    e = 0.0_dp
+    e(1, 1) = 1.0_dp; e(2, 2) = 1.0_dp; e(3, 3) = 1.0_dp
+  end function identity
+
+  pure real(dp) function det3(a)
+    real(dp), intent(in) :: a(3, 3)
+    det3 = a(1, 1) * (a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)) - a(1, 2) * (a(2, 1) * a(3, 3) - a(2, 3) * a(3, 1)) &
+         + a(1, 3) * (a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1))
+  end function det3
+
+  !> Inverse of a 3x3 matrix by its adjugate (callers ensure det > 0).
+  pure function inv3(a) result(b)
+    real(dp), intent(in) :: a(3, 3)
+    real(dp) :: b(3, 3)
+    b(1, 1) = a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)
+    b(1, 2) = a(1, 3) * a(3, 2) - a(1, 2) * a(3, 3)
+    b(1, 3) = a(1, 2) * a(2, 3) - a(1, 3) * a(2, 2)
+    b(2, 1) = a(2, 3) * a(3, 1) - a(2, 1) * a(3, 3)
+    b(2, 2) = a(1, 1) * a(3, 3) - a(1, 3) * a(3, 1)
+    b(2, 3) = a(1, 3) * a(2, 1) - a(1, 1) * a(2, 3)
+    b(3, 1) = a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1)
+    b(3, 2) = a(1, 2) * a(3, 1) - a(1, 1) * a(3, 2)
+    b(3, 3) = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)
+    b = b / det3(a)
+  end function inv3
+
+  pure function itoa(n) result(s)
+    integer, intent(in) :: n
+    character(len=:), allocatable :: s
+    character(len=16) :: buf
+    write (buf, '(i0)') n
+    s = trim(buf)
+  end function itoa
+
+end module solid_element

@@ -1,0 +1,8 @@
+# Suites of the continuum elements and the built-in *ELASTIC (host/elements).
+if(NOT TARGET ldfcz_elements AND EXISTS "${PROJECT_SOURCE_DIR}/host/elements/CMakeLists.txt")
+  add_subdirectory("${PROJECT_SOURCE_DIR}/host/elements" "${PROJECT_BINARY_DIR}/host/elements")
+endif()
+if(TARGET ldfcz_elements)
+  ldfcz_add_pf_suite(NAME test_solid_element PF test_solid_element.pf LINK ldfcz_elements)
+  ldfcz_add_pf_suite(NAME test_elastic PF test_elastic.pf LINK ldfcz_elements)
+endif()
