@@ -1,0 +1,377 @@
+!> material_point: drives SUBROUTINE UMAT through a homogeneous deformation history, exactly as Abaqus/Standard
+!> calls it under NLGEOM (Hughes-Winget DSTRAN and DROT from DFGRD0/DFGRD1, STRESS and STRAN rotated by DROT before
+!> the call, fresh copies of the converged STRESS/STATEV on every call, PNEWDT cutbacks).
+!>
+!> Usage:  material_point [case.txt] [key=value ...]     (command-line keys override the file)
+!> Keys (file lines "key = value", '#' starts a comment):
+!>   mode         uniaxial | shear | deformation
+!>                uniaxial: true axial strain ln(lambda_1) = rate*t, lateral Cauchy stresses zero (Newton on the
+!>                  two lateral stretches with DDSDDE); rate < 0 is compression
+!>                shear: simple shear F = I + rate*t e1 x e2
+!>                deformation: F(t) = I + (t/time_end) (f_end - I)
+!>   rate         strain rate (1/s)                          [1e-3]
+!>   strain_end   |final true strain| (uniaxial) or shear (shear)   [1.0]
+!>   time_end     end time for mode = deformation (s)        [1.0]
+!>   f_end        9 numbers, F at time_end, row by row       [identity]
+!>   steps        number of increments (before cutbacks)     [200]
+!>   rotation     superposed rigid rotation at the end (degrees), growing linearly in time   [0]
+!>   axis         rotation axis 1, 2 or 3                    [3]
+!>   props        10 numbers (PROPS, Table 1 order)          [Table 1, PET]
+!>   nstatv       number of state variables                  [11]
+!>   output       CSV file                                   [material_point.csv]
+!>   output_every write every n-th increment                 [1]
+!> CSV columns: time, F11..F33 (row by row), S11 S22 S33 S12 S13 S23 (Cauchy, Abaqus order, global frame),
+!>   SDV1..SDVn, then strain (ln lambda_1 or shear), stress (material-frame sigma_11 or sigma_12), J.
+program material_point
+  use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+  use ldfcz_kinds, only: dp
+  use abaqus_host_state, only: abaqus_stop_requested, abaqus_stop_message
+  implicit none
+
+  real(dp), parameter :: pi = acos(-1.0_dp)
+  character(len=32) :: mode = 'uniaxial'
+  character(len=512) :: output = 'material_point.csv'
+  real(dp) :: rate = 1.0e-3_dp, strain_end = 1.0_dp, time_end = 1.0_dp, rotation = 0.0_dp
+  real(dp) :: f_end(3, 3), props(10)
+  integer :: steps = 200, axis = 3, nstatv = 11, output_every = 1
+  real(dp), allocatable :: statev(:), statev_trial(:)
+  real(dp) :: stress(6), stress_trial(6), stran(6), stran_trial(6), ddsdde(6, 6)
+  real(dp) :: t, t_total, dt_target, h, f0(3, 3), f1(3, 3), lat(2), lat_trial(2), pnewdt
+  integer :: unit, inc, kinc, ncut
+  logical :: ok
+
+  f_end = identity3()
+  props = [1250.0_dp, 0.4_dp, 28.4_dp, 0.486_dp, 0.95_dp, 0.047_dp, 28.2_dp, 0.990_dp, 200.0_dp, -4.0_dp]
+  call read_input()
+  if (nstatv < 1 .or. steps < 1 .or. output_every < 1) call fail('nstatv, steps and output_every must be >= 1')
+  select case (mode)
+  case ('uniaxial', 'shear')
+    if (rate == 0.0_dp) call fail('rate must not be zero')
+    t_total = abs(strain_end / rate)
+  case ('deformation')
+    t_total = time_end
+  case default
+    call fail('unknown mode "' // trim(mode) // '" (uniaxial, shear, deformation)')
+  end select
+  if (.not. (t_total > 0.0_dp)) call fail('the history has zero duration')
+  allocate (statev(nstatv), statev_trial(nstatv))
+  statev = 0.0_dp
+  stress = 0.0_dp
+  stran = 0.0_dp
+  lat = 0.0_dp   ! ln of the lateral stretches (uniaxial mode)
+
+  open (newunit=unit, file=trim(output), status='replace', action='write')
+  call write_header()
+  t = 0.0_dp
+  f0 = deformation(0.0_dp, lat)
+  call write_row(t, f0)
+  dt_target = t_total / steps
+  kinc = 0
+  ncut = 0
+  do inc = 1, steps
+    ! one output increment, with cutbacks on PNEWDT < 1
+    h = dt_target
+    do while (t < inc * dt_target - 1.0e-12_dp * dt_target)
+      h = min(h, inc * dt_target - t)
+      kinc = kinc + 1
+      call increment(t, h, f0, lat, ok, pnewdt, f1, lat_trial)
+      if (.not. ok) then
+        ncut = ncut + 1
+        if (ncut > 10000 .or. h < 1.0e-12_dp * dt_target) call fail('too many cutbacks')
+        h = h * min(0.5_dp, max(0.1_dp, pnewdt))
+        cycle
+      end if
+      t = t + h
+      f0 = f1
+      lat = lat_trial
+      stress = stress_trial
+      stran = stran_trial
+      statev = statev_trial
+      h = min(1.5_dp * h, dt_target)
+    end do
+    if (mod(inc, output_every) == 0 .or. inc == steps) call write_row(t, f0)
+  end do
+  close (unit)
+  write (output_unit, '(a,a,a,i0,a,i0,a)') 'material_point: wrote ', trim(output), ' (', kinc, ' increments, ', &
+    ncut, ' cutbacks)'
+
+contains
+
+  pure function identity3() result(a)
+    real(dp) :: a(3, 3)
+    a = 0.0_dp
+    a(1, 1) = 1.0_dp
+    a(2, 2) = 1.0_dp
+    a(3, 3) = 1.0_dp
+  end function identity3
+
+  subroutine fail(text)
+    character(len=*), intent(in) :: text
+    write (error_unit, '(a)') 'material_point: ' // text
+    error stop 2
+  end subroutine fail
+
+  !> Rigid rotation at time tt (angle grows linearly to `rotation` degrees at t_total).
+  function rot(tt) result(r)
+    real(dp), intent(in) :: tt
+    real(dp) :: r(3, 3), a, c, s
+    integer :: i1, i2
+    a = rotation * pi / 180.0_dp * tt / t_total
+    c = cos(a)
+    s = sin(a)
+    r = identity3()
+    i1 = mod(axis, 3) + 1
+    i2 = mod(axis + 1, 3) + 1
+    r(i1, i1) = c
+    r(i2, i2) = c
+    r(i1, i2) = -s
+    r(i2, i1) = s
+  end function rot
+
+  !> Material-frame deformation at time tt (lateral log stretches ll for uniaxial mode), then rotated.
+  function deformation(tt, ll) result(f)
+    real(dp), intent(in) :: tt, ll(2)
+    real(dp) :: f(3, 3), fm(3, 3)
+    fm = identity3()
+    select case (mode)
+    case ('uniaxial')
+      fm(1, 1) = exp(rate * tt)
+      fm(2, 2) = exp(ll(1))
+      fm(3, 3) = exp(ll(2))
+    case ('shear')
+      fm(1, 2) = rate * tt
+    case default
+      fm = identity3() + (tt / time_end) * (f_end - identity3())
+    end select
+    f = matmul(rot(tt), fm)
+  end function deformation
+
+  real(dp) function det3(a)
+    real(dp), intent(in) :: a(3, 3)
+    det3 = a(1, 1) * (a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)) - a(1, 2) * (a(2, 1) * a(3, 3) - a(2, 3) * a(3, 1)) &
+         + a(1, 3) * (a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1))
+  end function det3
+
+  function inv3(a) result(b)
+    real(dp), intent(in) :: a(3, 3)
+    real(dp) :: b(3, 3)
+    b(1, 1) = a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)
+    b(1, 2) = a(1, 3) * a(3, 2) - a(1, 2) * a(3, 3)
+    b(1, 3) = a(1, 2) * a(2, 3) - a(1, 3) * a(2, 2)
+    b(2, 1) = a(2, 3) * a(3, 1) - a(2, 1) * a(3, 3)
+    b(2, 2) = a(1, 1) * a(3, 3) - a(1, 3) * a(3, 1)
+    b(2, 3) = a(1, 3) * a(2, 1) - a(1, 1) * a(2, 3)
+    b(3, 1) = a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1)
+    b(3, 2) = a(1, 2) * a(3, 1) - a(1, 1) * a(3, 2)
+    b(3, 3) = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)
+    b = b / det3(a)
+  end function inv3
+
+  function to_tensor(v, eng) result(a)
+    real(dp), intent(in) :: v(6)
+    logical, intent(in) :: eng     !< shear entries are engineering (2 x tensor) values
+    real(dp) :: a(3, 3), sc
+    sc = merge(0.5_dp, 1.0_dp, eng)
+    a = reshape([v(1), sc * v(4), sc * v(5), sc * v(4), v(2), sc * v(6), sc * v(5), sc * v(6), v(3)], [3, 3])
+  end function to_tensor
+
+  function to_voigt(a, eng) result(v)
+    real(dp), intent(in) :: a(3, 3)
+    logical, intent(in) :: eng
+    real(dp) :: v(6), sc
+    sc = merge(2.0_dp, 1.0_dp, eng)
+    v = [a(1, 1), a(2, 2), a(3, 3), sc * a(1, 2), sc * a(1, 3), sc * a(2, 3)]
+  end function to_voigt
+
+  !> One call of UMAT from the converged state for F0 -> F1 in time hh, as Abaqus makes it.
+  subroutine call_umat(tt, hh, fa, fb, pnew)
+    real(dp), intent(in) :: tt, hh, fa(3, 3), fb(3, 3)
+    real(dp), intent(out) :: pnew
+    real(dp) :: gmat(3, 3), w(3, 3), drot(3, 3), dstran(6), time(2), sse, spd, scd, rpl, ddsddt(6), drplde(6)
+    real(dp) :: drpldt, temp, dtemp, predef(1), dpred(1), coords(3), celent, fa_c(3, 3), fb_c(3, 3), fmid_inv(3, 3)
+    integer :: jstep(4)
+    character(len=80) :: cmname
+    ! Hughes-Winget: G = grad(du) at the mid-point configuration
+    fmid_inv = inv3(0.5_dp * (fa + fb))
+    gmat = matmul(fb - fa, fmid_inv)
+    w = 0.5_dp * (gmat - transpose(gmat))
+    drot = matmul(inv3(identity3() - 0.5_dp * w), identity3() + 0.5_dp * w)
+    dstran = to_voigt(0.5_dp * (gmat + transpose(gmat)), .true.)
+    stress_trial = to_voigt(matmul(drot, matmul(to_tensor(stress, .false.), transpose(drot))), .false.)
+    stran_trial = to_voigt(matmul(drot, matmul(to_tensor(stran, .true.), transpose(drot))), .true.)
+    statev_trial = statev
+    time = [tt, tt]
+    sse = 0.0_dp
+    spd = 0.0_dp
+    scd = 0.0_dp
+    rpl = 0.0_dp
+    drpldt = 0.0_dp
+    temp = 0.0_dp
+    dtemp = 0.0_dp
+    predef = 0.0_dp
+    dpred = 0.0_dp
+    coords = 0.0_dp
+    celent = 1.0_dp
+    jstep = [1, 1, 1, 0]
+    cmname = 'LEONOV'
+    pnew = 1.0e36_dp
+    ddsdde = 0.0_dp
+    fa_c = fa
+    fb_c = fb
+    call umat(stress_trial, statev_trial, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran_trial, dstran, &
+              time, hh, temp, dtemp, predef, dpred, cmname, 3, 3, 6, nstatv, props, 10, coords, drot, pnew, &
+              celent, fa_c, fb_c, 1, 1, 1, 1, jstep, kinc)
+    stran_trial = stran_trial + dstran
+    if (abaqus_stop_requested()) call fail('UMAT stopped the analysis: ' // abaqus_stop_message())
+  end subroutine call_umat
+
+  !> One increment t -> t + hh; for uniaxial mode a Newton loop on the lateral log stretches.
+  subroutine increment(tt, hh, fa, lat0, success, pnew, fb, lat1)
+    real(dp), intent(in) :: tt, hh, fa(3, 3), lat0(2)
+    logical, intent(out) :: success
+    real(dp), intent(out) :: pnew, fb(3, 3), lat1(2)
+    real(dp) :: r(3, 3), sig_m(3, 3), res(2), jac(2, 2), dl(2), dm(3, 3), col(3, 3), jdet, scale
+    integer :: it, b
+    success = .false.
+    lat1 = lat0
+    if (mode /= 'uniaxial') then
+      fb = deformation(tt + hh, lat1)
+      call call_umat(tt, hh, fa, fb, pnew)
+      success = pnew >= 1.0_dp
+      return
+    end if
+    r = rot(tt + hh)
+    do it = 1, 40
+      fb = deformation(tt + hh, lat1)
+      call call_umat(tt, hh, fa, fb, pnew)
+      if (pnew < 1.0_dp) return
+      jdet = det3(fb)
+      sig_m = matmul(transpose(r), matmul(to_tensor(stress_trial, .false.), r))
+      res = jdet * [sig_m(2, 2), sig_m(3, 3)]
+      scale = max(1.0_dp, abs(sig_m(1, 1)))
+      if (maxval(abs(res)) <= 1.0e-10_dp * scale) then
+        success = .true.
+        return
+      end if
+      ! d(J sigma')/d ln(lambda_b) = J R^T [C : (R e_b e_b^T R^T)] R  (no spin: Jaumann = material rate)
+      do b = 1, 2
+        dm = 0.0_dp
+        dm(b + 1, b + 1) = 1.0_dp
+        dm = matmul(r, matmul(dm, transpose(r)))
+        col = to_tensor(matmul(ddsdde, to_voigt(dm, .true.)), .false.)
+        col = jdet * matmul(transpose(r), matmul(col, r))
+        jac(:, b) = [col(2, 2), col(3, 3)]
+      end do
+      dl = solve2(jac, -res)
+      lat1 = lat1 + dl
+    end do
+    pnew = 0.5_dp
+  end subroutine increment
+
+  function solve2(a, b) result(x)
+    real(dp), intent(in) :: a(2, 2), b(2)
+    real(dp) :: x(2), d
+    d = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)
+    x = [a(2, 2) * b(1) - a(1, 2) * b(2), a(1, 1) * b(2) - a(2, 1) * b(1)] / d
+  end function solve2
+
+  subroutine write_header()
+    integer :: i
+    character(len=16) :: name
+    write (unit, '(a)', advance='no') 'time,F11,F12,F13,F21,F22,F23,F31,F32,F33,S11,S22,S33,S12,S13,S23'
+    do i = 1, nstatv
+      write (name, '(a,i0)') ',SDV', i
+      write (unit, '(a)', advance='no') trim(name)
+    end do
+    write (unit, '(a)') ',strain,stress,J'
+  end subroutine write_header
+
+  subroutine write_row(tt, f)
+    real(dp), intent(in) :: tt, f(3, 3)
+    real(dp) :: r(3, 3), sig_m(3, 3), strain, s_ax
+    r = rot(tt)
+    sig_m = matmul(transpose(r), matmul(to_tensor(stress, .false.), r))
+    select case (mode)
+    case ('uniaxial')
+      strain = rate * tt
+      s_ax = sig_m(1, 1)
+    case ('shear')
+      strain = rate * tt
+      s_ax = sig_m(1, 2)
+    case default
+      strain = 0.0_dp
+      s_ax = 0.0_dp
+    end select
+    write (unit, '(es23.15,*(:,",",es23.15))') tt, transpose(f), stress, statev, strain, s_ax, det3(f)
+  end subroutine write_row
+
+  !> Read the optional case file (first argument without '='), then key=value arguments.
+  subroutine read_input()
+    integer :: i, n, ios, u
+    character(len=1024) :: arg, line
+    n = command_argument_count()
+    do i = 1, n
+      call get_command_argument(i, arg)
+      if (index(arg, '=') == 0) then
+        open (newunit=u, file=trim(arg), status='old', action='read', iostat=ios)
+        if (ios /= 0) call fail('cannot open case file ' // trim(arg))
+        do
+          read (u, '(a)', iostat=ios) line
+          if (ios /= 0) exit
+          call set_key(line)
+        end do
+        close (u)
+      end if
+    end do
+    do i = 1, n
+      call get_command_argument(i, arg)
+      if (index(arg, '=') > 0) call set_key(arg)
+    end do
+  end subroutine read_input
+
+  subroutine set_key(text)
+    character(len=*), intent(in) :: text
+    character(len=1024) :: line, key, val
+    integer :: k, ios
+    line = text
+    k = index(line, '#')
+    if (k > 0) line(k:) = ' '
+    k = index(line, '=')
+    if (k == 0) return
+    key = adjustl(line(:k - 1))
+    val = adjustl(line(k + 1:))
+    ios = 0
+    select case (trim(key))
+    case ('mode')
+      mode = trim(val)
+    case ('output')
+      output = trim(val)
+    case ('rate')
+      read (val, *, iostat=ios) rate
+    case ('strain_end')
+      read (val, *, iostat=ios) strain_end
+    case ('time_end')
+      read (val, *, iostat=ios) time_end
+    case ('steps')
+      read (val, *, iostat=ios) steps
+    case ('rotation')
+      read (val, *, iostat=ios) rotation
+    case ('axis')
+      read (val, *, iostat=ios) axis
+    case ('nstatv')
+      read (val, *, iostat=ios) nstatv
+    case ('output_every')
+      read (val, *, iostat=ios) output_every
+    case ('props')
+      read (val, *, iostat=ios) props
+    case ('f_end')
+      read (val, *, iostat=ios) f_end
+      f_end = transpose(f_end)
+    case default
+      call fail('unknown key "' // trim(key) // '"')
+    end select
+    if (ios /= 0) call fail('cannot read the value of ' // trim(key) // ': ' // trim(val))
+    if (axis < 1 .or. axis > 3) call fail('axis must be 1, 2 or 3')
+  end subroutine set_key
+
+end program material_point

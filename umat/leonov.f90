@@ -1,0 +1,647 @@
+!> Compressible Leonov model (van den Bosch, Schreurs, Geers 2007, section 6, Eqs. 31-42): the host-free core.
+!>
+!> Stress (Eqs. 31-33), Cauchy:  sigma = G dev(Be~) + kappa (J - 1) I + G_r dev(B~),  B~ = J^(-2/3) F F^T.
+!> Flow (Eqs. 35-37): Dp = G dev(Be~) / (2 eta),
+!>   eta = eta_0r exp(mu p / tau_0) exp(S) (tau_bar/tau_0) / sinh(tau_bar/tau_0),  p = -tr(sigma)/3 = -kappa (J - 1),
+!>   tau_bar = sqrt(tr(Ss^d Ss^d)/2) (Eq. 40), S = S_a R_gamma(gamma_p) (Eqs. 41-42).
+!> Equivalent plastic strain: gamma_p_dot = sqrt(2 Dp:Dp) = tau_bar/eta, so Dp = (gamma_p_dot / (2 tau_bar)) Ss^d.
+!>
+!> Time integration (one increment t_n -> t_n+1, F_n -> F_n+1):
+!>  1. elastic predictor, exact for the elastic part of Eq. 35 (the Jaumann form with D equals the upper-convected
+!>     form with L): Be~_trial = F~_rel Be~_n F~_rel^T, F_rel = F_n+1 F_n^-1, F~_rel = det(F_rel)^(-1/3) F_rel;
+!>  2. exponential-map return, backward Euler in Dp: Be~_n+1 = exp(-2 dt Dp_n+1) Be~_trial. Dp is coaxial with Be~
+!>     (isotropic flow), so trial and final Be~ share eigenvectors and the return acts on the principal logarithmic
+!>     elastic stretches e_a = ln(lambda_a):  e_a = e_a^trial - (dgamma/2) N_a(e),  N = G dev(b)/tau_bar, b_a = exp(2 e_a),
+!>     together with the flow rule in logarithmic form (overflow-free):
+!>        ln sinh(tau_bar/tau_0) = ln(dgamma) + ln(eta_0r/tau_0) + mu p/tau_0 + S(gamma_p,n + dgamma) - ln(dt),
+!>     i.e. dgamma = dt tau_bar/eta at the end of the increment (fully implicit, softening included).
+!>     Unknowns (e_1, e_2, e_3, ln dgamma), local Newton with line search, started from a bracketed scalar
+!>     small-strain radial-return predictor. sum(e_a) = 0 is kept exactly, so det(Be~) = 1 to round-off.
+!> Consistent tangent (Abaqus DDSDDE, Jaumann rate of Kirchhoff stress over J): central-difference perturbation of
+!> F_n+1 (Miehe 1996, Sun et al. 2008): F+- = (I +- eps/2 (e_i e_j^T + e_j e_i^T)) F_n+1, column ij =
+!> (tau(F+) - tau(F-)) / (2 J eps), tau = J sigma, eps = 1e-6.
+module leonov
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use ldfcz_kinds, only: dp
+  use leonov_parameters, only: leonov_props, leonov_dgamma_max
+  implicit none
+  private
+  public :: leonov_state, leonov_update, leonov_elastic_tangent
+  public :: leonov_state_from_statev, leonov_state_to_statev
+  public :: leonov_log_r_gamma, leonov_log_x_over_sinh, leonov_ln_sinh
+  public :: leonov_ok, leonov_step_too_large, leonov_no_convergence, leonov_bad_input
+  public :: voigt_i, voigt_j
+
+  integer, parameter :: leonov_ok = 0              !< converged, increment accurate
+  integer, parameter :: leonov_step_too_large = 1  !< converged and valid, but dgamma > leonov_dgamma_max
+  integer, parameter :: leonov_no_convergence = 2  !< local Newton failed: outputs are the old state
+  integer, parameter :: leonov_bad_input = 3       !< det F <= 0, non-finite or absurd F or state: old state kept
+
+  !> Abaqus Voigt order 11, 22, 33, 12, 13, 23.
+  integer, parameter :: voigt_i(6) = [1, 2, 3, 1, 1, 2]
+  integer, parameter :: voigt_j(6) = [1, 2, 3, 2, 3, 3]
+
+  real(dp), parameter :: identity(3, 3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, &
+                                                   0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
+  real(dp), parameter :: third = 1.0_dp / 3.0_dp
+  real(dp), parameter :: q_elastic = 1.0e-13_dp    !< below this |dev Be~| the increment is treated as elastic
+  real(dp), parameter :: eps_tangent = 1.0e-6_dp   !< perturbation of the tangent
+  real(dp), parameter :: tol_local = 1.0e-14_dp    !< local Newton tolerance (log-strain units)
+  real(dp), parameter :: tol_stall = 1.0e-10_dp    !< accepted when the line search stalls at round-off
+  integer, parameter :: max_newton = 60
+
+  !> State of one material point (spatial frame of the current configuration).
+  type :: leonov_state
+    real(dp) :: be(3, 3) = identity   !< isochoric elastic left Cauchy-Green tensor Be~ (det = 1)
+    real(dp) :: gamma_p = 0.0_dp      !< equivalent plastic strain gamma_p (Eq. 41)
+    real(dp) :: tau_bar = 0.0_dp      !< output: equivalent stress tau_bar (MPa), Eq. 40
+    real(dp) :: eta = 0.0_dp          !< output: viscosity eta (MPa s), Eq. 37
+    real(dp) :: s_soft = 0.0_dp       !< output: state parameter S = S_a R_gamma (Eq. 41)
+    real(dp) :: gamma_dot = 0.0_dp    !< output: equivalent plastic rate dgamma/dt (1/s)
+    real(dp) :: dgamma = 0.0_dp       !< increment of gamma_p in the last update (not stored in STATEV)
+  end type leonov_state
+
+contains
+
+  ! ------------------------------------------------------------------------------------------------------------
+  ! State vector layout (docs/umat.md): 1-6 Be~ - I (11,22,33,12,13,23), 7 gamma_p, 8 tau_bar, 9 eta, 10 S,
+  ! 11 plastic rate. All zero = virgin state (Be~ = I, gamma_p = 0).
+  ! ------------------------------------------------------------------------------------------------------------
+
+  !> State from a STATEV array (at least 11 entries).
+  pure function leonov_state_from_statev(statev) result(st)
+    real(dp), intent(in) :: statev(:)   !< state variables, layout above
+    type(leonov_state) :: st
+    integer :: k
+    st%be = identity
+    do k = 1, 6
+      st%be(voigt_i(k), voigt_j(k)) = st%be(voigt_i(k), voigt_j(k)) + statev(k)
+      st%be(voigt_j(k), voigt_i(k)) = st%be(voigt_i(k), voigt_j(k))
+    end do
+    st%gamma_p = statev(7)
+    st%tau_bar = statev(8)
+    st%eta = statev(9)
+    st%s_soft = statev(10)
+    st%gamma_dot = statev(11)
+  end function leonov_state_from_statev
+
+  !> Write a state into STATEV(1:11).
+  pure subroutine leonov_state_to_statev(st, statev)
+    type(leonov_state), intent(in) :: st    !< state
+    real(dp), intent(inout) :: statev(:)    !< state variables, layout above
+    integer :: k
+    do k = 1, 6
+      statev(k) = st%be(voigt_i(k), voigt_j(k)) - identity(voigt_i(k), voigt_j(k))
+    end do
+    statev(7) = st%gamma_p
+    statev(8) = st%tau_bar
+    statev(9) = st%eta
+    statev(10) = st%s_soft
+    statev(11) = st%gamma_dot
+  end subroutine leonov_state_to_statev
+
+  ! ------------------------------------------------------------------------------------------------------------
+  ! Overflow-safe scalar functions
+  ! ------------------------------------------------------------------------------------------------------------
+
+  !> softplus(x) = ln(1 + exp(x)) without overflow.
+  elemental real(dp) function softplus(x)
+    real(dp), intent(in) :: x
+    softplus = max(x, 0.0_dp) + log1p_exp_neg(abs(x))
+  end function softplus
+
+  !> ln(1 + exp(-y)) for y >= 0.
+  elemental real(dp) function log1p_exp_neg(y)
+    real(dp), intent(in) :: y
+    if (y > 745.0_dp) then
+      log1p_exp_neg = 0.0_dp
+    else
+      log1p_exp_neg = log(1.0_dp + exp(-y))
+      if (y > 30.0_dp) log1p_exp_neg = exp(-y)
+    end if
+  end function log1p_exp_neg
+
+  !> logistic(x) = 1/(1 + exp(-x)) without overflow.
+  elemental real(dp) function logistic(x)
+    real(dp), intent(in) :: x
+    if (x >= 0.0_dp) then
+      logistic = 1.0_dp / (1.0_dp + exp(-min(x, 745.0_dp)))
+    else
+      logistic = exp(max(x, -745.0_dp)) / (1.0_dp + exp(max(x, -745.0_dp)))
+    end if
+  end function logistic
+
+  !> ln R_gamma(gamma_p) of Eq. 42 in log space:
+  !> ln R = ((r2 - 1)/r1) [softplus(r1 (ln r0 + gamma_p)) - softplus(r1 ln r0)]; finite for every finite gamma_p
+  !> (the printed form overflows for gamma_p > ~3.5 with r1 = 200).
+  elemental real(dp) function leonov_log_r_gamma(p, gamma_p)
+    type(leonov_props), intent(in) :: p   !< properties (r0, r1, r2)
+    real(dp), intent(in) :: gamma_p       !< equivalent plastic strain
+    real(dp) :: lr0
+    lr0 = log(p%r0)
+    leonov_log_r_gamma = ((p%r2 - 1.0_dp) / p%r1) * (softplus(p%r1 * (lr0 + gamma_p)) - softplus(p%r1 * lr0))
+  end function leonov_log_r_gamma
+
+  !> S(gamma_p) = S_a R_gamma (Eq. 41) and dS/dgamma_p.
+  elemental subroutine softening(p, gamma_p, s, ds)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: gamma_p
+    real(dp), intent(out) :: s, ds
+    real(dp) :: r
+    r = exp(max(leonov_log_r_gamma(p, gamma_p), -700.0_dp))
+    s = p%s_a * r
+    ds = p%s_a * r * (p%r2 - 1.0_dp) * logistic(p%r1 * (log(p%r0) + gamma_p))
+  end subroutine softening
+
+  !> ln sinh(x) for x > 0 without overflow.
+  elemental real(dp) function leonov_ln_sinh(x)
+    real(dp), intent(in) :: x   !< argument, > 0
+    if (x <= tiny(1.0_dp)) then
+      leonov_ln_sinh = log(tiny(1.0_dp))
+    else if (x > 20.0_dp) then
+      leonov_ln_sinh = x - log(2.0_dp) + log(1.0_dp - exp(-2.0_dp * x))
+    else if (x < 1.0e-4_dp) then
+      leonov_ln_sinh = log(x) + x * x / 6.0_dp
+    else
+      leonov_ln_sinh = log(sinh(x))
+    end if
+  end function leonov_ln_sinh
+
+  !> ln(x / sinh(x)) for x >= 0 (the Eyring factor of Eq. 37), overflow-free.
+  elemental real(dp) function leonov_log_x_over_sinh(x)
+    real(dp), intent(in) :: x   !< argument tau_bar/tau_0 >= 0
+    if (x < 1.0e-4_dp) then
+      leonov_log_x_over_sinh = -x * x / 6.0_dp
+    else
+      leonov_log_x_over_sinh = log(x) - leonov_ln_sinh(x)
+    end if
+  end function leonov_log_x_over_sinh
+
+  !> coth(x) for x > 0.
+  elemental real(dp) function coth(x)
+    real(dp), intent(in) :: x
+    if (x > 20.0_dp) then
+      coth = 1.0_dp
+    else
+      coth = 1.0_dp / tanh(max(x, tiny(1.0_dp)))
+    end if
+  end function coth
+
+  ! ------------------------------------------------------------------------------------------------------------
+  ! Small tensor algebra
+  ! ------------------------------------------------------------------------------------------------------------
+
+  pure real(dp) function det3(a)
+    real(dp), intent(in) :: a(3, 3)
+    det3 = a(1, 1) * (a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)) - a(1, 2) * (a(2, 1) * a(3, 3) - a(2, 3) * a(3, 1)) &
+         + a(1, 3) * (a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1))
+  end function det3
+
+  !> Inverse of a 3x3 matrix with known nonzero determinant.
+  pure function inv3(a, det) result(b)
+    real(dp), intent(in) :: a(3, 3), det
+    real(dp) :: b(3, 3)
+    b(1, 1) = a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)
+    b(1, 2) = a(1, 3) * a(3, 2) - a(1, 2) * a(3, 3)
+    b(1, 3) = a(1, 2) * a(2, 3) - a(1, 3) * a(2, 2)
+    b(2, 1) = a(2, 3) * a(3, 1) - a(2, 1) * a(3, 3)
+    b(2, 2) = a(1, 1) * a(3, 3) - a(1, 3) * a(3, 1)
+    b(2, 3) = a(1, 3) * a(2, 1) - a(1, 1) * a(2, 3)
+    b(3, 1) = a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1)
+    b(3, 2) = a(1, 2) * a(3, 1) - a(1, 1) * a(3, 2)
+    b(3, 3) = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)
+    b = b / det
+  end function inv3
+
+  pure function dev3(a) result(b)
+    real(dp), intent(in) :: a(3, 3)
+    real(dp) :: b(3, 3)
+    b = a - (third * (a(1, 1) + a(2, 2) + a(3, 3))) * identity
+  end function dev3
+
+  !> Eigenvalues and orthonormal eigenvectors (columns of v) of a symmetric 3x3 matrix, cyclic Jacobi.
+  pure subroutine sym3_eigen(a, lam, v)
+    real(dp), intent(in) :: a(3, 3)
+    real(dp), intent(out) :: lam(3), v(3, 3)
+    real(dp) :: b(3, 3), r(3, 3), theta, t, c, s, scale
+    integer :: sweep, ip, iq
+    b = 0.5_dp * (a + transpose(a))
+    v = identity
+    scale = maxval(abs(b))
+    if (scale > 0.0_dp) then
+      do sweep = 1, 50
+        if (abs(b(1, 2)) + abs(b(1, 3)) + abs(b(2, 3)) <= 1.0e-18_dp * scale) exit
+        do ip = 1, 2
+          do iq = ip + 1, 3
+            if (abs(b(ip, iq)) <= 1.0e-19_dp * scale) cycle
+            theta = (b(iq, iq) - b(ip, ip)) / (2.0_dp * b(ip, iq))
+            if (abs(theta) > 1.0e150_dp) then
+              t = 0.5_dp / theta
+            else
+              t = sign(1.0_dp, theta) / (abs(theta) + sqrt(theta * theta + 1.0_dp))
+            end if
+            c = 1.0_dp / sqrt(t * t + 1.0_dp)
+            s = t * c
+            r = identity
+            r(ip, ip) = c
+            r(iq, iq) = c
+            r(ip, iq) = s
+            r(iq, ip) = -s
+            b = matmul(transpose(r), matmul(b, r))
+            b(ip, iq) = 0.0_dp
+            b(iq, ip) = 0.0_dp
+            v = matmul(v, r)
+          end do
+        end do
+      end do
+    end if
+    lam = [b(1, 1), b(2, 2), b(3, 3)]
+  end subroutine sym3_eigen
+
+  !> Solve the 4x4 system a x = rhs by Gaussian elimination with partial pivoting; ok = .false. if singular.
+  pure subroutine solve4(a, rhs, x, ok)
+    real(dp), intent(in) :: a(4, 4), rhs(4)
+    real(dp), intent(out) :: x(4)
+    logical, intent(out) :: ok
+    real(dp) :: m(4, 5), row(5), f
+    integer :: k, i, piv
+    m(:, 1:4) = a
+    m(:, 5) = rhs
+    ok = .false.
+    x = 0.0_dp
+    do k = 1, 4
+      piv = k - 1 + maxloc(abs(m(k:4, k)), dim=1)
+      if (.not. (abs(m(piv, k)) > 0.0_dp)) return
+      if (piv /= k) then
+        row = m(k, :)
+        m(k, :) = m(piv, :)
+        m(piv, :) = row
+      end if
+      do i = k + 1, 4
+        f = m(i, k) / m(k, k)
+        m(i, k:5) = m(i, k:5) - f * m(k, k:5)
+      end do
+    end do
+    do k = 4, 1, -1
+      x(k) = (m(k, 5) - dot_product(m(k, k + 1:4), x(k + 1:4))) / m(k, k)
+    end do
+    ok = all(ieee_is_finite(x))
+  end subroutine solve4
+
+  ! ------------------------------------------------------------------------------------------------------------
+  ! Return map on the principal logarithmic elastic stretches
+  ! ------------------------------------------------------------------------------------------------------------
+
+  !> expm1(x) = exp(x) - 1 without cancellation (exp(x) - 1 = 2 t/(1 - t), t = tanh(x/2)).
+  elemental real(dp) function expm1(x)
+    real(dp), intent(in) :: x
+    real(dp) :: t
+    if (abs(x) < 1.0_dp) then
+      t = tanh(0.5_dp * x)
+      expm1 = 2.0_dp * t / (1.0_dp - t)
+    else
+      expm1 = exp(x) - 1.0_dp
+    end if
+  end function expm1
+
+  !> b = exp(2e), d = dev(b) (from differences b_a - b_c = b_c expm1(2(e_a - e_c)), accurate when the e_a are
+  !> close), q = sqrt(d.d/2) (tau_bar = G q, Eq. 40).
+  pure subroutine principal_measures(e, b, d, q)
+    real(dp), intent(in) :: e(3)
+    real(dp), intent(out) :: b(3), d(3), q
+    integer :: a, c
+    b = exp(2.0_dp * e)
+    d = 0.0_dp
+    do a = 1, 3
+      do c = 1, 3
+        if (c /= a) d(a) = d(a) + b(c) * expm1(2.0_dp * (e(a) - e(c)))
+      end do
+    end do
+    d = third * d
+    q = sqrt(0.5_dp * sum(d * d))
+  end subroutine principal_measures
+
+  !> d/dx ln(sinh(x)/x) = coth(x) - 1/x, smooth at x = 0.
+  elemental real(dp) function dlog_sinh_over_x(x)
+    real(dp), intent(in) :: x
+    if (x < 1.0e-3_dp) then
+      dlog_sinh_over_x = x / 3.0_dp - x**3 / 45.0_dp
+    else
+      dlog_sinh_over_x = coth(x) - 1.0_dp / x
+    end if
+  end function dlog_sinh_over_x
+
+  !> ln A(gamma) with A = eta_0r exp(mu p/tau_0) exp(S)/tau_0 (s): the Eyring flow rule is gamma_p_dot = sinh(x)/A.
+  elemental subroutine log_a(p, press, gamma_p, la, dla)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: press, gamma_p
+    real(dp), intent(out) :: la, dla    !< ln A and d ln A / d gamma_p
+    real(dp) :: s, ds
+    call softening(p, gamma_p, s, ds)
+    la = log(p%eta_0r / p%tau_0) + p%mu * press / p%tau_0 + s
+    dla = ds
+  end subroutine log_a
+
+  !> Scalar radial-return predictor (small elastic strain): tau = tau_tr - G dgamma with the log flow rule;
+  !> g(u) = ln sinh(tau/tau_0) - u - ln A(gamma_n + e^u) + ln dt = 0, u = ln dgamma, bracketed Newton/bisection.
+  pure subroutine predictor(p, tau_tr, press, dt, gamma_n, u)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: tau_tr, press, dt, gamma_n
+    real(dp), intent(out) :: u
+    real(dp) :: u_lo, u_hi, g, dg, la, dla, un
+    integer :: k
+    u_hi = log(tau_tr / p%g)
+    call log_a(p, press, gamma_n, la, dla)
+    u = min(log(dt) + leonov_ln_sinh(tau_tr / p%tau_0) - la, u_hi - log(2.0_dp))
+    u_lo = u
+    do k = 1, 200
+      call g_of(u_lo, g, dg)
+      if (g > 0.0_dp) exit
+      u_hi = u_lo
+      u_lo = u_lo - 5.0_dp * k
+    end do
+    u = u_lo
+    do k = 1, 200
+      call g_of(u, g, dg)
+      if (g > 0.0_dp) then
+        u_lo = u
+      else
+        u_hi = u
+      end if
+      un = u - g / dg
+      if (.not. (un > u_lo .and. un < u_hi)) un = 0.5_dp * (u_lo + u_hi)
+      if (abs(un - u) <= 1.0e-12_dp * max(1.0_dp, abs(u)) .or. u_hi - u_lo <= 1.0e-12_dp) then
+        u = un
+        exit
+      end if
+      u = un
+    end do
+
+  contains
+
+    pure subroutine g_of(uu, gg, dgg)
+      real(dp), intent(in) :: uu
+      real(dp), intent(out) :: gg, dgg
+      real(dp) :: dgam, tau, lau, dlau
+      dgam = exp(min(uu, 50.0_dp))
+      tau = tau_tr - p%g * dgam
+      call log_a(p, press, gamma_n + dgam, lau, dlau)
+      if (tau <= 0.0_dp) then
+        gg = -huge(1.0_dp)
+        dgg = -1.0_dp
+        return
+      end if
+      gg = leonov_ln_sinh(tau / p%tau_0) - uu - lau + log(dt)
+      dgg = -coth(tau / p%tau_0) * p%g * dgam / p%tau_0 - 1.0_dp - dgam * dlau
+    end subroutine g_of
+  end subroutine predictor
+
+  !> Residual and Jacobian of the local problem in x = (e_1, e_2, e_3, u = ln dgamma):
+  !>   r_a = e_a - e_a^tr + phi d_a,  phi = dt G/(2 eta) = (dt G/(2 tau_0)) exp(-ln A) sinh(x)/x,  x = tau_bar/tau_0
+  !>   (dgamma/2 N_a = dt Dp_a: the viscosity form stays smooth when tau_bar -> 0),
+  !>   r_4 = ln sinh(x) - u - ln A(gamma_n + e^u) + ln dt  (Eq. 37 with dgamma = dt tau_bar/eta).
+  pure subroutine local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: etr(3), press, dt, gamma_n, x(4)
+    real(dp), intent(out) :: r(4), jac(4, 4), norm
+    logical, intent(out) :: ok
+    real(dp) :: b(3), d(3), q, dgam, xs, la, dla, dxs(3), lphi, phi, dlx
+    integer :: a, c
+    ok = .false.
+    r = 0.0_dp
+    jac = 0.0_dp
+    norm = huge(1.0_dp)
+    if (any(abs(x(1:3)) > 50.0_dp) .or. x(4) > 50.0_dp) return
+    call principal_measures(x(1:3), b, d, q)
+    if (q <= tiny(1.0_dp) * 1.0e10_dp) return
+    dgam = exp(x(4))
+    xs = p%g * q / p%tau_0
+    call log_a(p, press, gamma_n + dgam, la, dla)
+    lphi = log(dt * p%g / (2.0_dp * p%tau_0)) - la - leonov_log_x_over_sinh(xs)
+    if (lphi > 600.0_dp) return
+    phi = exp(lphi)
+    dlx = dlog_sinh_over_x(xs)
+    dxs = (p%g / p%tau_0) * b * d / q
+    r(1:3) = x(1:3) - etr + phi * d
+    r(4) = leonov_ln_sinh(xs) - x(4) - la + log(dt)
+    do a = 1, 3
+      do c = 1, 3
+        jac(a, c) = phi * (2.0_dp * b(c) * (merge(1.0_dp, 0.0_dp, a == c) - third) + d(a) * dlx * dxs(c))
+      end do
+      jac(a, a) = jac(a, a) + 1.0_dp
+      jac(a, 4) = -phi * d(a) * dla * dgam
+    end do
+    jac(4, 1:3) = coth(xs) * dxs
+    jac(4, 4) = -1.0_dp - dgam * dla
+    ! norm in log-strain units: r4 times the larger of d tau/d r4 / (2 G) and d(dgamma)/d u / 2
+    norm = max(maxval(abs(r(1:3))), abs(r(4)) * max(p%tau_0 * tanh(xs) / (2.0_dp * p%g), 0.5_dp * dgam))
+    ok = ieee_is_finite(norm) .and. all(ieee_is_finite(jac))
+  end subroutine local_residual
+
+  !> Implicit exponential-map return on the principal log elastic stretches (see the module header).
+  pure subroutine return_map(p, etr, press, dt, gamma_n, e, dgamma, stat)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: etr(3), press, dt, gamma_n
+    real(dp), intent(out) :: e(3), dgamma
+    integer, intent(out) :: stat
+    real(dp) :: b(3), d(3), q_tr, tau_tr, u, tau, x(4), xt(4), r(4), jac(4, 4), dx(4), norm, norm_t, alpha, sc
+    logical :: ok, accepted
+    integer :: it, ls
+
+    stat = leonov_ok
+    e = etr
+    dgamma = 0.0_dp
+    call principal_measures(etr, b, d, q_tr)
+    if (.not. (dt > 0.0_dp) .or. q_tr <= q_elastic) return
+    tau_tr = p%g * q_tr
+    call predictor(p, tau_tr, press, dt, gamma_n, u)
+    tau = max(tau_tr - p%g * exp(u), 1.0e-12_dp * tau_tr)
+    x(1:3) = etr * (tau / tau_tr)
+    x(4) = u
+    call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+    if (.not. ok) then
+      x(1:3) = etr
+      x(4) = u
+      call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+      if (.not. ok) then
+        stat = leonov_no_convergence
+        return
+      end if
+    end if
+    do it = 1, max_newton
+      if (norm <= tol_local * max(1.0_dp, maxval(abs(etr)))) exit
+      call solve4(jac, -r, dx, ok)
+      if (.not. ok) then
+        stat = leonov_no_convergence
+        return
+      end if
+      sc = max(maxval(abs(dx(1:3))) / 0.5_dp, abs(dx(4)) / 5.0_dp, 1.0_dp)
+      dx = dx / sc
+      alpha = 1.0_dp
+      accepted = .false.
+      do ls = 1, merge(3, 30, norm <= tol_stall)
+        xt = x + alpha * dx
+        call local_residual(p, etr, press, dt, gamma_n, xt, r, jac, norm_t, ok)
+        if (ok .and. norm_t < (1.0_dp - 1.0e-4_dp * alpha) * norm) then
+          accepted = .true.
+          exit
+        end if
+        alpha = 0.5_dp * alpha
+      end do
+      if (.not. accepted) then
+        ! round-off floor: accept if already tight, otherwise fail
+        call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+        if (ok .and. norm <= tol_stall) exit
+        stat = leonov_no_convergence
+        return
+      end if
+      x = xt
+      norm = norm_t
+      if (it == max_newton .and. norm > tol_stall) then
+        stat = leonov_no_convergence
+        return
+      end if
+    end do
+    e = x(1:3) - third * sum(x(1:3))
+    dgamma = exp(x(4))
+  end subroutine return_map
+
+  ! ------------------------------------------------------------------------------------------------------------
+  ! Update of one material point
+  ! ------------------------------------------------------------------------------------------------------------
+
+  !> State update and Kirchhoff stress for F_n -> F_n+1 in time dt.
+  pure subroutine kirchhoff_update(p, f0, f1, dt, old, new, tau_k, stat)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: f0(3, 3), f1(3, 3), dt
+    type(leonov_state), intent(in) :: old
+    type(leonov_state), intent(out) :: new
+    real(dp), intent(out) :: tau_k(3, 3)
+    integer, intent(out) :: stat
+    real(dp) :: j0, j1, frel(3, 3), ft(3, 3), betr(3, 3), lam(3), v(3, 3), etr(3), e(3), press, dgamma, detb
+    real(dp) :: be(3, 3), bt(3, 3), sigma(3, 3), la, dla, s, ds, x
+    integer :: a
+
+    new = old
+    tau_k = 0.0_dp
+    stat = leonov_bad_input
+    if (.not. (all(ieee_is_finite(f0)) .and. all(ieee_is_finite(f1)) .and. all(ieee_is_finite(old%be)))) return
+    if (maxval(abs(f0)) > 1.0e50_dp .or. maxval(abs(f1)) > 1.0e50_dp .or. maxval(abs(old%be)) > 1.0e50_dp) return
+    if (.not. ieee_is_finite(old%gamma_p) .or. .not. ieee_is_finite(dt)) return
+    j0 = det3(f0)
+    j1 = det3(f1)
+    if (.not. (j0 > 1.0e-50_dp .and. j1 > 1.0e-50_dp)) return
+    detb = det3(old%be)
+    if (.not. (detb > 1.0e-50_dp)) return
+    ! elastic predictor (exact for the elastic part of Eq. 35)
+    frel = matmul(f1, inv3(f0, j0))
+    ft = frel * (j1 / j0)**(-third)
+    betr = matmul(ft, matmul(old%be * detb**(-third), transpose(ft)))
+    if (.not. all(ieee_is_finite(betr))) return
+    call sym3_eigen(betr, lam, v)
+    if (.not. all(lam > 0.0_dp)) return
+    etr = 0.5_dp * log(lam)
+    etr = etr - third * sum(etr)
+    if (maxval(abs(etr)) > 25.0_dp) return
+    ! p = -tr(sigma)/3 = -kappa (J - 1) (Eq. 38; the hardening and driving deviators are traceless)
+    press = -p%kappa * (j1 - 1.0_dp)
+    call return_map(p, etr, press, dt, old%gamma_p, e, dgamma, stat)
+    if (stat /= leonov_ok) return
+    be = 0.0_dp
+    do a = 1, 3
+      be = be + exp(2.0_dp * e(a)) * spread(v(:, a), 2, 3) * spread(v(:, a), 1, 3)
+    end do
+    bt = j1**(-2.0_dp * third) * matmul(f1, transpose(f1))
+    ! Eqs. 31-33
+    sigma = p%g * dev3(be) + p%kappa * (j1 - 1.0_dp) * identity + p%g_r * dev3(bt)
+    tau_k = j1 * sigma
+    new%be = be
+    new%gamma_p = old%gamma_p + dgamma
+    new%dgamma = dgamma
+    new%tau_bar = p%g * sqrt(0.5_dp * sum(dev3(be)**2))
+    call softening(p, new%gamma_p, s, ds)
+    new%s_soft = s
+    call log_a(p, press, new%gamma_p, la, dla)
+    x = new%tau_bar / p%tau_0
+    new%eta = exp(min(la + log(p%tau_0) + leonov_log_x_over_sinh(x), 700.0_dp))
+    if (dt > 0.0_dp) then
+      new%gamma_dot = dgamma / dt
+    else
+      new%gamma_dot = 0.0_dp
+    end if
+    stat = leonov_ok
+  end subroutine kirchhoff_update
+
+  !> Isotropic small-strain tangent kappa I x I + 2 (G + G_r) I_dev in Abaqus Voigt form (engineering shear).
+  pure function leonov_elastic_tangent(p) result(c)
+    type(leonov_props), intent(in) :: p   !< properties
+    real(dp) :: c(6, 6)
+    real(dp) :: gt
+    integer :: k
+    gt = p%g + p%g_r
+    c = 0.0_dp
+    c(1:3, 1:3) = p%kappa - 2.0_dp * third * gt
+    do k = 1, 3
+      c(k, k) = p%kappa + 4.0_dp * third * gt
+      c(k + 3, k + 3) = gt
+    end do
+  end function leonov_elastic_tangent
+
+  !> One increment of the compressible Leonov model.
+  !> stat: leonov_ok; leonov_step_too_large (results valid, dgamma > leonov_dgamma_max: ask for a smaller step);
+  !> leonov_no_convergence or leonov_bad_input (new = old, sigma = 0, ddsdde elastic: the caller must cut back).
+  !> step_factor: suggested ratio of the next to the present time increment (< 1 on any trouble).
+  pure subroutine leonov_update(p, f0, f1, dt, old, new, sigma, stat, step_factor, ddsdde)
+    type(leonov_props), intent(in) :: p              !< validated properties
+    real(dp), intent(in) :: f0(3, 3)                 !< deformation gradient at t_n
+    real(dp), intent(in) :: f1(3, 3)                 !< deformation gradient at t_n+1
+    real(dp), intent(in) :: dt                       !< time increment (s)
+    type(leonov_state), intent(in) :: old            !< state at t_n
+    type(leonov_state), intent(out) :: new           !< state at t_n+1
+    real(dp), intent(out) :: sigma(3, 3)             !< Cauchy stress at t_n+1 (MPa)
+    integer, intent(out) :: stat                     !< status, see above
+    real(dp), intent(out) :: step_factor             !< suggested time step ratio
+    real(dp), intent(out), optional :: ddsdde(6, 6)  !< Abaqus tangent, order 11,22,33,12,13,23, engineering shear
+    real(dp) :: tau_k(3, 3), tp(3, 3), tm(3, 3), fp(3, 3), fm(3, 3), dlt(3, 3), j1
+    type(leonov_state) :: scratch
+    integer :: k, kk, stp, stm
+
+    sigma = 0.0_dp
+    if (present(ddsdde)) ddsdde = leonov_elastic_tangent(p)
+    call kirchhoff_update(p, f0, f1, dt, old, new, tau_k, stat)
+    if (stat /= leonov_ok) then
+      step_factor = 0.25_dp
+      return
+    end if
+    j1 = det3(f1)
+    sigma = tau_k / j1
+    if (new%dgamma > leonov_dgamma_max) then
+      stat = leonov_step_too_large
+      step_factor = max(0.1_dp, 0.9_dp * leonov_dgamma_max / new%dgamma)
+    else
+      step_factor = min(1.5_dp, max(1.0_dp, 0.9_dp * leonov_dgamma_max / max(new%dgamma, tiny(1.0_dp))))
+    end if
+    if (.not. present(ddsdde)) return
+    do k = 1, 6
+      dlt = 0.0_dp
+      dlt(voigt_i(k), voigt_j(k)) = 0.5_dp * eps_tangent
+      dlt(voigt_j(k), voigt_i(k)) = dlt(voigt_j(k), voigt_i(k)) + 0.5_dp * eps_tangent
+      fp = f1 + matmul(dlt, f1)
+      fm = f1 - matmul(dlt, f1)
+      call kirchhoff_update(p, f0, fp, dt, old, scratch, tp, stp)
+      call kirchhoff_update(p, f0, fm, dt, old, scratch, tm, stm)
+      if (stp /= leonov_ok .or. stm /= leonov_ok) then
+        ddsdde = leonov_elastic_tangent(p)
+        new = old
+        sigma = 0.0_dp
+        stat = leonov_no_convergence
+        step_factor = 0.25_dp
+        return
+      end if
+      do kk = 1, 6
+        ddsdde(kk, k) = (tp(voigt_i(kk), voigt_j(kk)) - tm(voigt_i(kk), voigt_j(kk))) / (2.0_dp * j1 * eps_tangent)
+      end do
+    end do
+  end subroutine leonov_update
+
+end module leonov

@@ -1,0 +1,131 @@
+!     ldfcz: Abaqus/Standard UMAT of the compressible Leonov model
+!     (van den Bosch, Schreurs, Geers 2007, section 6, Eqs. 31-42).
+!     Thin adapter: checks sizes and properties, unpacks STATEV, calls
+!     the pure core (module leonov), packs STRESS, STATEV, DDSDDE.
+!
+!     PROPS (NPROPS = 10, Table 1 order): E (MPa), nu, S_a, eta_0r
+!       (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2.
+!     STATEV (NSTATV >= 11; all zero = virgin state):
+!       1-6  Be~ - I, order 11,22,33,12,13,23, spatial frame of the
+!            current configuration (pushed forward with
+!            F_rel = DFGRD1 DFGRD0^-1 here: the host need not rotate)
+!       7    gamma_p, equivalent plastic strain
+!       8    tau_bar (MPa), 9 eta (MPa s), 10 S = S_a R_gamma,
+!       11   plastic rate dgamma_p/dt (1/s)   (8-11 outputs only)
+!     NDI = 3 only: 3D (NSHR = 3, 11,22,33,12,13,23) and plane strain
+!       or axisymmetric (NSHR = 1, 11,22,33,12). Plane stress: XIT.
+!     Works from DFGRD0, DFGRD1 and DTIME; STRESS (input), STRAN,
+!       DSTRAN, DROT are not used. STRESS = Cauchy stress.
+!     DDSDDE: consistent tangent of the Jaumann rate of Kirchhoff
+!       stress over J, by central perturbation of DFGRD1 (module
+!       leonov); not symmetric in general: declare UNSYMM.
+!     SSE = G/2 (tr Be~ - 3) + kappa/2 (J-1)^2 + G_r/2 (tr B~ - 3);
+!       SPD += tau_bar dgamma_p; SCD unchanged.
+!     PNEWDT (written only to request a cutback): 0.25 if the local
+!       Newton fails or DFGRD1/STATEV are unusable (STRESS, STATEV
+!       then unchanged, DDSDDE isotropic elastic); < 1 when
+!       dgamma_p > 0.05 in the increment. Reentrant: no SAVE/COMMON.
+      SUBROUTINE UMAT(STRESS,STATEV,DDSDDE,SSE,SPD,SCD,RPL,DDSDDT,
+     1 DRPLDE,DRPLDT,STRAN,DSTRAN,TIME,DTIME,TEMP,DTEMP,PREDEF,DPRED,
+     2 CMNAME,NDI,NSHR,NTENS,NSTATV,PROPS,NPROPS,COORDS,DROT,PNEWDT,
+     3 CELENT,DFGRD0,DFGRD1,NOEL,NPT,LAYER,KSPT,JSTEP,KINC)
+      USE LEONOV_PARAMETERS, ONLY: LEONOV_PROPS,
+     1 LEONOV_PROPS_FROM_ARRAY, LEONOV_NPROPS, LEONOV_NSTATV
+      USE LEONOV, ONLY: LEONOV_STATE, LEONOV_UPDATE,
+     1 LEONOV_STATE_FROM_STATEV, LEONOV_STATE_TO_STATEV, LEONOV_OK,
+     2 LEONOV_STEP_TOO_LARGE, LEONOV_ELASTIC_TANGENT
+      INCLUDE 'ABA_PARAM.INC'
+      CHARACTER*80 CMNAME
+      INTEGER NDI, NSHR, NTENS, NSTATV, NPROPS, NOEL, NPT, LAYER
+      INTEGER KSPT, JSTEP, KINC
+      DOUBLE PRECISION STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL
+      DOUBLE PRECISION DDSDDT, DRPLDE, DRPLDT, STRAN, DSTRAN, TIME
+      DOUBLE PRECISION DTIME, TEMP, DTEMP, PREDEF, DPRED, PROPS
+      DOUBLE PRECISION COORDS, DROT, PNEWDT, CELENT, DFGRD0, DFGRD1
+      DIMENSION STRESS(NTENS),STATEV(NSTATV),DDSDDE(NTENS,NTENS),
+     1 DDSDDT(NTENS),DRPLDE(NTENS),STRAN(NTENS),DSTRAN(NTENS),
+     2 TIME(2),PREDEF(1),DPRED(1),PROPS(NPROPS),COORDS(3),DROT(3,3),
+     3 DFGRD0(3,3),DFGRD1(3,3),JSTEP(4)
+!
+      TYPE(LEONOV_PROPS) PR
+      TYPE(LEONOV_STATE) OLD, ANEW
+      DOUBLE PRECISION SIG(3,3), C6(6,6), FACTOR, BT(3,3), DETF
+      INTEGER ISTAT, K, L, INTV(1)
+      INTEGER, PARAMETER :: IV(6) = [1, 2, 3, 1, 1, 2]
+      INTEGER, PARAMETER :: JV(6) = [1, 2, 3, 2, 3, 3]
+      DOUBLE PRECISION REALV(1)
+      CHARACTER(LEN=8) CHARV(1)
+      CHARACTER(LEN=256) MSG
+!
+      INTV(1) = 0
+      REALV(1) = 0.0D0
+      CHARV(1) = ' '
+      IF (NPROPS .LT. LEONOV_NPROPS) THEN
+        WRITE (MSG, '(A,I0,A)') 'UMAT (Leonov): needs NPROPS = 10 '//
+     1   '(E, nu, S_a, eta_0r, tau_0, mu, G_r, r0, r1, r2), got ',
+     2   NPROPS, ' in *USER MATERIAL, CONSTANTS'
+        GO TO 900
+      END IF
+      IF (NSTATV .LT. LEONOV_NSTATV) THEN
+        WRITE (MSG, '(A,I0,A)') 'UMAT (Leonov): needs NSTATV >= 11 '//
+     1   '(*DEPVAR), got ', NSTATV, ''
+        GO TO 900
+      END IF
+      IF (NDI .NE. 3 .OR. (NSHR .NE. 1 .AND. NSHR .NE. 3)) THEN
+        WRITE (MSG, '(A,I0,A,I0,A)') 'UMAT (Leonov): supports NDI = 3'
+     1   //' with NSHR = 1 or 3 (3D, plane strain, axisymmetric); got'
+     2   //' NDI = ', NDI, ', NSHR = ', NSHR, ' (plane stress?)'
+        GO TO 900
+      END IF
+      CALL LEONOV_PROPS_FROM_ARRAY(PROPS(1:LEONOV_NPROPS), PR, ISTAT,
+     1 MSG)
+      IF (ISTAT .NE. 0) THEN
+        MSG = 'UMAT (Leonov): '//TRIM(MSG)
+        GO TO 900
+      END IF
+!
+      OLD = LEONOV_STATE_FROM_STATEV(STATEV(1:LEONOV_NSTATV))
+      CALL LEONOV_UPDATE(PR, DFGRD0, DFGRD1, DTIME, OLD, ANEW, SIG,
+     1 ISTAT, FACTOR, C6)
+      IF (ISTAT .NE. LEONOV_OK .AND. ISTAT .NE. LEONOV_STEP_TOO_LARGE)
+     1 THEN
+!       core failure: keep STRESS and STATEV, ask for a cutback
+        C6 = LEONOV_ELASTIC_TANGENT(PR)
+        DO L = 1, NTENS
+          DO K = 1, NTENS
+            DDSDDE(K, L) = C6(K, L)
+          END DO
+        END DO
+        PNEWDT = 0.25D0
+        RETURN
+      END IF
+      DO K = 1, NTENS
+        STRESS(K) = SIG(IV(K), JV(K))
+        DO L = 1, NTENS
+          DDSDDE(K, L) = C6(K, L)
+        END DO
+        DDSDDT(K) = 0.0D0
+        DRPLDE(K) = 0.0D0
+      END DO
+      CALL LEONOV_STATE_TO_STATEV(ANEW, STATEV(1:LEONOV_NSTATV))
+!     energies per unit volume
+      DETF = DFGRD1(1,1)*(DFGRD1(2,2)*DFGRD1(3,3)-DFGRD1(2,3)*
+     1 DFGRD1(3,2)) - DFGRD1(1,2)*(DFGRD1(2,1)*DFGRD1(3,3)-
+     2 DFGRD1(2,3)*DFGRD1(3,1)) + DFGRD1(1,3)*(DFGRD1(2,1)*
+     3 DFGRD1(3,2)-DFGRD1(2,2)*DFGRD1(3,1))
+      BT = MATMUL(DFGRD1, TRANSPOSE(DFGRD1)) * DETF**(-2.0D0/3.0D0)
+      SSE = 0.5D0*PR%G*(ANEW%BE(1,1)+ANEW%BE(2,2)+ANEW%BE(3,3)-3.0D0)
+     1 + 0.5D0*PR%KAPPA*(DETF-1.0D0)**2
+     2 + 0.5D0*PR%G_R*(BT(1,1)+BT(2,2)+BT(3,3)-3.0D0)
+      SPD = SPD + ANEW%TAU_BAR*ANEW%DGAMMA
+      IF (ISTAT .EQ. LEONOV_STEP_TOO_LARGE) THEN
+        IF (.NOT. (PNEWDT .GT. 0.0D0 .AND. PNEWDT .LT. FACTOR))
+     1   PNEWDT = FACTOR
+      END IF
+      RETURN
+!
+  900 CONTINUE
+      CALL STDB_ABQERR(-3, TRIM(MSG), INTV, REALV, CHARV)
+      CALL XIT()
+      RETURN
+      END SUBROUTINE UMAT
