@@ -29,7 +29,7 @@ module funit
   end interface assertFalse
 
   interface assertIsFinite
-    module procedure finite_s, finite_1, finite_2
+    module procedure finite_s
   end interface assertIsFinite
 
   character(len=:), allocatable :: current_test  !< name of the running test
@@ -494,19 +494,4 @@ contains
     if (.not. ieee_is_finite(x)) call fail('assertIsFinite', 'value is not finite', message, pf_file, pf_line)
   end subroutine finite_s
 
-  subroutine finite_1(x, message, pf_file, pf_line)
-    real(dp), intent(in) :: x(:)
-    character(len=*), intent(in), optional :: message
-    character(len=*), intent(in) :: pf_file
-    integer, intent(in) :: pf_line
-    if (.not. all(ieee_is_finite(x))) call fail('assertIsFinite', 'a value is not finite', message, pf_file, pf_line)
-  end subroutine finite_1
-
-  subroutine finite_2(x, message, pf_file, pf_line)
-    real(dp), intent(in) :: x(:, :)
-    character(len=*), intent(in), optional :: message
-    character(len=*), intent(in) :: pf_file
-    integer, intent(in) :: pf_line
-    if (.not. all(ieee_is_finite(x))) call fail('assertIsFinite', 'a value is not finite', message, pf_file, pf_line)
-  end subroutine finite_2
 end module funit

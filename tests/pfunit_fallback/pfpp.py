@@ -4,7 +4,7 @@
 It supports exactly the pFUnit syntax that ldfcz's suites use (see tests/pfunit_fallback/README.md):
 @test, @before, @after on argument-free module subroutines, and the assertion macros
 @assertEqual, @assertRelativelyEqual, @assertTrue, @assertFalse, @assertLessThan, @assertLessThanOrEqual,
-@assertGreaterThan, @assertGreaterThanOrEqual, @assertIsFinite, each possibly continued over lines with '&'.
+@assertGreaterThan, @assertGreaterThanOrEqual, @assertIsFinite, each on one line (as pFUnit requires).
 Anything else that starts with '@' is an error naming the file and line, so that a suite never silently
 drops a check.
 
@@ -95,17 +95,12 @@ def read_suite(path):
             if m and m.group(1).lower() != "procedure":
                 module = m.group(1)
         if stripped.startswith("@"):
-            # gather continuation lines of the macro
             text = strip_comment(line).rstrip()
             j = i
-            while text.endswith("&"):
-                j += 1
-                if j >= len(lines):
-                    raise PfError(f"{path}:{lineno}: continuation past the end of the file")
-                nxt = strip_comment(lines[j]).strip()
-                if nxt.startswith("&"):
-                    nxt = nxt[1:]
-                text = text[:-1] + " " + nxt
+            if text.endswith("&"):
+                # pFUnit 4's preprocessor reads an annotation or assertion from a single line only.
+                raise PfError(f"{path}:{lineno}: @-lines cannot be continued with '&' (pFUnit reads them on one "
+                              f"line): compute the values first, or write the assertion on one line")
             name, args = split_macro(text, path, lineno)
             key = name.lower()
             if key in ANNOTATIONS:
@@ -132,6 +127,9 @@ def read_suite(path):
             m = SUB_RE.match(line)
             if not m:
                 raise PfError(f"{path}:{pending[1]}: @{pending[0]} must precede a subroutine")
+            if m.group(1).lower() in ("initialize", "finalize"):
+                raise PfError(f"{path}:{lineno}: a pFUnit procedure must not be called '{m.group(1)}' "
+                              f"(it clashes with funit's own)")
             {"test": tests, "before": befores, "after": afters}[pending[0]].append(m.group(1))
             pending = None
         out.append(line)
