@@ -1,0 +1,449 @@
+!> The discretised model the Newton solver works on: dof numbering (ndim dofs per node, prescribed dofs eliminated),
+!> per-element converged and trial state, the threaded element loop calling UEL/UMAT exactly as Abaqus/Standard
+!> does (CONVENTIONS.md), and the assembly into the sparse system.
+module analysis_core
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use ldfcz_kinds, only: dp, i8
+  use model_types, only: model_t, etype_c3d8, etype_cpe4, etype_user
+  use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
+    SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
+  use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
+    sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
+  use user_routines, only: user_routines_t
+  implicit none
+  private
+  public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
+  public :: analysis_restore, pnewdt_large, elem_type_name
+
+  real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
+
+  !> State of one element (integration-point arrays of continuum elements, SVARS and ENERGY of user elements).
+  type :: elem_state_t
+    real(dp), allocatable :: stress(:, :)  !< (ntens, nip) Cauchy stress
+    real(dp), allocatable :: stran(:, :)   !< (ntens, nip) strain
+    real(dp), allocatable :: statev(:, :)  !< (nstatv, nip)
+    real(dp), allocatable :: eip(:, :)     !< (3, nip) SSE, SPD, SCD per unit volume
+    real(dp), allocatable :: svars(:)      !< user element SVARS
+    real(dp) :: energy(8) = 0.0_dp         !< user element ENERGY; continuum: (2) SSE and (4) SPD integrals
+  end type elem_state_t
+
+  type :: analysis_t
+    integer :: ndim = 3                         !< 2 or 3
+    integer :: ndof = 0                         !< ndim * nnode
+    integer :: neq = 0                          !< free equations
+    logical :: symmetric = .true.               !< LDL^T with symmetrised element matrices
+    integer, allocatable :: elem_ptr(:)         !< (nelem+1) into elem_dof
+    integer, allocatable :: elem_dof(:)         !< global dof of each element dof
+    integer, allocatable :: elem_eq(:)          !< equation of each element dof (0: prescribed/unused)
+    integer, allocatable :: eq(:)               !< (ndof) equation of each dof, 0 if prescribed or unused
+    logical, allocatable :: used(:)             !< (ndof) dof attached to an element
+    logical, allocatable :: prescribed(:)       !< (ndof)
+    integer, allocatable :: elem_nip(:)         !< integration points per element (continuum)
+    character(len=4), allocatable :: elem_tname(:) !< 'C3D8', 'CPE4' or 'U'
+    type(solid_material_t), allocatable :: mats(:)  !< per section
+    type(elem_state_t), allocatable :: conv(:)  !< converged state
+    type(elem_state_t), allocatable :: trial(:) !< state of the last element loop
+    real(dp), allocatable :: u(:)               !< current total displacement
+    real(dp), allocatable :: u_conv(:)          !< converged displacement
+    real(dp), allocatable :: fint(:)            !< internal force (all dofs)
+    real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
+    type(sparse_system_t) :: sys                !< sparse tangent
+    logical :: sys_ready = .false.
+    type(user_routines_t) :: routines           !< UEL and UMAT in use
+    integer :: max_ndofel = 0
+    real(dp) :: t_factor_done = 0.0_dp          !< factorization seconds of earlier sparse systems (pattern changes)
+    real(dp) :: t_solve_done = 0.0_dp           !< solve seconds of earlier sparse systems
+    real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
+    integer :: n_factor_done = 0                !< factorizations of earlier sparse systems
+    real(dp) :: t_assembly = 0.0_dp             !< wall seconds in element loops
+    integer :: n_assembly = 0
+  end type analysis_t
+
+contains
+
+  pure function elem_type_name(kind) result(s)
+    integer, intent(in) :: kind
+    character(len=4) :: s
+    select case (kind)
+    case (etype_c3d8)
+      s = 'C3D8'
+    case (etype_cpe4)
+      s = 'CPE4'
+    case default
+      s = 'U'
+    end select
+  end function elem_type_name
+
+  !> Dof maps, materials and initial (zero) states.
+  subroutine analysis_init(an, model, routines, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data (filled)
+    type(model_t), intent(in) :: model                   !< the model
+    type(user_routines_t), intent(in) :: routines        !< UEL and UMAT to call
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact
+    character(len=16) :: b
+
+    stat = 0
+    errmsg = ''
+    an%routines = routines
+    an%ndim = model%ndim
+    an%ndof = model%ndim * model%nnode
+    allocate (an%elem_ptr(model%nelem + 1), an%elem_nip(model%nelem), an%elem_tname(model%nelem))
+    an%elem_ptr(1) = 1
+    an%elem_nip = 0
+    do ie = 1, model%nelem
+      nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+      an%elem_tname(ie) = elem_type_name(model%elem_kind(ie))
+      if (model%elem_kind(ie) == etype_user) then
+        nact = size(model%utypes(model%elem_utype(ie))%active)
+      else
+        nact = model%ndim
+      end if
+      an%elem_ptr(ie + 1) = an%elem_ptr(ie) + nn * nact
+    end do
+    allocate (an%elem_dof(an%elem_ptr(model%nelem + 1) - 1), an%used(an%ndof))
+    an%used = .false.
+    do ie = 1, model%nelem
+      k = an%elem_ptr(ie)
+      do a = model%conn_ptr(ie), model%conn_ptr(ie + 1) - 1
+        if (model%elem_kind(ie) == etype_user) then
+          iu = model%elem_utype(ie)
+          do j = 1, size(model%utypes(iu)%active)
+            if (model%utypes(iu)%active(j) > model%ndim) then
+              stat = 2
+              write (b, '(i0)') model%elem_id(ie)
+              errmsg = model%utypes(iu)%pos%file//': *USER ELEMENT: type '//trim(model%utypes(iu)%name)// &
+                ' has an active dof beyond the model dimension (element '//trim(b)//')'
+              return
+            end if
+            an%elem_dof(k) = (model%conn(a) - 1) * model%ndim + model%utypes(iu)%active(j)
+            k = k + 1
+          end do
+        else
+          do j = 1, model%ndim
+            an%elem_dof(k) = (model%conn(a) - 1) * model%ndim + j
+            k = k + 1
+          end do
+        end if
+      end do
+      an%used(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)) = .true.
+    end do
+    an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
+
+    ! materials per section
+    allocate (an%mats(max(1, model%nsection)))
+    an%symmetric = .true.
+    do is = 1, model%nsection
+      im = 0
+      do k = 1, model%nmat
+        if (model%materials(k)%name == model%sections(is)%material) im = k
+      end do
+      associate (mt => model%materials(im), sm => an%mats(is))
+        sm%thickness = model%sections(is)%thickness
+        sm%cmname = mt%given_name
+        if (mt%has_elastic) then
+          sm%kind = SOLID_MAT_ELASTIC
+          sm%e = mt%young
+          sm%nu = mt%poisson
+        else
+          sm%kind = SOLID_MAT_UMAT
+          sm%props = mt%props
+          sm%nstatv = mt%nstatv
+          sm%unsymm = mt%unsymm
+          if (mt%unsymm) an%symmetric = .false.
+          if (.not. associated(routines%umat)) then
+            stat = 2
+            errmsg = mt%pos%file//': *MATERIAL: material '//trim(mt%given_name)//' uses *USER MATERIAL but no '// &
+              'UMAT is available: give one with --user FILE'
+            return
+          end if
+          sm%umat => routines%umat
+        end if
+      end associate
+    end do
+    do iu = 1, model%nutype
+      if (model%utypes(iu)%unsymm .and. any(model%elem_utype == iu)) an%symmetric = .false.
+    end do
+    if (any(model%elem_kind == etype_user) .and. .not. associated(routines%uel)) then
+      stat = 2
+      errmsg = model%utypes(1)%pos%file//': *USER ELEMENT: user elements need a UEL: give one with --user FILE'
+      return
+    end if
+    do is = 1, model%nstep
+      if (model%steps(is)%unsymm) an%symmetric = .false.
+    end do
+
+    ! states
+    allocate (an%conv(model%nelem))
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) == etype_user) then
+        n = model%utypes(model%elem_utype(ie))%nsvars
+        allocate (an%conv(ie)%svars(n))
+        an%conv(ie)%svars = 0.0_dp
+      else
+        call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, ntens, ndi, nshr)
+        an%elem_nip(ie) = nip
+        is = model%elem_section(ie)
+        allocate (an%conv(ie)%stress(ntens, nip), an%conv(ie)%stran(ntens, nip), &
+          an%conv(ie)%statev(max(1, an%mats(is)%nstatv), nip), an%conv(ie)%eip(3, nip))
+        an%conv(ie)%stress = 0.0_dp
+        an%conv(ie)%stran = 0.0_dp
+        an%conv(ie)%statev = 0.0_dp
+        an%conv(ie)%eip = 0.0_dp
+      end if
+      an%conv(ie)%energy = 0.0_dp
+    end do
+    an%trial = an%conv
+    allocate (an%u(an%ndof), an%u_conv(an%ndof), an%fint(an%ndof), an%fe(an%elem_ptr(model%nelem + 1) - 1))
+    an%u = 0.0_dp
+    an%u_conv = 0.0_dp
+    an%fint = 0.0_dp
+    an%fe = 0.0_dp
+    allocate (an%prescribed(an%ndof), an%eq(an%ndof))
+    an%prescribed = .false.
+    an%eq = 0
+  end subroutine analysis_init
+
+  !> Equation numbers for the free dofs (an%prescribed set by the caller) and the sparse system (pattern,
+  !> METIS ordering, MUMPS analysis) when the set of free dofs changed.
+  subroutine analysis_number_equations(an, model, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer, allocatable :: eq_new(:), eq_node(:)
+    integer :: i, n
+    character(len=512) :: msg
+    stat = 0
+    errmsg = ''
+    allocate (eq_new(an%ndof))
+    eq_new = 0
+    n = 0
+    do i = 1, an%ndof
+      if (an%used(i) .and. .not. an%prescribed(i)) then
+        n = n + 1
+        eq_new(i) = n
+      end if
+    end do
+    if (an%sys_ready .and. all(eq_new == an%eq)) return
+    if (.not. an%sys_ready .and. n == 0 .and. all(eq_new == an%eq)) return
+    an%eq = eq_new
+    an%neq = n
+    if (an%sys_ready) then
+      ! the old system goes away with its timers: keep them for the summary
+      an%t_factor_done = an%t_factor_done + sparse_time_factor(an%sys)
+      an%t_solve_done = an%t_solve_done + sparse_time_solve(an%sys)
+      an%t_setup_done = an%t_setup_done + sparse_time_analysis(an%sys)
+      an%n_factor_done = an%n_factor_done + sparse_factor_count(an%sys)
+    end if
+    if (n == 0) then
+      ! every dof prescribed: only reactions to compute, no linear system
+      if (an%sys_ready) call sparse_destroy(an%sys)
+      an%sys_ready = .false.
+      return
+    end if
+    allocate (eq_node(n))
+    do i = 1, an%ndof
+      if (an%eq(i) > 0) eq_node(an%eq(i)) = (i - 1) / an%ndim + 1
+    end do
+    an%elem_eq = an%eq(an%elem_dof)
+    call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg)
+    if (stat /= 0) then
+      errmsg = 'sparse solver setup failed: '//trim(msg)
+      stat = 2
+      return
+    end if
+    an%sys_ready = .true.
+    if (.false.) print *, model%nnode
+  end subroutine analysis_number_equations
+
+  !> Element loop at the current estimate an%u (increment du = u - u_conv): every element gets a fresh copy of its
+  !> converged state; internal forces into an%fint, tangents into an%sys when want_k. pnewdt_min is the smallest
+  !> PNEWDT requested; stat /= 0 when an element failed (errmsg names it).
+  subroutine analysis_assemble(an, model, kstep, kinc, time, dtime, period, nlgeom, want_k, pnewdt_min, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(in) :: kstep                         !< step number
+    integer, intent(in) :: kinc                          !< increment number
+    real(dp), intent(in) :: time(2)                      !< step and total time at the start of the increment
+    real(dp), intent(in) :: dtime                        !< time increment
+    real(dp), intent(in) :: period                       !< step period
+    logical, intent(in) :: nlgeom                        !< geometric nonlinearity
+    logical, intent(in) :: want_k                        !< assemble the tangent
+    real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
+    integer, intent(out) :: stat                         !< 0 ok, 1 an element failed
+    character(len=:), allocatable, intent(out) :: errmsg !< message of the first failure
+    integer :: ie, n, k, fail_elem, st
+    real(dp), allocatable :: ke(:, :), fel(:)
+    real(dp) :: pn
+    character(len=256) :: msg, first_msg
+    integer(i8) :: c0, c1, rate
+
+    call system_clock(c0, rate)
+    stat = 0
+    errmsg = ''
+    pnewdt_min = pnewdt_large
+    fail_elem = huge(1)
+    first_msg = ''
+    if (want_k) call sparse_zero(an%sys)
+    !$omp parallel default(shared) private(ie, n, ke, fel, pn, st, msg)
+    allocate (ke(an%max_ndofel, an%max_ndofel), fel(an%max_ndofel))
+    !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min)
+    do ie = 1, model%nelem
+      n = an%elem_ptr(ie + 1) - an%elem_ptr(ie)
+      pn = pnewdt_large
+      call element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel(1:n), &
+        ke(1:n, 1:n), pn, st, msg)
+      if (st /= 0) then
+        !$omp critical (analysis_fail)
+        if (model%elem_id(ie) < fail_elem) then
+          fail_elem = model%elem_id(ie)
+          first_msg = msg
+        end if
+        !$omp end critical (analysis_fail)
+        fel(1:n) = 0.0_dp
+        ke(1:n, 1:n) = 0.0_dp
+      end if
+      pnewdt_min = min(pnewdt_min, pn)
+      an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
+      if (want_k) then
+        if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
+        call sparse_add_element(an%sys, ie, ke(1:n, 1:n))
+      end if
+    end do
+    !$omp end do
+    deallocate (ke, fel)
+    !$omp end parallel
+    an%fint = 0.0_dp
+    do k = 1, size(an%elem_dof)
+      an%fint(an%elem_dof(k)) = an%fint(an%elem_dof(k)) + an%fe(k)
+    end do
+    if (fail_elem /= huge(1)) then
+      stat = 1
+      errmsg = trim(first_msg)
+    end if
+    call system_clock(c1)
+    an%t_assembly = an%t_assembly + real(c1 - c0, dp) / real(rate, dp)
+    an%n_assembly = an%n_assembly + 1
+  end subroutine analysis_assemble
+
+  !> One element: UEL through the procedure pointer, or the continuum element with its material.
+  subroutine element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel, ke, pnewdt, &
+      stat, msg)
+    type(analysis_t), intent(inout) :: an
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: ie, n, kstep, kinc
+    real(dp), intent(in) :: time(2), dtime, period
+    logical, intent(in) :: nlgeom, want_k
+    real(dp), intent(out) :: fel(n), ke(n, n)
+    real(dp), intent(inout) :: pnewdt
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: msg
+    integer :: nn, a, iu, ip, mcrd, nsv
+    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 8), energy(8), svars(1)
+    real(dp) :: params(1), adlmag(1, 1), ddlmag(1, 1), e2(2)
+    real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
+    integer :: jdltyp(1, 1), lflags(5)
+    integer, allocatable :: jprops(:)
+    character(len=16) :: b
+
+    stat = 0
+    msg = ''
+    nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+    ue = an%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    due(:, 1) = ue - an%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    if (model%elem_kind(ie) == etype_user) then
+      iu = model%elem_utype(ie)
+      mcrd = model%utypes(iu)%mcrd
+      allocate (xc(mcrd, nn), predef(2, 1, nn))
+      do a = 1, nn
+        xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
+      end do
+      predef = 0.0_dp
+      ip = model%elem_uelprop(ie)
+      if (ip > 0) then
+        props = model%uelprops(ip)%props
+        jprops = model%uelprops(ip)%jprops
+      else
+        allocate (props(0), jprops(0))
+      end if
+      if (size(props) == 0) props = [0.0_dp]
+      if (size(jprops) == 0) jprops = [0]
+      nsv = model%utypes(iu)%nsvars
+      ! a fresh copy of the converged SVARS and ENERGY on every call (CONVENTIONS.md)
+      sv = an%conv(ie)%svars
+      if (size(sv) == 0) sv = svars
+      energy = an%conv(ie)%energy
+      rhs = 0.0_dp
+      ke = 0.0_dp
+      v = 0.0_dp
+      acc = 0.0_dp
+      params = 0.0_dp
+      jdltyp = 0
+      adlmag = 0.0_dp
+      ddlmag = 0.0_dp
+      lflags = [1, merge(1, 0, nlgeom), 1, 0, 0]
+      call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
+        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, 0, jdltyp, &
+        adlmag, predef, 1, lflags, n, ddlmag, 1, pnewdt, jprops, model%utypes(iu)%njprops, period)
+      fel = -rhs(:, 1)
+      if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
+        write (b, '(i0)') model%elem_id(ie)
+        stat = 1
+        msg = 'UEL returned non-finite RHS or AMATRX for element '//trim(b)
+        return
+      end if
+      if (nsv > 0) an%trial(ie)%svars = sv(1:nsv)
+      an%trial(ie)%energy = energy
+      ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
+      if (.not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+    else
+      do a = 1, nn
+        coords(1:an%ndim, a) = model%x(1:an%ndim, model%conn(model%conn_ptr(ie) + a - 1))
+      end do
+      associate (st => an%trial(ie), cv => an%conv(ie))
+        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
+          an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+          model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+          energy_ip_old=cv%eip, energy_ip_new=st%eip)
+        st%energy = 0.0_dp
+        st%energy(2) = e2(1)
+        st%energy(4) = e2(2)
+      end associate
+      if (stat /= 0) then
+        write (b, '(i0)') model%elem_id(ie)
+        msg = 'element '//trim(b)//': '//trim(msg)
+        stat = 1
+      end if
+    end if
+  end subroutine element_compute
+
+  !> The increment converged: the trial state becomes the converged one.
+  subroutine analysis_commit(an)
+    type(analysis_t), intent(inout) :: an  !< analysis data
+    integer :: ie
+    an%u_conv = an%u
+    do ie = 1, size(an%conv)
+      call copy_state(an%trial(ie), an%conv(ie))
+    end do
+  end subroutine analysis_commit
+
+  !> The attempt failed: back to the converged displacement (states are always recomputed from conv).
+  subroutine analysis_restore(an)
+    type(analysis_t), intent(inout) :: an  !< analysis data
+    an%u = an%u_conv
+  end subroutine analysis_restore
+
+  subroutine copy_state(from, to)
+    type(elem_state_t), intent(in) :: from
+    type(elem_state_t), intent(inout) :: to
+    if (allocated(from%stress)) to%stress = from%stress
+    if (allocated(from%stran)) to%stran = from%stran
+    if (allocated(from%statev)) to%statev = from%statev
+    if (allocated(from%eip)) to%eip = from%eip
+    if (allocated(from%svars)) to%svars = from%svars
+    to%energy = from%energy
+  end subroutine copy_state
+
+end module analysis_core

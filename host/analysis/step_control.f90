@@ -1,0 +1,111 @@
+!> Automatic time incrementation of a static step with Abaqus/Standard semantics (one small routine per event):
+!> - cutback after a failed attempt: dt <- 0.25 dt (non-convergence, divergence, element failure) or
+!>   dt <- min(PNEWDT) dt when a UEL/UMAT asked for PNEWDT < 1; below the minimum increment the step stops;
+!> - after a converged increment: dt grows by 1.5 once two consecutive increments converged in at most
+!>   `easy_iterations` Newton iterations, capped by min(PNEWDT) > 1 of the user routines and by the maximum increment;
+!> - the last increment is cut to end exactly at the step period. DIRECT: fixed increments, no cutback.
+module step_control
+  use ldfcz_kinds, only: dp
+  implicit none
+  private
+  public :: step_control_t, step_control_init, step_control_cutback, step_control_converged, step_control_done
+  public :: step_control_dt
+
+  real(dp), parameter :: cutback_factor = 0.25_dp  !< Abaqus D_f
+  real(dp), parameter :: growth_factor = 1.5_dp    !< Abaqus D_G
+  real(dp), parameter :: time_tol = 1.0e-12_dp     !< relative tolerance on reaching the period
+
+  type :: step_control_t
+    real(dp) :: period = 1.0_dp       !< step period
+    real(dp) :: dt_min = 1.0e-5_dp    !< minimum increment
+    real(dp) :: dt_max = 1.0_dp       !< maximum increment
+    logical :: direct = .false.       !< fixed increments
+    integer :: easy_iterations = 5    !< "easy" increment: at most this many iterations
+    real(dp) :: t = 0.0_dp            !< step time reached (converged)
+    real(dp) :: dt = 1.0_dp           !< size of the next attempt (before clipping to the period)
+    integer :: easy_count = 0         !< consecutive easy increments
+    integer :: cutbacks = 0           !< cutbacks of the current increment
+    integer :: total_cutbacks = 0     !< cutbacks in the step
+  end type step_control_t
+
+contains
+
+  !> Start a step.
+  pure subroutine step_control_init(sc, dt_initial, period, dt_min, dt_max, direct)
+    type(step_control_t), intent(out) :: sc  !< controller
+    real(dp), intent(in) :: dt_initial       !< initial increment
+    real(dp), intent(in) :: period           !< step period
+    real(dp), intent(in) :: dt_min           !< minimum increment
+    real(dp), intent(in) :: dt_max           !< maximum increment
+    logical, intent(in) :: direct            !< fixed increments
+    sc%period = period
+    sc%dt_min = dt_min
+    sc%dt_max = dt_max
+    sc%direct = direct
+    sc%dt = min(dt_initial, period)
+    if (.not. direct) sc%dt = min(sc%dt, dt_max)
+    sc%t = 0.0_dp
+  end subroutine step_control_init
+
+  !> Size of the next attempt: the current dt, cut so that the step ends exactly at its period.
+  pure real(dp) function step_control_dt(sc) result(dt)
+    type(step_control_t), intent(in) :: sc  !< controller
+    dt = sc%dt
+    if (sc%t + dt >= sc%period * (1.0_dp - time_tol)) dt = sc%period - sc%t
+  end function step_control_dt
+
+  !> The attempt of size dt_attempt failed. pnewdt < 1: the user routines' request; otherwise pass pnewdt >= 1
+  !> (the standard factor 0.25 is used). ok = .false. when the new increment would be below the minimum (or DIRECT).
+  pure subroutine step_control_cutback(sc, dt_attempt, pnewdt, ok)
+    type(step_control_t), intent(inout) :: sc  !< controller
+    real(dp), intent(in) :: dt_attempt         !< size of the failed attempt
+    real(dp), intent(in) :: pnewdt             !< min PNEWDT of the attempt (>= 1: none requested)
+    logical, intent(out) :: ok                 !< a retry is possible
+    real(dp) :: f
+    sc%easy_count = 0
+    sc%cutbacks = sc%cutbacks + 1
+    sc%total_cutbacks = sc%total_cutbacks + 1
+    if (pnewdt < 1.0_dp .and. pnewdt > 0.0_dp) then
+      f = pnewdt
+    else
+      f = cutback_factor
+    end if
+    sc%dt = f * dt_attempt
+    ok = (.not. sc%direct) .and. sc%dt >= sc%dt_min * (1.0_dp - time_tol)
+  end subroutine step_control_cutback
+
+  !> The attempt of size dt_attempt converged in `iterations` iterations; pnewdt = min over the user routines
+  !> (a large value when none asked for anything). Advances the time and chooses the next increment.
+  pure subroutine step_control_converged(sc, dt_attempt, iterations, pnewdt)
+    type(step_control_t), intent(inout) :: sc  !< controller
+    real(dp), intent(in) :: dt_attempt         !< converged increment
+    integer, intent(in) :: iterations          !< Newton iterations it needed
+    real(dp), intent(in) :: pnewdt             !< min PNEWDT over the user routines (>= 1)
+    real(dp) :: f, dt_base
+    sc%t = sc%t + dt_attempt
+    if (sc%t >= sc%period * (1.0_dp - time_tol)) sc%t = sc%period
+    sc%cutbacks = 0
+    if (sc%direct) return
+    ! growth from the increment just converged
+    dt_base = dt_attempt
+    if (iterations <= sc%easy_iterations) then
+      sc%easy_count = sc%easy_count + 1
+    else
+      sc%easy_count = 0
+    end if
+    f = 1.0_dp
+    if (sc%easy_count >= 2) then
+      f = growth_factor
+      sc%easy_count = 0
+    end if
+    if (pnewdt >= 1.0_dp) f = min(f, pnewdt)
+    sc%dt = min(f * dt_base, sc%dt_max)
+  end subroutine step_control_converged
+
+  !> True when the step period is reached.
+  pure logical function step_control_done(sc)
+    type(step_control_t), intent(in) :: sc  !< controller
+    step_control_done = sc%t >= sc%period
+  end function step_control_done
+
+end module step_control

@@ -1,0 +1,242 @@
+!> Model data of an ldfcz analysis, as read from an Abaqus-style deck: nodes, elements, sets, sections,
+!> materials, user element types, amplitudes and steps. Pure data; the deck reader fills it, the analysis reads it.
+module model_types
+  use ldfcz_kinds, only: dp
+  implicit none
+  private
+  public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
+  public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t
+  public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
+  public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
+  public :: amplitude_value
+
+  integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
+  integer, parameter :: etype_c3d8 = 1     !< 8-node hexahedron, F-bar
+  integer, parameter :: etype_cpe4 = 2     !< 4-node plane-strain quadrilateral, F-bar
+  integer, parameter :: etype_user = 3     !< user element (UEL)
+  integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
+
+  !> Where an item came from in the deck (for error messages found after reading).
+  type :: source_pos_t
+    character(len=:), allocatable :: file  !< file name
+    integer :: line = 0                    !< line number in that file
+    character(len=name_len) :: keyword = ''!< keyword of the block
+  end type source_pos_t
+
+  type :: node_set_t
+    character(len=name_len) :: name = ''   !< upper-case name
+    integer, allocatable :: nodes(:)       !< node indices (1..nnode) in the model arrays
+    integer :: n = 0                       !< members in use while reading (size(nodes) afterwards)
+  end type node_set_t
+
+  type :: elem_set_t
+    character(len=name_len) :: name = ''   !< upper-case name
+    integer, allocatable :: elems(:)       !< element indices (1..nelem)
+    integer :: n = 0                       !< members in use while reading (size(elems) afterwards)
+  end type elem_set_t
+
+  type :: material_t
+    character(len=name_len) :: name = ''   !< upper-case name
+    character(len=name_len) :: given_name = '' !< name as written in the deck (passed to UMAT as CMNAME)
+    logical :: has_elastic = .false.       !< *ELASTIC given
+    real(dp) :: young = 0.0_dp             !< Young's modulus [MPa]
+    real(dp) :: poisson = 0.0_dp           !< Poisson ratio [-]
+    logical :: has_user = .false.          !< *USER MATERIAL given
+    real(dp), allocatable :: props(:)      !< user material constants
+    logical :: unsymm = .false.            !< *USER MATERIAL, UNSYMM
+    integer :: nstatv = 0                  !< *DEPVAR
+    type(source_pos_t) :: pos              !< where *MATERIAL was
+  end type material_t
+
+  type :: section_t
+    character(len=name_len) :: elset = ''  !< element set
+    character(len=name_len) :: material = '' !< material name
+    real(dp) :: thickness = 1.0_dp         !< plane-strain thickness [mm]
+    type(source_pos_t) :: pos
+  end type section_t
+
+  type :: user_element_type_t
+    character(len=name_len) :: name = ''   !< e.g. U1
+    integer :: jtype = 0                   !< the number n of type Un
+    integer :: nnode = 0                   !< NODES
+    integer :: mcrd = 0                    !< COORDINATES
+    integer :: nprops = 0                  !< PROPERTIES
+    integer :: njprops = 0                 !< I PROPERTIES
+    integer :: nsvars = 0                  !< VARIABLES
+    logical :: unsymm = .false.            !< UNSYMM
+    integer, allocatable :: active(:)      !< active dofs per node (1..3)
+    type(source_pos_t) :: pos
+  end type user_element_type_t
+
+  !> One *UEL PROPERTY block.
+  type :: uel_property_t
+    real(dp), allocatable :: props(:)      !< NPROPS real properties
+    integer, allocatable :: jprops(:)      !< NJPROP integer properties
+  end type uel_property_t
+
+  type :: amplitude_t
+    character(len=name_len) :: name = ''
+    real(dp), allocatable :: t(:)          !< times (step time)
+    real(dp), allocatable :: a(:)          !< amplitude values
+  end type amplitude_t
+
+  !> One prescribed dof range on a set of nodes.
+  type :: boundary_t
+    integer, allocatable :: nodes(:)       !< node indices
+    integer :: first_dof = 0               !< first dof (1..3)
+    integer :: last_dof = 0                !< last dof (1..3)
+    real(dp) :: value = 0.0_dp             !< magnitude
+    integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
+    type(source_pos_t) :: pos
+  end type boundary_t
+
+  !> *NODE PRINT, NSET=..., TOTALS=YES request: one CSV column per variable.
+  type :: node_print_t
+    character(len=name_len) :: nset = ''   !< set name
+    integer :: set_index = 0               !< index into model%nsets
+    character(len=8), allocatable :: vars(:) !< RF1..RF3, U1..U3
+  end type node_print_t
+
+  type :: step_t
+    character(len=name_len) :: name = ''
+    logical :: nlgeom = .false.            !< NLGEOM=YES
+    integer :: max_inc = 100               !< INC=
+    real(dp) :: dt_initial = 1.0_dp        !< *STATIC data
+    real(dp) :: period = 1.0_dp
+    real(dp) :: dt_min = 1.0e-5_dp
+    real(dp) :: dt_max = 1.0_dp
+    logical :: direct = .false.            !< *STATIC, DIRECT: fixed increments
+    logical :: unsymm = .false.            !< *STEP, UNSYMM=YES: unsymmetric solver
+    logical :: op_new = .false.            !< a *BOUNDARY, OP=NEW in this step removes inherited boundaries
+    integer :: max_iter = 16               !< *CONTROLS, PARAMETERS=TIME INCREMENTATION: I_A (here the iteration cap)
+    real(dp) :: r_n = 0.005_dp             !< *CONTROLS, PARAMETERS=FIELD: R_n
+    real(dp) :: c_n = 0.01_dp              !< *CONTROLS, PARAMETERS=FIELD: C_n
+    type(boundary_t), allocatable :: bcs(:)!< boundaries given in this step
+    integer :: nbc = 0
+    logical :: field_output = .false.      !< *OUTPUT, FIELD present
+    integer :: field_frequency = 1         !< FREQUENCY (increments), 0 = last only
+    integer :: field_intervals = 0         !< NUMBER INTERVAL (0 = not given)
+    type(node_print_t), allocatable :: prints(:)
+    integer :: nprint = 0
+    type(source_pos_t) :: pos
+  end type step_t
+
+  type :: model_t
+    character(len=:), allocatable :: heading
+    integer :: ndim = 0                    !< 2 or 3 (from the element types)
+    ! nodes
+    integer :: nnode = 0
+    integer, allocatable :: node_id(:)     !< user node numbers
+    real(dp), allocatable :: x(:,:)        !< (3, nnode) original coordinates
+    integer, allocatable :: node_index(:)  !< user id -> index (0 = undefined), sized max id
+    ! elements
+    integer :: nelem = 0
+    integer, allocatable :: elem_id(:)     !< user element numbers
+    integer, allocatable :: elem_kind(:)   !< etype_c3d8, etype_cpe4, etype_user
+    integer, allocatable :: elem_utype(:)  !< index into utypes for user elements
+    integer, allocatable :: conn_ptr(:)    !< (nelem+1) CSR pointers into conn
+    integer, allocatable :: conn(:)        !< node indices
+    integer, allocatable :: elem_section(:)!< section index (continuum)
+    integer, allocatable :: elem_uelprop(:)!< index into uel_props (user)
+    integer, allocatable :: elem_index(:)  !< user element id -> index
+    ! sets and definitions
+    type(node_set_t), allocatable :: nsets(:)
+    integer :: n_nset = 0
+    type(elem_set_t), allocatable :: elsets(:)
+    integer :: n_elset = 0
+    type(material_t), allocatable :: materials(:)
+    integer :: nmat = 0
+    type(section_t), allocatable :: sections(:)
+    integer :: nsection = 0
+    type(user_element_type_t), allocatable :: utypes(:)
+    integer :: nutype = 0
+    type(uel_property_t), allocatable :: uelprops(:) !< *UEL PROPERTY blocks
+    integer :: n_uelprop = 0
+    type(amplitude_t), allocatable :: amplitudes(:)
+    integer :: namp = 0
+    type(boundary_t), allocatable :: initial_bcs(:) !< model-data *BOUNDARY (fixed, value 0 or given)
+    integer :: n_initial_bc = 0
+    type(step_t), allocatable :: steps(:)
+    integer :: nstep = 0
+  end type model_t
+
+contains
+
+  !> Index of a node set by (upper-case) name, 0 if absent.
+  pure integer function model_find_nset(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%n_nset
+      if (model%nsets(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_nset
+
+  !> Index of an element set by (upper-case) name, 0 if absent.
+  pure integer function model_find_elset(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%n_elset
+      if (model%elsets(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_elset
+
+  !> Index of a material by (upper-case) name, 0 if absent.
+  pure integer function model_find_material(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%nmat
+      if (model%materials(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_material
+
+  !> Index of an amplitude by (upper-case) name, 0 if absent.
+  pure integer function model_find_amplitude(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%namp
+      if (model%amplitudes(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_amplitude
+
+  !> Index of a user element type by (upper-case) name, 0 if absent.
+  pure integer function model_find_user_type(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name (U1, ...)
+    do k = 1, model%nutype
+      if (model%utypes(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_user_type
+
+  !> Piecewise-linear tabular amplitude at time t (constant beyond the ends, as Abaqus).
+  pure real(dp) function amplitude_value(amp, t) result(a)
+    type(amplitude_t), intent(in) :: amp  !< tabular amplitude
+    real(dp), intent(in) :: t             !< step time
+    integer :: i, n
+    n = size(amp%t)
+    if (n == 0) then
+      a = 1.0_dp
+      return
+    end if
+    if (t <= amp%t(1)) then
+      a = amp%a(1)
+      return
+    end if
+    do i = 2, n
+      if (t <= amp%t(i)) then
+        if (amp%t(i) > amp%t(i - 1)) then
+          a = amp%a(i - 1) + (amp%a(i) - amp%a(i - 1)) * (t - amp%t(i - 1)) / (amp%t(i) - amp%t(i - 1))
+        else
+          a = amp%a(i)
+        end if
+        return
+      end if
+    end do
+    a = amp%a(n)
+  end function amplitude_value
+
+end module model_types

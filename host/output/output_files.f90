@@ -1,0 +1,293 @@
+!> Output files of a run: JOB.csv (history of set totals, one row per converged increment), JOB.sta (one line per
+!> increment attempt), JOB.log (messages and the closing summary), JOB.pvd + JOB_NNNN.vtu (ParaView field frames),
+!> and a live one-line progress display when standard output is a terminal.
+module output_files
+  use, intrinsic :: iso_c_binding, only: c_int
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use ldfcz_kinds, only: dp
+  implicit none
+  private
+  public :: output_t, output_open, output_close, output_log, output_csv_header, output_csv_row, output_sta
+  public :: output_progress, output_progress_clear, output_vtu_frame, output_vtu_t, stdout_is_terminal
+
+  !> Cell and point data of one VTU frame.
+  type :: output_vtu_t
+    real(dp), allocatable :: x(:, :)         !< (3, npoint) original coordinates
+    real(dp), allocatable :: u(:, :)         !< (3, npoint) displacement
+    real(dp), allocatable :: rf(:, :)        !< (3, npoint) reaction force
+    integer, allocatable :: cell_type(:)     !< VTK cell type per cell
+    integer, allocatable :: cell_ptr(:)      !< (ncell+1) into cell_conn
+    integer, allocatable :: cell_conn(:)     !< 0-based point indices
+    integer, allocatable :: cell_id(:)       !< element label
+    real(dp), allocatable :: stress(:, :)    !< (6, ncell) mean Cauchy stress 11,22,33,12,13,23 (0 for cohesive cells)
+    real(dp), allocatable :: mises(:)        !< (ncell)
+    real(dp), allocatable :: sdv(:, :)       !< (nsdv, ncell) first state variables (mean over the points)
+    real(dp), allocatable :: opening(:, :)   !< (3, ncell) cohesive opening top - bottom (global frame), mean
+    real(dp), allocatable :: traction(:)     !< (ncell) |T| from SVARS (mean over the points)
+    real(dp), allocatable :: delta_max(:)    !< (ncell) Delta_max from SVARS (mean over the points)
+    integer, allocatable :: cohesive(:)      !< (ncell) 1 for cohesive (user) cells
+  end type output_vtu_t
+
+  type :: output_t
+    character(len=:), allocatable :: job     !< job name
+    character(len=:), allocatable :: dir     !< output directory
+    logical :: quiet = .false.               !< no echo of the log on standard output
+    logical :: tty = .false.                 !< standard output is a terminal
+    integer :: csv = -1, sta = -1, log = -1, pvd = -1
+    integer :: nframe = 0
+    real(dp) :: t_output = 0.0_dp            !< wall seconds spent writing output
+    logical :: progress_shown = .false.
+    real(dp), allocatable :: frame_times(:)  !< total time of each VTU frame (for JOB.pvd)
+  end type output_t
+
+  interface
+    function c_isatty(fd) bind(c, name='isatty') result(r)
+      import :: c_int
+      integer(c_int), value :: fd
+      integer(c_int) :: r
+    end function c_isatty
+  end interface
+
+contains
+
+  !> True when standard output is a terminal (isatty(1)).
+  logical function stdout_is_terminal()
+    stdout_is_terminal = c_isatty(1_c_int) == 1
+  end function stdout_is_terminal
+
+  !> Open JOB.csv, JOB.sta and JOB.log in dir.
+  subroutine output_open(out, job, dir, quiet, stat, errmsg)
+    type(output_t), intent(out) :: out                   !< output state
+    character(len=*), intent(in) :: job                  !< job name
+    character(len=*), intent(in) :: dir                  !< directory (must exist)
+    logical, intent(in) :: quiet                         !< no echo
+    integer, intent(out) :: stat                         !< 0 ok, 2 cannot write
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: ios
+    out%job = job
+    out%dir = dir
+    out%quiet = quiet
+    out%tty = stdout_is_terminal() .and. .not. quiet
+    stat = 0
+    errmsg = ''
+    open (newunit=out%sta, file=path(out, '.sta'), status='replace', action='write', iostat=ios)
+    if (ios /= 0) then
+      stat = 2
+      errmsg = 'cannot write '//path(out, '.sta')
+      return
+    end if
+    write (out%sta, '(a)') '# step  inc  attempt  iterations  step_time  increment  outcome'
+    flush (out%sta)
+    open (newunit=out%log, file=path(out, '.log'), status='replace', action='write', iostat=ios)
+    open (newunit=out%csv, file=path(out, '.csv'), status='replace', action='write', iostat=ios)
+    if (ios /= 0) then
+      stat = 2
+      errmsg = 'cannot write '//path(out, '.csv')
+    end if
+  end subroutine output_open
+
+  function path(out, suffix) result(p)
+    type(output_t), intent(in) :: out
+    character(len=*), intent(in) :: suffix
+    character(len=:), allocatable :: p
+    p = out%dir//'/'//out%job//suffix
+  end function path
+
+  !> A line to JOB.log and (unless quiet) standard output.
+  subroutine output_log(out, line)
+    type(output_t), intent(inout) :: out  !< output state
+    character(len=*), intent(in) :: line  !< text
+    if (out%log /= -1) then
+      write (out%log, '(a)') line
+      flush (out%log)
+    end if
+    if (.not. out%quiet) then
+      call output_progress_clear(out)
+      write (output_unit, '(a)') line
+    end if
+  end subroutine output_log
+
+  !> Header of JOB.csv.
+  subroutine output_csv_header(out, columns)
+    type(output_t), intent(inout) :: out          !< output state
+    character(len=*), intent(in) :: columns(:)    !< column names after the four time columns
+    integer :: i
+    write (out%csv, '(a)', advance='no') 'step,inc,step_time,total_time'
+    do i = 1, size(columns)
+      write (out%csv, '(a)', advance='no') ','//trim(columns(i))
+    end do
+    write (out%csv, '(a)') ''
+    flush (out%csv)
+  end subroutine output_csv_header
+
+  !> One row of JOB.csv, flushed.
+  subroutine output_csv_row(out, kstep, kinc, step_time, total_time, values)
+    type(output_t), intent(inout) :: out  !< output state
+    integer, intent(in) :: kstep, kinc    !< step, increment
+    real(dp), intent(in) :: step_time, total_time  !< times at the end of the increment
+    real(dp), intent(in) :: values(:)     !< column values
+    character(len=32) :: b
+    integer :: i
+    write (out%csv, '(i0,a,i0,2(a,es23.15e3))', advance='no') kstep, ',', kinc, ',', step_time, ',', total_time
+    do i = 1, size(values)
+      write (b, '(es23.15e3)') values(i)
+      write (out%csv, '(a)', advance='no') ','//trim(adjustl(b))
+    end do
+    write (out%csv, '(a)') ''
+    flush (out%csv)
+  end subroutine output_csv_row
+
+  !> One line of JOB.sta, flushed; residual ratios of the iterations are written with it when given.
+  subroutine output_sta(out, kstep, kinc, attempt, iterations, step_time, dt, outcome, ratios)
+    type(output_t), intent(inout) :: out          !< output state
+    integer, intent(in) :: kstep, kinc, attempt, iterations
+    real(dp), intent(in) :: step_time             !< step time at the end of the attempt
+    real(dp), intent(in) :: dt                    !< increment size
+    character(len=*), intent(in) :: outcome       !< converged, cutback: ..., failed: ...
+    real(dp), intent(in), optional :: ratios(:)   !< r_max / q_avg per iteration
+    integer :: i
+    write (out%sta, '(i5,i6,i5,i6,2es14.6,2x,a)', advance='no') kstep, kinc, attempt, iterations, step_time, dt, &
+      trim(outcome)
+    if (present(ratios)) then
+      if (size(ratios) > 0) then
+        write (out%sta, '(a)', advance='no') '  r/q:'
+        do i = 1, size(ratios)
+          write (out%sta, '(es10.2)', advance='no') ratios(i)
+        end do
+      end if
+    end if
+    write (out%sta, '(a)') ''
+    flush (out%sta)
+  end subroutine output_sta
+
+  !> Live progress line (terminal only): step, percent of the step, increment, ETA of the step.
+  subroutine output_progress(out, kstep, nstep, kinc, step_time, period, wall_step)
+    type(output_t), intent(inout) :: out
+    integer, intent(in) :: kstep, nstep, kinc
+    real(dp), intent(in) :: step_time, period, wall_step  !< step time, period, wall seconds since the step began
+    real(dp) :: frac, eta
+    character(len=120) :: line
+    if (.not. out%tty) return
+    frac = step_time / max(period, tiny(1.0_dp))
+    eta = 0.0_dp
+    if (frac > 0.0_dp) eta = wall_step * (1.0_dp - frac) / frac
+    write (line, '(a,i0,a,i0,a,f6.2,a,i0,a,f9.1,a)') 'step ', kstep, '/', nstep, '  ', 100.0_dp * frac, &
+      '%  inc ', kinc, '  ETA ', eta, ' s'
+    write (output_unit, '(a)', advance='no') achar(13)//trim(line)//achar(27)//'[K'
+    flush (output_unit)
+    out%progress_shown = .true.
+  end subroutine output_progress
+
+  subroutine output_progress_clear(out)
+    type(output_t), intent(inout) :: out
+    if (.not. out%progress_shown) return
+    write (output_unit, '(a)', advance='no') achar(13)//achar(27)//'[K'
+    out%progress_shown = .false.
+  end subroutine output_progress_clear
+
+  !> Write one ASCII VTU frame and rewrite JOB.pvd with every frame so far (valid after each increment).
+  subroutine output_vtu_frame(out, frame, total_time)
+    type(output_t), intent(inout) :: out      !< output state
+    type(output_vtu_t), intent(in) :: frame   !< data
+    real(dp), intent(in) :: total_time        !< time stamp of the frame
+    character(len=:), allocatable :: name
+    character(len=16) :: b
+    integer :: u, i, np, nc, k, ios
+    integer(8) :: c0, c1, rate
+    call system_clock(c0, rate)
+    out%nframe = out%nframe + 1
+    write (b, '(i4.4)') out%nframe
+    name = out%job//'_'//trim(b)//'.vtu'
+    np = size(frame%x, 2)
+    nc = size(frame%cell_type)
+    open (newunit=u, file=out%dir//'/'//name, status='replace', action='write', iostat=ios)
+    if (ios /= 0) return
+    write (u, '(a)') '<?xml version="1.0"?>'
+    write (u, '(a)') '<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">'
+    write (u, '(a)') '<UnstructuredGrid>'
+    write (u, '(a,i0,a,i0,a)') '<Piece NumberOfPoints="', np, '" NumberOfCells="', nc, '">'
+    write (u, '(a)') '<Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">'
+    write (u, '(3es16.8)') frame%x
+    write (u, '(a)') '</DataArray></Points>'
+    write (u, '(a)') '<Cells><DataArray type="Int32" Name="connectivity" format="ascii">'
+    do i = 1, nc
+      write (u, '(*(i0,1x))') (frame%cell_conn(k), k = frame%cell_ptr(i), frame%cell_ptr(i + 1) - 1)
+    end do
+    write (u, '(a)') '</DataArray><DataArray type="Int32" Name="offsets" format="ascii">'
+    write (u, '(*(i0,1x))') frame%cell_ptr(2:) - 1
+    write (u, '(a)') '</DataArray><DataArray type="UInt8" Name="types" format="ascii">'
+    write (u, '(*(i0,1x))') frame%cell_type
+    write (u, '(a)') '</DataArray></Cells>'
+    write (u, '(a)') '<PointData Vectors="U">'
+    call vec('U', frame%u)
+    call vec('RF', frame%rf)
+    write (u, '(a)') '</PointData>'
+    write (u, '(a)') '<CellData Scalars="Mises">'
+    write (u, '(a)') '<DataArray type="Int32" Name="element" format="ascii">'
+    write (u, '(*(i0,1x))') frame%cell_id
+    write (u, '(a)') '</DataArray>'
+    write (u, '(a)') '<DataArray type="Float64" Name="S" NumberOfComponents="6" format="ascii">'
+    write (u, '(6es16.8)') frame%stress
+    write (u, '(a)') '</DataArray>'
+    call sca('Mises', frame%mises)
+    do k = 1, size(frame%sdv, 1)
+      write (b, '(i0)') k
+      call sca('SDV'//trim(b), frame%sdv(k, :))
+    end do
+    write (u, '(a)') '<DataArray type="Int32" Name="cohesive" format="ascii">'
+    write (u, '(*(i0,1x))') frame%cohesive
+    write (u, '(a)') '</DataArray>'
+    call vec('opening', frame%opening)
+    call sca('traction', frame%traction)
+    call sca('Delta_max', frame%delta_max)
+    write (u, '(a)') '</CellData>'
+    write (u, '(a)') '</Piece></UnstructuredGrid></VTKFile>'
+    close (u)
+    ! the PVD collection, rewritten so that it is complete after every frame
+    if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
+    out%frame_times = [out%frame_times, total_time]
+    open (newunit=u, file=out%dir//'/'//out%job//'.pvd', status='replace', action='write', iostat=ios)
+    if (ios == 0) then
+      write (u, '(a)') '<?xml version="1.0"?>'
+      write (u, '(a)') '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">'
+      write (u, '(a)') '<Collection>'
+      do i = 1, out%nframe
+        write (b, '(i4.4)') i
+        write (u, '(a,es23.15,a)') '<DataSet timestep="', out%frame_times(i), '" group="" part="0" file="'// &
+          out%job//'_'//trim(b)//'.vtu"/>'
+      end do
+      write (u, '(a)') '</Collection></VTKFile>'
+      close (u)
+    end if
+    call system_clock(c1)
+    out%t_output = out%t_output + real(c1 - c0, dp) / real(rate, dp)
+  contains
+    subroutine vec(label, a)
+      character(len=*), intent(in) :: label
+      real(dp), intent(in) :: a(:, :)
+      write (u, '(a)') '<DataArray type="Float64" Name="'//label//'" NumberOfComponents="3" format="ascii">'
+      write (u, '(3es16.8)') a
+      write (u, '(a)') '</DataArray>'
+    end subroutine vec
+    subroutine sca(label, a)
+      character(len=*), intent(in) :: label
+      real(dp), intent(in) :: a(:)
+      write (u, '(a)') '<DataArray type="Float64" Name="'//label//'" format="ascii">'
+      write (u, '(6es16.8)') a
+      write (u, '(a)') '</DataArray>'
+    end subroutine sca
+  end subroutine output_vtu_frame
+
+  !> Close all files.
+  subroutine output_close(out)
+    type(output_t), intent(inout) :: out  !< output state
+    call output_progress_clear(out)
+    if (out%csv /= -1) close (out%csv)
+    if (out%sta /= -1) close (out%sta)
+    if (out%log /= -1) close (out%log)
+    out%csv = -1
+    out%sta = -1
+    out%log = -1
+  end subroutine output_close
+
+end module output_files

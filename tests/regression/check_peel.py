@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+"""Short peel regression checks (CTest, registered by tests/studies.cmake): generate decks with tools/peel_deck.py,
+run ldfcz on them and assert physical facts with stated tolerances.
+
+  check_peel.py refinement LDFCZ WORKDIR   coarse plane-strain peel (rigid substrate) at l_e = 20 um and 10 um:
+      both runs complete; a peel front advances (two fine cohesive elements opened past delta); the steady force
+      per unit width is steady (spread over the averaging window below SPREAD_TOL) and stable under the refinement
+      (|F_20/F_10 - 1| below REFINE_TOL), 3 elements over the coating; global energy balance of each run below ENERGY_TOL.
+  check_peel.py symmetry LDFCZ WORKDIR     3D quarter model (YSYMM on the mid-width plane) against the same model
+      over the full width without the symmetry plane: RF1_full = 2 RF1_quarter at every increment within SYM_TOL,
+      mean U2 of the loaded face of the full model zero (no out-of-plane drift), and the quarter's loaded face
+      contracts towards the symmetry plane (U2 < 0: the plane is active and the edge y = b free).
+Exit status 0 when every assertion holds, 1 otherwise (each failure printed).
+"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+import peel_study  # noqa: E402
+
+# Tolerances (measured values in docs/scenes.md, Release and Debug builds give the same numbers):
+# - refinement: the steady force changes by 0.5-1 % from l_e = 20 to 10 um (and 0.2 % from 10 to 5 um); 3 % is
+#   three times the measured change, and ten times smaller than the drop a broken tangent, a lost cohesive law or
+#   a wrong width normalisation would produce (the force would fall to the flap's draw force, -35 %, or double).
+REFINE_TOL = 0.03
+# - spread of the force over the last 30 % of the pull: 2-3 % measured (one cohesive element passing the front at a
+#   time modulates the force); 6 % allows the coarse mesh's larger ripple and fails on a force still rising.
+SPREAD_TOL = 0.06
+# - energy balance |W_ext - (stored + dissipated)| / W_ext: the host integrates the external work with the
+#   trapezoidal rule, the UMAT accumulates its dissipation tau_bar * dgamma_p at the end of each increment (first
+#   order in the increment); measured 1.1 % at 0.3 um/inc and 0.7 % at 0.1 um/inc. 3 %: a missing dissipation term
+#   (the cohesive phi per delaminated area alone is 15-20 % of W_ext here) fails it.
+ENERGY_TOL = 0.03
+# - quarter against full width: the full model's Newton iterates are the mirror extensions of the quarter's, so the
+#   forces agree to round-off (1e-11 measured); 1e-6 leaves room for a different cutback sequence.
+SYM_TOL = 1e-6
+DRIFT_TOL = 1e-9   # mm: mean U2 of the full model's loaded face (1e-16 measured; quarter's contraction ~1e-3 mm)
+
+COMMON = ['--rigid-substrate', '--u-total', '0.05', '--du', '0.0003']
+
+
+def fail(msgs, text):
+    print('FAIL: ' + text)
+    msgs.append(text)
+
+
+def refinement(ldfcz, work):
+    bad = []
+    res = {}
+    for le, nz in ((0.02, 3), (0.01, 3)):
+        label = 'ps_le%g' % (le * 1e3)
+        r = peel_study.run_case(label, COMMON + ['--le', str(le), '--nz', str(nz)], work, ldfcz, 1, 0.3)
+        res[le] = r
+        print('%s: F/w = %.4f N/mm, spread %.3f, delaminated %.4f mm, energy balance %s, %.1f s' % (
+            label, r['F_w'], r['spread'], r['delaminated_mm'], r.get('energy_rel_diff'), r['run_time_s']))
+        if not r['completed']:
+            fail(bad, '%s did not complete (exit %d, U1 = %g mm)' % (label, r['exit'], r['u_end_mm']))
+            continue
+        # front = centre of the last cohesive element opened past delta: > l_e means two elements past the peak
+        if not r['delaminated_mm'] > le:
+            fail(bad, '%s: the front advanced %.4f mm, less than two elements: no peel' % (label, r['delaminated_mm']))
+        if not r['spread'] < SPREAD_TOL:
+            fail(bad, '%s: force not steady: spread %.3f >= %.3f' % (label, r['spread'], SPREAD_TOL))
+        e = r.get('energy_rel_diff', float('nan'))
+        if not e < ENERGY_TOL:
+            fail(bad, '%s: energy balance %.3e >= %.3e' % (label, e, ENERGY_TOL))
+    if all(r['completed'] for r in res.values()):
+        d = abs(res[0.02]['F_w'] / res[0.01]['F_w'] - 1.0)
+        print('refinement l_e 20 -> 10 um: |F_20/F_10 - 1| = %.4f (tolerance %.3f)' % (d, REFINE_TOL))
+        if not d < REFINE_TOL:
+            fail(bad, 'steady force not stable under refinement: %.4f >= %.3f' % (d, REFINE_TOL))
+    return bad
+
+
+def interp(x, xs, ys):
+    for i in range(1, len(xs)):
+        if xs[i] >= x:
+            t = (x - xs[i - 1]) / (xs[i] - xs[i - 1]) if xs[i] > xs[i - 1] else 0.0
+            return ys[i - 1] + t * (ys[i] - ys[i - 1])
+    return ys[-1]
+
+
+def read_cols(path, names):
+    import csv
+    with open(path) as fh:
+        rows = list(csv.DictReader(fh))
+    return [[float(r[n]) for r in rows] for n in names]
+
+
+def symmetry(ldfcz, work):
+    bad = []
+    args = ['--3d', '--rigid-substrate', '--le', '0.02', '--nz', '1', '--ny', '1', '--width', '0.02',
+            '--bonded', '0.2', '--u-total', '0.006', '--du', '0.0005']
+    rq = peel_study.run_case('quarter', args, work, ldfcz, 1, 0.3)
+    rf = peel_study.run_case('full', args + ['--full-width'], work, ldfcz, 1, 0.3)
+    for r in (rq, rf):
+        if not r['completed']:
+            fail(bad, '%s model did not complete (exit %d)' % (r['label'], r['exit']))
+    if bad:
+        return bad
+    uq, fq, vq = read_cols(os.path.join(work, 'quarter', 'quarter.csv'), ['LOAD.U1', 'LOAD.RF1', 'LOAD.U2'])
+    uf, ff, vf = read_cols(os.path.join(work, 'full', 'full.csv'), ['LOAD.U1', 'LOAD.RF1', 'LOAD.U2'])
+    worst = max(abs(interp(u, uf, ff) - 2.0 * f) / abs(2.0 * f) for u, f in zip(uq, fq) if f != 0.0)
+    drift = max(abs(v) for v in vf)
+    print('quarter vs full width: max |RF1_full - 2 RF1_quarter| / |2 RF1_quarter| = %.2e (tolerance %.1e); '
+          'max |mean U2| full = %.2e mm; quarter mean U2 at the end = %.3e mm' % (worst, SYM_TOL, drift, vq[-1]))
+    if not worst < SYM_TOL:
+        fail(bad, 'quarter model differs from the full-width model: %.2e' % worst)
+    if not drift < DRIFT_TOL:
+        fail(bad, 'out-of-plane drift of the full-width model: %.2e mm' % drift)
+    if not vq[-1] < -1e-6:
+        fail(bad, 'quarter model: the loaded face does not contract towards the symmetry plane (U2 = %.3e)' % vq[-1])
+    return bad
+
+
+def main(argv):
+    if len(argv) != 4 or argv[1] not in ('refinement', 'symmetry'):
+        print(__doc__)
+        return 2
+    ldfcz, work = argv[2], argv[3]
+    os.makedirs(work, exist_ok=True)
+    bad = refinement(ldfcz, work) if argv[1] == 'refinement' else symmetry(ldfcz, work)
+    print('check_peel %s: %s' % (argv[1], 'FAILED (%d)' % len(bad) if bad else 'passed'))
+    return 1 if bad else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))

@@ -1,0 +1,163 @@
+#!/usr/bin/python3
+"""Geometry checks of the decks tools/peel_deck.py writes (CTest peel_generator; needs no solver).
+
+For each option family (plane strain / 3D quarter / 3D full width, steel / rigid substrate, graded / uniform mesh):
+- every continuum element has a positive Jacobian at its 8 (4) corners (node order as C3D8 / CPE4 require);
+- the element volumes add up to the geometry: coating h_c (L_b + a_0) w, steel h_s L_b w (relative 1e-9, exact
+  for straight-sided elements up to round-off);
+- the cohesive elements have zero initial thickness (top node k+4 on bottom node k, 2D: 3 on 2 and 4 on 1), their
+  bottom->top normal points to +z, and their faces tile the bonded interface L_b w (relative 1e-9);
+- PROPS of the UEL are phi and delta = phi/(e T_max) (Eq. 5), the UMAT's Table 1 constants and *DEPVAR 11;
+- the LOAD set is the coating's end face x = L_b + a_0, the whole face.
+"""
+import math
+import os
+import subprocess
+import sys
+
+
+def parse(path):
+    nodes, elems, sets, blocks = {}, {}, {}, []
+    kw, etype, cur, params = None, None, None, {}
+    for raw in open(path):
+        line = raw.strip()
+        if not line or line.startswith('**'):
+            continue
+        if line.startswith('*'):
+            parts = [p.strip() for p in line.split(',')]
+            kw = parts[0].upper()
+            params = {}
+            for p in parts[1:]:
+                k, _, v = p.partition('=')
+                params[k.strip().upper()] = v.strip()
+            blocks.append((kw, params, []))
+            if kw == '*ELEMENT':
+                etype = params['TYPE']
+                cur = params.get('ELSET')
+            continue
+        blocks[-1][2].append(line)
+        f = [x.strip() for x in line.split(',') if x.strip()]
+        if kw == '*NODE':
+            nodes[int(f[0])] = [float(x) for x in f[1:]]
+        elif kw == '*ELEMENT':
+            elems[int(f[0])] = (etype, cur, [int(x) for x in f[1:]])
+        elif kw == '*NSET':
+            sets.setdefault(params['NSET'], []).extend(int(x) for x in f)
+    return nodes, elems, sets, blocks
+
+
+def det3(a):
+    return (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+            + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+
+
+def hex_volume_and_min_jac(x):
+    """Volume (2x2x2 Gauss) and the smallest corner Jacobian of a trilinear hexahedron."""
+    sg = [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1), (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)]
+
+    def jac(xi, et, ze):
+        j = [[0.0] * 3 for _ in range(3)]
+        for a, (s, t, u) in enumerate(sg):
+            d = (s * (1 + t * et) * (1 + u * ze) / 8, t * (1 + s * xi) * (1 + u * ze) / 8,
+                 u * (1 + s * xi) * (1 + t * et) / 8)
+            for r in range(3):
+                for c in range(3):
+                    j[r][c] += d[r] * x[a][c]
+        return det3(j)
+    g = 1 / math.sqrt(3)
+    vol = sum(jac(s * g, t * g, u * g) for s, t, u in sg)
+    return vol, min(jac(s, t, u) for s, t, u in sg)
+
+
+def quad_area_and_min_jac(x):
+    area = 0.5 * sum(x[i][0] * x[(i + 1) % 4][1] - x[(i + 1) % 4][0] * x[i][1] for i in range(4))
+    mins = []
+    for i in range(4):   # corner Jacobian = cross product of the two edges at the corner
+        a, b, c = x[i - 1], x[i], x[(i + 1) % 4]
+        mins.append((c[0] - b[0]) * (a[1] - b[1]) - (c[1] - b[1]) * (a[0] - b[0]))
+    return area, min(mins)
+
+
+def check_case(gen, work, args, bad):
+    deck = os.path.join(work, 'gen_%d.inp' % abs(hash(' '.join(args))))
+    subprocess.check_call([sys.executable, gen, '-o', deck] + args)
+    nodes, elems, sets, blocks = parse(deck)
+    three_d = '--3d' in args
+    val = {a.lstrip('-'): args[i + 1] for i, a in enumerate(args[:-1]) if a.startswith('--') and
+           not args[i + 1].startswith('--')}
+    hc, hs = float(val.get('coating', 0.030)), float(val.get('substrate', 0.210))
+    lb, a0 = float(val.get('bonded', 0.30)), float(val.get('flap', 0.020))
+    b = float(val.get('width', 0.040)) if three_d else 1.0
+    w = 2 * b if '--full-width' in args else b
+    vol = {'COATING': 0.0, 'SUBSTRATE': 0.0}
+    coh_area = 0.0
+    tag = ' '.join(args)
+    for eid, (et, es, conn) in elems.items():
+        x = [nodes[n] for n in conn]
+        if et in ('C3D8', 'CPE4'):
+            v, jmin = hex_volume_and_min_jac(x) if et == 'C3D8' else quad_area_and_min_jac(x)
+            if not jmin > 0:
+                bad.append('%s: element %d has a corner Jacobian %.3e <= 0' % (tag, eid, jmin))
+            vol[es] += v
+        else:
+            k = len(conn) // 2
+            top = [conn[k:][i] for i in range(k)] if three_d else [conn[3], conn[2]]
+            bot = conn[:k]
+            gap = max(abs(p - q) for t, s in zip(top, bot) for p, q in zip(nodes[t], nodes[s]))
+            if gap > 1e-12:
+                bad.append('%s: cohesive element %d is not of zero thickness (%.2e)' % (tag, eid, gap))
+            xb = [nodes[n] for n in bot]
+            if three_d:
+                d1 = [xb[2][i] - xb[0][i] for i in range(3)]
+                d2 = [xb[3][i] - xb[1][i] for i in range(3)]
+                nz = 0.5 * (d1[0] * d2[1] - d1[1] * d2[0])       # area times normal z (planar face)
+            else:
+                nz = xb[1][0] - xb[0][0]                       # n = e_z x t: +z when 1 -> 2 runs along +x
+            if not nz > 0:
+                bad.append('%s: cohesive element %d normal does not point bottom -> top (+z)' % (tag, eid))
+            coh_area += nz
+    exp_c = hc * (lb + a0) * w
+    exp_s = 0.0 if '--rigid-substrate' in args else hs * lb * w
+    for name, got, exp in (('coating', vol['COATING'], exp_c), ('substrate', vol['SUBSTRATE'], exp_s),
+                           ('interface', coh_area, lb * w)):
+        if abs(got - exp) > 1e-9 * max(exp, 1e-30) + (1e-15 if exp == 0 else 0):
+            bad.append('%s: %s volume/area %.9e, expected %.9e' % (tag, name, got, exp))
+    for kw, params, data in blocks:
+        if kw == '*UEL PROPERTY':
+            f = [float(x) for x in data[0].split(',')]
+            phi = float(val.get('phi', 0.2))
+            delta = phi / (math.e * float(val.get('tmax', 20.0)))
+            if abs(f[0] - phi) > 1e-9 or abs(f[1] - delta) > 1e-9 * delta:
+                bad.append('%s: UEL PROPS %s, expected phi %g delta %.6e' % (tag, f[:2], phi, delta))
+        if kw == '*USER MATERIAL':
+            f = [float(x) for line in data for x in line.split(',')]
+            if f != [1250.0, 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990, 200.0, -4.0]:
+                bad.append('%s: UMAT constants %s are not Table 1' % (tag, f))
+        if kw == '*DEPVAR' and int(data[0]) != 11:
+            bad.append('%s: *DEPVAR %s, the UMAT needs 11' % (tag, data[0]))
+    xload = lb + a0
+    load = sets.get('LOAD', [])
+    face = [n for n, c in nodes.items() if abs(c[0] - xload) < 1e-12]
+    if sorted(load) != sorted(face):
+        bad.append('%s: LOAD is not the end face x = %g (%d nodes, face %d)' % (tag, xload, len(load), len(face)))
+    print('%-70s %5d elements: checked' % (tag[:70], len(elems)))
+
+
+def main(argv):
+    gen, work = argv[1], argv[2]
+    os.makedirs(work, exist_ok=True)
+    bad = []
+    cases = [[], ['--rigid-substrate'], ['--no-coarse', '--le', '0.02'], ['--nz', '5', '--flap', '0.03'],
+             ['--3d', '--ny', '2', '--le', '0.02'], ['--3d', '--rigid-substrate', '--ny', '3', '--width', '0.03'],
+             ['--3d', '--full-width', '--ny', '2', '--le', '0.02', '--nz', '2'],
+             ['--tmax', '10', '--phi', '0.1', '--bonded', '0.5', '--coating', '0.02']]
+    for c in cases:
+        check_case(gen, work, c, bad)
+    for b in bad:
+        print('FAIL: ' + b)
+    print('check_peel_generator: %s' % ('FAILED (%d)' % len(bad) if bad else 'passed'))
+    return 1 if bad else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))

@@ -1,0 +1,223 @@
+#!/usr/bin/env python3
+"""Runs ldfcz on a deck and checks the outcome (deck regression tests registered by tests/host.cmake).
+
+  check_run.py --exe BIN --deck DECK --out DIR --bad
+      malformed deck: exit status 2 and an error message naming the file, the line and the keyword given by the
+      deck's first line `** EXPECT line=N keyword=*KW [file=NAME]`.
+  check_run.py --exe BIN --deck DECK --out DIR --case NAME [--user FILE] [--expect-exit N]
+      a run whose JOB.csv / JOB.sta / JOB.log is checked against a closed-form answer (functions case_<NAME> below).
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+
+PHI, DELTA = 0.2, 3.679e-3  # LDF cohesive properties of the decks (N/mm, mm)
+
+
+def ldf_traction(d):
+    """LDF envelope, paper Eq. 20: T = (phi/delta) (d/delta) exp(-d/delta)."""
+    return PHI / DELTA * (d / DELTA) * math.exp(-d / DELTA)
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def close(name, got, want, rtol, atol=0.0):
+    ok = abs(got - want) <= rtol * abs(want) + atol
+    print("%-40s got %.10g want %.10g (rtol %g) %s" % (name, got, want, rtol, "ok" if ok else "FAIL"))
+    if not ok:
+        fail(name)
+
+
+def last_row(job_dir, job):
+    with open(os.path.join(job_dir, job + ".csv")) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        fail("no converged increment in %s.csv" % job)
+    return {k: (float(v) if k not in ("step", "inc") else int(v)) for k, v in rows[-1].items()}, rows
+
+
+def sta_ratios(job_dir, job):
+    """Residual ratios r_max/q_avg of every converged increment in JOB.sta."""
+    out = []
+    with open(os.path.join(job_dir, job + ".sta")) as f:
+        for line in f:
+            if "converged" in line and "r/q:" in line:
+                out.append([float(x) for x in line.split("r/q:")[1].split()])
+    return out
+
+
+# ---------------------------------------------------------------------------------------------- closed-form cases
+def case_c3d8_uniaxial(d, job):
+    """Uniaxial stress with NLGEOM, Abaqus *ELASTIC (hypoelastic, Jaumann; Hughes-Winget increments integrate the
+    logarithmic strain to second order in the increment): sigma_33 = E ln(lambda), lateral stretch lambda^-nu,
+    RF3 = sigma_33 * A = E ln(lambda) lambda_l^2. Tolerance 1e-4: the mid-point strain increment differs from
+    ln(l1/l0) by O((dl/l)^3) = 1e-6 per increment of 2 %."""
+    row, _ = last_row(d, job)
+    e, nu, lam = 1000.0, 0.3, 1.2
+    close("TOP.U3", row["TOP.U3"], 0.2, 1e-12)
+    lam_l = 1.0 + 2.0 * row["TOP.U1"]  # mean over nodes at x = 0 and x = 1
+    close("lateral stretch", math.log(lam_l), -nu * math.log(lam), 1e-4)
+    close("TOP.RF3", row["TOP.RF3"], e * math.log(lam) * lam_l ** 2, 1e-4)
+    close("BOTTOM.RF3 = -TOP.RF3", row["BOTTOM.RF3"], -row["TOP.RF3"], 1e-9)
+
+
+def case_cohesive_I(d, job):
+    """Mode I: RF3 = T(0.0075) A0 (A0 = 1 mm^2); Eq. 20. The RF is summed from the UEL's RHS exactly."""
+    row, _ = last_row(d, job)
+    close("TOP.RF3", row["TOP.RF3"], ldf_traction(0.0075), 1e-9)
+    close("TOP.RF1", row["TOP.RF1"], 0.0, 0.0, 1e-9)
+
+
+def case_cohesive_II(d, job):
+    """Mode II: the LDF traction follows the opening vector (Eq. 21): RF1 = T(0.0075) A0, no normal force."""
+    row, _ = last_row(d, job)
+    close("TOP.RF1", row["TOP.RF1"], ldf_traction(0.0075), 1e-9)
+    close("TOP.U3 (free, stays 0)", row["TOP.U3"], 0.0, 0.0, 1e-12)
+
+
+def case_cohesive_mixed(d, job):
+    """Mixed mode: opening (0.0045, 0, 0.0060), |Delta| = 0.0075: RF = T(0.0075) Delta/|Delta| A0 (Eq. 21)."""
+    row, _ = last_row(d, job)
+    t = ldf_traction(0.0075)
+    close("TOP.RF1", row["TOP.RF1"], t * 0.0045 / 0.0075, 1e-9)
+    close("TOP.RF3", row["TOP.RF3"], t * 0.0060 / 0.0075, 1e-9)
+
+
+def case_cohesive_block(d, job):
+    """A C3D8 block on a cohesive element, pulled at its top: in series, the block's reaction equals the cohesive
+    traction of the interface opening (uniform, mode I): RF3(TOP) = T(U3(IFACE)) A0, equilibrium to the Newton
+    tolerance (R_n = 0.005 of the time-averaged force, so rtol 1e-2; the converged residual is far smaller)."""
+    row, rows = last_row(d, job)
+    for r in rows[1:]:
+        rf = float(r["TOP.RF3"])
+        t = ldf_traction(float(r["IFACE.U3"]))
+        close("inc %s: TOP.RF3 vs T(IFACE.U3)" % r["inc"], rf, t, 1e-2, 1e-6)
+    # energy balance of the closing summary: the external work (trapezoidal in the reactions) against the UEL's
+    # ENERGY(2) + ENERGY(4) plus the block's SSE. With ~25 increments along a smooth path the trapezoidal error is
+    # O(h^2) ~ 1e-3: bound 1e-2.
+    with open(os.path.join(d, job + ".log")) as f:
+        m = re.search(r"energy balance: external work\s+(\S+) N mm, stored \+ dissipated\s+(\S+) N mm", f.read())
+    if not m:
+        fail("no energy balance in the log")
+    close("energy: stored + dissipated vs external work", float(m.group(2)), float(m.group(1)), 1e-2)
+
+
+# homogeneous displacement gradients and interior nodes of the patch decks (tests/regression/make_single_decks.py)
+PATCH = {
+    "patch_c3d8": ([[0.10, 0.02, -0.03], [-0.04, -0.05, 0.02], [0.03, 0.01, 0.06]], (0.57, 0.45, 0.54)),
+    "patch_cpe4": ([[0.10, 0.02], [-0.04, -0.05]], (0.57, 0.45)),
+}
+
+
+def case_patch(d, job):
+    """Patch test: a distorted mesh whose boundary nodes follow u = A X (finite A, NLGEOM) must reproduce the
+    homogeneous state, so the free interior node lands on A X. Tolerance 1e-8 relative: the Newton iteration stops
+    at r_max <= 1e-8 q_avg (the deck's *CONTROLS and Abaqus' linear criterion), far below any element error."""
+    row, _ = last_row(d, job)
+    a, x = PATCH[job]
+    for i in range(len(x)):
+        want = sum(a[i][c] * x[c] for c in range(len(x)))
+        close("INNER.U%d (interior node on u = A X)" % (i + 1), row["INNER.U%d" % (i + 1)], want, 1e-8, 1e-12)
+
+
+def case_quadratic(d, job):
+    """Quadratic Newton convergence on a large-rotation elastic problem: in each increment that needed at least 3
+    residual evaluations, some pair of consecutive ratios r_k < 1e-2 satisfies r_(k+1) <= 10 r_k^2 / r_0 (Newton's
+    quadratic contraction, with a factor 10 for the non-symmetric F-bar/Jaumann part dropped by the symmetric
+    solver being O(sigma/E))."""
+    ratios = sta_ratios(d, job)
+    if not ratios:
+        fail("no converged increment with residual ratios in JOB.sta")
+    checked = 0
+    for r in ratios:
+        if len(r) < 3:
+            continue
+        ok = any(r[k + 1] <= 10.0 * r[k] ** 2 / max(r[0], 1e-300) or r[k + 1] < 1e-10
+                 for k in range(len(r) - 1) if r[k] < 1e-2)
+        print("ratios", " ".join("%.2e" % x for x in r), "quadratic" if ok else "NOT quadratic")
+        if not ok:
+            fail("residual ratios do not converge quadratically")
+        checked += 1
+    if checked == 0:
+        fail("no increment with three or more residual evaluations")
+
+
+def case_user_uel(d, job):
+    """Third-party fixed-form UEL (tests/regression/user_uel_elastic.f, 4-node bar-like elastic interface with
+    stiffness k per unit area along every active dof, lumped to the nodes): RF3 = k * opening * A0."""
+    row, _ = last_row(d, job)
+    k, opening = 100.0, 0.01
+    close("TOP.RF3", row["TOP.RF3"], k * opening * 1.0, 1e-9)
+    with open(os.path.join(d, job + ".log")) as f:
+        log = f.read()
+    if "user_uel_elastic.f" not in log:
+        fail("the log does not say the user UEL was used")
+
+
+def case_nonconvergence(d, job):
+    """The minimum increment is reached: exit 3 (checked by the caller), the converged increments' rows are kept
+    and the log says why."""
+    with open(os.path.join(d, job + ".log")) as f:
+        log = f.read()
+    if "no convergence" not in log:
+        fail("the log does not explain the stop")
+    with open(os.path.join(d, job + ".csv")) as f:
+        rows = list(csv.DictReader(f))
+    print("converged rows kept:", len(rows))
+    if len(rows) < 1:
+        fail("no converged increment kept")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--deck", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--bad", action="store_true")
+    ap.add_argument("--case")
+    ap.add_argument("--user")
+    ap.add_argument("--expect-exit", type=int, default=0)
+    ap.add_argument("--extra", nargs="*", default=[])
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    cmd = [a.exe, "--quiet", "--threads", "2", "--out", a.out]
+    if a.user:
+        cmd += ["--user", a.user]
+    cmd += a.extra + [a.deck]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    print(" ".join(cmd))
+    print("exit status", p.returncode)
+    if p.stderr:
+        print("stderr:", p.stderr.strip())
+    job = os.path.splitext(os.path.basename(a.deck))[0]
+    if a.bad:
+        with open(a.deck) as f:
+            first = f.readline()
+        m = re.match(r"\*\* EXPECT line=(\d+) keyword=(\*[A-Z ]+?)(?: file=(\S+))?\s*$", first)
+        if not m:
+            fail("the deck has no '** EXPECT line=N keyword=*KW' first line")
+        line, kw, fname = m.group(1), m.group(2), m.group(3) or os.path.basename(a.deck)
+        if p.returncode != 2:
+            fail("exit status %d, expected 2" % p.returncode)
+        msg = p.stderr
+        for what, needle in (("file name", fname + ":" + line + ":"), ("keyword", kw + ":")):
+            if needle not in msg:
+                fail("the message does not contain the %s '%s'" % (what, needle))
+        print("ok: exit 2, message names %s:%s and %s" % (fname, line, kw))
+        return
+    if p.returncode != a.expect_exit:
+        fail("exit status %d, expected %d" % (p.returncode, a.expect_exit))
+    if a.case:
+        globals()["case_" + a.case](a.out, job)
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()

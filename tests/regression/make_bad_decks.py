@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Writes the malformed decks decks/bad/bad_<name>.inp from one valid single-element deck, each with one defect.
+
+Each deck's first line is `** EXPECT line=N keyword=*KW`: the line and keyword the error message must name
+(check_run.py --bad reads it). Run from anywhere: python3 tests/regression/make_bad_decks.py
+"""
+import os
+
+BASE = """*HEADING
+{title}
+*NODE, NSET=ALL
+1, 0., 0., 0.
+2, 1., 0., 0.
+3, 1., 1., 0.
+4, 0., 1., 0.
+5, 0., 0., 1.
+6, 1., 0., 1.
+7, 1., 1., 1.
+8, 0., 1., 1.
+*ELEMENT, TYPE=C3D8, ELSET=CUBE
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*NSET, NSET=BOTTOM
+1, 2, 3, 4
+*NSET, NSET=TOP
+5, 6, 7, 8
+*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL
+*MATERIAL, NAME=STEEL
+*ELASTIC
+1000., 0.3
+*BOUNDARY
+BOTTOM, ENCASTRE
+*STEP, NLGEOM=YES
+*STATIC
+0.1, 1.0
+*BOUNDARY
+TOP, 3, 3, 0.1
+*END STEP
+"""
+
+# name, title, text replaced, replacement, keyword the message must name, start of the offending line
+CASES = [
+    ("unknown_keyword", "an unknown keyword", "*STEP, NLGEOM=YES", "*FOOBAR, X=1\n*STEP, NLGEOM=YES",
+     "*FOOBAR", "*FOOBAR"),
+    ("nan_coordinate", "NaN in a node coordinate", "3, 1., 1., 0.", "3, 1., NaN, 0.", "*NODE", "3, 1., NaN"),
+    ("inf_modulus", "Inf in *ELASTIC", "1000., 0.3", "Inf, 0.3", "*ELASTIC", "Inf, 0.3"),
+    ("duplicate_node", "node 2 defined twice", "3, 1., 1., 0.", "2, 1., 1., 0.", "*NODE", "2, 1., 1., 0."),
+    ("undefined_nset", "boundary on an undefined set", "BOTTOM, ENCASTRE", "BOTOM, ENCASTRE", "*BOUNDARY",
+     "BOTOM, ENCASTRE"),
+    ("wrong_node_count", "C3D8 with 7 nodes", "1, 1, 2, 3, 4, 5, 6, 7, 8", "1, 1, 2, 3, 4, 5, 6, 7", "*ELEMENT",
+     "1, 1, 2, 3, 4, 5, 6, 7"),
+    ("unsupported_element", "element type C3D20R", "*ELEMENT, TYPE=C3D8, ELSET=CUBE",
+     "*ELEMENT, TYPE=C3D20R, ELSET=CUBE", "*ELEMENT", "*ELEMENT, TYPE=C3D20R"),
+    ("unsupported_parameter", "ORIENTATION on *SOLID SECTION", "*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL",
+     "*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL, ORIENTATION=ORI", "*SOLID SECTION",
+     "*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL, ORIENTATION"),
+    ("undefined_material", "section with an undefined material", "*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL",
+     "*SOLID SECTION, ELSET=CUBE, MATERIAL=ALU", "*SOLID SECTION", "*SOLID SECTION, ELSET=CUBE, MATERIAL=ALU"),
+    ("bad_number", "a malformed number", "6, 1., 0., 1.", "6, 1.x, 0., 1.", "*NODE", "6, 1.x"),
+    ("undefined_node", "element with an undefined node", "1, 1, 2, 3, 4, 5, 6, 7, 8",
+     "1, 1, 2, 3, 4, 5, 6, 7, 99", "*ELEMENT", "1, 1, 2, 3, 4, 5, 6, 7, 99"),
+    ("poisson_half", "Poisson ratio 0.5", "1000., 0.3", "1000., 0.5", "*ELASTIC", "1000., 0.5"),
+    ("static_negative", "negative time in *STATIC", "0.1, 1.0\n", "-0.1, 1.0\n", "*STATIC", "-0.1, 1.0"),
+    ("dload_unsupported", "*DLOAD (a load ldfcz does not support)", "*END STEP", "*DLOAD\n1, P2, 1.0\n*END STEP",
+     "*DLOAD", "*DLOAD"),
+    ("end_step_missing", "*END STEP missing before a second *STEP", "*END STEP\n",
+     "*STEP\n*STATIC\n*END STEP\n", "*STEP", "*STEP\n"),
+    ("nlgeom_value", "NLGEOM=MAYBE", "*STEP, NLGEOM=YES", "*STEP, NLGEOM=MAYBE", "*STEP", "*STEP, NLGEOM=MAYBE"),
+    ("include_missing", "*INCLUDE of a file that does not exist", "*NSET, NSET=BOTTOM",
+     "*INCLUDE, INPUT=no_such_file.inc\n*NSET, NSET=BOTTOM", "*INCLUDE", "*INCLUDE, INPUT=no_such_file.inc"),
+    ("user_element_undefined", "element type U7 not defined", "*ELEMENT, TYPE=C3D8, ELSET=CUBE",
+     "*ELEMENT, TYPE=U7, ELSET=CUBE", "*ELEMENT", "*ELEMENT, TYPE=U7"),
+    ("boundary_dof", "dof 7 in *BOUNDARY", "TOP, 3, 3, 0.1", "TOP, 7, 7, 0.1", "*BOUNDARY", "TOP, 7, 7, 0.1"),
+    ("controls_unsupported", "an unsupported *CONTROLS field", "*BOUNDARY\nTOP, 3, 3, 0.1",
+     "*CONTROLS, PARAMETERS=FIELD\n0.005, 0.01, , , 0.02\n*BOUNDARY\nTOP, 3, 3, 0.1", "*CONTROLS",
+     "0.005, 0.01, , , 0.02"),
+]
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    outdir = os.path.join(here, "..", "..", "decks", "bad")
+    for name, title, old, new, kw, marker in CASES:
+        deck = BASE.format(title="malformed deck: " + title)
+        assert old in deck, name
+        deck = deck.replace(old, new, 1)
+        lines = deck.split("\n")
+        if marker.endswith("\n"):
+            hits = [i for i, l in enumerate(lines) if l == marker[:-1]]
+        else:
+            hits = [i for i, l in enumerate(lines) if l.startswith(marker)]
+        assert hits, name
+        lineno = hits[0] + 2  # 1-based, shifted by the EXPECT line put first
+        deck = "** EXPECT line=%d keyword=%s\n" % (lineno, kw) + deck
+        with open(os.path.join(outdir, "bad_%s.inp" % name), "w") as f:
+            f.write(deck)
+
+
+if __name__ == "__main__":
+    main()
