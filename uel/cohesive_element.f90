@@ -40,8 +40,14 @@ contains
   !> For the LDF law the stiffness is analytic. For the classical law (comparison only) it is the central difference
   !> of the element internal force w.r.t. each nodal displacement, step h = 1e-6 min(delta, delta_t) (so that the
   !> rotation of the local basis is linearised as well); relative accuracy about (h/delta)^2 + eps |x|/h.
+  !>
+  !> Optional viscous regularisation (not in the paper; props%eta_v > 0 with u_start and dtime > 0 present):
+  !> T_vec += eta_v (Delta_vec - Delta_vec_start)/dtime at each Gauss point (backward Euler rate of the opening), tangent
+  !> += (eta_v/dtime) I; its dissipation over the increment, sum w eta_v |Delta_vec - Delta_vec_start|^2/dtime, is
+  !> returned in e_visc (zero otherwise).
   pure subroutine cohesive_element_compute(ndim, coords0, u, props, hist_old, want_stiffness, fint, kmat, hist_new, &
-                                           e_stored, e_diss, stat, errmsg, ip_traction, ip_opening)
+                                           e_stored, e_diss, stat, errmsg, ip_traction, ip_opening, u_start, dtime, &
+                                           e_visc, e_diss_start)
     integer, intent(in) :: ndim                    !< 3 (8 nodes) or 2 (4 nodes, plane strain)
     real(dp), intent(in) :: coords0(:,:)           !< initial coordinates (>= ndim rows, nnode columns)
     real(dp), intent(in) :: u(:)                   !< current total displacements, node by node (ndim per node)
@@ -57,7 +63,12 @@ contains
     character(len=*), intent(out) :: errmsg        !< message when stat /= stat_ok
     real(dp), intent(out), optional :: ip_traction(:,:)  !< (3, nip) traction vector at each Gauss point
     real(dp), intent(out), optional :: ip_opening(:,:)   !< (3, nip) opening vector at each Gauss point
+    real(dp), intent(in), optional :: u_start(:)         !< total displacements at the start of the increment (viscous)
+    real(dp), intent(in), optional :: dtime              !< time increment (viscous; <= 0: no viscous term)
+    real(dp), intent(out), optional :: e_visc            !< viscous dissipation of this increment
+    real(dp), intent(out), optional :: e_diss_start      !< dissipated energy of the law at the start of the increment
     real(dp) :: tr(3,4), op(3,4), up(size(u)), fp(size(u)), fm(size(u)), hdum(size(hist_new)), kdum(1,1), h, ed, es
+    real(dp) :: u0(size(u)), rate_c, ev, eds, evd, edsd
     integer :: ndof, j, nnode
 
     fint = 0.0_dp
@@ -65,6 +76,8 @@ contains
     e_stored = 0.0_dp
     e_diss = 0.0_dp
     if (want_stiffness) kmat = 0.0_dp
+    if (present(e_visc)) e_visc = 0.0_dp
+    if (present(e_diss_start)) e_diss_start = 0.0_dp
     errmsg = ''
     stat = stat_ok
     nnode = merge(8, 4, ndim == 3)
@@ -84,21 +97,35 @@ contains
       end if
     end if
 
+    ! viscous coefficient eta_v/dtime (0: the rate-independent law exactly)
+    rate_c = 0.0_dp
+    u0 = u
+    if (present(u_start) .and. present(dtime)) then
+      if (props%eta_v > 0.0_dp .and. dtime > 0.0_dp .and. size(u_start) == ndof) then
+        rate_c = props%eta_v / dtime
+        u0 = u_start
+      end if
+    end if
+
     call element_forces(ndim, coords0, u, props, hist_old, want_stiffness .and. props%law == law_ldf, fint, kmat, &
-                        hist_new, e_stored, e_diss, tr, op, stat, errmsg)
+                        hist_new, e_stored, e_diss, tr, op, stat, errmsg, u0, rate_c, ev, eds)
     if (stat /= stat_ok) return
     if (present(ip_traction)) ip_traction = tr(:, 1:element_nip(ndim))
     if (present(ip_opening)) ip_opening = op(:, 1:element_nip(ndim))
+    if (present(e_visc)) e_visc = ev
+    if (present(e_diss_start)) e_diss_start = eds
 
     if (want_stiffness .and. props%law == law_classical) then
       h = 1.0e-6_dp * min(props%delta, props%delta_t)
       do j = 1, ndof
         up = u
         up(j) = u(j) + h
-        call element_forces(ndim, coords0, up, props, hist_old, .false., fp, kdum, hdum, es, ed, tr, op, stat, errmsg)
+        call element_forces(ndim, coords0, up, props, hist_old, .false., fp, kdum, hdum, es, ed, tr, op, stat, errmsg, &
+                            u0, rate_c, evd, edsd)
         if (stat /= stat_ok) return
         up(j) = u(j) - h
-        call element_forces(ndim, coords0, up, props, hist_old, .false., fm, kdum, hdum, es, ed, tr, op, stat, errmsg)
+        call element_forces(ndim, coords0, up, props, hist_old, .false., fm, kdum, hdum, es, ed, tr, op, stat, errmsg, &
+                            u0, rate_c, evd, edsd)
         if (stat /= stat_ok) return
         kmat(:, j) = (fp - fm) / (2.0_dp * h)
       end do
@@ -107,7 +134,7 @@ contains
 
   !> Forces (and for the LDF law the analytic stiffness) of one element; see cohesive_element_compute.
   pure subroutine element_forces(ndim, coords0, u, props, hist_old, want_k, fint, kmat, hist_new, e_stored, e_diss, &
-                                 tr_ip, op_ip, stat, errmsg)
+                                 tr_ip, op_ip, stat, errmsg, u_start, rate_c, e_visc, e_diss_start)
     integer, intent(in) :: ndim
     real(dp), intent(in) :: coords0(:,:), u(:)
     type(cohesive_props), intent(in) :: props
@@ -118,13 +145,17 @@ contains
     real(dp), intent(out) :: hist_new(:), e_stored, e_diss, tr_ip(3,4), op_ip(3,4)
     integer, intent(out) :: stat
     character(len=*), intent(out) :: errmsg
+    real(dp), intent(in) :: u_start(:)      !< displacements at the start of the increment (viscous term)
+    real(dp), intent(in) :: rate_c          !< eta_v/dtime, 0 = no viscous term
+    real(dp), intent(out) :: e_visc         !< viscous dissipation of the increment
+    real(dp), intent(out) :: e_diss_start   !< dissipated energy of the law at the start of the increment
 
     integer :: nf, nip, nnode, k, l, ip, bot(4), top(4), nodes(2,4), sa, sb, ka, kb
     real(dp) :: x0(3,8), x(3,8), xm0(3,4), xm(3,4), psi(4), dpsi_xi(4), dpsi_eta(4), dxi_c(4), deta_c(4)
     real(dp) :: gxi(4), geta(4), g, txi(3), teta(3), a(3), anorm, n(3), j0, w
     real(dp) :: dvec(3), tvec(3), mmat(3,3), tcv(3), mc(3,3), tc, dtc, wc, ws, wd, dmax_new, dn, dt
     real(dp) :: proj(3,3), dndx(3,3,4), gmat(3,3), fblk(3,2,4), kblk(3,3,2,2,4,4), rot2(3,3)
-    real(dp) :: dt_top(3,3), dt_bot(3,3)
+    real(dp) :: dt_top(3,3), dt_bot(3,3), xs(3,8), ddel(3), tdum(3), mdum(3,3), hdum, wsd, wdd
     real(dp), parameter :: eye(3,3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
                                               [3, 3])
 
@@ -134,6 +165,8 @@ contains
     hist_new = hist_old
     e_stored = 0.0_dp
     e_diss = 0.0_dp
+    e_visc = 0.0_dp
+    e_diss_start = 0.0_dp
     tr_ip = 0.0_dp
     op_ip = 0.0_dp
     fblk = 0.0_dp
@@ -157,9 +190,11 @@ contains
     ! Initial and current positions, padded to 3 components (plane problems: z = 0)
     x0 = 0.0_dp
     x = 0.0_dp
+    xs = 0.0_dp
     do k = 1, nnode
       x0(1:ndim, k) = coords0(1:ndim, k)
       x(1:ndim, k) = coords0(1:ndim, k) + u(ndim * (k - 1) + 1:ndim * k)
+      xs(1:ndim, k) = u(ndim * (k - 1) + 1:ndim * k) - u_start(ndim * (k - 1) + 1:ndim * k)
     end do
     if (.not. all(ieee_is_finite(x))) then
       stat = stat_bad_state
@@ -243,12 +278,27 @@ contains
         ws = ws + wc
         ! dT/dn at fixed opening: T_c I + dT_c/dDelta_c n Delta^T (the term Eq. 29 omits)
         gmat = tc * eye + dtc * outer(n, dvec)
+        ! dissipated energy of the law at the start of the increment (zero opening keeps Delta_max_old)
+        call ldf_traction(props, [0.0_dp, 0.0_dp, 0.0_dp], hist_old(nsv_per_ip * (ip - 1) + 1), tdum, mdum, hdum, &
+                          wsd, wdd)
+        e_diss_start = e_diss_start + w * wdd
       else
         call classical_traction(props, dvec, n, tvec, dn, dt, ws)
         dmax_new = max(hist_old(nsv_per_ip * (ip - 1) + 1), norm2(dvec))
         wd = 0.0_dp
         mmat = 0.0_dp
         gmat = 0.0_dp
+      end if
+
+      ! optional viscous regularisation: T_vec += eta_v dDelta_vec/dt, M += eta_v/dt I, dissipation eta_v |dDelta|^2/dt
+      if (rate_c > 0.0_dp) then
+        ddel = 0.0_dp
+        do k = 1, nf
+          ddel = ddel + psi(k) * (xs(:, top(k)) - xs(:, bot(k)))   ! xs: displacement increments
+        end do
+        tvec = tvec + rate_c * ddel
+        mmat = mmat + rate_c * eye
+        e_visc = e_visc + w * rate_c * dot_product(ddel, ddel)
       end if
 
       hist_new(nsv_per_ip * (ip - 1) + 1) = dmax_new

@@ -28,6 +28,7 @@ module cohesive_law
     real(dp) :: kc = 0.0_dp       !< contact stiffness k_c (MPa), Eq. 22
     real(dp) :: phi_t = 0.0_dp    !< tangential work of separation of the classical law (Eq. 1)
     real(dp) :: delta_t = 0.0_dp  !< tangential characteristic length of the classical law (Eq. 1)
+    real(dp) :: eta_v = 0.0_dp    !< optional viscous regularisation (N s/mm^3): T_vec += eta_v dDelta_vec/dt; 0 = none
     integer :: unloading = unload_reversible  !< unload_reversible, unload_damage or unload_plastic
     integer :: law = law_ldf                  !< law_ldf or law_classical
   end type cohesive_props

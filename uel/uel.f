@@ -14,6 +14,9 @@
 !     PROPS(3) k_c (MPa) >= 0, 0 or absent: k_c = phi/delta,
 !     PROPS(4) phi_t, PROPS(5) delta_t (classical law only; 0 or
 !       absent: phi, delta).
+!     PROPS(6) eta_v >= 0 (N s/mm^3), optional viscous regularisation
+!       T += eta_v dDelta/DTIME (0 or absent: none, the paper's law);
+!       its dissipation is added to ENERGY(4).
 !     JPROPS(1) unloading 1 reversible, 2 elastic damage, 3 plastic
 !       (0 or absent: 1). JPROPS(2) law 1 LDF, 2 classical (0 or
 !       absent: 1); the classical law is reversible only.
@@ -50,7 +53,8 @@
       TYPE(COHESIVE_PROPS) PR
       INTEGER NDIM, NEED, IUNL, LAW, ISTAT, I, LF
       INTEGER INTV(3)
-      DOUBLE PRECISION REALV(2), ESTO, EDIS
+      DOUBLE PRECISION REALV(2), ESTO, EDIS, EVIS, EDS0
+      DOUBLE PRECISION UST(NDOFEL)
       DOUBLE PRECISION FINT(NDOFEL), AK(NDOFEL,NDOFEL)
       DOUBLE PRECISION HOLD(NSVARS), HNEW(NSVARS)
       CHARACTER*8 CHARV(1)
@@ -87,7 +91,7 @@
         CALL XIT()
         RETURN
       END IF
-      DO I = 1, MIN(NPROPS, 5)
+      DO I = 1, MIN(NPROPS, 6)
         IF (.NOT. IEEE_IS_FINITE(PROPS(I))) THEN
           INTV(2) = I
           CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(%I) is'
@@ -112,12 +116,13 @@
         CALL XIT()
         RETURN
       END IF
-      DO I = 3, MIN(NPROPS, 5)
+      DO I = 3, MIN(NPROPS, 6)
         IF (PROPS(I) .LT. 0.0D0) THEN
           INTV(2) = I
           REALV(1) = PROPS(I)
           CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(%I)'
-     1     //' (3 k_c, 4 phi_t, 5 delta_t) must be >= 0, got %R',
+     1     //' (3 k_c, 4 phi_t, 5 delta_t, 6 eta_v) must be >= 0,'
+     2     //' got %R',
      2     INTV, REALV, CHARV)
           CALL XIT()
           RETURN
@@ -138,6 +143,9 @@
       IF (NPROPS .GE. 5) THEN
         IF (PROPS(5) .GT. 0.0D0) PR%DELTA_T = PROPS(5)
       END IF
+!     optional viscous regularisation eta_v (N s/mm^3); 0: none
+      PR%ETA_V = 0.0D0
+      IF (NPROPS .GE. 6) PR%ETA_V = PROPS(6)
 !     --- integer properties
       IUNL = 1
       LAW = LAW_LDF
@@ -215,9 +223,21 @@
       END IF
 !     --- the core
       HOLD = SVARS(1:NSVARS)
-      CALL COHESIVE_ELEMENT_COMPUTE(NDIM, COORDS(1:NDIM, 1:NNODE),
-     1  U(1:NDOFEL), PR, HOLD, WANTK, FINT, AK, HNEW, ESTO, EDIS,
-     2  ISTAT, EMSG)
+      IF (PR%ETA_V .GT. 0.0D0) THEN
+!       viscous: rate from DU/DTIME; ENERGY(4) accumulates the
+!       viscous dissipation on top of the law's (ENERGY on entry =
+!       start of the increment)
+        UST = U(1:NDOFEL) - DU(1:NDOFEL, 1)
+        CALL COHESIVE_ELEMENT_COMPUTE(NDIM, COORDS(1:NDIM, 1:NNODE),
+     1    U(1:NDOFEL), PR, HOLD, WANTK, FINT, AK, HNEW, ESTO, EDIS,
+     2    ISTAT, EMSG, U_START=UST, DTIME=DTIME, E_VISC=EVIS,
+     3    E_DISS_START=EDS0)
+        EDIS = ENERGY(4) + (EDIS - EDS0) + EVIS
+      ELSE
+        CALL COHESIVE_ELEMENT_COMPUTE(NDIM, COORDS(1:NDIM, 1:NNODE),
+     1    U(1:NDOFEL), PR, HOLD, WANTK, FINT, AK, HNEW, ESTO, EDIS,
+     2    ISTAT, EMSG)
+      END IF
       IF (ISTAT .NE. STAT_OK) THEN
         IF (ISTAT .EQ. STAT_BAD_INPUT) THEN
           CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: '//TRIM(EMSG),

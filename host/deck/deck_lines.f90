@@ -11,6 +11,8 @@ module deck_lines
   public :: deck_where, deck_param_value, deck_has_param, deck_normalize
 
   integer, parameter :: max_include_depth = 10  !< guard against recursive includes
+  integer, parameter :: max_line_len = 1000000  !< longest line read (guards against endless files such as /dev/zero)
+  integer, parameter :: ios_too_long = 987654   !< read_line status: line longer than max_line_len
 
   !> One logical record: a keyword line or a data line (continuations joined).
   type :: deck_record_t
@@ -79,6 +81,12 @@ contains
     integer, intent(in) :: irec             !< record index
     character(len=:), allocatable :: w
     character(len=16) :: num
+    if (irec < 1 .or. irec > src%nrec) then
+      ! no such record (e.g. an empty deck): the top-level file, line 1
+      w = '?:1'
+      if (src%nfile >= 1) w = src%files(1)%name//':1'
+      return
+    end if
     write (num, '(i0)') src%rec(irec)%line
     w = src%files(src%rec(irec)%file_id)%name//':'//trim(num)
   end function deck_where
@@ -116,6 +124,12 @@ contains
       errmsg = path//': file not found'
       return
     end if
+    inquire (file=path//'/.', exist=exists)
+    if (exists) then
+      stat = 2
+      errmsg = path//': is a directory, not a deck file'
+      return
+    end if
     open (newunit=unit, file=path, status='old', action='read', iostat=ios)
     if (ios /= 0) then
       stat = 2
@@ -135,7 +149,18 @@ contains
     irec_cont = 0
     do
       call read_line(unit, line, ios)
-      if (ios /= 0) exit
+      if (is_iostat_end(ios)) exit
+      if (ios /= 0) then
+        ! not an end of file: a line without end, a device or an unreadable file
+        write (num, '(i0)') iline + 1
+        stat = 2
+        if (ios == ios_too_long) then
+          errmsg = path//':'//trim(num)//': line longer than 1000000 characters (not a deck file?)'
+        else
+          errmsg = path//':'//trim(num)//': cannot read the file (an unreadable file?)'
+        end if
+        exit
+      end if
       iline = iline + 1
       ! strip CR (files from Windows) and trailing blanks
       k = index(line, achar(13))
@@ -224,6 +249,12 @@ contains
         errmsg = path//':'//trim(num)//': *INCLUDE: file not found: '//incname
         return
       end if
+      inquire (file=incname//'/.', exist=exists)
+      if (exists) then
+        stat = 2
+        errmsg = path//':'//trim(num)//': *INCLUDE: is a directory, not a file: '//incname
+        return
+      end if
       call load_file(incname, src, depth + 1, st, emsg)
       if (st /= 0) then
         stat = st
@@ -253,6 +284,10 @@ contains
       read (unit, '(a)', advance='no', iostat=ios, size=nread) buf
       line = line//buf(1:nread)
       if (ios /= 0) exit
+      if (len(line) > max_line_len) then
+        ios = ios_too_long   ! e.g. *INCLUDE, INPUT=/dev/zero: never ends
+        return
+      end if
     end do
     if (ios == iostat_eor) ios = 0
   end subroutine read_line

@@ -413,6 +413,10 @@ contains
             call fail(i, kw, 'GENERATE needs first <= last and a positive increment')
             return
           end if
+          if (a < 1) then
+            call fail(i, kw, 'ids must be positive, got '//itoa(a))
+            return
+          end if
           do k = a, b, s
             if (is_node) then
               call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -k)
@@ -425,6 +429,10 @@ contains
             if (len_trim(f(k)) == 0) cycle
             if (verify(trim(f(k)), '0123456789+-') == 0) then
               if (.not. get_int(i, f(k), a)) return
+              if (a < 1) then
+                call fail(i, kw, 'ids must be positive, got '//itoa(a))
+                return
+              end if
               if (is_node) then
                 call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -a)
               else
@@ -907,6 +915,10 @@ contains
         end if
         if (verify(trim(f(1)), '0123456789+-') == 0) then
           if (.not. get_int(i, f(1), id)) return
+          if (id < 1) then
+            call fail(i, kw, 'node ids must be positive, got '//itoa(id))
+            return
+          end if
           allocate (bc%nodes(1))
           bc%nodes(1) = -id  ! resolved in finish_model
         else
@@ -1009,9 +1021,11 @@ contains
         if (v == '' .or. v == 'YES') then
           model%steps(istep)%nlgeom = .true.
         else if (v == 'NO') then
-          if (istep > 1 .and. model%steps(istep - 1)%nlgeom) then
-            call fail(ir, kw, 'NLGEOM cannot be switched off after a geometrically nonlinear step')
-            return
+          if (istep > 1) then  ! (no short-circuit in Fortran: steps(0) must not be evaluated)
+            if (model%steps(istep - 1)%nlgeom) then
+              call fail(ir, kw, 'NLGEOM cannot be switched off after a geometrically nonlinear step')
+              return
+            end if
           end if
           model%steps(istep)%nlgeom = .false.
         else

@@ -73,6 +73,25 @@ CASES = [
     ("controls_unsupported", "an unsupported *CONTROLS field", "*BOUNDARY\nTOP, 3, 3, 0.1",
      "*CONTROLS, PARAMETERS=FIELD\n0.005, 0.01, , , 0.02\n*BOUNDARY\nTOP, 3, 3, 0.1", "*CONTROLS",
      "0.005, 0.01, , , 0.02"),
+    # added for the robustness corpus (issue 6)
+    ("missing_data_line", "*ELASTIC without its data line", "*ELASTIC\n1000., 0.3\n", "*ELASTIC\n", "*ELASTIC",
+     "*ELASTIC"),
+    ("include_directory", "*INCLUDE of a directory", "*NSET, NSET=BOTTOM",
+     "*INCLUDE, INPUT=include\n*NSET, NSET=BOTTOM", "*INCLUDE", "*INCLUDE, INPUT=include"),
+    ("duplicate_element", "element 1 defined twice", "1, 1, 2, 3, 4, 5, 6, 7, 8\n",
+     "1, 1, 2, 3, 4, 5, 6, 7, 8\n1, 8, 7, 6, 5, 4, 3, 2, 1\n", "*ELEMENT", "1, 8, 7, 6, 5"),
+    ("amplitude_undefined", "boundary with an undefined amplitude", "*BOUNDARY\nTOP, 3, 3, 0.1",
+     "*BOUNDARY, AMPLITUDE=NOPE\nTOP, 3, 3, 0.1", "*BOUNDARY", "*BOUNDARY, AMPLITUDE=NOPE"),
+    ("negative_modulus", "negative Young's modulus", "1000., 0.3", "-1000., 0.3", "*ELASTIC", "-1000., 0.3"),
+    ("boundary_dof_order", "first dof after the last dof", "TOP, 3, 3, 0.1", "TOP, 3, 1, 0.1", "*BOUNDARY",
+     "TOP, 3, 1, 0.1"),
+    ("inc_zero", "INC=0 on *STEP", "*STEP, NLGEOM=YES", "*STEP, NLGEOM=YES, INC=0", "*STEP", "*STEP, NLGEOM=YES, INC=0"),
+    ("node_id_overflow", "a node id beyond the integer range", "8, 0., 1., 1.", "99999999999999999999, 0., 1., 1.",
+     "*NODE", "99999999999999999999"),
+    ("static_initial_gt_period", "initial increment larger than the period", "0.1, 1.0\n", "2.0, 1.0\n",
+     "*STATIC", "2.0, 1.0"),
+    ("depvar_negative", "*DEPVAR with a negative count", "*ELASTIC\n1000., 0.3\n",
+     "*USER MATERIAL, CONSTANTS=2\n1000., 0.3\n*DEPVAR\n-3\n", "*DEPVAR", "-3"),
 ]
 
 
