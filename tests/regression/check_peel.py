@@ -12,7 +12,6 @@ run ldfcz on them and assert physical facts with stated tolerances.
       contracts towards the symmetry plane (U2 < 0: the plane is active and the edge y = b free).
 Exit status 0 when every assertion holds, 1 otherwise (each failure printed).
 """
-import math
 import os
 import sys
 

@@ -8,7 +8,7 @@ For each option family (plane strain / 3D quarter / 3D full width, steel / rigid
 - the cohesive elements have zero initial thickness (top node k+4 on bottom node k, 2D: 3 on 2 and 4 on 1), their
   bottom->top normal points to +z, and their faces tile the bonded interface L_b w (relative 1e-9);
 - PROPS of the UEL are phi and delta = phi/(e T_max) (Eq. 5), the UMAT's Table 1 constants and *DEPVAR 11;
-- the LOAD set is the coating's end face x = L_b + a_0, the whole face.
+- the LOAD set is the coating's end face x = L_b + a_0, the whole face (coating nodes only).
 """
 import math
 import os
@@ -137,7 +137,8 @@ def check_case(gen, work, args, bad):
             bad.append('%s: *DEPVAR %s, the UMAT needs 11' % (tag, data[0]))
     xload = lb + a0
     load = sets.get('LOAD', [])
-    face = [n for n, c in nodes.items() if abs(c[0] - xload) < 1e-12]
+    coat_nodes = {n for et, es, conn in elems.values() if es == 'COATING' for n in conn}
+    face = [n for n in coat_nodes if abs(nodes[n][0] - xload) < 1e-12]
     if sorted(load) != sorted(face):
         bad.append('%s: LOAD is not the end face x = %g (%d nodes, face %d)' % (tag, xload, len(load), len(face)))
     print('%-70s %5d elements: checked' % (tag[:70], len(elems)))
@@ -150,7 +151,7 @@ def main(argv):
     cases = [[], ['--rigid-substrate'], ['--no-coarse', '--le', '0.02'], ['--nz', '5', '--flap', '0.03'],
              ['--3d', '--ny', '2', '--le', '0.02'], ['--3d', '--rigid-substrate', '--ny', '3', '--width', '0.03'],
              ['--3d', '--full-width', '--ny', '2', '--le', '0.02', '--nz', '2'],
-             ['--tmax', '10', '--phi', '0.1', '--bonded', '0.5', '--coating', '0.02']]
+             ['--tmax', '10', '--phi', '0.1', '--bonded', '0.5', '--coating', '0.02'], ['--flap', '0', '--rigid-substrate']]
     for c in cases:
         check_case(gen, work, c, bad)
     for b in bad:

@@ -1,0 +1,15 @@
+# Peel scenes (issue 5). The generator's geometry check needs no solver; the short peel runs (tolerances and their
+# reasons in tests/regression/check_peel.py) are registered only when the host program is built.
+add_test(NAME peel_generator
+  COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_peel_generator.py"
+          "${PROJECT_SOURCE_DIR}/tools/peel_deck.py" "${CMAKE_CURRENT_BINARY_DIR}/peel_generator")
+set_tests_properties(peel_generator PROPERTIES LABELS "regression;peel" TIMEOUT 120)
+
+if(TARGET ldfcz)
+  foreach(_case refinement symmetry)
+    add_test(NAME peel_${_case}
+      COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_peel.py" ${_case}
+              $<TARGET_FILE:ldfcz> "${CMAKE_CURRENT_BINARY_DIR}/peel_${_case}")
+    set_tests_properties(peel_${_case} PROPERTIES LABELS "regression;peel" TIMEOUT 600)
+  endforeach()
+endif()
