@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Install what is missing, build (Release) and run the main job.
+# Install what is missing, build (Release) and run the main job: the default plane-strain peel scene
+# (decks/peel/peel_ps.inp, paper sections 7-9, docs/scenes.md). It prints the steady peel force per unit width and
+# writes the force-displacement CSV, a PNG plot (out/main/report/main/) and ParaView frames (out/main/run/).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/tools/setup.sh" Release
 build_dir=${LDFCZ_BUILD_DIR:-$root/build}
-# Until the host's peel scene lands, the main job is the single-element cohesive demo: it calls the UEL exactly as
-# Abaqus would and prints the traction-separation table of the three unloading behaviours (paper Fig. 6).
-"$build_dir/bin/cohesive_demo"
+cd "$root"
+/usr/bin/python3 tools/peel_study.py main --ldfcz "$build_dir/bin/ldfcz" \
+  --reports "$root/out/main/report" --work "$root/out/main/run" "$@"
