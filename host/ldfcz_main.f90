@@ -8,7 +8,7 @@ program ldfcz
   use deck_reader, only: read_deck
   use user_routines, only: user_routines_t, user_routines_builtin, user_routines_load
   use output_files, only: output_t, output_open, output_close, output_log
-  use static_solver, only: run_analysis, run_summary_t, exit_input
+  use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code
   use abaqus_host_state, only: abaqus_set_job
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
@@ -19,6 +19,7 @@ program ldfcz
   type(user_routines_t) :: routines
   type(output_t) :: out
   type(run_summary_t) :: summary
+  type(solver_options_t) :: options
 
   deck = ''
   outdir = '.'
@@ -41,6 +42,28 @@ program ldfcz
       quiet = .true.
     case ('-v', '--verbose')
       verbose = .true.
+    case ('--newton', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment')
+      if (i == n) call die('option '//arg//' needs a value')
+      i = i + 1
+      select case (arg)
+      case ('--newton')
+        options%newton = newton_mode_code(get_arg(i))
+        if (options%newton == 0) call die('--newton needs full, modified, krylov or auto')
+      case ('--max-opening-increment')
+        arg = get_arg(i)
+        read (arg, *, iostat=stat) options%max_opening
+        if (stat /= 0 .or. .not. (options%max_opening >= 0.0 .and. options%max_opening < huge(1.0))) &
+          call die('--max-opening-increment needs a number >= 0 (fraction of delta; 0: off)')
+      case ('--max-plastic-increment')
+        arg = get_arg(i)
+        read (arg, *, iostat=stat) options%max_plastic
+        if (stat /= 0 .or. .not. (options%max_plastic >= 0.0 .and. options%max_plastic < huge(1.0))) &
+          call die('--max-plastic-increment needs a number >= 0 (0: off)')
+      case default
+        arg = get_arg(i)
+        read (arg, *, iostat=stat) options%plastic_statev
+        if (stat /= 0 .or. options%plastic_statev < 0) call die('--plastic-statev needs an integer >= 0 (0: none)')
+      end select
     case ('-o', '--out', '-t', '--threads', '-u', '--user')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
@@ -93,7 +116,7 @@ program ldfcz
       call exit(exit_input)
     end if
   end if
-  call run_analysis(model, routines, out, verbose, summary, exit_code)
+  call run_analysis(model, routines, out, verbose, summary, exit_code, options)
   call output_close(out)
   call exit(exit_code)
 
@@ -138,6 +161,14 @@ contains
       '                     instead of the built-in routines, as abaqus job=... user=FILE', &
       '  -q, --quiet        no messages on standard output (JOB.log is still written)', &
       '  -v, --verbose      residual, force and correction of every Newton iteration in JOB.log', &
+      '  --newton MODE      full (default: new tangent and factorization every iteration), modified (factors', &
+      '                     kept while the residual contracts), krylov (new tangent, GMRES preconditioned by', &
+      '                     the last factors), auto (krylov, GMRES budget from the measured costs)', &
+      '  --max-opening-increment F  limit increments so that the cohesive opening changes by at most F*delta', &
+      '                     per increment (built-in UEL SVARS; paper section 7: F <= 1/3 -> >= 99% of phi)', &
+      '  --plastic-statev N report the largest increment of STATEV(N) (default 7 = gamma_p of the built-in', &
+      '                     UMAT; 0: none)', &
+      '  --max-plastic-increment X  choose the next increment so that STATEV(N) changes by about 0.8 X', &
       '  -h, --help         this text', &
       '  -V, --version      the version', &
       'exit status: 0 all steps completed, 2 deck or option error, 3 no convergence (converged output kept)'

@@ -78,3 +78,21 @@ foreach(extra cohesive_block quadratic_rotation user_uel nonconvergence)
   endif()
 endforeach()
 
+
+# performance options of the host and two single-element decks (tests/regression/check_perf_decks.py;
+# decks written by tests/regression/make_perf_decks.py)
+set(LDFCZ_CHECK_PERF "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_perf_decks.py")
+function(ldfcz_add_perf_test name deck case)
+  add_test(NAME ${name} COMMAND Python3::Interpreter ${LDFCZ_CHECK_PERF} --exe $<TARGET_FILE:ldfcz> --deck ${deck}
+    --out ${LDFCZ_RUNS}/${name} --case ${case} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "deck" TIMEOUT 300)
+endfunction()
+if(TARGET material_point AND EXISTS "${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp")
+  ldfcz_add_perf_test(deck_c3d8_umat_uniaxial ${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp umat_uniaxial
+    --mp $<TARGET_FILE:material_point>)
+endif()
+if(EXISTS "${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp")
+  ldfcz_add_perf_test(deck_c3d8_rotation_uniaxial ${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp rotation_uniaxial)
+endif()
+ldfcz_add_perf_test(deck_newton_modes ${LDFCZ_DECKS}/single/cohesive_block.inp newton_modes)
+ldfcz_add_perf_test(deck_opening_control ${LDFCZ_DECKS}/single/cohesive_block.inp opening_control)

@@ -383,7 +383,8 @@ contains
       jdltyp = 0
       adlmag = 0.0_dp
       ddlmag = 0.0_dp
-      lflags = [1, merge(1, 0, nlgeom), 1, 0, 0]
+      ! LFLAGS(3) = 1: RHS and AMATRX; 5: RHS only (a reused factorization needs no tangent)
+      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, 0]
       call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
         ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, 0, jdltyp, &
         adlmag, predef, 1, lflags, n, ddlmag, 1, pnewdt, jprops, model%utypes(iu)%njprops, period)
@@ -397,7 +398,7 @@ contains
       if (nsv > 0) an%trial(ie)%svars = sv(1:nsv)
       an%trial(ie)%energy = energy
       ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
-      if (.not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+      if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
     else
       do a = 1, nn
         coords(1:an%ndim, a) = model%x(1:an%ndim, model%conn(model%conn_ptr(ie) + a - 1))

@@ -10,7 +10,8 @@ module static_solver
     step_control_done, step_control_dt
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_analysis, sparse_time_factor, &
-    sparse_time_solve, sparse_factor_count, sparse_destroy
+    sparse_time_solve, sparse_factor_count, sparse_destroy, sparse_is_factored, sparse_solve_krylov, &
+    sparse_krylov_count
   use output_files, only: output_t, output_log, output_csv_header, output_csv_row, output_sta, output_progress, &
     output_vtu_frame, output_vtu_t
   use user_routines, only: user_routines_t
@@ -18,10 +19,30 @@ module static_solver
   implicit none
   private
   public :: run_analysis, run_summary_t, exit_ok, exit_input, exit_no_convergence
+  public :: solver_options_t, newton_full, newton_modified, newton_krylov, newton_auto, newton_mode_code
 
   integer, parameter :: exit_ok = 0, exit_input = 2, exit_no_convergence = 3
   integer, parameter :: max_cutbacks = 5        !< Abaqus I_A: attempts per increment
   integer, parameter :: n_sdv_out = 3           !< state variables written to the VTU frames
+  !> Newton variants (docs/performance.md): full = fresh tangent and factorization every iteration; modified =
+  !> factors kept across iterations and increments, elements called for the residual only (UEL LFLAGS(3) = 5),
+  !> a fresh tangent when the residual contracts poorly; krylov = fresh tangent every iteration, solved by GMRES
+  !> preconditioned with the last factorization, refactorized when GMRES does not converge quickly; auto = krylov
+  !> with the GMRES budget set from the measured cost of a factorization against a solve.
+  integer, parameter :: newton_full = 1, newton_modified = 2, newton_krylov = 3, newton_auto = 4
+  real(dp), parameter :: modified_contraction = 0.5_dp  !< modified Newton: r_k/r_(k-1) above this -> new tangent
+  integer, parameter :: modified_max_reuse = 8          !< modified Newton: new tangent after this many reuses
+  real(dp), parameter :: krylov_rel_tol = 1.0e-8_dp     !< GMRES relative residual (an exact Newton step)
+  integer, parameter :: krylov_max_iter = 30            !< GMRES budget of mode krylov (restart = budget)
+  real(dp), parameter :: opening_target = 0.8_dp        !< next increment aims at this fraction of the bound
+
+  !> Run-time choices of the solver (command line; defaults: Abaqus-like full Newton, no accuracy control).
+  type :: solver_options_t
+    integer :: newton = newton_full             !< newton_full, newton_modified, newton_krylov, newton_auto
+    real(dp) :: max_opening = 0.0_dp            !< > 0: largest cohesive opening increment / delta per increment
+    integer :: plastic_statev = -1              !< STATEV whose largest increment is reported (-1: by the UMAT, 0 none)
+    real(dp) :: max_plastic = 0.0_dp            !< > 0: next increment aims at this STATEV(plastic_statev) increment
+  end type solver_options_t
 
   !> Counters and measures of a run (printed in the closing summary).
   type :: run_summary_t
@@ -31,19 +52,26 @@ module static_solver
     real(dp) :: w_ext = 0                       !< external work of the reactions (trapezoidal)
     real(dp) :: e_int = 0                       !< stored + dissipated energy of elements and materials
     real(dp) :: max_open_ratio = 0              !< largest cohesive |Delta| increment / delta
+    real(dp) :: max_statev_inc = 0              !< largest increment of STATEV(plastic_statev)
+    integer :: plastic_statev = 0               !< the STATEV reported (0: none)
+    integer :: krylov_solves = 0, krylov_iterations = 0, krylov_failures = 0, reused_solves = 0
+    integer :: accuracy_cutbacks = 0            !< increments redone for the opening bound
+    integer :: newton = newton_full
     integer :: peak_kb = 0                      !< VmHWM
   end type run_summary_t
 
 contains
 
   !> Run every step of the model. exit_code: 0 all steps done, 2 input/model error, 3 no convergence.
-  subroutine run_analysis(model, routines, out, verbose, summary, exit_code)
+  subroutine run_analysis(model, routines, out, verbose, summary, exit_code, options)
     type(model_t), intent(in) :: model             !< the model
     type(user_routines_t), intent(in) :: routines  !< UEL and UMAT
     type(output_t), intent(inout) :: out           !< output files
     logical, intent(in) :: verbose                 !< per-iteration residual lines in the log
     type(run_summary_t), intent(out) :: summary    !< counters and measures
     integer, intent(out) :: exit_code              !< exit status
+    type(solver_options_t), intent(in), optional :: options  !< solver choices (default: full Newton)
+    type(solver_options_t) :: opt
     type(analysis_t) :: an
     integer :: stat, is, kinc, attempt, iter, i, j, k, ncol, ic, kinc_total, last_frame_inc
     character(len=:), allocatable :: errmsg, msg
@@ -52,7 +80,10 @@ contains
     logical, allocatable :: bc_on(:), bc_init(:)
     real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:)
     real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_avg, q_now, r_max, c_max, du_max, t_end, next_mark
-    real(dp) :: cpu0, cpu1, r_prev, r_prev2
+    real(dp) :: cpu0, cpu1, r_prev, r_prev2, open_inc, plastic_inc, t_fact_last, t_solve_last, t0s
+    real(dp), allocatable :: r_copy(:)
+    integer :: reuse_count, kit, kbudget
+    logical :: want_k, k_fresh
     integer(i8) :: c0, c1, rate, cs0
     type(step_control_t) :: sc
     logical :: converged, ok, diverging
@@ -61,7 +92,11 @@ contains
 
     call system_clock(c0, rate)
     call cpu_time(cpu0)
+    if (present(options)) opt = options
     exit_code = exit_ok
+    t_fact_last = 0.0_dp
+    t_solve_last = 0.0_dp
+    reuse_count = 0
     call abaqus_clear_stop()
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
@@ -73,6 +108,20 @@ contains
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
       itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver; UEL: '// &
       routines%uel_origin//'; UMAT: '//routines%umat_origin)
+    summary%newton = opt%newton
+    summary%plastic_statev = opt%plastic_statev
+    if (summary%plastic_statev < 0) summary%plastic_statev = merge(7, 0, routines%umat_origin == 'built-in ldfcz UMAT')
+    if (model%nmat > 0) then
+      if (all(model%materials(1:model%nmat)%has_elastic)) summary%plastic_statev = 0
+    else
+      summary%plastic_statev = 0
+    end if
+    if (opt%max_opening > 0.0_dp) then
+      call output_log(out, 'ldfcz: Newton '//trim(newton_mode_name(opt%newton))//'; increments limited to a '// &
+        'cohesive opening increment <= '//rtoa(opt%max_opening)//' delta')
+    else
+      call output_log(out, 'ldfcz: Newton '//trim(newton_mode_name(opt%newton)))
+    end if
 
     ! CSV columns: every (set, variable) requested by *NODE PRINT in any step
     ncol = 0
@@ -172,8 +221,22 @@ contains
               allocate (ratios(st%max_iter + 1))
             end if
             newton: do
-              call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, an%neq > 0, pnewdt_min, &
-                stat, errmsg)
+              ! a tangent is needed unless modified Newton can reuse the factors (docs/performance.md)
+              want_k = .true.
+              if (opt%newton == newton_modified .and. an%sys_ready) then
+                if (sparse_is_factored(an%sys)) then
+                  want_k = reuse_count >= modified_max_reuse
+                  if (iter >= 1 .and. r_prev < huge(1.0_dp)) then
+                    if (r_max > modified_contraction * r_prev) want_k = .true.
+                  end if
+                end if
+              end if
+              if (iter >= 1) then
+                r_prev2 = r_prev
+                r_prev = r_max
+              end if
+              call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, an%neq > 0 .and. want_k, &
+                pnewdt_min, stat, errmsg)
               if (abaqus_stop_requested()) then
                 call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
                 call output_log(out, 'ldfcz: error: a user routine asked to end the analysis (XIT): '// &
@@ -201,7 +264,8 @@ contains
               du_max = maxval(abs(an%u - an%u_conv))
               ratios(iter + 1) = r_max / max(q_avg, tiny(1.0_dp))
               if (verbose) call output_log(out, '    step '//itoa(is)//' inc '//itoa(kinc)//' iter '//itoa(iter)// &
-                ': r_max '//rtoa(r_max)//' q_avg '//rtoa(q_avg)//' c_max '//rtoa(c_max)//' du_max '//rtoa(du_max))
+                ': r_max '//rtoa(r_max)//' q_avg '//rtoa(q_avg)//' c_max '//rtoa(c_max)//' du_max '//rtoa(du_max)// &
+                merge(' (tangent)      ', ' (reused LU/LDL)', want_k))
               if (an%neq == 0 .or. newton_converged(r_max, q_avg, c_max, du_max, st%r_n, st%c_n, iter)) then
                 converged = .true.
                 q_sum = q_sum + q_now
@@ -217,30 +281,82 @@ contains
                 outcome = 'cutback: '//itoa(iter)//' iterations'
                 exit newton
               end if
-              r_prev2 = r_prev
-              r_prev = r_max
-              call sparse_factorize(an%sys, stat, smsg)
-              if (stat /= 0) then
-                outcome = 'cutback: singular tangent'
-                if (verbose) call output_log(out, '  '//trim(smsg))
-                exit newton
+              if (iter == 0) then
+                r_prev = huge(1.0_dp)
+                r_prev2 = huge(1.0_dp)
               end if
-              call sparse_solve(an%sys, r, stat, smsg)
-              if (stat /= 0) then
-                outcome = 'cutback: solve failed'
-                exit newton
+              k_fresh = .true.
+              if (.not. want_k) then
+                ! modified Newton: the last factors, a residual-only element loop
+                call sparse_solve(an%sys, r, stat, smsg)
+                reuse_count = reuse_count + 1
+                summary%reused_solves = summary%reused_solves + 1
+                k_fresh = stat /= 0
+              else if ((opt%newton == newton_krylov .or. opt%newton == newton_auto) .and. &
+                  sparse_is_factored(an%sys)) then
+                ! fresh tangent, GMRES preconditioned by the last factorization
+                kbudget = krylov_max_iter
+                if (opt%newton == newton_auto .and. t_solve_last > 0.0_dp) &
+                  kbudget = max(2, min(krylov_max_iter, int(0.5_dp * t_fact_last / t_solve_last)))
+                r_copy = r(1:an%neq)
+                t0s = sparse_time_solve(an%sys)
+                call sparse_solve_krylov(an%sys, r(1:an%neq), krylov_rel_tol, kbudget, kbudget, kit, stat, smsg)
+                if (kit > 0) t_solve_last = (sparse_time_solve(an%sys) - t0s) / real(kit, dp)
+                summary%krylov_iterations = summary%krylov_iterations + kit
+                if (stat == 0) then
+                  summary%krylov_solves = summary%krylov_solves + 1
+                  k_fresh = .false.
+                else
+                  summary%krylov_failures = summary%krylov_failures + 1
+                  r(1:an%neq) = r_copy
+                end if
+              end if
+              if (k_fresh) then
+                if (.not. want_k) then
+                  outcome = 'cutback: solve failed'
+                  exit newton
+                end if
+                t0s = sparse_time_factor(an%sys)
+                call sparse_factorize(an%sys, stat, smsg)
+                t_fact_last = sparse_time_factor(an%sys) - t0s
+                reuse_count = 0
+                if (stat /= 0) then
+                  outcome = 'cutback: singular tangent'
+                  if (verbose) call output_log(out, '  '//trim(smsg))
+                  exit newton
+                end if
+                t0s = sparse_time_solve(an%sys)
+                call sparse_solve(an%sys, r, stat, smsg)
+                if (t_solve_last <= 0.0_dp) t_solve_last = sparse_time_solve(an%sys) - t0s
+                if (stat /= 0) then
+                  outcome = 'cutback: solve failed'
+                  exit newton
+                end if
               end if
               iter = iter + 1
-              c_max = maxval(abs(r))
+              c_max = maxval(abs(r(1:max(an%neq, 1))))
               do i = 1, an%ndof
                 if (an%eq(i) > 0) an%u(i) = an%u(i) + r(an%eq(i))
               end do
             end do newton
             summary%iterations = summary%iterations + iter
+            open_inc = 0.0_dp
+            if (converged .and. opt%max_opening > 0.0_dp .and. .not. st%direct) then
+              ! accuracy: the cohesive opening increment bound (paper section 7); redo the increment if exceeded
+              call cohesive_ratio(open_inc)
+              if (open_inc > opt%max_opening .and. dt > st%dt_min * (1.0_dp + 1.0e-9_dp)) then
+                converged = .false.
+                q_sum = q_sum - q_now
+                outcome = 'cutback: opening increment '//rtoa(open_inc)//' delta'
+                pnewdt_min = max(0.1_dp, opening_target * opt%max_opening / open_inc)
+                summary%accuracy_cutbacks = summary%accuracy_cutbacks + 1
+              end if
+            end if
             if (converged) then
               call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
               exit attempts
             end if
+            reuse_count = modified_max_reuse
             ! failed attempt
             call output_sta(out, is, kinc, attempt, iter, sc%t + dt, dt, trim(outcome), ratios(1:min(iter + 1, size(ratios))))
             call analysis_restore(an)
@@ -267,6 +383,11 @@ contains
           end do attempts
           ! converged increment: energy, commit, output
           call cohesive_ratio(summary%max_open_ratio)
+          plastic_inc = 0.0_dp
+          if (summary%plastic_statev > 0) then
+            call statev_increment(summary%plastic_statev, plastic_inc)
+            summary%max_statev_inc = max(summary%max_statev_inc, plastic_inc)
+          end if
           do i = 1, an%ndof
             if (an%prescribed(i)) summary%w_ext = summary%w_ext + 0.5_dp * (rf_old(i) + an%fint(i)) * &
               (an%u(i) - an%u_conv(i))
@@ -278,6 +399,17 @@ contains
           end where
           call analysis_commit(an)
           call step_control_converged(sc, dt, iter, pnewdt_min)
+          if (open_inc > 0.0_dp .and. .not. st%direct) then
+            ! next increment from the opening bound: at most x1.5 after an easy increment, PNEWDT > 1 honoured
+            q_now = merge(1.5_dp, 1.0_dp, iter <= sc%easy_iterations)
+            if (pnewdt_min >= 1.0_dp) q_now = min(q_now, pnewdt_min)
+            sc%dt = min(st%dt_max, dt * min(q_now, opening_target * opt%max_opening / open_inc))
+          end if
+          if (opt%max_plastic > 0.0_dp .and. plastic_inc > 0.0_dp .and. .not. st%direct) then
+            ! next increment from the material's plastic strain increment (prediction only: the UMAT's own PNEWDT
+            ! rejects); keeps the automatic growth from overshooting into PNEWDT cutbacks
+            sc%dt = min(sc%dt, max(dt, sc%dt_min) * max(0.25_dp, opening_target * opt%max_plastic / plastic_inc))
+          end if
           summary%increments = summary%increments + 1
           kinc_total = kinc_total + 1
           do ic = 1, ncol
@@ -400,6 +532,20 @@ contains
       end do
     end subroutine cohesive_ratio
 
+    !> Largest increment of STATEV(k) over the integration points of the continuum elements (a documented
+    !> convention: STATEV(7) is gamma_p of the built-in UMAT, docs/umat.md; --plastic-statev chooses another).
+    subroutine statev_increment(k, worst)
+      integer, intent(in) :: k
+      real(dp), intent(inout) :: worst
+      integer :: ie
+      do ie = 1, model%nelem
+        if (model%elem_kind(ie) == etype_user) cycle
+        if (.not. allocated(an%trial(ie)%statev)) cycle
+        if (size(an%trial(ie)%statev, 1) < k .or. size(an%conv(ie)%statev, 1) < k) cycle
+        worst = max(worst, maxval(abs(an%trial(ie)%statev(k, :) - an%conv(ie)%statev(k, :))))
+      end do
+    end subroutine statev_increment
+
     subroutine write_frame(ttot)
       real(dp), intent(in) :: ttot
       type(output_vtu_t) :: fr
@@ -512,6 +658,11 @@ contains
       call output_log(out, trim(line))
       write (line, '(a,i0,a,i0)') 'DOFs ', summary%ndof, ', free equations ', summary%neq
       call output_log(out, trim(line))
+      write (line, '(3a,i0,a,i0,a,i0,a,i0,a,i0)') 'Newton ', trim(newton_mode_name(summary%newton)), &
+        ': solves with reused factors ', summary%reused_solves, ', GMRES solves ', summary%krylov_solves, &
+        ' (', summary%krylov_iterations, ' GMRES iterations, ', summary%krylov_failures, &
+        ' refactorized), accuracy cutbacks ', summary%accuracy_cutbacks
+      call output_log(out, trim(line))
       write (line, '(a,f10.3,a,f10.3,a)') 'wall time ', summary%wall, ' s, CPU time ', summary%cpu, ' s'
       call output_log(out, trim(line))
       write (line, '(a,4(f10.3,a))') 'wall time split: assembly ', summary%t_assembly, ' s, factorization ', &
@@ -531,9 +682,47 @@ contains
                 ' (> 1/3: may dissipate < 99% of phi, paper section 7) ', summary%max_open_ratio <= 1.0_dp / 3.0_dp)
         call output_log(out, trim(line))
       end if
+      if (summary%plastic_statev > 0) then
+        write (line, '(a,i0,a,es10.3)') 'largest plastic strain increment of the material (STATEV ', &
+          summary%plastic_statev, ') ', summary%max_statev_inc
+        call output_log(out, trim(line))
+      end if
     end subroutine write_summary
 
   end subroutine run_analysis
+
+  !> Name of a Newton variant.
+  pure function newton_mode_name(code) result(name)
+    integer, intent(in) :: code
+    character(len=8) :: name
+    select case (code)
+    case (newton_modified)
+      name = 'modified'
+    case (newton_krylov)
+      name = 'krylov'
+    case (newton_auto)
+      name = 'auto'
+    case default
+      name = 'full'
+    end select
+  end function newton_mode_name
+
+  !> Code of a Newton variant name (full, modified, krylov, auto); 0 when unknown.
+  pure integer function newton_mode_code(name) result(code)
+    character(len=*), intent(in) :: name
+    select case (name)
+    case ('full')
+      code = newton_full
+    case ('modified')
+      code = newton_modified
+    case ('krylov')
+      code = newton_krylov
+    case ('auto')
+      code = newton_auto
+    case default
+      code = 0
+    end select
+  end function newton_mode_code
 
   !> Column code: 1..3 U1..U3 (mean), 11..13 RF1..RF3 (sum).
   pure integer function var_code(v)

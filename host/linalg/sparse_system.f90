@@ -17,7 +17,7 @@ module sparse_system
   use sparse_pattern, only: build_pattern, build_slot_map
   use metis_ordering, only: node_graph_from_elements, metis_node_order, equation_order_from_nodes, is_permutation
   use mumps_solver, only: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy, &
-                          mumps_factor_entries, mumps_pivot_order
+                          mumps_factor_entries, mumps_pivot_order, mumps_is_factored
   implicit none
   private
   public :: sparse_system_t
@@ -26,6 +26,7 @@ module sparse_system
   public :: sparse_nnz, sparse_neq, sparse_factor_entries, sparse_time_analysis, sparse_time_factor
   public :: sparse_time_solve, sparse_factor_count, sparse_analysis_count, sparse_solve_count
   public :: sparse_ordering, sparse_pivot_order, sparse_to_dense, sparse_is_symmetric
+  public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count
 
   !> A sparse system with its pattern, values, ordering and MUMPS instance (components private).
   type :: sparse_system_t
@@ -48,6 +49,7 @@ module sparse_system
     integer :: n_analysis = 0                       !< analyses done
     integer :: n_factor = 0                         !< successful factorizations
     integer :: n_solve = 0                          !< solves done
+    integer :: n_krylov = 0                         !< GMRES iterations done (each: one solve with the factors)
   end type sparse_system_t
 
 contains
@@ -222,6 +224,121 @@ contains
     end do
   end subroutine sparse_matvec
 
+  !> True when factors from an earlier sparse_factorize are available (possibly of older values).
+  logical function sparse_is_factored(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_is_factored = sys%ready .and. mumps_is_factored(sys%solver)
+  end function sparse_is_factored
+
+  !> Solve A x = rhs for the CURRENT values A by restarted GMRES(m), right-preconditioned by the LAST factors
+  !> (possibly of an older matrix: Newton's factorization reused as a preconditioner, Saad 2003, section 9.3.2).
+  !> x0 = 0; converged when |rhs - A x| <= rel_tol |rhs|. The preconditioned directions are kept (m vectors) so
+  !> the solution needs no extra solve. stat: 0 converged, 1 not converged within max_iter (rhs then holds the
+  !> best iterate), < 0 a MUMPS error. Each iteration costs one solve with the factors and one product with A.
+  subroutine sparse_solve_krylov(sys, rhs, rel_tol, max_iter, restart, iterations, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< system with current values and factors of some values
+    real(dp), intent(inout) :: rhs(:)               !< right-hand side (size neq) in, solution out
+    real(dp), intent(in) :: rel_tol                 !< relative residual tolerance
+    integer, intent(in) :: max_iter                 !< largest number of GMRES iterations in total
+    integer, intent(in) :: restart                  !< Krylov dimension m before a restart
+    integer, intent(out) :: iterations              !< GMRES iterations done
+    integer, intent(out) :: stat                    !< 0 converged, 1 not converged, < 0 MUMPS error
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    real(dp), allocatable :: v(:, :), z(:, :), h(:, :), cs(:), sn(:), g(:), y(:), x(:), w(:), b(:)
+    real(dp) :: beta, bnorm, tmp, hnorm
+    integer :: n, m, j, i, k
+    integer(i8) :: c0
+
+    stat = 0
+    errmsg = ''
+    iterations = 0
+    if (.not. sparse_is_factored(sys)) then
+      stat = -1002
+      errmsg = 'sparse_solve_krylov: no factors to precondition with'
+      return
+    end if
+    c0 = clock_count()
+    n = sys%neq
+    m = max(1, restart)
+    allocate (v(n, m + 1), z(n, m), h(m + 1, m), cs(m), sn(m), g(m + 1), y(m), x(n), w(n), b(n))
+    b = rhs
+    x = 0.0_dp
+    bnorm = norm2(b)
+    if (bnorm == 0.0_dp) then
+      rhs = 0.0_dp
+      sys%t_solve = sys%t_solve + seconds_since(c0)
+      return
+    end if
+    stat = 1
+    restarts: do while (iterations < max_iter)
+      call sparse_matvec(sys, x, w)
+      v(:, 1) = b - w
+      beta = norm2(v(:, 1))
+      if (beta <= rel_tol * bnorm) then
+        stat = 0
+        exit restarts
+      end if
+      v(:, 1) = v(:, 1) / beta
+      g = 0.0_dp
+      g(1) = beta
+      h = 0.0_dp
+      k = 0
+      arnoldi: do j = 1, m
+        z(:, j) = v(:, j)
+        call mumps_solve(sys%solver, z(:, j), i, errmsg)
+        if (i /= 0) then
+          stat = i
+          exit restarts
+        end if
+        sys%n_solve = sys%n_solve + 1
+        iterations = iterations + 1
+        call sparse_matvec(sys, z(:, j), w)
+        do i = 1, j                                   ! modified Gram-Schmidt
+          h(i, j) = dot_product(w, v(:, i))
+          w = w - h(i, j) * v(:, i)
+        end do
+        h(j + 1, j) = norm2(w)
+        if (h(j + 1, j) > 0.0_dp) v(:, j + 1) = w / h(j + 1, j)
+        do i = 1, j - 1                               ! earlier Givens rotations
+          tmp = cs(i) * h(i, j) + sn(i) * h(i + 1, j)
+          h(i + 1, j) = -sn(i) * h(i, j) + cs(i) * h(i + 1, j)
+          h(i, j) = tmp
+        end do
+        hnorm = hypot(h(j, j), h(j + 1, j))
+        if (hnorm == 0.0_dp) exit arnoldi            ! A z_j = 0: breakdown, keep the first j-1 directions
+        cs(j) = h(j, j) / hnorm
+        sn(j) = h(j + 1, j) / hnorm
+        h(j, j) = hnorm
+        h(j + 1, j) = 0.0_dp
+        g(j + 1) = -sn(j) * g(j)
+        g(j) = cs(j) * g(j)
+        k = j
+        if (abs(g(j + 1)) <= rel_tol * bnorm .or. iterations >= max_iter) exit arnoldi
+      end do arnoldi
+      do i = k, 1, -1                                 ! back substitution, x += Z y
+        y(i) = (g(i) - dot_product(h(i, i + 1:k), y(i + 1:k))) / h(i, i)
+      end do
+      do i = 1, k
+        x = x + y(i) * z(:, i)
+      end do
+      if (abs(g(k + 1)) <= rel_tol * bnorm) then
+        stat = 0
+        exit restarts
+      end if
+      if (k < j .and. k < m) exit restarts           ! breakdown without convergence
+    end do restarts
+    if (stat == 1) errmsg = 'sparse_solve_krylov: GMRES did not converge within the iteration limit'
+    rhs = x
+    sys%n_krylov = sys%n_krylov + iterations
+    sys%t_solve = sys%t_solve + seconds_since(c0)
+  end subroutine sparse_solve_krylov
+
+  !> GMRES iterations done by sparse_solve_krylov.
+  integer function sparse_krylov_count(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_krylov_count = sys%n_krylov
+  end function sparse_krylov_count
+
   !> Terminate MUMPS (JOB = -2) and free everything; the timers and counters are reset too.
   subroutine sparse_destroy(sys)
     type(sparse_system_t), intent(inout) :: sys     !< system
@@ -242,6 +359,7 @@ contains
     sys%n_analysis = 0
     sys%n_factor = 0
     sys%n_solve = 0
+    sys%n_krylov = 0
   end subroutine sparse_destroy
 
   !> Stored entries (upper triangle only when symmetric).
