@@ -3,6 +3,7 @@
 !> 2 deck or option error, 3 the analysis stopped without convergence (converged output kept).
 program ldfcz
   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+  use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
   use ldfcz_config, only: ldfcz_version, ldfcz_abaqus_include_dir, ldfcz_install_include_rel
   use model_types, only: model_t
   use deck_reader, only: read_deck
@@ -20,6 +21,17 @@ program ldfcz
   type(output_t) :: out
   type(run_summary_t) :: summary
   type(solver_options_t) :: options
+  character(len=:), allocatable :: restart_from
+
+  interface
+    !> mkdir(2); mode_t is a 32-bit unsigned integer on Linux
+    function c_mkdir(path, mode) bind(c, name='mkdir') result(r)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int), value :: mode
+      integer(c_int) :: r
+    end function c_mkdir
+  end interface
 
   deck = ''
   outdir = '.'
@@ -27,6 +39,7 @@ program ldfcz
   threads = 0
   quiet = .false.
   verbose = .false.
+  restart_from = ''
   n = command_argument_count()
   i = 1
   do while (i <= n)
@@ -64,12 +77,37 @@ program ldfcz
         read (arg, *, iostat=stat) options%plastic_statev
         if (stat /= 0 .or. options%plastic_statev < 0) call die('--plastic-statev needs an integer >= 0 (0: none)')
       end select
+    case ('--restart-write')
+      ! optional value: the increment frequency (default 1)
+      options%restart_write = 1
+      if (i < n) then
+        arg = get_arg(i + 1)
+        if (len(arg) > 0) then
+          if (verify(arg, '0123456789') == 0) then
+            i = i + 1
+            read (arg, *, iostat=stat) options%restart_write
+            if (stat /= 0) call die('--restart-write needs an integer >= 0 (0: never)')
+          end if
+        end if
+      end if
+    case ('--restart-from', '--stop-after-increments')
+      if (i == n) call die('option '//arg//' needs a value')
+      i = i + 1
+      if (arg == '--restart-from') then
+        restart_from = get_arg(i)
+        if (len(restart_from) == 0) call die('--restart-from needs a restart file (JOB.rst)')
+      else
+        arg = get_arg(i)
+        read (arg, *, iostat=stat) options%stop_after
+        if (stat /= 0 .or. options%stop_after < 1) call die('--stop-after-increments needs a positive integer')
+      end if
     case ('-o', '--out', '-t', '--threads', '-u', '--user')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
       select case (arg)
       case ('-o', '--out')
         outdir = get_arg(i)
+        if (len(outdir) == 0) call die('--out needs a directory name (got an empty one)')
       case ('-t', '--threads')
         arg = get_arg(i)
         read (arg, *, iostat=stat) threads
@@ -94,7 +132,12 @@ program ldfcz
   job = deck(k + 1:)
   k = index(job, '.', back=.true.)
   if (k > 1) job = job(1:k - 1)
-  call execute_command_line('mkdir -p '''//outdir//'''', exitstat=stat)
+  if (len(restart_from) > 0) then
+    inquire (file=restart_from, exist=exists)
+    if (.not. exists) call die('--restart-from: '//restart_from//': file not found')
+    options%restart_from = restart_from
+  end if
+  call make_directories(outdir)
   inquire (file=outdir//'/.', exist=exists)
   if (.not. exists) call die('--out: cannot create directory '//outdir)
   call abaqus_set_job(job, outdir)
@@ -103,7 +146,7 @@ program ldfcz
   if (stat /= 0) call die(errmsg)
 
   call user_routines_builtin(routines)
-  call output_open(out, job, outdir, quiet, stat, errmsg)
+  call output_open(out, job, outdir, quiet, stat, errmsg, append=len(restart_from) > 0)
   if (stat /= 0) call die(errmsg)
   call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
@@ -121,6 +164,18 @@ program ldfcz
   call exit(exit_code)
 
 contains
+
+  !> mkdir -p without a shell: every parent of dir, then dir (existing ones are fine; failures show in the check
+  !> that follows the call).
+  subroutine make_directories(dir)
+    character(len=*), intent(in) :: dir
+    integer :: k
+    integer(c_int) :: rc
+    do k = 2, len(dir)
+      if (dir(k:k) == '/' .and. dir(k - 1:k - 1) /= '/') rc = c_mkdir(dir(1:k - 1)//c_null_char, int(o'777', c_int))
+    end do
+    rc = c_mkdir(dir//c_null_char, int(o'777', c_int))
+  end subroutine make_directories
 
   !> Directory of ABA_PARAM.INC: <prefix>/include/ldfcz next to an installed program, else the source tree's.
   function include_dir() result(d)
@@ -169,6 +224,11 @@ contains
       '  --plastic-statev N report the largest increment of STATEV(N) (default 7 = gamma_p of the built-in', &
       '                     UMAT; 0: none)', &
       '  --max-plastic-increment X  choose the next increment so that STATEV(N) changes by about 0.8 X', &
+      '  --restart-write [N]  write JOB.rst (restart data) after every N-th increment (default 1) and at the', &
+      '                     end of each step; overrides *RESTART, WRITE, FREQUENCY=n of the deck; 0: never', &
+      '  --restart-from FILE  continue the analysis of the deck from the restart file FILE (JOB.rst, the same', &
+      '                     deck): JOB.csv/.sta/.log are continued, VTU frames numbered on', &
+      '  --stop-after-increments K  stop (exit 3) after K converged increments of this run (for restart tests)', &
       '  -h, --help         this text', &
       '  -V, --version      the version', &
       'exit status: 0 all steps completed, 2 deck or option error, 3 no convergence (converged output kept)'

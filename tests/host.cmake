@@ -96,3 +96,32 @@ if(EXISTS "${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp")
 endif()
 ldfcz_add_perf_test(deck_newton_modes ${LDFCZ_DECKS}/single/cohesive_block.inp newton_modes)
 ldfcz_add_perf_test(deck_opening_control ${LDFCZ_DECKS}/single/cohesive_block.inp opening_control)
+
+# restart from the last converged increment (docs/host.md, "Restart"; tests/regression/check_restart.py): the run
+# interrupted (--stop-after-increments or SIGKILL) and restarted with --restart-from must give the uninterrupted run's
+# CSV to 1e-12 relative (it is bit-identical with full Newton), the same VTU frames and energy balance; a restart file
+# of another model, a truncated one and a non-restart file are refused with exit 2.
+set(LDFCZ_CHECK_RESTART "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py")
+function(ldfcz_add_restart_test name deck)
+  add_test(NAME ${name} COMMAND Python3::Interpreter ${LDFCZ_CHECK_RESTART} --exe $<TARGET_FILE:ldfcz> --deck ${deck}
+    --out ${LDFCZ_RUNS}/${name} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "deck;restart" TIMEOUT 300)
+endfunction()
+# UEL (cohesive element, SVARS/ENERGY) under a C3D8 block, automatic increments; restart refused for another deck
+ldfcz_add_restart_test(restart_cohesive_block ${LDFCZ_DECKS}/single/cohesive_block.inp --stop 9 --freq 1
+  --other-deck ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp)
+if(EXISTS "${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp")
+  # Leonov UMAT (STATEV): restart data every 7 increments, stopped after 45: rows 43-45 are dropped and recomputed
+  ldfcz_add_restart_test(restart_umat_uniaxial ${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp --stop 45 --freq 7)
+  # the same killed with SIGKILL after 30 CSV rows (restart data every increment)
+  ldfcz_add_restart_test(restart_umat_kill ${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp --stop 30 --kill)
+endif()
+if(EXISTS "${LDFCZ_DECKS}/stability/stab_rotation_90.inp")
+  # *RESTART, WRITE, FREQUENCY=2 in the deck; stopped at the end of step 1 of 2: the restart begins step 2
+  ldfcz_add_restart_test(restart_two_steps ${LDFCZ_DECKS}/stability/stab_rotation_90.inp --stop 4 --freq 2
+    --deck-restart)
+endif()
+if(EXISTS "${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp")
+  # PET cube with 12 cutbacks (UMAT PNEWDT): increment size and growth state carried over
+  ldfcz_add_restart_test(restart_pet_cutbacks ${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp --stop 8)
+endif()

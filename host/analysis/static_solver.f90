@@ -13,7 +13,8 @@ module static_solver
     sparse_time_solve, sparse_factor_count, sparse_destroy, sparse_is_factored, sparse_solve_krylov, &
     sparse_krylov_count
   use output_files, only: output_t, output_log, output_csv_header, output_csv_row, output_sta, output_progress, &
-    output_vtu_frame, output_vtu_t
+    output_vtu_frame, output_vtu_t, output_csv_resume, output_frames_resume, output_sta_note
+  use restart_file, only: restart_state_t, restart_write, restart_read, restart_checksum
   use user_routines, only: user_routines_t
   use abaqus_host_state, only: abaqus_stop_requested, abaqus_stop_message, abaqus_clear_stop
   implicit none
@@ -42,6 +43,9 @@ module static_solver
     real(dp) :: max_opening = 0.0_dp            !< > 0: largest cohesive opening increment / delta per increment
     integer :: plastic_statev = -1              !< STATEV whose largest increment is reported (-1: by the UMAT, 0 none)
     real(dp) :: max_plastic = 0.0_dp            !< > 0: next increment aims at this STATEV(plastic_statev) increment
+    integer :: restart_write = -1               !< JOB.rst every n increments (-1: as *RESTART in the deck; 0 never)
+    character(len=:), allocatable :: restart_from  !< continue from this restart file (docs/host.md, "Restart")
+    integer :: stop_after = 0                   !< > 0: stop after so many converged increments (restart tests)
   end type solver_options_t
 
   !> Counters and measures of a run (printed in the closing summary).
@@ -89,11 +93,19 @@ contains
     logical :: converged, ok, diverging
     character(len=256) :: smsg
     character(len=64) :: outcome
+    type(restart_state_t) :: rs, fp
+    logical :: restarting, resumed, fresh_csv
+    integer :: is_first, csv_rows, run_increments, fact_offset
 
     call system_clock(c0, rate)
     call cpu_time(cpu0)
     if (present(options)) opt = options
     exit_code = exit_ok
+    restarting = .false.
+    if (allocated(opt%restart_from)) restarting = len(opt%restart_from) > 0
+    csv_rows = 0
+    run_increments = 0
+    fact_offset = 0
     t_fact_last = 0.0_dp
     t_solve_last = 0.0_dp
     reuse_count = 0
@@ -105,6 +117,25 @@ contains
       return
     end if
     summary%ndof = count(an%used)
+    if (restarting) then
+      ! the converged state of the increment the restart file was written after (element states straight into conv)
+      fp%nnode = model%nnode
+      fp%nelem = model%nelem
+      fp%ndof = an%ndof
+      fp%checksum = restart_checksum(model)
+      call restart_read(opt%restart_from, fp, rs, an%conv, stat, errmsg)
+      if (stat == 0 .and. rs%step > model%nstep) then
+        stat = 2
+        errmsg = opt%restart_from//': the restart file is of step '//itoa(rs%step)//' but the deck has '// &
+          itoa(model%nstep)//' steps'
+      end if
+      if (stat /= 0) then
+        call output_log(out, 'ldfcz: error: '//errmsg)
+        if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+        exit_code = exit_input
+        return
+      end if
+    end if
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
       itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver; UEL: '// &
       routines%uel_origin//'; UMAT: '//routines%umat_origin)
@@ -145,7 +176,19 @@ contains
       end do
     end do
     allocate (colv(ncol))
-    call output_csv_header(out, colnames(1:ncol))
+    if (restarting) then
+      call output_csv_resume(out, colnames(1:ncol), rs%csv_rows, fresh_csv, stat, errmsg)
+      if (stat /= 0) then
+        call output_log(out, 'ldfcz: error: '//errmsg)
+        if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+        exit_code = exit_input
+        return
+      end if
+      if (fresh_csv) call output_log(out, 'ldfcz: warning: no '//out%job//'.csv in '//out%dir//': the new one '// &
+        'holds the increments after the restart point only')
+    else
+      call output_csv_header(out, colnames(1:ncol))
+    end if
 
     allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
     allocate (rf_old(an%ndof))
@@ -158,18 +201,27 @@ contains
     kinc_total = 0
     last_frame_inc = -1
     call apply_bc_list(model%initial_bcs, model%n_initial_bc, .true.)
-    if (any(model%steps(1:model%nstep)%field_output)) call write_frame(0.0_dp)
+    is_first = 1
+    if (restarting) then
+      call resume_state()
+    else if (any(model%steps(1:model%nstep)%field_output)) then
+      call write_frame(0.0_dp)
+    end if
 
-    steps: do is = 1, model%nstep
+    steps: do is = is_first, model%nstep
       associate (st => model%steps(is))
-        ! boundaries of this step: inherited ones keep the value reached (OP=NEW drops them)
-        u_start = an%u_conv
-        where (bc_on .and. .not. bc_init)
-          bc_val = an%u_conv
-          bc_amp = 0
-        end where
-        if (st%op_new) where (.not. bc_init) bc_on = .false.
-        call apply_bc_list(st%bcs, st%nbc, .false.)
+        resumed = .false.
+        if (restarting) resumed = is == rs%step
+        if (.not. resumed) then
+          ! boundaries of this step: inherited ones keep the value reached (OP=NEW drops them)
+          u_start = an%u_conv
+          where (bc_on .and. .not. bc_init)
+            bc_val = an%u_conv
+            bc_amp = 0
+          end where
+          if (st%op_new) where (.not. bc_init) bc_on = .false.
+          call apply_bc_list(st%bcs, st%nbc, .false.)
+        end if
         an%prescribed = bc_on .and. an%used
         call analysis_number_equations(an, model, stat, errmsg)
         if (stat /= 0) then
@@ -180,14 +232,26 @@ contains
         summary%neq = an%neq
         if (allocated(r)) deallocate (r)
         allocate (r(max(an%neq, 1)))
-        call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': period '//rtoa(st%period)// &
-          ', NLGEOM '//merge('YES', 'NO ', st%nlgeom)//', '//itoa(an%neq)//' equations')
-        call step_control_init(sc, st%dt_initial, st%period, st%dt_min, st%dt_max, st%direct)
+        if (resumed) then
+          ! restart within this step: increment control, q_avg history and output marks as they were
+          sc = rs%sc
+          kinc = rs%kinc
+          q_sum = rs%q_sum
+          next_mark = rs%next_mark
+          last_frame_inc = rs%last_frame_inc
+          call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': resumed from '//opt%restart_from// &
+            ' after increment '//itoa(kinc)//' at step time '//rtoa(sc%t)//' of '//rtoa(st%period)//', '// &
+            itoa(an%neq)//' equations')
+        else
+          call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': period '//rtoa(st%period)// &
+            ', NLGEOM '//merge('YES', 'NO ', st%nlgeom)//', '//itoa(an%neq)//' equations')
+          call step_control_init(sc, st%dt_initial, st%period, st%dt_min, st%dt_max, st%direct)
+          kinc = 0
+          q_sum = 0.0_dp
+          next_mark = st%period / max(1, st%field_intervals)
+          last_frame_inc = -1
+        end if
         call system_clock(cs0)
-        kinc = 0
-        q_sum = 0.0_dp
-        next_mark = st%period / max(1, st%field_intervals)
-        last_frame_inc = -1
         increments: do while (.not. step_control_done(sc))
           kinc = kinc + 1
           if (kinc > st%max_inc) then
@@ -239,8 +303,9 @@ contains
                 pnewdt_min, stat, errmsg)
               if (abaqus_stop_requested()) then
                 call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
-                call output_log(out, 'ldfcz: error: a user routine asked to end the analysis (XIT): '// &
-                  abaqus_stop_message())
+                msg = 'ldfcz: error: '//stop_message(time, dt, st%period, st%nlgeom)
+                call output_log(out, msg)
+                if (out%quiet) write (error_unit, '(a)') msg
                 exit_code = exit_input
                 exit steps
               end if
@@ -412,10 +477,12 @@ contains
           end if
           summary%increments = summary%increments + 1
           kinc_total = kinc_total + 1
+          run_increments = run_increments + 1
           do ic = 1, ncol
             colv(ic) = column_value(col_set(ic), col_var(ic))
           end do
           call output_csv_row(out, is, kinc, sc%t, t_total0 + sc%t, colv)
+          csv_rows = csv_rows + 1
           if (st%field_output) then
             if (st%field_intervals > 0) then
               if (sc%t >= next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(sc)) then
@@ -430,6 +497,18 @@ contains
           end if
           call system_clock(c1)
           call output_progress(out, is, model%nstep, kinc, sc%t, st%period, real(c1 - cs0, dp) / real(rate, dp))
+          ! restart data after every n-th increment and at the end of the step (Abaqus *RESTART, WRITE, FREQUENCY=n)
+          k = st%restart_frequency
+          if (opt%restart_write >= 0) k = opt%restart_write
+          if (k > 0) then
+            if (mod(kinc, k) == 0 .or. step_control_done(sc)) call save_restart()
+          end if
+          if (opt%stop_after > 0 .and. run_increments >= opt%stop_after) then
+            call output_log(out, 'ldfcz: stopped after '//itoa(run_increments)//' increments as asked '// &
+              '(--stop-after-increments), at step '//itoa(is)//' time '//rtoa(sc%t)//' of '//rtoa(st%period))
+            exit_code = exit_no_convergence
+            exit steps
+          end if
         end do increments
         t_total0 = t_total0 + st%period
         call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(kinc)//' increments')
@@ -444,7 +523,7 @@ contains
     summary%t_factor = an%t_factor_done
     summary%t_solve = an%t_solve_done
     summary%t_analysis = an%t_setup_done
-    summary%factorizations = an%n_factor_done
+    summary%factorizations = an%n_factor_done + fact_offset
     if (an%sys_ready) then
       summary%t_factor = summary%t_factor + sparse_time_factor(an%sys)
       summary%t_solve = summary%t_solve + sparse_time_solve(an%sys)
@@ -462,6 +541,196 @@ contains
     call write_summary()
 
   contains
+
+    !> Restart: the solver state of the restart file (read above) replaces the initial one; is_first is the step
+    !> to continue (the next one when the restart point ended its step).
+    subroutine resume_state()
+      an%u_conv = rs%u_conv
+      an%u = rs%u_conv
+      an%fint = rs%fint
+      an%trial = an%conv
+      u_start = rs%u_start
+      rf_old = rs%rf_old
+      bc_val = rs%bc_val
+      bc_on = rs%bc_on
+      bc_init = rs%bc_init
+      bc_amp = rs%bc_amp
+      t_total0 = rs%t_total0
+      kinc_total = rs%kinc_total
+      last_frame_inc = rs%last_frame_inc
+      reuse_count = rs%reuse_count
+      csv_rows = rs%csv_rows
+      summary%increments = rs%increments
+      summary%attempts = rs%attempts
+      summary%cutbacks = rs%cutbacks
+      summary%iterations = rs%iterations
+      fact_offset = rs%factorizations
+      summary%krylov_solves = rs%krylov_solves
+      summary%krylov_iterations = rs%krylov_iterations
+      summary%krylov_failures = rs%krylov_failures
+      summary%reused_solves = rs%reused_solves
+      summary%accuracy_cutbacks = rs%accuracy_cutbacks
+      summary%w_ext = rs%w_ext
+      summary%max_open_ratio = rs%max_open_ratio
+      summary%max_statev_inc = rs%max_statev_inc
+      call output_frames_resume(out, rs%frame_times)
+      is_first = rs%step
+      if (rs%sc%t >= rs%sc%period) then
+        ! the restart point ended step rs%step: the next step starts as in the uninterrupted run
+        is_first = rs%step + 1
+        t_total0 = t_total0 + model%steps(rs%step)%period
+        restarting = .false.
+      end if
+      call output_sta_note(out, 'restart from '//opt%restart_from//' after step '//itoa(rs%step)//' increment '// &
+        itoa(rs%kinc))
+      call output_log(out, 'ldfcz: restart from '//opt%restart_from//': step '//itoa(rs%step)//', increment '// &
+        itoa(rs%kinc)//', total time '//rtoa(rs%t_total0 + rs%sc%t)//'; '//itoa(rs%csv_rows)//' CSV rows and '// &
+        itoa(size(rs%frame_times))//' VTU frames kept; summary counters continue, times are of this run only')
+    end subroutine resume_state
+
+    !> JOB.rst with the state after the increment just converged and written (restart_file).
+    subroutine save_restart()
+      type(restart_state_t) :: w
+      integer :: st2
+      character(len=:), allocatable :: em
+      integer(i8) :: r0, r1
+      call system_clock(r0)
+      w%nnode = model%nnode
+      w%nelem = model%nelem
+      w%ndof = an%ndof
+      if (fp%checksum == 0) fp%checksum = restart_checksum(model)
+      w%checksum = fp%checksum
+      w%step = is
+      w%kinc = kinc
+      w%kinc_total = kinc_total
+      w%csv_rows = csv_rows
+      w%last_frame_inc = last_frame_inc
+      w%reuse_count = reuse_count
+      w%t_total0 = t_total0
+      w%q_sum = q_sum
+      w%next_mark = next_mark
+      w%sc = sc
+      w%u_conv = an%u_conv
+      w%u_start = u_start
+      w%fint = an%fint
+      w%rf_old = rf_old
+      w%bc_val = bc_val
+      w%bc_on = bc_on
+      w%bc_init = bc_init
+      w%bc_amp = bc_amp
+      w%increments = summary%increments
+      w%attempts = summary%attempts
+      w%cutbacks = summary%cutbacks
+      w%iterations = summary%iterations
+      w%factorizations = fact_offset + an%n_factor_done
+      if (an%sys_ready) w%factorizations = w%factorizations + sparse_factor_count(an%sys)
+      w%krylov_solves = summary%krylov_solves
+      w%krylov_iterations = summary%krylov_iterations
+      w%krylov_failures = summary%krylov_failures
+      w%reused_solves = summary%reused_solves
+      w%accuracy_cutbacks = summary%accuracy_cutbacks
+      w%w_ext = summary%w_ext
+      w%max_open_ratio = summary%max_open_ratio
+      w%max_statev_inc = summary%max_statev_inc
+      if (allocated(out%frame_times)) then
+        w%frame_times = out%frame_times(1:out%nframe)
+      else
+        allocate (w%frame_times(0))
+      end if
+      call restart_write(out%dir//'/'//out%job//'.rst', w, an%conv, st2, em)
+      if (st2 /= 0) call output_log(out, 'ldfcz: warning: restart file not written: '//em)
+      call system_clock(r1)
+      out%t_output = out%t_output + real(r1 - r0, dp) / real(rate, dp)
+    end subroutine save_restart
+
+    !> Message of a stop requested by a user routine (XIT, STDB_ABQERR with LOP = -3): the deck position of the
+    !> properties of the first element whose call asks to stop (*UEL PROPERTY or *USER MATERIAL data line), found by
+    !> element loops over growing prefixes of the element list (residual only), then the routine's message.
+    function stop_message(time, dt, period, nlgeom) result(text)
+      real(dp), intent(in) :: time(2), dt, period
+      logical, intent(in) :: nlgeom
+      character(len=:), allocatable :: text, what
+      type(model_t), allocatable :: sub
+      integer :: lo, hi, mid, ie, ip, im
+      text = abaqus_stop_message()
+      if (len_trim(text) == 0) text = 'XIT called without a message'
+      allocate (sub, source=model)
+      ! smallest prefix length whose element loop asks to stop: doubling, then bisection
+      lo = 0
+      hi = 1
+      do
+        hi = min(hi, model%nelem)
+        if (prefix_stops(sub, hi, time, dt, period, nlgeom)) exit
+        if (hi == model%nelem) then
+          hi = 0
+          exit
+        end if
+        lo = hi
+        hi = 2 * hi
+      end do
+      if (hi > 0) then
+        do while (hi - lo > 1)
+          mid = (lo + hi) / 2
+          if (prefix_stops(sub, mid, time, dt, period, nlgeom)) then
+            hi = mid
+          else
+            lo = mid
+          end if
+        end do
+      end if
+      call abaqus_clear_stop()
+      ie = hi
+      what = ''
+      if (ie > 0) then
+        if (model%elem_kind(ie) == etype_user) then
+          ip = 0
+          if (allocated(model%elem_uelprop)) ip = model%elem_uelprop(ie)
+          if (ip > 0) what = model%uelprops(ip)%pos%file//':'//itoa(model%uelprops(ip)%pos%line)// &
+            ': *UEL PROPERTY: rejected by UEL: '
+        else
+          im = model_find_material_of(ie)
+          if (im > 0) then
+            if (model%materials(im)%has_user .and. allocated(model%materials(im)%user_pos%file)) what = &
+              model%materials(im)%user_pos%file//':'//itoa(model%materials(im)%user_pos%line)// &
+              ': *USER MATERIAL: rejected by UMAT: '
+          end if
+        end if
+        if (len(what) == 0) what = 'a user routine asked to end the analysis (XIT): '
+        text = what//text//' (element '//itoa(model%elem_id(ie))//', step '//itoa(is)//', increment '// &
+          itoa(kinc)//')'
+      else
+        text = 'a user routine asked to end the analysis (XIT): '//text
+      end if
+    end function stop_message
+
+    !> True when the element loop over the first n elements (residual only) has a user routine ask to stop.
+    logical function prefix_stops(sub, n, time, dt, period, nlgeom)
+      type(model_t), intent(inout) :: sub
+      integer, intent(in) :: n
+      real(dp), intent(in) :: time(2), dt, period
+      logical, intent(in) :: nlgeom
+      character(len=:), allocatable :: em
+      integer :: st2
+      real(dp) :: pn
+      sub%nelem = n
+      call abaqus_clear_stop()
+      call analysis_assemble(an, sub, is, kinc, time, dt, period, nlgeom, .false., pn, st2, em)
+      prefix_stops = abaqus_stop_requested()
+    end function prefix_stops
+
+    !> Material index of continuum element ie (0: none).
+    integer function model_find_material_of(ie) result(im)
+      integer, intent(in) :: ie
+      integer :: isec
+      im = 0
+      if (.not. allocated(model%elem_section)) return
+      isec = model%elem_section(ie)
+      if (isec < 1 .or. isec > model%nsection) return
+      do im = 1, model%nmat
+        if (model%materials(im)%name == model%sections(isec)%material) return
+      end do
+      im = 0
+    end function model_find_material_of
 
     subroutine apply_bc_list(list, n, initial)
       use model_types, only: boundary_t

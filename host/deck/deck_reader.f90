@@ -31,6 +31,7 @@ contains
     type(deck_param_t), allocatable :: params(:)
     integer, allocatable :: elem_rec(:), conn_raw(:), node_rec(:)
     logical :: in_step
+    integer :: restart_freq  !< *RESTART, WRITE, FREQUENCY in effect (0: none)
 
     wu = error_unit
     if (present(warn_unit)) wu = warn_unit
@@ -47,6 +48,7 @@ contains
     imat = 0
     istep = 0
     in_step = .false.
+    restart_freq = 0
 
     ir = 1
     do while (ir <= src%nrec)
@@ -114,7 +116,9 @@ contains
         else
           in_step = .false.
         end if
-      case ('*EL PRINT', '*ENERGY PRINT', '*PREPRINT', '*RESTART', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
+      case ('*RESTART')
+        call read_restart()
+      case ('*EL PRINT', '*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
             '*MONITOR', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
         call warn(ir, kw, 'output/cosmetic keyword not supported by ldfcz: ignored with its data lines')
       case default
@@ -132,6 +136,15 @@ contains
   contains
 
     ! ------------------------------------------------------------------ messages
+    !> Source position of record irec (file, line) with the current keyword.
+    subroutine set_pos(pos, irec)
+      type(source_pos_t), intent(out) :: pos
+      integer, intent(in) :: irec
+      pos%file = src%files(src%rec(irec)%file_id)%name
+      pos%line = src%rec(irec)%line
+      pos%keyword = kw
+    end subroutine set_pos
+
     subroutine fail(irec, keyword, msg)
       integer, intent(in) :: irec
       character(len=*), intent(in) :: keyword, msg
@@ -638,6 +651,7 @@ contains
       end do
       model%materials(imat)%has_user = .true.
       model%materials(imat)%unsymm = deck_has_param(params, 'UNSYMM')
+      call set_pos(model%materials(imat)%user_pos, min(ir + 1, ir_next - 1))
     end subroutine read_user_material
 
     subroutine read_depvar()
@@ -793,6 +807,7 @@ contains
         end if
       end do
       model%n_uelprop = ip
+      call set_pos(model%uelprops(ip)%pos, min(ir + 1, ir_next - 1))
       if (.not. allocated(model%elem_uelprop)) then
         allocate (model%elem_uelprop(size(model%elem_id)))
         model%elem_uelprop = 0
@@ -988,6 +1003,41 @@ contains
       end do
     end subroutine read_boundary
 
+    !> *RESTART, WRITE, FREQUENCY=n (model or history data; in effect for the following steps until changed):
+    !> JOB.rst after every n-th increment and at the end of each step. READ is refused: ldfcz restarts with
+    !> --restart-from JOB.rst JOB.inp on the unchanged deck (docs/host.md).
+    subroutine read_restart()
+      integer :: n
+      call allow_params([character(len=16) :: 'WRITE', 'READ', 'FREQUENCY', 'OVERLAY', 'NUMBER INTERVAL', &
+        'TIME MARKS', 'STEP', 'INC', 'END STEP'])
+      if (stat /= 0) return
+      if (deck_has_param(params, 'READ')) then
+        call fail(ir, kw, 'READ is not supported: restart with ldfcz --restart-from JOB.rst JOB.inp on the '// &
+          'unchanged deck (docs/host.md)')
+        return
+      end if
+      if (.not. deck_has_param(params, 'WRITE')) then
+        call fail(ir, kw, 'WRITE (or READ) is required')
+        return
+      end if
+      if (deck_has_param(params, 'NUMBER INTERVAL') .or. deck_has_param(params, 'TIME MARKS')) then
+        call fail(ir, kw, 'only FREQUENCY=n is supported (restart data after every n-th increment)')
+        return
+      end if
+      n = param_int('FREQUENCY', 1)
+      if (stat /= 0) return
+      if (n < 0) then
+        call fail(ir, kw, 'FREQUENCY must be >= 0 (0: no restart file)')
+        return
+      end if
+      if (ir_next > ir + 1) then
+        call fail(ir + 1, kw, 'no data lines expected')
+        return
+      end if
+      restart_freq = n
+      if (in_step) model%steps(istep)%restart_frequency = n
+    end subroutine read_restart
+
     ! ------------------------------------------------------------------ history data
     subroutine read_step()
       type(step_t), allocatable :: tmp(:)
@@ -1016,6 +1066,8 @@ contains
       allocate (model%steps(istep)%bcs(4), model%steps(istep)%prints(2))
       ! NLGEOM carries over from the previous step, as in Abaqus
       if (istep > 1) model%steps(istep)%nlgeom = model%steps(istep - 1)%nlgeom
+      ! a *RESTART, WRITE request stays in effect until changed (Abaqus)
+      model%steps(istep)%restart_frequency = restart_freq
       if (deck_has_param(params, 'NLGEOM')) then
         v = deck_normalize(deck_param_value(params, 'NLGEOM'))
         if (v == '' .or. v == 'YES') then

@@ -46,6 +46,7 @@ module model_types
     logical :: unsymm = .false.            !< *USER MATERIAL, UNSYMM
     integer :: nstatv = 0                  !< *DEPVAR
     type(source_pos_t) :: pos              !< where *MATERIAL was
+    type(source_pos_t) :: user_pos         !< first data line of *USER MATERIAL (messages of a UMAT's XIT)
   end type material_t
 
   type :: section_t
@@ -72,6 +73,7 @@ module model_types
   type :: uel_property_t
     real(dp), allocatable :: props(:)      !< NPROPS real properties
     integer, allocatable :: jprops(:)      !< NJPROP integer properties
+    type(source_pos_t) :: pos              !< first data line of the block (messages of a UEL's XIT)
   end type uel_property_t
 
   type :: amplitude_t
@@ -118,6 +120,7 @@ module model_types
     integer :: field_intervals = 0         !< NUMBER INTERVAL (0 = not given)
     type(node_print_t), allocatable :: prints(:)
     integer :: nprint = 0
+    integer :: restart_frequency = 0       !< *RESTART, WRITE, FREQUENCY=n in effect (0: no restart file)
     type(source_pos_t) :: pos
   end type step_t
 

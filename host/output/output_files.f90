@@ -2,13 +2,14 @@
 !> increment attempt), JOB.log (messages and the closing summary), JOB.pvd + JOB_NNNN.vtu (ParaView field frames),
 !> and a live one-line progress display when standard output is a terminal.
 module output_files
-  use, intrinsic :: iso_c_binding, only: c_int
-  use, intrinsic :: iso_fortran_env, only: output_unit
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+  use, intrinsic :: iso_fortran_env, only: output_unit, iostat_end, iostat_eor
   use ldfcz_kinds, only: dp
   implicit none
   private
   public :: output_t, output_open, output_close, output_log, output_csv_header, output_csv_row, output_sta
   public :: output_progress, output_progress_clear, output_vtu_frame, output_vtu_t, stdout_is_terminal
+  public :: output_csv_resume, output_frames_resume, output_sta_note
 
   !> Cell and point data of one VTU frame.
   type :: output_vtu_t
@@ -46,6 +47,11 @@ module output_files
       integer(c_int), value :: fd
       integer(c_int) :: r
     end function c_isatty
+    function c_rename(from, to) bind(c, name='rename') result(r)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: from(*), to(*)
+      integer(c_int) :: r
+    end function c_rename
   end interface
 
 contains
@@ -55,29 +61,42 @@ contains
     stdout_is_terminal = c_isatty(1_c_int) == 1
   end function stdout_is_terminal
 
-  !> Open JOB.csv, JOB.sta and JOB.log in dir.
-  subroutine output_open(out, job, dir, quiet, stat, errmsg)
+  !> Open JOB.csv, JOB.sta and JOB.log in dir. append (a restart): JOB.sta and JOB.log are continued and JOB.csv is
+  !> left closed for output_csv_resume.
+  subroutine output_open(out, job, dir, quiet, stat, errmsg, append)
     type(output_t), intent(out) :: out                   !< output state
     character(len=*), intent(in) :: job                  !< job name
     character(len=*), intent(in) :: dir                  !< directory (must exist)
     logical, intent(in) :: quiet                         !< no echo
     integer, intent(out) :: stat                         !< 0 ok, 2 cannot write
     character(len=:), allocatable, intent(out) :: errmsg !< message
+    logical, intent(in), optional :: append              !< continue the files of an earlier run (restart)
     integer :: ios
+    logical :: cont
+    cont = .false.
+    if (present(append)) cont = append
     out%job = job
     out%dir = dir
     out%quiet = quiet
     out%tty = stdout_is_terminal() .and. .not. quiet
     stat = 0
     errmsg = ''
-    open (newunit=out%sta, file=path(out, '.sta'), status='replace', action='write', iostat=ios)
+    if (cont) then
+      open (newunit=out%sta, file=path(out, '.sta'), status='unknown', position='append', action='write', iostat=ios)
+    else
+      open (newunit=out%sta, file=path(out, '.sta'), status='replace', action='write', iostat=ios)
+    end if
     if (ios /= 0) then
       stat = 2
       errmsg = 'cannot write '//path(out, '.sta')
       return
     end if
-    write (out%sta, '(a)') '# step  inc  attempt  iterations  step_time  increment  outcome'
+    if (.not. cont) write (out%sta, '(a)') '# step  inc  attempt  iterations  step_time  increment  outcome'
     flush (out%sta)
+    if (cont) then
+      open (newunit=out%log, file=path(out, '.log'), status='unknown', position='append', action='write', iostat=ios)
+      return
+    end if
     open (newunit=out%log, file=path(out, '.log'), status='replace', action='write', iostat=ios)
     open (newunit=out%csv, file=path(out, '.csv'), status='replace', action='write', iostat=ios)
     if (ios /= 0) then
@@ -85,6 +104,120 @@ contains
       errmsg = 'cannot write '//path(out, '.csv')
     end if
   end subroutine output_open
+
+  !> Restart: continue JOB.csv after its first nrows data rows. The header must be the one this run writes; rows
+  !> after nrows (written by the interrupted run after its last restart point) are dropped (the file is rewritten
+  !> through JOB.csv.tmp and rename(2)). Without a JOB.csv in the output directory a new one starts with the header
+  !> (fresh = .true.). stat = 2: the file has another header or fewer rows.
+  subroutine output_csv_resume(out, columns, nrows, fresh, stat, errmsg)
+    type(output_t), intent(inout) :: out                 !< output state (JOB.csv closed)
+    character(len=*), intent(in) :: columns(:)           !< column names after the four time columns
+    integer, intent(in) :: nrows                         !< data rows to keep
+    logical, intent(out) :: fresh                        !< no JOB.csv was there: a new one was started
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=:), allocatable :: header, line, fname
+    integer :: u, v, ios, k, i
+    logical :: exists
+    stat = 0
+    errmsg = ''
+    fresh = .false.
+    fname = path(out, '.csv')
+    header = 'step,inc,step_time,total_time'
+    do i = 1, size(columns)
+      header = header//','//trim(columns(i))
+    end do
+    inquire (file=fname, exist=exists)
+    if (.not. exists) then
+      fresh = .true.
+      open (newunit=out%csv, file=fname, status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+        stat = 2
+        errmsg = 'cannot write '//fname
+        return
+      end if
+      call output_csv_header(out, columns)
+      return
+    end if
+    open (newunit=u, file=fname, status='old', action='read', iostat=ios)
+    if (ios /= 0) then
+      stat = 2
+      errmsg = 'cannot read '//fname
+      return
+    end if
+    open (newunit=v, file=fname//'.tmp', status='replace', action='write', iostat=ios)
+    if (ios /= 0) then
+      close (u)
+      stat = 2
+      errmsg = 'cannot write '//fname//'.tmp'
+      return
+    end if
+    call read_line(u, line, ios)
+    if (ios /= 0 .or. line /= header) then
+      stat = 2
+      errmsg = fname//': its header is not the one of this deck ('//header//'): restart into the output '// &
+        'directory of the run that wrote the restart file'
+    else
+      write (v, '(a)') line
+      do k = 1, nrows
+        call read_line(u, line, ios)
+        if (ios /= 0) exit
+        write (v, '(a)') line
+      end do
+      if (ios /= 0) then
+        stat = 2
+        write (errmsg, '(i0)') nrows
+        errmsg = fname//': fewer data rows than the '//errmsg//' of the restart file: restart into the output '// &
+          'directory of the run that wrote it'
+      end if
+    end if
+    close (u)
+    if (stat /= 0) then
+      close (v, status='delete')
+      return
+    end if
+    close (v)
+    if (c_rename(fname//'.tmp'//c_null_char, fname//c_null_char) /= 0) then
+      stat = 2
+      errmsg = 'cannot rename '//fname//'.tmp to '//fname
+      return
+    end if
+    open (newunit=out%csv, file=fname, status='old', position='append', action='write', iostat=ios)
+    if (ios /= 0) then
+      stat = 2
+      errmsg = 'cannot write '//fname
+    end if
+  end subroutine output_csv_resume
+
+  !> One line of any length (ios /= 0 at the end of the file; an unterminated last line counts as a line).
+  subroutine read_line(u, line, ios)
+    integer, intent(in) :: u
+    character(len=:), allocatable, intent(out) :: line
+    integer, intent(out) :: ios
+    character(len=4096) :: buf
+    integer :: n
+    line = ''
+    do
+      read (u, '(a)', advance='no', iostat=ios, size=n) buf
+      line = line//buf(1:n)
+      if (ios /= 0) exit
+    end do
+    if (ios == iostat_eor) then
+      ios = 0
+    else if (ios == iostat_end .and. len(line) > 0) then
+      ios = 0
+    end if
+  end subroutine read_line
+
+  !> Restart: the VTU frames 1..size(frame_times) of the interrupted run are kept; JOB.pvd is rewritten with them and
+  !> the next frame gets the next number.
+  subroutine output_frames_resume(out, frame_times)
+    type(output_t), intent(inout) :: out      !< output state
+    real(dp), intent(in) :: frame_times(:)    !< total time of each frame written
+    out%frame_times = frame_times
+    out%nframe = size(frame_times)
+    if (out%nframe > 0) call write_pvd(out)
+  end subroutine output_frames_resume
 
   function path(out, suffix) result(p)
     type(output_t), intent(in) :: out
@@ -159,6 +292,14 @@ contains
     write (out%sta, '(a)') ''
     flush (out%sta)
   end subroutine output_sta
+
+  !> A comment line ('# text') in JOB.sta, flushed.
+  subroutine output_sta_note(out, text)
+    type(output_t), intent(inout) :: out  !< output state
+    character(len=*), intent(in) :: text  !< the note
+    write (out%sta, '(a)') '# '//text
+    flush (out%sta)
+  end subroutine output_sta_note
 
   !> Live progress line (terminal only): step, percent of the step, increment, ETA of the step.
   subroutine output_progress(out, kstep, nstep, kinc, step_time, period, wall_step)
@@ -246,19 +387,7 @@ contains
     ! the PVD collection, rewritten so that it is complete after every frame
     if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
     out%frame_times = [out%frame_times, total_time]
-    open (newunit=u, file=out%dir//'/'//out%job//'.pvd', status='replace', action='write', iostat=ios)
-    if (ios == 0) then
-      write (u, '(a)') '<?xml version="1.0"?>'
-      write (u, '(a)') '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">'
-      write (u, '(a)') '<Collection>'
-      do i = 1, out%nframe
-        write (b, '(i4.4)') i
-        write (u, '(a,es23.15,a)') '<DataSet timestep="', out%frame_times(i), '" group="" part="0" file="'// &
-          out%job//'_'//trim(b)//'.vtu"/>'
-      end do
-      write (u, '(a)') '</Collection></VTKFile>'
-      close (u)
-    end if
+    call write_pvd(out)
     call system_clock(c1)
     out%t_output = out%t_output + real(c1 - c0, dp) / real(rate, dp)
   contains
@@ -277,6 +406,25 @@ contains
       write (u, '(a)') '</DataArray>'
     end subroutine sca
   end subroutine output_vtu_frame
+
+  !> JOB.pvd with the frames 1..out%nframe.
+  subroutine write_pvd(out)
+    type(output_t), intent(in) :: out
+    integer :: u, i, ios
+    character(len=16) :: b
+    open (newunit=u, file=out%dir//'/'//out%job//'.pvd', status='replace', action='write', iostat=ios)
+    if (ios /= 0) return
+    write (u, '(a)') '<?xml version="1.0"?>'
+    write (u, '(a)') '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">'
+    write (u, '(a)') '<Collection>'
+    do i = 1, out%nframe
+      write (b, '(i4.4)') i
+      write (u, '(a,es23.15,a)') '<DataSet timestep="', out%frame_times(i), '" group="" part="0" file="'// &
+        out%job//'_'//trim(b)//'.vtu"/>'
+    end do
+    write (u, '(a)') '</Collection></VTKFile>'
+    close (u)
+  end subroutine write_pvd
 
   !> Close all files.
   subroutine output_close(out)

@@ -1,0 +1,209 @@
+#!/usr/bin/env python3
+"""Restart test (issue 6, "no lost results"; docs/host.md, "Restart"):
+
+  check_restart.py --exe BIN --deck DECK --out DIR [--user FILE] [--stop K] [--freq N] [--kill] [--deck-restart]
+                   [--other-deck DECK2] [--rel 1e-12] [--expect-exit 0]
+
+1. runs DECK to the end (reference, DIR/full);
+2. runs it again in DIR/cut writing restart data every N increments and stopping after K converged increments
+   (--stop-after-increments K), or with --kill: every increment, killed with SIGKILL once JOB.csv holds K rows (the
+   run is advanced in ~1 ms slices between SIGSTOP and SIGCONT);
+   with --deck-restart the frequency comes from a `*RESTART, WRITE, FREQUENCY=N` line inserted into a copy of the
+   deck (DIR/deck/JOB.inp) instead of the option --restart-write N;
+3. restarts from DIR/cut/JOB.rst into DIR/cut (ldfcz --restart-from JOB.rst DECK);
+4. checks: exit status 0 (or --expect-exit); JOB.csv has the reference's header and number of rows; every value within --rel relative
+   (and 1e-300 absolute) of the reference's; the VTU frame count and JOB.pvd time stamps are the reference's; the
+   summary's energy balance line is the reference's. Prints the largest relative difference and whether the CSV is
+   bit-identical (same text), which it is when the restart repeats the uninterrupted arithmetic.
+5. with --other-deck: a restart of DECK's restart file with DECK2 must be refused (exit 2, "different model").
+Also refused (exit 2): a truncated restart file and a file that is not a restart file.
+"""
+import argparse
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def run(cmd, cwd, expect=None):
+    p = subprocess.run(cmd, capture_output=True, text=True, errors="replace", cwd=cwd, timeout=600)
+    print("$ " + " ".join(cmd) + "  -> exit %d" % p.returncode)
+    if re.search(r"Fortran runtime error|Backtrace|Program received signal", p.stderr):
+        print(p.stderr[-3000:])
+        fail("crash")
+    if expect is not None and p.returncode not in expect:
+        print(p.stdout[-3000:] + p.stderr[-3000:])
+        fail("exit status %d, expected %s" % (p.returncode, expect))
+    return p
+
+
+def read_csv(path):
+    with open(path) as f:
+        lines = f.read().split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    return lines
+
+
+def frame_times(path):
+    if not os.path.exists(path):
+        return []
+    return re.findall(r'timestep="\s*([^"]+)"', open(path).read())
+
+
+def energy_line(path):
+    lines = [l for l in open(path, errors="replace") if l.startswith("energy balance")]
+    return lines[-1].strip() if lines else ""
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--deck", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--user")
+    ap.add_argument("--stop", type=int, default=9, help="stop (or kill) after this many increments")
+    ap.add_argument("--freq", type=int, default=1, help="restart data every N increments")
+    ap.add_argument("--kill", action="store_true", help="SIGKILL instead of --stop-after-increments")
+    ap.add_argument("--deck-restart", action="store_true", help="*RESTART, WRITE in the deck, not the option")
+    ap.add_argument("--other-deck", help="a restart with this deck must be refused")
+    ap.add_argument("--rel", type=float, default=1e-12)
+    ap.add_argument("--expect-exit", type=int, default=0, help="exit status of the complete runs (3: stops early)")
+    a = ap.parse_args()
+    exe = os.path.abspath(a.exe)
+    deck = os.path.abspath(a.deck)
+    out = os.path.abspath(a.out)
+    job = os.path.splitext(os.path.basename(deck))[0]
+    shutil.rmtree(out, ignore_errors=True)
+    full, cut = os.path.join(out, "full"), os.path.join(out, "cut")
+    for d in (full, cut):
+        os.makedirs(d)
+    base = [exe, "--quiet", "--threads", "1"]
+    if a.user:
+        base += ["--user", os.path.abspath(a.user)]
+
+    # 1. the uninterrupted run
+    run(base + ["--out", full, deck], out, expect=[a.expect_exit])
+
+    # 2. the interrupted run
+    run_deck = deck
+    write_opt = ["--restart-write", str(a.freq)]
+    if a.deck_restart:
+        ddir = os.path.join(out, "deck")
+        os.makedirs(ddir)
+        text = open(deck).read()
+        text, n = re.subn(r"(?im)^(\*STEP\b[^\n]*\n)", r"\1*RESTART, WRITE, FREQUENCY=%d\n" % a.freq, text, count=1)
+        if n != 1:
+            fail("no *STEP line in " + deck)
+        # *INCLUDE paths are relative to the deck: copy the deck's directory's include files along
+        for inc in re.findall(r"(?im)^\*INCLUDE\s*,\s*INPUT\s*=\s*(\S+)", text):
+            shutil.copy(os.path.join(os.path.dirname(deck), inc), os.path.join(ddir, inc))
+        run_deck = os.path.join(ddir, job + ".inp")
+        with open(run_deck, "w") as f:
+            f.write(text)
+        write_opt = []
+    rst = os.path.join(cut, job + ".rst")
+    if a.kill:
+        cmd = base + ["--out", cut, "--restart-write", "1", run_deck]
+        print("$ " + " ".join(cmd) + "  (SIGKILL after %d rows)" % a.stop)
+        p = subprocess.Popen(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        csv = os.path.join(cut, job + ".csv")
+        # the run advances in slices of ~1 ms between SIGSTOP and SIGCONT, so that even a fast run is caught
+        # after about K rows (the kill lands at an arbitrary point of the stopped program)
+        t0 = time.time()
+        rows = 0
+        while p.poll() is None and time.time() - t0 < 300:
+            p.send_signal(signal.SIGSTOP)
+            try:
+                with open(csv) as f:
+                    rows = f.read().count("\n") - 1
+            except FileNotFoundError:
+                rows = 0
+            if rows >= a.stop:
+                p.send_signal(signal.SIGKILL)
+                break
+            p.send_signal(signal.SIGCONT)
+            time.sleep(0.001)
+        rc = p.wait()
+        if rc != -signal.SIGKILL:
+            fail("the run ended (exit %d) before the kill: choose a smaller --stop" % rc)
+        print("killed with %d CSV rows seen" % rows)
+    else:
+        run(base + ["--out", cut] + write_opt + ["--stop-after-increments", str(a.stop), run_deck], out, expect=[3])
+    if not os.path.exists(rst):
+        fail("no restart file " + rst)
+    if os.path.exists(rst + ".tmp"):
+        print("note: a JOB.rst.tmp was left by the kill (never read)")
+    rows_cut = len(read_csv(os.path.join(cut, job + ".csv"))) - 1
+
+    # refusals: another deck, a truncated file, not a restart file (each into a scratch directory)
+    if a.other_deck:
+        p = run(base + ["--out", os.path.join(out, "other"), "--restart-from", rst, os.path.abspath(a.other_deck)],
+                out, expect=[2])
+        if "different model" not in p.stdout + p.stderr:
+            fail("the refusal does not say 'different model': " + (p.stdout + p.stderr)[-500:])
+    bad = os.path.join(out, "bad")
+    os.makedirs(bad)
+    data = open(rst, "rb").read()
+    with open(os.path.join(bad, "trunc.rst"), "wb") as f:
+        f.write(data[: len(data) * 2 // 3])
+    p = run(base + ["--out", bad, "--restart-from", os.path.join(bad, "trunc.rst"), run_deck], out, expect=[2])
+    if "truncated" not in p.stdout + p.stderr:
+        fail("a truncated restart file is not reported as such")
+    p = run(base + ["--out", bad, "--restart-from", run_deck, run_deck], out, expect=[2])
+    if "not an ldfcz restart file" not in p.stdout + p.stderr:
+        fail("a deck given as restart file is not refused as such")
+
+    # 3. the restart
+    run(base + ["--out", cut, "--restart-from", rst, run_deck], out, expect=[a.expect_exit])
+
+    # 4. comparison
+    ref = read_csv(os.path.join(full, job + ".csv"))
+    got = read_csv(os.path.join(cut, job + ".csv"))
+    if ref[0] != got[0]:
+        fail("CSV headers differ:\n%s\n%s" % (ref[0], got[0]))
+    if len(ref) != len(got):
+        fail("CSV rows: %d after the restart, %d uninterrupted" % (len(got) - 1, len(ref) - 1))
+    worst = 0.0
+    for k, (r, g) in enumerate(zip(ref[1:], got[1:]), 2):
+        rv, gv = r.split(","), g.split(",")
+        if len(rv) != len(gv):
+            fail("line %d: %d fields, expected %d" % (k, len(gv), len(rv)))
+        if rv[:2] != gv[:2]:
+            fail("line %d: step/increment %s, expected %s" % (k, gv[:2], rv[:2]))
+        for x, y in zip(rv[2:], gv[2:]):
+            x, y = float(x), float(y)
+            d = abs(x - y)
+            if d > 1e-300:
+                worst = max(worst, d / max(abs(x), abs(y)))
+    identical = ref == got
+    print("restart: %d rows, interrupted run left %d rows; largest relative difference %.3e; CSV %s"
+          % (len(ref) - 1, rows_cut, worst, "bit-identical" if identical else "NOT bit-identical"))
+    if worst > a.rel:
+        fail("relative difference %.3e > %.1e" % (worst, a.rel))
+    ft_ref = frame_times(os.path.join(full, job + ".pvd"))
+    ft_got = frame_times(os.path.join(cut, job + ".pvd"))
+    if ft_ref != ft_got:
+        fail("JOB.pvd frames differ: %s vs %s" % (ft_got, ft_ref))
+    nvtu_ref = len([f for f in os.listdir(full) if f.endswith(".vtu")])
+    nvtu_got = len([f for f in os.listdir(cut) if f.endswith(".vtu")])
+    if nvtu_ref != nvtu_got:
+        fail("%d VTU frames after the restart, %d uninterrupted" % (nvtu_got, nvtu_ref))
+    e_ref = energy_line(os.path.join(full, job + ".log"))
+    e_got = energy_line(os.path.join(cut, job + ".log"))
+    if e_ref != e_got:
+        fail("energy balance differs:\n%s\n%s" % (e_got, e_ref))
+    print("frames %d, %s" % (len(ft_ref), e_ref))
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
