@@ -17,9 +17,11 @@
 !>     i.e. dgamma = dt tau_bar/eta at the end of the increment (fully implicit, softening included).
 !>     Unknowns (e_1, e_2, e_3, ln dgamma), local Newton with line search, started from a bracketed scalar
 !>     small-strain radial-return predictor. sum(e_a) = 0 is kept exactly, so det(Be~) = 1 to round-off.
-!> Consistent tangent (Abaqus DDSDDE, Jaumann rate of Kirchhoff stress over J): central-difference perturbation of
-!> F_n+1 (Miehe 1996, Sun et al. 2008): F+- = (I +- eps/2 (e_i e_j^T + e_j e_i^T)) F_n+1, column ij =
-!> (tau(F+) - tau(F-)) / (2 J eps), tau = J sigma, eps = 1e-6.
+!> Consistent tangent (Abaqus DDSDDE, Jaumann rate of Kirchhoff stress over J): analytic, the limit of the
+!> perturbation dF = eps/2 (e_i e_j^T + e_j e_i^T) F_n+1 (Miehe 1996): implicit function theorem at the converged
+!> return for the principal values, spectral derivative of the isotropic map Be~_trial -> Be~_n+1 for the
+!> eigenvectors (subroutine consistent_tangent). The central perturbation (13 local solves) is kept as an option.
+!> Elastic fast path: no return when the Eyring increment at the trial stress is below 1e-12.
 module leonov
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
@@ -45,7 +47,10 @@ module leonov
                                                    0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
   real(dp), parameter :: third = 1.0_dp / 3.0_dp
   real(dp), parameter :: q_elastic = 1.0e-13_dp    !< below this |dev Be~| the increment is treated as elastic
-  real(dp), parameter :: eps_tangent = 1.0e-6_dp   !< perturbation of the tangent
+  real(dp), parameter :: eps_tangent = 1.0e-6_dp   !< perturbation of the (optional) perturbation tangent
+  !> elastic fast path: ln of the Eyring increment dt sinh(tau_tr/tau_0)/A(gamma_n) at the trial stress below which
+  !> the return is skipped: dgamma < 1e-12 changes tau_bar by < G 1e-12 (4.5e-10 MPa for Table 1) per increment
+  real(dp), parameter :: log_dgamma_elastic = -27.631021115928547_dp   ! ln(1e-12)
   real(dp), parameter :: tol_local = 1.0e-14_dp    !< local Newton tolerance (log-strain units)
   real(dp), parameter :: tol_stall = 1.0e-10_dp    !< accepted when the line search stalls at round-off
   integer, parameter :: max_newton = 60
@@ -223,7 +228,7 @@ contains
   pure subroutine sym3_eigen(a, lam, v)
     real(dp), intent(in) :: a(3, 3)
     real(dp), intent(out) :: lam(3), v(3, 3)
-    real(dp) :: b(3, 3), r(3, 3), theta, t, c, s, scale
+    real(dp) :: b(3, 3), colp(3), colq(3), theta, t, c, s, scale
     integer :: sweep, ip, iq
     b = 0.5_dp * (a + transpose(a))
     v = identity
@@ -242,15 +247,22 @@ contains
             end if
             c = 1.0_dp / sqrt(t * t + 1.0_dp)
             s = t * c
-            r = identity
-            r(ip, ip) = c
-            r(iq, iq) = c
-            r(ip, iq) = s
-            r(iq, ip) = -s
-            b = matmul(transpose(r), matmul(b, r))
+            ! b <- R^T b R and v <- v R with the plane rotation R (R_pp = R_qq = c, R_pq = -R_qp = s):
+            ! only rows and columns p, q change
+            colp = c * b(:, ip) - s * b(:, iq)
+            colq = s * b(:, ip) + c * b(:, iq)
+            b(:, ip) = colp
+            b(:, iq) = colq
+            colp = c * b(ip, :) - s * b(iq, :)
+            colq = s * b(ip, :) + c * b(iq, :)
+            b(ip, :) = colp
+            b(iq, :) = colq
             b(ip, iq) = 0.0_dp
             b(iq, ip) = 0.0_dp
-            v = matmul(v, r)
+            colp = c * v(:, ip) - s * v(:, iq)
+            colq = s * v(:, ip) + c * v(:, iq)
+            v(:, ip) = colp
+            v(:, iq) = colq
           end do
         end do
       end do
@@ -287,6 +299,38 @@ contains
     end do
     ok = all(ieee_is_finite(x))
   end subroutine solve4
+
+  !> Solve a x = rhs for four right-hand sides (columns), Gaussian elimination with partial pivoting.
+  pure subroutine solve4m(a, rhs, x, ok)
+    real(dp), intent(in) :: a(4, 4), rhs(4, 4)
+    real(dp), intent(out) :: x(4, 4)
+    logical, intent(out) :: ok
+    real(dp) :: m(4, 8), row(8), f
+    integer :: k, i, piv
+    m(:, 1:4) = a
+    m(:, 5:8) = rhs
+    ok = .false.
+    x = 0.0_dp
+    do k = 1, 4
+      piv = k - 1 + maxloc(abs(m(k:4, k)), dim=1)
+      if (.not. (abs(m(piv, k)) > 0.0_dp)) return
+      if (piv /= k) then
+        row = m(k, :)
+        m(k, :) = m(piv, :)
+        m(piv, :) = row
+      end if
+      do i = k + 1, 4
+        f = m(i, k) / m(k, k)
+        m(i, k:8) = m(i, k:8) - f * m(k, k:8)
+      end do
+    end do
+    do k = 4, 1, -1
+      do i = 1, 4
+        x(k, i) = (m(k, 4 + i) - dot_product(m(k, k + 1:4), x(k + 1:4, i))) / m(k, k)
+      end do
+    end do
+    ok = all(ieee_is_finite(x))
+  end subroutine solve4m
 
   ! ------------------------------------------------------------------------------------------------------------
   ! Return map on the principal logarithmic elastic stretches
@@ -400,16 +444,18 @@ contains
   !>   r_a = e_a - e_a^tr + phi d_a,  phi = dt G/(2 eta) = (dt G/(2 tau_0)) exp(-ln A) sinh(x)/x,  x = tau_bar/tau_0
   !>   (dgamma/2 N_a = dt Dp_a: the viscosity form stays smooth when tau_bar -> 0),
   !>   r_4 = ln sinh(x) - u - ln A(gamma_n + e^u) + ln dt  (Eq. 37 with dgamma = dt tau_bar/eta).
-  pure subroutine local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+  pure subroutine local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: etr(3), press, dt, gamma_n, x(4)
     real(dp), intent(out) :: r(4), jac(4, 4), norm
     logical, intent(out) :: ok
-    real(dp) :: b(3), d(3), q, dgam, xs, la, dla, dxs(3), lphi, phi, dlx
+    real(dp), intent(out) :: phi       !< dt G/(2 eta) at x
+    real(dp) :: b(3), d(3), q, dgam, xs, la, dla, dxs(3), lphi, dlx
     integer :: a, c
     ok = .false.
     r = 0.0_dp
     jac = 0.0_dp
+    phi = 0.0_dp
     norm = huge(1.0_dp)
     if (any(abs(x(1:3)) > 50.0_dp) .or. x(4) > 50.0_dp) return
     call principal_measures(x(1:3), b, d, q)
@@ -439,30 +485,43 @@ contains
   end subroutine local_residual
 
   !> Implicit exponential-map return on the principal log elastic stretches (see the module header).
-  pure subroutine return_map(p, etr, press, dt, gamma_n, e, dgamma, stat)
+  !> Also returns what the consistent tangent needs (implicit function theorem at the converged root of
+  !> R(x; e_tr, p) = 0: dx = -(dR/dx)^-1 (dR/de_tr de_tr + dR/dp dp), dR/dx = the local Newton Jacobian):
+  !> dedetr(a, c) = de_a/de_tr,c, dedp(a) = de_a/dp, phi = dt G/(2 eta) at the solution (identity, 0, 0 when the
+  !> increment is elastic).
+  pure subroutine return_map(p, etr, press, dt, gamma_n, e, dgamma, stat, dedetr, dedp, phi)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: etr(3), press, dt, gamma_n
     real(dp), intent(out) :: e(3), dgamma
     integer, intent(out) :: stat
+    real(dp), intent(out) :: dedetr(3, 3), dedp(3), phi
     real(dp) :: b(3), d(3), q_tr, tau_tr, u, tau, x(4), xt(4), r(4), jac(4, 4), dx(4), norm, norm_t, alpha, sc
+    real(dp) :: la, dla, rhs(4, 4), sens(4, 4)
     logical :: ok, accepted
     integer :: it, ls
 
     stat = leonov_ok
     e = etr
     dgamma = 0.0_dp
+    dedetr = identity
+    dedp = 0.0_dp
+    phi = 0.0_dp
     call principal_measures(etr, b, d, q_tr)
     if (.not. (dt > 0.0_dp) .or. q_tr <= q_elastic) return
     tau_tr = p%g * q_tr
+    ! elastic fast path: the Eyring rate at the trial stress bounds dgamma (the return lowers tau_bar; the
+    ! softening of A over dgamma is a factor 1 + O(dgamma)); below dgamma_elastic the increment is elastic
+    call log_a(p, press, gamma_n, la, dla)
+    if (log(dt) + leonov_ln_sinh(tau_tr / p%tau_0) - la < log_dgamma_elastic) return
     call predictor(p, tau_tr, press, dt, gamma_n, u)
     tau = max(tau_tr - p%g * exp(u), 1.0e-12_dp * tau_tr)
     x(1:3) = etr * (tau / tau_tr)
     x(4) = u
-    call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+    call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
     if (.not. ok) then
       x(1:3) = etr
       x(4) = u
-      call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+      call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
       if (.not. ok) then
         stat = leonov_no_convergence
         return
@@ -481,7 +540,7 @@ contains
       accepted = .false.
       do ls = 1, merge(3, 30, norm <= tol_stall)
         xt = x + alpha * dx
-        call local_residual(p, etr, press, dt, gamma_n, xt, r, jac, norm_t, ok)
+        call local_residual(p, etr, press, dt, gamma_n, xt, r, jac, norm_t, ok, phi)
         if (ok .and. norm_t < (1.0_dp - 1.0e-4_dp * alpha) * norm) then
           accepted = .true.
           exit
@@ -490,7 +549,7 @@ contains
       end do
       if (.not. accepted) then
         ! round-off floor: accept if already tight, otherwise fail
-        call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok)
+        call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
         if (ok .and. norm <= tol_stall) exit
         stat = leonov_no_convergence
         return
@@ -504,22 +563,39 @@ contains
     end do
     e = x(1:3) - third * sum(x(1:3))
     dgamma = exp(x(4))
+    ! sensitivities: jac and phi belong to the converged x (last accepted evaluation). dR_a/de_tr,c = -delta_ac;
+    ! dR/dp from ln A = ... + mu p/tau_0: dR_a/dp = -phi d_a mu/tau_0, dR_4/dp = -mu/tau_0.
+    call principal_measures(x(1:3), b, d, q_tr)
+    rhs = 0.0_dp
+    rhs(1, 1) = 1.0_dp
+    rhs(2, 2) = 1.0_dp
+    rhs(3, 3) = 1.0_dp
+    rhs(1:3, 4) = phi * d * (p%mu / p%tau_0)
+    rhs(4, 4) = p%mu / p%tau_0
+    call solve4m(jac, rhs, sens, ok)
+    if (.not. ok) then
+      stat = leonov_no_convergence
+      return
+    end if
+    dedetr = sens(1:3, 1:3)
+    dedp = sens(1:3, 4)
   end subroutine return_map
 
   ! ------------------------------------------------------------------------------------------------------------
   ! Update of one material point
   ! ------------------------------------------------------------------------------------------------------------
 
-  !> State update and Kirchhoff stress for F_n -> F_n+1 in time dt.
-  pure subroutine kirchhoff_update(p, f0, f1, dt, old, new, tau_k, stat)
+  !> State update and Kirchhoff stress for F_n -> F_n+1 in time dt; with c present also the consistent tangent.
+  pure subroutine kirchhoff_update(p, f0, f1, dt, old, new, tau_k, stat, c)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: f0(3, 3), f1(3, 3), dt
     type(leonov_state), intent(in) :: old
     type(leonov_state), intent(out) :: new
     real(dp), intent(out) :: tau_k(3, 3)
     integer, intent(out) :: stat
+    real(dp), intent(inout), optional :: c(6, 6)   !< consistent tangent (set only when stat = leonov_ok)
     real(dp) :: j0, j1, frel(3, 3), ft(3, 3), betr(3, 3), lam(3), v(3, 3), etr(3), e(3), press, dgamma, detb
-    real(dp) :: be(3, 3), bt(3, 3), sigma(3, 3), la, dla, s, ds, x
+    real(dp) :: be(3, 3), bt(3, 3), sigma(3, 3), la, dla, s, ds, x, dedetr(3, 3), dedp(3), phi
     integer :: a
 
     new = old
@@ -545,7 +621,7 @@ contains
     if (maxval(abs(etr)) > 25.0_dp) return
     ! p = -tr(sigma)/3 = -kappa (J - 1) (Eq. 38; the hardening and driving deviators are traceless)
     press = -p%kappa * (j1 - 1.0_dp)
-    call return_map(p, etr, press, dt, old%gamma_p, e, dgamma, stat)
+    call return_map(p, etr, press, dt, old%gamma_p, e, dgamma, stat, dedetr, dedp, phi)
     if (stat /= leonov_ok) return
     be = 0.0_dp
     do a = 1, 3
@@ -569,8 +645,102 @@ contains
     else
       new%gamma_dot = 0.0_dp
     end if
+    if (present(c)) call consistent_tangent(p, j1, sigma, bt, v, etr, e, dedetr, dedp, phi, c)
     stat = leonov_ok
   end subroutine kirchhoff_update
+
+  !> x/tanh(x), smooth at 0.
+  elemental real(dp) function x_over_tanh(x)
+    real(dp), intent(in) :: x
+    if (abs(x) < 1.0e-4_dp) then
+      x_over_tanh = 1.0_dp + x * x / 3.0_dp
+    else if (abs(x) > 20.0_dp) then
+      x_over_tanh = abs(x)
+    else
+      x_over_tanh = x / tanh(x)
+    end if
+  end function x_over_tanh
+
+  !> sinh(x)/x, smooth at 0.
+  elemental real(dp) function sinh_over_x(x)
+    real(dp), intent(in) :: x
+    if (abs(x) < 1.0e-4_dp) then
+      sinh_over_x = 1.0_dp + x * x / 6.0_dp
+    else
+      sinh_over_x = sinh(x) / x
+    end if
+  end function sinh_over_x
+
+  !> expm1(2x)/x, smooth at 0 (= 2 + 2x + 4x^2/3 + ...).
+  elemental real(dp) function expm1_2x_over_x(x)
+    real(dp), intent(in) :: x
+    if (abs(x) < 1.0e-5_dp) then
+      expm1_2x_over_x = 2.0_dp + x * (2.0_dp + x * (4.0_dp / 3.0_dp))
+    else
+      expm1_2x_over_x = expm1(2.0_dp * x) / x
+    end if
+  end function expm1_2x_over_x
+
+  !> Consistent tangent of the converged update (Abaqus DDSDDE: Jaumann rate of Kirchhoff stress over J,
+  !> engineering shear), analytic. Column k is the response to dF = dE_k F with dE_k the symmetric Voigt unit
+  !> (e_i e_j^T + e_j e_i^T)/2 (the same F-perturbation as Miehe 1996, taken to its limit): a spin-free
+  !> perturbation, so the Jaumann rate is the plain change, dtau/J = tr(dE) sigma + dsigma with (Eqs. 31-33)
+  !>   dsigma = G dev(dBe~) + kappa J tr(dE) I + G_r dev(dE' B~ + B~ dE'),  dE' = dev(dE);
+  !>   dBe~_trial = dE' Be~_trial + Be~_trial dE' (the trial sees F only through its isochoric part);
+  !>   in the trial eigenbasis v (also that of Be~_n+1): de_tr,a = dE'_aa, dp = -kappa J tr(dE) (Eq. 38),
+  !>     dBe~_aa = 2 b_a (dedetr de_tr + dedp dp)_a  (b_a = exp(2 e_a), sensitivities from the return map),
+  !>     dBe~_ab = c_ab dE'_ab (a /= b),  c_ab = (b_a - b_b)(l_a + l_b)/(l_a - l_b) (l = trial eigenvalues)
+  !>             = 2 exp(e_a + e_b) [sinh(D)/D] [D/D_tr] [D_tr/tanh(D_tr)],  D = e_a - e_b, D_tr = e_tr,a - e_tr,b,
+  !>   and D/D_tr = 1/(1 + phi b_b expm1(2D)/D) from r_a - r_b = 0 of the return (D = D_tr when elastic): no
+  !>   division by D_tr, so repeated trial eigenvalues (uniaxial states) need no special case.
+  pure subroutine consistent_tangent(p, j1, sigma, bt, v, etr, e, dedetr, dedp, phi, c)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: j1, sigma(3, 3), bt(3, 3), v(3, 3), etr(3), e(3), dedetr(3, 3), dedp(3), phi
+    real(dp), intent(out) :: c(6, 6)
+    real(dp) :: coef(3, 3), dd(3, 3), dq(3, 3), dbe(3, 3), dsig(3, 3), de(3), tr, dpress, dlt, dltr, ratio, b(3)
+    integer :: a, bb, i, j, k, kk
+    b = exp(2.0_dp * e)
+    coef = 0.0_dp
+    do a = 1, 3
+      do bb = 1, 3
+        if (a == bb) cycle
+        dlt = e(a) - e(bb)
+        dltr = etr(a) - etr(bb)
+        ratio = 1.0_dp / (1.0_dp + phi * b(bb) * expm1_2x_over_x(dlt))
+        coef(a, bb) = 2.0_dp * exp(e(a) + e(bb)) * sinh_over_x(dlt) * ratio * x_over_tanh(dltr)
+      end do
+    end do
+    do k = 1, 6
+      i = voigt_i(k)
+      j = voigt_j(k)
+      dd = 0.0_dp
+      dd(i, j) = 0.5_dp
+      dd(j, i) = dd(j, i) + 0.5_dp
+      tr = dd(1, 1) + dd(2, 2) + dd(3, 3)
+      dd = dev3(dd)
+      dpress = -p%kappa * j1 * tr
+      ! dq = v^T dE' v = sym(v_i. x v_j.) - tr/3 I (v^T I v = I)
+      do bb = 1, 3
+        do a = 1, 3
+          dq(a, bb) = 0.5_dp * (v(i, a) * v(j, bb) + v(j, a) * v(i, bb))
+        end do
+        dq(bb, bb) = dq(bb, bb) - third * tr
+      end do
+      de = matmul(dedetr, [dq(1, 1), dq(2, 2), dq(3, 3)]) + dedp * dpress
+      dq = coef * dq
+      do a = 1, 3
+        dq(a, a) = 2.0_dp * b(a) * de(a)
+      end do
+      dbe = matmul(v, matmul(dq, transpose(v)))
+      dsig = p%g * dev3(dbe) + p%g_r * dev3(matmul(dd, bt) + matmul(bt, dd)) + tr * sigma
+      do a = 1, 3
+        dsig(a, a) = dsig(a, a) + p%kappa * j1 * tr
+      end do
+      do kk = 1, 6
+        c(kk, k) = dsig(voigt_i(kk), voigt_j(kk))
+      end do
+    end do
+  end subroutine consistent_tangent
 
   !> Isotropic small-strain tangent kappa I x I + 2 (G + G_r) I_dev in Abaqus Voigt form (engineering shear).
   pure function leonov_elastic_tangent(p) result(c)
@@ -591,7 +761,7 @@ contains
   !> stat: leonov_ok; leonov_step_too_large (results valid, dgamma > leonov_dgamma_max: ask for a smaller step);
   !> leonov_no_convergence or leonov_bad_input (new = old, sigma = 0, ddsdde elastic: the caller must cut back).
   !> step_factor: suggested ratio of the next to the present time increment (< 1 on any trouble).
-  pure subroutine leonov_update(p, f0, f1, dt, old, new, sigma, stat, step_factor, ddsdde)
+  pure subroutine leonov_update(p, f0, f1, dt, old, new, sigma, stat, step_factor, ddsdde, perturbation_tangent)
     type(leonov_props), intent(in) :: p              !< validated properties
     real(dp), intent(in) :: f0(3, 3)                 !< deformation gradient at t_n
     real(dp), intent(in) :: f1(3, 3)                 !< deformation gradient at t_n+1
@@ -602,14 +772,25 @@ contains
     integer, intent(out) :: stat                     !< status, see above
     real(dp), intent(out) :: step_factor             !< suggested time step ratio
     real(dp), intent(out), optional :: ddsdde(6, 6)  !< Abaqus tangent, order 11,22,33,12,13,23, engineering shear
+    !> .true.: DDSDDE by central perturbation of F (13 local solves; the former method, kept for comparison)
+    logical, intent(in), optional :: perturbation_tangent
     real(dp) :: tau_k(3, 3), tp(3, 3), tm(3, 3), fp(3, 3), fm(3, 3), dlt(3, 3), j1
     type(leonov_state) :: scratch
     integer :: k, kk, stp, stm
+    logical :: perturb
 
+    perturb = .false.
+    if (present(perturbation_tangent)) perturb = perturbation_tangent
     sigma = 0.0_dp
     if (present(ddsdde)) ddsdde = leonov_elastic_tangent(p)
-    call kirchhoff_update(p, f0, f1, dt, old, new, tau_k, stat)
+    if (present(ddsdde) .and. .not. perturb) then
+      call kirchhoff_update(p, f0, f1, dt, old, new, tau_k, stat, ddsdde)
+    else
+      call kirchhoff_update(p, f0, f1, dt, old, new, tau_k, stat)
+    end if
     if (stat /= leonov_ok) then
+      if (present(ddsdde)) ddsdde = leonov_elastic_tangent(p)
+      new = old
       step_factor = 0.25_dp
       return
     end if
@@ -621,7 +802,7 @@ contains
     else
       step_factor = min(1.5_dp, max(1.0_dp, 0.9_dp * leonov_dgamma_max / max(new%dgamma, tiny(1.0_dp))))
     end if
-    if (.not. present(ddsdde)) return
+    if (.not. (present(ddsdde) .and. perturb)) return
     do k = 1, 6
       dlt = 0.0_dp
       dlt(voigt_i(k), voigt_j(k)) = 0.5_dp * eps_tangent

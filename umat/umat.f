@@ -17,8 +17,9 @@
 !     Works from DFGRD0, DFGRD1 and DTIME; STRESS (input), STRAN,
 !       DSTRAN, DROT are not used. STRESS = Cauchy stress.
 !     DDSDDE: consistent tangent of the Jaumann rate of Kirchhoff
-!       stress over J, by central perturbation of DFGRD1 (module
-!       leonov); not symmetric in general: declare UNSYMM.
+!       stress over J, analytic (implicit function theorem on the
+!       return map, module leonov); not symmetric in general:
+!       declare UNSYMM.
 !     SSE = G/2 (tr Be~ - 3) + kappa/2 (J-1)^2 + G_r/2 (tr B~ - 3);
 !       SPD += tau_bar dgamma_p; SCD unchanged.
 !     PNEWDT (written only to request a cutback): 0.25 if the local

@@ -37,6 +37,8 @@ module solid_element
   integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer
   real(dp), parameter :: SOLID_PNEWDT_LARGE = 1.0e36_dp  !< PNEWDT handed to each UMAT call ("a large value")
   integer, parameter :: maxnode = 8, maxip = 8
+  !> Voigt position of tensor component (i,j), order 11,22,33,12,13,23 (CPE4 uses only i,j <= 2: 11,22,12)
+  integer, parameter :: vidx(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
 
   !> Material (and section) data of an element set.
   type :: solid_material_t
@@ -107,7 +109,7 @@ contains
     real(dp), intent(out), optional :: energy_ip_new(:, :) !< (3, nip) updated SSE, SPD, SCD
 
     integer :: shape, nnode, ndim, nip, ntens, ndi, nshr, ndof, nsv, np
-    integer :: a, b, i, j, k, l, ip, r, c, jstep(4)
+    integer :: a, b, i, k, ip, r, c, jstep(4)
     real(dp) :: xref(3, maxnode), un(3, maxnode), u1(3, maxnode), dun(3, maxnode)
     real(dp) :: nfun(maxnode, maxip), dndx_ref(maxnode, 3, maxip), wdet(maxip)
     real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), dndx_c(maxnode, 3), dndxi(maxnode, 3), dndx_0c(maxnode, 3)
@@ -115,7 +117,7 @@ contains
     real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3), eye(3, 3)
     real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), finv(3, 3), dv, gc(3, 3), trc, trg, m
     real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
-    real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), s, bc(maxnode, 3)
+    real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), bc(maxnode, 3), t(3, 3), kl(maxnode, 3, 3, maxnode)
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
     character(len=*), parameter :: here = 'solid_element_compute: '
@@ -123,7 +125,6 @@ contains
     stat = 0
     errmsg = ''
     f_int = 0.0_dp
-    k_e = 0.0_dp
     energy = 0.0_dp
     shape = shape_of(etype)
     call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
@@ -242,6 +243,7 @@ contains
     if (np > 0) pr(1:np) = mat%props
 
     ! ---- second pass: material calls, internal force, tangent
+    if (want_k) kl = 0.0_dp
     do ip = 1, nip
       j0 = det3(fg0(:, :, ip))
       j1 = det3(fg1(:, :, ip))
@@ -351,27 +353,39 @@ contains
           ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
           ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
         end if
-        call spatial_tangent(ddsdde, sig, ndim, ntens, nlgeom, a4, q)
-        do b = 1, nnode
-          do k = 1, ndim
-            c = ndim * (b - 1) + k
-            do a = 1, nnode
+        call spatial_tangent(ddsdde, sig, ndim, nlgeom, a4, q)
+        ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then K_(a i)(b k) += sum_j dN_a/dx_j t_ij
+        ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
+        ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve CPE4; kl is a contiguous local)
+        if (ndim == 3 .and. nnode == 8) then
+          call k_point_c3d8(a4, q, dndx, bc, dv, kl)
+        else
+          do b = 1, nnode
+            do k = 1, ndim
+              t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
+                   + a4(:, :, k, 3) * dndx(b, 3)) * dv
               do i = 1, ndim
-                r = ndim * (a - 1) + i
-                s = 0.0_dp
-                do j = 1, ndim
-                  do l = 1, ndim
-                    s = s + dndx(a, j) * a4(i, j, k, l) * dndx(b, l)
-                  end do
-                  s = s + dndx(a, j) * q(i, j) * bc(b, k)
-                end do
-                k_e(r, c) = k_e(r, c) + s * dv
+                kl(1:nnode, i, k, b) = kl(1:nnode, i, k, b) + t(i, 1) * dndx(1:nnode, 1) &
+                                       + t(i, 2) * dndx(1:nnode, 2) + t(i, 3) * dndx(1:nnode, 3)
               end do
             end do
           end do
-        end do
+        end if
       end if
     end do
+    if (want_k) then
+      do b = 1, nnode
+        do k = 1, ndim
+          c = ndim * (b - 1) + k
+          do a = 1, nnode
+            r = ndim * (a - 1)
+            k_e(r + 1:r + ndim, c) = kl(a, 1:ndim, k, b)
+          end do
+        end do
+      end do
+    else
+      k_e = 0.0_dp
+    end if
 
   contains
 
@@ -404,16 +418,11 @@ contains
     subroutine shape_derivatives(xi_p, n_p, dndx_p, detj_p)
       real(dp), intent(in) :: xi_p(3)
       real(dp), intent(out) :: n_p(maxnode), dndx_p(maxnode, 3), detj_p
-      integer :: aa
       dndxi = 0.0_dp
       n_p = 0.0_dp
       call solid_shape_eval(shape, xi_p(1:ndim), n_p(1:nnode), dndxi(1:nnode, 1:ndim))
       jac = eye
-      jac(1:ndim, 1:ndim) = 0.0_dp
-      do aa = 1, nnode
-        jac(1:ndim, 1:ndim) = jac(1:ndim, 1:ndim) + spread(xref(1:ndim, aa), 2, ndim) * &
-                              spread(dndxi(aa, 1:ndim), 1, ndim)
-      end do
+      jac(1:ndim, 1:ndim) = matmul(xref(1:ndim, 1:nnode), dndxi(1:nnode, 1:ndim))
       detj_p = det3(jac)
       dndx_p = 0.0_dp
       if (detj_p > 0.0_dp) then
@@ -426,8 +435,15 @@ contains
     pure function def_grad(disp, dn) result(f)
       real(dp), intent(in) :: disp(3, maxnode), dn(maxnode, 3)
       real(dp) :: f(3, 3)
+      integer :: aa, ii, jj
       f = identity()
-      f(1:ndim, 1:ndim) = f(1:ndim, 1:ndim) + matmul(disp(1:ndim, 1:nnode), dn(1:nnode, 1:ndim))
+      do jj = 1, ndim
+        do aa = 1, nnode
+          do ii = 1, ndim
+            f(ii, jj) = f(ii, jj) + disp(ii, aa) * dn(aa, jj)
+          end do
+        end do
+      end do
     end function def_grad
 
   end subroutine solid_element_compute
@@ -466,15 +482,14 @@ contains
 
   !> Spatial tangent A_ijkl (material + geometric, from DDSDDE by the Jaumann correction of CONVENTIONS.md) and the
   !> F-bar coefficient q_ij; without NLGEOM A = DDSDDE and q = (1/m) sum_a A_ijaa.
-  pure subroutine spatial_tangent(ddsdde, sig, ndim, ntens, nlgeom, a4, q)
+  pure subroutine spatial_tangent(ddsdde, sig, ndim, nlgeom, a4, q)
     real(dp), intent(in) :: ddsdde(6, 6), sig(3, 3)
-    integer, intent(in) :: ndim, ntens
+    integer, intent(in) :: ndim
     logical, intent(in) :: nlgeom
     real(dp), intent(out) :: a4(3, 3, 3, 3), q(3, 3)
     integer :: i, j, k, l
-    real(dp) :: d(3, 3), m
+    real(dp) :: m
 
-    d = identity()
     m = real(ndim, dp)
     a4 = 0.0_dp
     q = 0.0_dp
@@ -482,21 +497,47 @@ contains
       do k = 1, ndim
         do j = 1, ndim
           do i = 1, ndim
-            a4(i, j, k, l) = ddsdde(voigt_index(i, j, ntens), voigt_index(k, l, ntens))
-            if (nlgeom) then
-              a4(i, j, k, l) = a4(i, j, k, l) &
-                - 0.5_dp * (d(i, k) * sig(j, l) + d(i, l) * sig(j, k) + sig(i, k) * d(j, l) + sig(i, l) * d(j, k)) &
-                + d(i, k) * sig(j, l)
-            end if
+            a4(i, j, k, l) = ddsdde(vidx(i, j), vidx(k, l))
           end do
         end do
       end do
     end do
+    if (nlgeom) then
+      ! - 1/2 (d_ik s_jl + d_il s_jk + s_ik d_jl + s_il d_jk) + d_ik s_jl, term by term over the Kronecker deltas
+      do l = 1, ndim
+        do j = 1, ndim
+          do i = 1, ndim
+            a4(i, j, i, l) = a4(i, j, i, l) + 0.5_dp * sig(j, l)
+            a4(i, j, l, i) = a4(i, j, l, i) - 0.5_dp * sig(j, l)
+            a4(i, j, l, j) = a4(i, j, l, j) - 0.5_dp * sig(i, l)
+            a4(i, j, j, l) = a4(i, j, j, l) - 0.5_dp * sig(i, l)
+          end do
+        end do
+      end do
+    end if
     do k = 1, ndim
       q(1:ndim, 1:ndim) = q(1:ndim, 1:ndim) + a4(1:ndim, 1:ndim, k, k) / m
     end do
     if (nlgeom) q(1:ndim, 1:ndim) = q(1:ndim, 1:ndim) - (1.0_dp - 1.0_dp / m) * sig(1:ndim, 1:ndim)
   end subroutine spatial_tangent
+
+  !> Tangent contribution of one C3D8 integration point: kl(i, a, k, b) += sum_j dN_a/dx_j t_ij with
+  !> t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv (fixed sizes, so the compiler unrolls and vectorises it).
+  pure subroutine k_point_c3d8(a4, q, dndx, bc, dv, kl)
+    real(dp), intent(in) :: a4(3, 3, 3, 3), q(3, 3), dndx(maxnode, 3), bc(maxnode, 3), dv
+    real(dp), intent(inout) :: kl(8, 3, 3, 8)    !< kl(a, i, k, b): node a fastest (contiguous 8-vectors)
+    real(dp) :: t(3, 3)
+    integer :: b, k, i
+    do b = 1, 8
+      do k = 1, 3
+        t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
+             + a4(:, :, k, 3) * dndx(b, 3)) * dv
+        do i = 1, 3
+          kl(:, i, k, b) = kl(:, i, k, b) + t(i, 1) * dndx(:, 1) + t(i, 2) * dndx(:, 2) + t(i, 3) * dndx(:, 3)
+        end do
+      end do
+    end do
+  end subroutine k_point_c3d8
 
   !> Number of PROPS of a material (0 when none were given).
   pure integer function nprops_of(mat)
@@ -504,25 +545,6 @@ contains
     nprops_of = 0
     if (allocated(mat%props)) nprops_of = size(mat%props)
   end function nprops_of
-
-  !> Voigt position of tensor component (i,j): 11,22,33,12,13,23 (0 when absent, e.g. 13 in plane strain).
-  pure integer function voigt_index(i, j, ntens)
-    integer, intent(in) :: i, j, ntens
-    integer :: lo, hi
-    lo = min(i, j)
-    hi = max(i, j)
-    if (lo == hi) then
-      voigt_index = lo
-    else if (lo == 1 .and. hi == 2) then
-      voigt_index = 4
-    else if (ntens < 6) then
-      voigt_index = 0
-    else if (lo == 1) then
-      voigt_index = 5
-    else
-      voigt_index = 6
-    end if
-  end function voigt_index
 
   !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain.
   pure subroutine voigt_to_tensor(v, ntens, t, shear_factor)
@@ -556,13 +578,17 @@ contains
 
   pure integer function shape_of(etype)
     character(len=*), intent(in) :: etype
-    character(len=len(etype)) :: up
-    integer :: i
-    up = etype
+    character(len=16) :: up
+    integer :: i, first, last
+    shape_of = 0
+    first = verify(etype, ' ')
+    last = len_trim(etype)
+    if (first == 0 .or. last - first + 1 > len(up)) return
+    up = etype(first:last)
     do i = 1, len(up)
       if (up(i:i) >= 'a' .and. up(i:i) <= 'z') up(i:i) = achar(iachar(up(i:i)) - 32)
     end do
-    select case (trim(adjustl(up)))
+    select case (trim(up))
     case ('C3D8')
       shape_of = SHAPE_C3D8
     case ('CPE4')
