@@ -15,6 +15,7 @@
 !> what MUMPS wants in PERM_IN(i) ("position of variable i in the pivot order", MUMPS 5.5 user guide, ICNTL(7)).
 module metis_ordering
   use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_ptr, c_null_ptr
+  use sparse_pattern, only: sort_int
   implicit none
   private
   public :: node_graph_from_elements, metis_node_order, equation_order_from_nodes, is_permutation
@@ -212,22 +213,5 @@ contains
     end do
     is_permutation = .true.
   end function is_permutation
-
-  !> Insertion sort of a short integer list (node degrees are small: at most ~26 in a hex mesh).
-  pure subroutine sort_int(a)
-    integer, intent(inout) :: a(:)                     !< list to sort ascending
-    integer :: i, j, v
-
-    do i = 2, size(a)
-      v = a(i)
-      j = i - 1
-      do while (j >= 1)
-        if (a(j) <= v) exit
-        a(j + 1) = a(j)
-        j = j - 1
-      end do
-      a(j + 1) = v
-    end do
-  end subroutine sort_int
 
 end module metis_ordering
