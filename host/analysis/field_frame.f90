@@ -1,0 +1,123 @@
+!> One VTU frame of the converged state: displacements, reactions, element mean stress, von Mises, the first
+!> state variables, and for the cohesive elements opening, traction and largest opening (docs/host.md).
+module field_frame
+  use ldfcz_kinds, only: dp
+  use model_types, only: model_t, etype_user, etype_c3d8, etype_cpe4
+  use analysis_core, only: analysis_t
+  use output_files, only: output_t, output_vtu_frame, output_vtu_t
+  use user_routines, only: user_routines_t
+  implicit none
+  private
+  public :: write_field_frame
+
+  integer, parameter :: n_sdv_out = 3           !< state variables written to the VTU frames
+
+contains
+
+  !> The frame of the converged state of an at total time ttot.
+  subroutine write_field_frame(out, model, routines, an, ttot)
+    type(output_t), intent(inout) :: out           !< output files
+    type(model_t), intent(in) :: model             !< the model
+    type(user_routines_t), intent(in) :: routines  !< UEL and UMAT (only the built-in UEL's SVARS are known)
+    type(analysis_t), intent(in) :: an             !< converged state
+    real(dp), intent(in) :: ttot                   !< total time of the frame
+    type(output_vtu_t) :: fr
+    integer :: ie, nn, k, ncell, nip, ip, nsv, h
+    real(dp) :: s(6), p
+    ncell = model%nelem
+    allocate (fr%x(3, model%nnode), fr%u(3, model%nnode), fr%rf(3, model%nnode))
+    fr%x = model%x
+    fr%u = 0.0_dp
+    fr%rf = 0.0_dp
+    do k = 1, model%nnode
+      fr%u(1:model%ndim, k) = an%u_conv((k - 1) * model%ndim + 1:k * model%ndim)
+      do h = 1, model%ndim
+        if (an%prescribed((k - 1) * model%ndim + h)) fr%rf(h, k) = an%fint((k - 1) * model%ndim + h)
+      end do
+    end do
+    allocate (fr%cell_type(ncell), fr%cell_ptr(ncell + 1), fr%cell_conn(size(model%conn)), fr%cell_id(ncell))
+    allocate (fr%stress(6, ncell), fr%mises(ncell), fr%sdv(n_sdv_out, ncell), fr%opening(3, ncell))
+    allocate (fr%traction(ncell), fr%delta_max(ncell), fr%cohesive(ncell))
+    fr%cell_ptr = model%conn_ptr
+    fr%cell_conn = model%conn - 1
+    fr%cell_id = model%elem_id
+    fr%stress = 0.0_dp
+    fr%mises = 0.0_dp
+    fr%sdv = 0.0_dp
+    fr%opening = 0.0_dp
+    fr%traction = 0.0_dp
+    fr%delta_max = 0.0_dp
+    fr%cohesive = 0
+    do ie = 1, ncell
+      nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+      select case (model%elem_kind(ie))
+      case (etype_c3d8)
+        fr%cell_type(ie) = 12
+      case (etype_cpe4)
+        fr%cell_type(ie) = 9
+      case default
+        if (nn == 8) then
+          fr%cell_type(ie) = 12
+        else if (nn == 4) then
+          fr%cell_type(ie) = 9
+        else
+          fr%cell_type(ie) = 2  ! poly-vertex for other user elements
+        end if
+      end select
+      if (model%elem_kind(ie) == etype_user) then
+        fr%cohesive(ie) = 1
+        ! opening = top - bottom (COH3D8: node k+4 over k; COH2D4: 4 over 1, 3 over 2)
+        if (nn == 8 .or. nn == 4) call cell_opening(model, an, ie, nn, fr%opening(:, ie))
+        nip = merge(4, 2, nn == 8)
+        nsv = size(an%conv(ie)%svars)
+        if (nsv >= 4 * nip .and. routines%uel_origin == 'built-in ldfcz UEL') then
+          do ip = 1, nip
+            fr%delta_max(ie) = fr%delta_max(ie) + an%conv(ie)%svars(4 * (ip - 1) + 1) / nip
+            fr%traction(ie) = fr%traction(ie) + an%conv(ie)%svars(4 * (ip - 1) + 3) / nip
+          end do
+        end if
+      else
+        nip = size(an%conv(ie)%stress, 2)
+        s = 0.0_dp
+        do ip = 1, nip
+          if (size(an%conv(ie)%stress, 1) == 6) then
+            s = s + an%conv(ie)%stress(:, ip) / nip
+          else
+            s(1:4) = s(1:4) + an%conv(ie)%stress(:, ip) / nip
+          end if
+        end do
+        fr%stress(:, ie) = s
+        p = (s(1) + s(2) + s(3)) / 3.0_dp
+        fr%mises(ie) = sqrt(1.5_dp * ((s(1) - p)**2 + (s(2) - p)**2 + (s(3) - p)**2 + &
+          2.0_dp * (s(4)**2 + s(5)**2 + s(6)**2)))
+        k = min(n_sdv_out, size(an%conv(ie)%statev, 1))
+        do ip = 1, nip
+          fr%sdv(1:k, ie) = fr%sdv(1:k, ie) + an%conv(ie)%statev(1:k, ip) / nip
+        end do
+      end if
+    end do
+    call output_vtu_frame(out, fr, ttot)
+  end subroutine write_field_frame
+
+  !> Mean opening (top - bottom face displacement) of cohesive element ie with nn nodes.
+  subroutine cell_opening(model, an, ie, nn, op)
+    type(model_t), intent(in) :: model     !< the model
+    type(analysis_t), intent(in) :: an     !< converged state
+    integer, intent(in) :: ie, nn          !< element index and node count
+    real(dp), intent(out) :: op(3)         !< mean opening
+    integer :: k, nb, nt, d
+    op = 0.0_dp
+    do k = 1, nn / 2
+      nb = model%conn(model%conn_ptr(ie) + k - 1)
+      if (nn == 8) then
+        nt = model%conn(model%conn_ptr(ie) + k + 3)
+      else
+        nt = model%conn(model%conn_ptr(ie) + 4 - k)
+      end if
+      do d = 1, model%ndim
+        op(d) = op(d) + (an%u_conv((nt - 1) * model%ndim + d) - an%u_conv((nb - 1) * model%ndim + d)) / (nn / 2)
+      end do
+    end do
+  end subroutine cell_opening
+
+end module field_frame

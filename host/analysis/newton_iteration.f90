@@ -1,0 +1,202 @@
+!> The Newton iteration of one attempt of an increment, in the variants of solver_options (full, modified,
+!> krylov, auto), with the Abaqus convergence criteria (convergence_check) and the cutback reasons of Abaqus.
+module newton_iteration
+  use ldfcz_kinds, only: dp
+  use model_types, only: model_t
+  use analysis_core, only: analysis_t, analysis_assemble
+  use convergence_check, only: newton_converged, typical_force
+  use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
+    sparse_is_factored, sparse_solve_krylov
+  use output_files, only: output_t, output_log
+  use abaqus_host_state, only: abaqus_stop_requested
+  use solver_options, only: newton_modified, newton_krylov, newton_auto
+  use run_summary, only: run_summary_t
+  use solver_text, only: itoa, rtoa
+  implicit none
+  private
+  public :: newton_state_t, newton_solve, newton_forget_factors
+
+  real(dp), parameter :: modified_contraction = 0.5_dp  !< modified Newton: r_k/r_(k-1) above this -> new tangent
+  integer, parameter :: modified_max_reuse = 8          !< modified Newton: new tangent after this many reuses
+  real(dp), parameter :: krylov_rel_tol = 1.0e-8_dp     !< GMRES relative residual (an exact Newton step)
+  integer, parameter :: krylov_max_iter = 30            !< GMRES budget of mode krylov (restart = budget)
+
+  !> What the variants carry from one iteration, attempt and increment to the next.
+  type :: newton_state_t
+    integer :: reuse_count = 0          !< modified Newton: solves with the current factors (saved in restarts)
+    real(dp) :: t_fact_last = 0.0_dp    !< wall time of the last factorization
+    real(dp) :: t_solve_last = 0.0_dp   !< wall time of one solve (GMRES iteration) with the factors
+  end type newton_state_t
+
+contains
+
+  !> After a failed attempt: modified Newton starts the next one with a fresh tangent.
+  pure subroutine newton_forget_factors(ns)
+    type(newton_state_t), intent(inout) :: ns  !< Newton state
+    ns%reuse_count = modified_max_reuse
+  end subroutine newton_forget_factors
+
+  !> Newton iterations from the prescribed start an%u of the increment (time, dt of step is, increment kinc) until
+  !> convergence, a cutback reason (outcome) or a stop asked by a user routine (stopped; nothing else is set then
+  !> but iter). ratios(1:iter + 1) are r_max / q_avg of the iterations, for the status file.
+  subroutine newton_solve(an, model, is, kinc, time, dt, newton, verbose, out, ns, summary, r, ratios, q_sum, &
+      converged, stopped, iter, q_now, pnewdt_min, outcome)
+    type(analysis_t), intent(inout) :: an                !< analysis data, an%u updated
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(in) :: is                            !< step number
+    integer, intent(in) :: kinc                          !< increment number in the step
+    real(dp), intent(in) :: time(2)                      !< step and total time at the start of the increment
+    real(dp), intent(in) :: dt                           !< increment size
+    integer, intent(in) :: newton                        !< Newton variant (solver_options)
+    logical, intent(in) :: verbose                       !< per-iteration residual lines in the log
+    type(output_t), intent(inout) :: out                 !< output files
+    type(newton_state_t), intent(inout) :: ns            !< Newton state
+    type(run_summary_t), intent(inout) :: summary        !< solve counters
+    real(dp), intent(inout) :: r(:)                      !< work array, size max(neq, 1)
+    real(dp), allocatable, intent(inout) :: ratios(:)    !< r_max / q_avg per iteration (grown as needed)
+    real(dp), intent(inout) :: q_sum                     !< sum of q of the converged increments of the step
+    logical, intent(out) :: converged                    !< the iteration converged
+    logical, intent(out) :: stopped                      !< a user routine asked to stop (XIT)
+    integer, intent(out) :: iter                         !< iterations done
+    real(dp), intent(out) :: q_now                       !< typical force of the last residual
+    real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
+    character(len=*), intent(out) :: outcome             !< cutback reason ('' when converged)
+    integer :: i, stat, kit, kbudget
+    character(len=:), allocatable :: errmsg
+    character(len=256) :: smsg
+    real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s
+    real(dp), allocatable :: r_copy(:)
+    logical :: want_k, k_fresh
+
+    associate (st => model%steps(is))
+      converged = .false.
+      stopped = .false.
+      outcome = ''
+      iter = 0
+      q_now = 0.0_dp
+      c_max = 0.0_dp
+      r_prev = huge(1.0_dp)
+      r_prev2 = huge(1.0_dp)
+      if (.not. allocated(ratios)) allocate (ratios(st%max_iter + 1))
+      if (size(ratios) < st%max_iter + 1) then
+        deallocate (ratios)
+        allocate (ratios(st%max_iter + 1))
+      end if
+      newton_loop: do
+        ! a tangent is needed unless modified Newton can reuse the factors (docs/performance.md)
+        want_k = .true.
+        if (newton == newton_modified .and. an%sys_ready) then
+          if (sparse_is_factored(an%sys)) then
+            want_k = ns%reuse_count >= modified_max_reuse
+            if (iter >= 1 .and. r_prev < huge(1.0_dp)) then
+              if (r_max > modified_contraction * r_prev) want_k = .true.
+            end if
+          end if
+        end if
+        if (iter >= 1) then
+          r_prev2 = r_prev
+          r_prev = r_max
+        end if
+        call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, an%neq > 0 .and. want_k, &
+          pnewdt_min, stat, errmsg)
+        if (abaqus_stop_requested()) then
+          stopped = .true.
+          exit newton_loop
+        end if
+        if (stat /= 0) then
+          outcome = 'cutback: element failure'
+          if (verbose) call output_log(out, '  '//errmsg)
+          pnewdt_min = min(pnewdt_min, 0.25_dp)
+          exit newton_loop
+        end if
+        if (pnewdt_min < 1.0_dp) then
+          outcome = 'cutback: PNEWDT '//rtoa(pnewdt_min)
+          exit newton_loop
+        end if
+        do i = 1, an%ndof
+          if (an%eq(i) > 0) r(an%eq(i)) = -an%fint(i)
+        end do
+        r_max = 0.0_dp
+        if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))
+        q_now = typical_force(an%fint)
+        q_avg = (q_sum + q_now) / real(kinc, dp)
+        du_max = maxval(abs(an%u - an%u_conv))
+        ratios(iter + 1) = r_max / max(q_avg, tiny(1.0_dp))
+        if (verbose) call output_log(out, '    step '//itoa(is)//' inc '//itoa(kinc)//' iter '//itoa(iter)// &
+          ': r_max '//rtoa(r_max)//' q_avg '//rtoa(q_avg)//' c_max '//rtoa(c_max)//' du_max '//rtoa(du_max)// &
+          merge(' (tangent)      ', ' (reused LU/LDL)', want_k))
+        if (an%neq == 0 .or. newton_converged(r_max, q_avg, c_max, du_max, st%r_n, st%c_n, iter)) then
+          converged = .true.
+          q_sum = q_sum + q_now
+          exit newton_loop
+        end if
+        ! divergence: the residual grew in two consecutive iterations (after the fourth, Abaqus I_0 = 4)
+        if (iter >= 4 .and. r_max > r_prev .and. r_prev > r_prev2) then
+          outcome = 'cutback: diverging'
+          exit newton_loop
+        end if
+        if (iter >= st%max_iter) then
+          outcome = 'cutback: '//itoa(iter)//' iterations'
+          exit newton_loop
+        end if
+        if (iter == 0) then
+          r_prev = huge(1.0_dp)
+          r_prev2 = huge(1.0_dp)
+        end if
+        k_fresh = .true.
+        if (.not. want_k) then
+          ! modified Newton: the last factors, a residual-only element loop
+          call sparse_solve(an%sys, r, stat, smsg)
+          ns%reuse_count = ns%reuse_count + 1
+          summary%reused_solves = summary%reused_solves + 1
+          k_fresh = stat /= 0
+        else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%sys)) then
+          ! fresh tangent, GMRES preconditioned by the last factorization
+          kbudget = krylov_max_iter
+          if (newton == newton_auto .and. ns%t_solve_last > 0.0_dp) &
+            kbudget = max(2, min(krylov_max_iter, int(0.5_dp * ns%t_fact_last / ns%t_solve_last)))
+          r_copy = r(1:an%neq)
+          t0s = sparse_time_solve(an%sys)
+          call sparse_solve_krylov(an%sys, r(1:an%neq), krylov_rel_tol, kbudget, kbudget, kit, stat, smsg)
+          if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%sys) - t0s) / real(kit, dp)
+          summary%krylov_iterations = summary%krylov_iterations + kit
+          if (stat == 0) then
+            summary%krylov_solves = summary%krylov_solves + 1
+            k_fresh = .false.
+          else
+            summary%krylov_failures = summary%krylov_failures + 1
+            r(1:an%neq) = r_copy
+          end if
+        end if
+        if (k_fresh) then
+          if (.not. want_k) then
+            outcome = 'cutback: solve failed'
+            exit newton_loop
+          end if
+          t0s = sparse_time_factor(an%sys)
+          call sparse_factorize(an%sys, stat, smsg)
+          ns%t_fact_last = sparse_time_factor(an%sys) - t0s
+          ns%reuse_count = 0
+          if (stat /= 0) then
+            outcome = 'cutback: singular tangent'
+            if (verbose) call output_log(out, '  '//trim(smsg))
+            exit newton_loop
+          end if
+          t0s = sparse_time_solve(an%sys)
+          call sparse_solve(an%sys, r, stat, smsg)
+          if (ns%t_solve_last <= 0.0_dp) ns%t_solve_last = sparse_time_solve(an%sys) - t0s
+          if (stat /= 0) then
+            outcome = 'cutback: solve failed'
+            exit newton_loop
+          end if
+        end if
+        iter = iter + 1
+        c_max = maxval(abs(r(1:max(an%neq, 1))))
+        do i = 1, an%ndof
+          if (an%eq(i) > 0) an%u(i) = an%u(i) + r(an%eq(i))
+        end do
+      end do newton_loop
+    end associate
+  end subroutine newton_solve
+
+end module newton_iteration

@@ -1,0 +1,167 @@
+!> Counters and measures of a run, the closing summary of the log (with the energy balance) and the accuracy
+!> indicators measured per increment: the cohesive opening increment (paper section 7) and a material STATEV increment.
+module run_summary
+  use ldfcz_kinds, only: dp
+  use model_types, only: model_t, etype_user
+  use analysis_core, only: analysis_t
+  use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count
+  use output_files, only: output_t, output_log
+  use user_routines, only: user_routines_t
+  use solver_options, only: newton_full, newton_mode_name
+  implicit none
+  private
+  public :: run_summary_t, run_summary_collect, run_summary_write, peak_memory_kb
+  public :: cohesive_ratio, statev_increment
+
+  !> Counters and measures of a run (printed in the closing summary).
+  type :: run_summary_t
+    integer :: increments = 0, attempts = 0, cutbacks = 0, iterations = 0, factorizations = 0
+    integer :: neq = 0, ndof = 0
+    real(dp) :: t_assembly = 0, t_factor = 0, t_solve = 0, t_output = 0, t_analysis = 0, wall = 0, cpu = 0
+    real(dp) :: w_ext = 0                       !< external work of the reactions (trapezoidal)
+    real(dp) :: e_int = 0                       !< stored + dissipated energy of elements and materials
+    real(dp) :: max_open_ratio = 0              !< largest cohesive |Delta| increment / delta
+    real(dp) :: max_statev_inc = 0              !< largest increment of STATEV(plastic_statev)
+    integer :: plastic_statev = 0               !< the STATEV reported (0: none)
+    integer :: krylov_solves = 0, krylov_iterations = 0, krylov_failures = 0, reused_solves = 0
+    integer :: accuracy_cutbacks = 0            !< increments redone for the opening bound
+    integer :: newton = newton_full
+    integer :: peak_kb = 0                      !< VmHWM
+  end type run_summary_t
+
+contains
+
+  !> End of the run: internal energy of the converged states and the solver's times and factorization count
+  !> (those of an earlier run continued by restart in fact_offset; the times are of this run only).
+  subroutine run_summary_collect(summary, model, an, t_output, fact_offset)
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< analysis data (its sparse system is read)
+    real(dp), intent(in) :: t_output               !< wall time spent writing output
+    integer, intent(in) :: fact_offset             !< factorizations of the run before the restart point
+    integer :: i
+    summary%e_int = 0.0_dp
+    do i = 1, model%nelem
+      summary%e_int = summary%e_int + an%conv(i)%energy(2) + an%conv(i)%energy(4)
+    end do
+    summary%t_factor = an%t_factor_done
+    summary%t_solve = an%t_solve_done
+    summary%t_analysis = an%t_setup_done
+    summary%factorizations = an%n_factor_done + fact_offset
+    if (an%sys_ready) then
+      summary%t_factor = summary%t_factor + sparse_time_factor(an%sys)
+      summary%t_solve = summary%t_solve + sparse_time_solve(an%sys)
+      summary%t_analysis = summary%t_analysis + sparse_time_analysis(an%sys)
+      summary%factorizations = summary%factorizations + sparse_factor_count(an%sys)
+    end if
+    summary%t_assembly = an%t_assembly
+    summary%t_output = t_output
+  end subroutine run_summary_collect
+
+  !> The closing summary of the log: counters, times, memory, energy balance and accuracy indicators.
+  subroutine run_summary_write(out, summary)
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(in) :: summary     !< counters and measures
+    character(len=160) :: line
+    real(dp) :: err
+    call output_log(out, '')
+    call output_log(out, '=== ldfcz summary ===')
+    write (line, '(a,i0,a,i0,a,i0,a,i0,a,i0)') 'increments ', summary%increments, ', attempts ', &
+      summary%attempts, ', cutbacks ', summary%cutbacks, ', Newton iterations ', summary%iterations, &
+      ', factorizations ', summary%factorizations
+    call output_log(out, trim(line))
+    write (line, '(a,i0,a,i0)') 'DOFs ', summary%ndof, ', free equations ', summary%neq
+    call output_log(out, trim(line))
+    write (line, '(3a,i0,a,i0,a,i0,a,i0,a,i0)') 'Newton ', trim(newton_mode_name(summary%newton)), &
+      ': solves with reused factors ', summary%reused_solves, ', GMRES solves ', summary%krylov_solves, &
+      ' (', summary%krylov_iterations, ' GMRES iterations, ', summary%krylov_failures, &
+      ' refactorized), accuracy cutbacks ', summary%accuracy_cutbacks
+    call output_log(out, trim(line))
+    write (line, '(a,f10.3,a,f10.3,a)') 'wall time ', summary%wall, ' s, CPU time ', summary%cpu, ' s'
+    call output_log(out, trim(line))
+    write (line, '(a,4(f10.3,a))') 'wall time split: assembly ', summary%t_assembly, ' s, factorization ', &
+      summary%t_factor, ' s, solve ', summary%t_solve, ' s, output ', summary%t_output, ' s'
+    call output_log(out, trim(line))
+    write (line, '(a,f10.3,a)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, ' s'
+    call output_log(out, trim(line))
+    write (line, '(a,i0,a)') 'peak memory (VmHWM) ', summary%peak_kb, ' kB'
+    call output_log(out, trim(line))
+    ! energy balance: external work of the reactions against stored + dissipated energy, relative difference
+    err = abs(summary%w_ext - summary%e_int) / max(abs(summary%w_ext), abs(summary%e_int), tiny(1.0_dp))
+    write (line, '(a,es12.4,a,es12.4,a,es10.2)') 'energy balance: external work ', summary%w_ext, &
+      ' N mm, stored + dissipated ', summary%e_int, ' N mm, relative difference ', err
+    call output_log(out, trim(line))
+    if (summary%max_open_ratio > 0.0_dp) then
+      write (line, '(a,es10.3,a)') 'largest cohesive opening increment / delta ', summary%max_open_ratio, &
+        merge(' (<= 1/3: >= 99% of phi dissipated, paper section 7)  ', &
+              ' (> 1/3: may dissipate < 99% of phi, paper section 7) ', summary%max_open_ratio <= 1.0_dp / 3.0_dp)
+      call output_log(out, trim(line))
+    end if
+    if (summary%plastic_statev > 0) then
+      write (line, '(a,i0,a,es10.3)') 'largest plastic strain increment of the material (STATEV ', &
+        summary%plastic_statev, ') ', summary%max_statev_inc
+      call output_log(out, trim(line))
+    end if
+  end subroutine run_summary_write
+
+  !> Largest change of the cohesive opening |Delta| (SVARS layout of the built-in UEL, docs/uel.md) over delta.
+  subroutine cohesive_ratio(model, routines, an, worst)
+    type(model_t), intent(in) :: model             !< the model
+    type(user_routines_t), intent(in) :: routines  !< UEL and UMAT (only the built-in UEL's SVARS are known)
+    type(analysis_t), intent(in) :: an             !< trial and converged element states
+    real(dp), intent(inout) :: worst               !< raised to the largest ratio found
+    integer :: ie, iu, nip, ip, ipr
+    real(dp) :: delta
+    if (.not. routines%uel_origin == 'built-in ldfcz UEL') return
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) /= etype_user) cycle
+      iu = model%elem_utype(ie)
+      nip = merge(4, 2, model%utypes(iu)%nnode == 8)
+      if (size(an%trial(ie)%svars) < 4 * nip) cycle
+      ipr = model%elem_uelprop(ie)
+      if (ipr == 0) cycle
+      if (size(model%uelprops(ipr)%props) < 2) cycle
+      delta = model%uelprops(ipr)%props(2)
+      if (delta <= 0.0_dp) cycle
+      do ip = 1, nip
+        worst = max(worst, abs(an%trial(ie)%svars(4 * (ip - 1) + 2) - an%conv(ie)%svars(4 * (ip - 1) + 2)) / delta)
+      end do
+    end do
+  end subroutine cohesive_ratio
+
+  !> Largest increment of STATEV(k) over the integration points of the continuum elements (a documented
+  !> convention: STATEV(7) is gamma_p of the built-in UMAT, docs/umat.md; --plastic-statev chooses another).
+  subroutine statev_increment(model, an, k, worst)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(in) :: an             !< trial and converged element states
+    integer, intent(in) :: k                       !< the STATEV
+    real(dp), intent(inout) :: worst               !< raised to the largest increment found
+    integer :: ie
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) == etype_user) cycle
+      if (.not. allocated(an%trial(ie)%statev)) cycle
+      if (size(an%trial(ie)%statev, 1) < k .or. size(an%conv(ie)%statev, 1) < k) cycle
+      worst = max(worst, maxval(abs(an%trial(ie)%statev(k, :) - an%conv(ie)%statev(k, :))))
+    end do
+  end subroutine statev_increment
+
+  !> Peak resident memory (VmHWM of /proc/self/status) in kB, 0 when unknown.
+  integer function peak_memory_kb() result(kb)
+    integer :: u, ios, k
+    character(len=256) :: line
+    kb = 0
+    open (newunit=u, file='/proc/self/status', status='old', action='read', iostat=ios)
+    if (ios /= 0) return
+    do
+      read (u, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      if (line(1:6) == 'VmHWM:') then
+        k = index(line, 'kB')
+        if (k > 0) read (line(7:k - 1), *, iostat=ios) kb
+        exit
+      end if
+    end do
+    close (u)
+  end function peak_memory_kb
+
+end module run_summary

@@ -1,0 +1,64 @@
+!> Run-time choices of the static solver (command line) and the codes they use: exit status of a run, Newton
+!> variant. Shared by the entry point (static_solver), the increment loop (static_step) and the Newton iteration.
+module solver_options
+  use ldfcz_kinds, only: dp
+  implicit none
+  private
+  public :: solver_options_t, exit_ok, exit_input, exit_no_convergence
+  public :: newton_full, newton_modified, newton_krylov, newton_auto, newton_mode_code, newton_mode_name
+
+  integer, parameter :: exit_ok = 0, exit_input = 2, exit_no_convergence = 3
+  !> Newton variants (docs/performance.md): full = fresh tangent and factorization every iteration; modified =
+  !> factors kept across iterations and increments, elements called for the residual only (UEL LFLAGS(3) = 5),
+  !> a fresh tangent when the residual contracts poorly; krylov = fresh tangent every iteration, solved by GMRES
+  !> preconditioned with the last factorization, refactorized when GMRES does not converge quickly; auto = krylov
+  !> with the GMRES budget set from the measured cost of a factorization against a solve.
+  integer, parameter :: newton_full = 1, newton_modified = 2, newton_krylov = 3, newton_auto = 4
+
+  !> Run-time choices of the solver (command line; defaults: Abaqus-like full Newton, no accuracy control).
+  type :: solver_options_t
+    integer :: newton = newton_full             !< newton_full, newton_modified, newton_krylov, newton_auto
+    real(dp) :: max_opening = 0.0_dp            !< > 0: largest cohesive opening increment / delta per increment
+    integer :: plastic_statev = -1              !< STATEV whose largest increment is reported (-1: by the UMAT, 0 none)
+    real(dp) :: max_plastic = 0.0_dp            !< > 0: next increment aims at this STATEV(plastic_statev) increment
+    integer :: restart_write = -1               !< JOB.rst every n increments (-1: as *RESTART in the deck; 0 never)
+    character(len=:), allocatable :: restart_from  !< continue from this restart file (docs/host.md, "Restart")
+    integer :: stop_after = 0                   !< > 0: stop after so many converged increments (restart tests)
+  end type solver_options_t
+
+contains
+
+  !> Name of a Newton variant.
+  pure function newton_mode_name(code) result(name)
+    integer, intent(in) :: code  !< newton_full, newton_modified, newton_krylov or newton_auto
+    character(len=8) :: name
+    select case (code)
+    case (newton_modified)
+      name = 'modified'
+    case (newton_krylov)
+      name = 'krylov'
+    case (newton_auto)
+      name = 'auto'
+    case default
+      name = 'full'
+    end select
+  end function newton_mode_name
+
+  !> Code of a Newton variant name (full, modified, krylov, auto); 0 when unknown.
+  pure integer function newton_mode_code(name) result(code)
+    character(len=*), intent(in) :: name  !< variant name as given on the command line
+    select case (name)
+    case ('full')
+      code = newton_full
+    case ('modified')
+      code = newton_modified
+    case ('krylov')
+      code = newton_krylov
+    case ('auto')
+      code = newton_auto
+    case default
+      code = 0
+    end select
+  end function newton_mode_code
+
+end module solver_options

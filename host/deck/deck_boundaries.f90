@@ -1,0 +1,218 @@
+!> Boundary-condition keywords of the deck reader: *AMPLITUDE (tabular, step time) and *BOUNDARY (model data: the
+!> initial conditions; history data: the step's prescribed displacements).
+module deck_boundaries
+  use ldfcz_kinds, only: dp
+  use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
+  use model_types, only: amplitude_t, boundary_t, model_find_nset, model_find_amplitude
+  use deck_lists, only: itoa
+  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
+    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+  implicit none
+  private
+  public :: read_amplitude, read_boundary
+
+contains
+
+  !> *AMPLITUDE, NAME=: pairs of step time and relative amplitude, times not decreasing.
+  subroutine read_amplitude(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(amplitude_t), allocatable :: tmp(:)
+    character(len=flen), allocatable :: f(:)
+    integer :: n, k, ia, ir, ir_next
+    real(dp) :: r
+    character(len=:), allocatable :: v
+    call ctx_allow_params(ctx, [character(len=12) :: 'NAME', 'DEFINITION', 'TIME', 'VALUE'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    ir_next = ctx%ir_next
+    v = deck_normalize(deck_param_value(ctx%params, 'DEFINITION'))
+    if (len(v) > 0 .and. v /= 'TABULAR') then
+      call ctx_fail(ctx, ir, 'only DEFINITION=TABULAR is supported')
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'TIME'))
+    if (len(v) > 0 .and. v /= 'STEP TIME') then
+      call ctx_fail(ctx, ir, 'only TIME=STEP TIME is supported')
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'VALUE'))
+    if (len(v) > 0 .and. v /= 'RELATIVE') then
+      call ctx_fail(ctx, ir, 'only VALUE=RELATIVE is supported')
+      return
+    end if
+    if (ctx%model%namp == size(ctx%model%amplitudes)) then
+      allocate (tmp(2 * size(ctx%model%amplitudes)))
+      tmp(1:ctx%model%namp) = ctx%model%amplitudes(1:ctx%model%namp)
+      call move_alloc(tmp, ctx%model%amplitudes)
+    end if
+    ia = ctx%model%namp + 1
+    v = deck_normalize(ctx_required(ctx, 'NAME'))
+    ctx%model%amplitudes(ia)%name = v
+    if (ctx%stat /= 0) return
+    if (model_find_amplitude(ctx%model, ctx%model%amplitudes(ia)%name) > 0) then
+      call ctx_fail(ctx, ir, 'amplitude '//trim(ctx%model%amplitudes(ia)%name)//' defined twice')
+      return
+    end if
+    call ctx_block_fields(ctx, ir + 1, ir_next - 1, f, n)
+    if (n < 2 .or. mod(n, 2) /= 0) then
+      call ctx_fail(ctx, ir, 'data must be pairs of time, amplitude')
+      return
+    end if
+    allocate (ctx%model%amplitudes(ia)%t(n / 2), ctx%model%amplitudes(ia)%a(n / 2))
+    do k = 1, n / 2
+      if (.not. ctx_get_real(ctx, ir + 1, f(2 * k - 1), r)) return
+      ctx%model%amplitudes(ia)%t(k) = r
+      if (.not. ctx_get_real(ctx, ir + 1, f(2 * k), r)) return
+      ctx%model%amplitudes(ia)%a(k) = r
+      if (k > 1) then
+        if (ctx%model%amplitudes(ia)%t(k) < ctx%model%amplitudes(ia)%t(k - 1)) then
+          call ctx_fail(ctx, ir, 'times must not decrease')
+          return
+        end if
+      end if
+    end do
+    ctx%model%namp = ia
+  end subroutine read_amplitude
+
+  !> *BOUNDARY: node or node set, first dof[, last dof[, value]] or a type (XSYMM, ...). Node ids stay negative
+  !> user ids until finish_model.
+  subroutine read_boundary(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(boundary_t) :: bc, empty_bc
+    character(len=flen), allocatable :: f(:)
+    integer :: i, n, id, iset, iamp, ir, istep
+    character(len=:), allocatable :: v, word
+    call ctx_allow_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP', 'TYPE'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    istep = ctx%istep
+    v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
+    if (len(v) > 0 .and. v /= 'DISPLACEMENT') then
+      call ctx_fail(ctx, ir, 'only TYPE=DISPLACEMENT is supported')
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'OP'))
+    if (len(v) > 0 .and. v /= 'MOD' .and. v /= 'NEW') then
+      call ctx_fail(ctx, ir, 'OP must be MOD or NEW')
+      return
+    end if
+    if (v == 'NEW') then
+      if (.not. ctx%in_step) then
+        call ctx_fail(ctx, ir, 'OP=NEW only inside a step')
+        return
+      end if
+      ctx%model%steps(istep)%op_new = .true.
+    end if
+    iamp = 0
+    if (deck_has_param(ctx%params, 'AMPLITUDE')) then
+      if (.not. ctx%in_step) then
+        call ctx_fail(ctx, ir, 'AMPLITUDE= only inside a step')
+        return
+      end if
+      iamp = model_find_amplitude(ctx%model, deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE')))
+      if (iamp == 0) then
+        call ctx_fail(ctx, ir, 'undefined amplitude '//deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE')))
+        return
+      end if
+    end if
+    do i = ir + 1, ctx%ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      bc = empty_bc
+      bc%amplitude = iamp
+      bc%pos = ctx_pos(ctx, i)
+      if (n < 2) then
+        call ctx_fail(ctx, i, 'expected: node or node set, first dof[, last dof[, value]] or a type (XSYMM, ...)')
+        return
+      end if
+      if (verify(trim(f(1)), '0123456789+-') == 0) then
+        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+        if (id < 1) then
+          call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
+          return
+        end if
+        allocate (bc%nodes(1))
+        bc%nodes(1) = -id  ! resolved in finish_model
+      else
+        iset = model_find_nset(ctx%model, deck_normalize(f(1)))
+        if (iset == 0) then
+          call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(1)))
+          return
+        end if
+        bc%nodes = ctx%model%nsets(iset)%nodes(1:ctx%model%nsets(iset)%n)
+      end if
+      word = deck_normalize(f(2))
+      if (verify(trim(f(2)), '0123456789+-') /= 0) then
+        if (n > 2) then
+          if (any(len_trim(f(3:n)) > 0)) then
+            call ctx_fail(ctx, i, 'no values may follow a boundary type')
+            return
+          end if
+        end if
+        select case (word)
+        case ('XSYMM')
+          bc%first_dof = 1
+          bc%last_dof = 1
+        case ('YSYMM')
+          bc%first_dof = 2
+          bc%last_dof = 2
+        case ('ZSYMM')
+          bc%first_dof = 3
+          bc%last_dof = 3
+        case ('ENCASTRE', 'PINNED')
+          bc%first_dof = 1
+          bc%last_dof = 3
+        case default
+          call ctx_fail(ctx, i, 'unsupported boundary type '//word//' (XSYMM, YSYMM, ZSYMM, ENCASTRE, PINNED)')
+          return
+        end select
+      else
+        if (.not. ctx_get_int(ctx, i, f(2), bc%first_dof)) return
+        bc%last_dof = bc%first_dof
+        if (n >= 3) then
+          if (len_trim(f(3)) > 0) then
+            if (.not. ctx_get_int(ctx, i, f(3), bc%last_dof)) return
+          end if
+        end if
+        if (n >= 4) then
+          if (len_trim(f(4)) > 0) then
+            if (.not. ctx_get_real(ctx, i, f(4), bc%value)) return
+          end if
+        end if
+        if (n > 4) then
+          call ctx_fail(ctx, i, 'too many fields')
+          return
+        end if
+        if (bc%first_dof < 1 .or. bc%last_dof > 6 .or. bc%last_dof < bc%first_dof) then
+          call ctx_fail(ctx, i, 'dof range '//itoa(bc%first_dof)//'..'//itoa(bc%last_dof)//' invalid')
+          return
+        end if
+        if (bc%last_dof > 3) then
+          call ctx_fail(ctx, i, 'rotational dofs 4..6 do not exist in ldfcz models')
+          return
+        end if
+      end if
+      if (ctx%in_step) then
+        call push_bc(ctx%model%steps(istep)%bcs, ctx%model%steps(istep)%nbc, bc)
+      else
+        call push_bc(ctx%model%initial_bcs, ctx%model%n_initial_bc, bc)
+      end if
+    end do
+  end subroutine read_boundary
+
+  !> Append a boundary to a list with n entries, doubling the capacity when full.
+  pure subroutine push_bc(list, n, bc)
+    type(boundary_t), allocatable, intent(inout) :: list(:) !< boundary list
+    integer, intent(inout) :: n                             !< entries in use
+    type(boundary_t), intent(in) :: bc                      !< boundary to append
+    type(boundary_t), allocatable :: t(:)
+    if (.not. allocated(list)) allocate (list(4))
+    if (n == size(list)) then
+      allocate (t(2 * n))
+      t(1:n) = list(1:n)
+      call move_alloc(t, list)
+    end if
+    n = n + 1
+    list(n) = bc
+  end subroutine push_bc
+
+end module deck_boundaries

@@ -1,0 +1,214 @@
+!> The deck reader's state, passed explicitly to every keyword reader: the source records, the model being built,
+!> the keyword block being read, the current material and step, and the error status. Also the helpers every reader
+!> shares: messages naming file:line: *KEYWORD, parameter checks, and data-field parsing.
+module deck_context
+  use ldfcz_kinds, only: dp
+  use, intrinsic :: iso_fortran_env, only: error_unit
+  use deck_lines, only: deck_source_t, deck_param_t, deck_split_fields, deck_parse_real, deck_parse_int, deck_where, &
+    deck_param_value, deck_has_param
+  use model_types, only: model_t, source_pos_t
+  use deck_lists, only: itoa
+  implicit none
+  private
+  public :: deck_context_t, flen
+  public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos
+  public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int
+  public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+
+  integer, parameter :: flen = 256  !< longest data field
+
+  !> Reader state. The keyword block being read is records ir (the keyword line) .. ir_next-1.
+  type :: deck_context_t
+    type(deck_source_t) :: src                        !< records of the deck and its includes
+    type(model_t) :: model                            !< the model being built
+    integer :: stat = 0                               !< 0 ok, 2 deck error
+    character(len=:), allocatable :: errmsg           !< "file:line: *KEYWORD: what" when stat /= 0
+    integer :: wu = error_unit                        !< unit for warnings (-1: silent)
+    integer :: ir = 1                                 !< keyword record of the current block
+    integer :: ir_next = 1                            !< first record after the current block
+    character(len=:), allocatable :: kw               !< current keyword, upper case (e.g. *NODE)
+    type(deck_param_t), allocatable :: params(:)      !< its parameters
+    integer :: imat = 0                               !< material being defined (0: none)
+    integer :: istep = 0                              !< current step
+    logical :: in_step = .false.                      !< between *STEP and *END STEP
+    integer :: restart_freq = 0                       !< *RESTART, WRITE, FREQUENCY in effect (0: none)
+    integer, allocatable :: node_rec(:)               !< record of each node (duplicate-id messages)
+    integer, allocatable :: elem_rec(:)               !< record of each element
+    integer, allocatable :: conn_raw(:)               !< connectivity as user node ids until finish
+  end type deck_context_t
+
+contains
+
+  ! ------------------------------------------------------------------ messages
+
+  !> Source position of record irec (file, line) with the current keyword.
+  function ctx_pos(ctx, irec) result(pos)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    integer, intent(in) :: irec              !< record index
+    type(source_pos_t) :: pos
+    pos%file = ctx%src%files(ctx%src%rec(irec)%file_id)%name
+    pos%line = ctx%src%rec(irec)%line
+    pos%keyword = ctx%kw
+  end function ctx_pos
+
+  !> Error at record irec under the current keyword.
+  subroutine ctx_fail(ctx, irec, msg)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record index
+    character(len=*), intent(in) :: msg         !< what is wrong
+    ctx%stat = 2
+    ctx%errmsg = deck_where(ctx%src, irec)//': '//trim(ctx%kw)//': '//msg
+  end subroutine ctx_fail
+
+  !> Error at record irec under the given keyword.
+  subroutine ctx_fail_kw(ctx, irec, keyword, msg)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record index
+    character(len=*), intent(in) :: keyword     !< keyword named in the message
+    character(len=*), intent(in) :: msg         !< what is wrong
+    ctx%stat = 2
+    ctx%errmsg = deck_where(ctx%src, irec)//': '//trim(keyword)//': '//msg
+  end subroutine ctx_fail_kw
+
+  !> Error at a stored source position.
+  subroutine ctx_fail_pos(ctx, pos, msg)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(source_pos_t), intent(in) :: pos       !< position (not a part of ctx)
+    character(len=*), intent(in) :: msg         !< what is wrong
+    ctx%stat = 2
+    ctx%errmsg = pos%file//':'//itoa(pos%line)//': '//trim(pos%keyword)//': '//msg
+  end subroutine ctx_fail_pos
+
+  !> Warning at record irec under the current keyword.
+  subroutine ctx_warn(ctx, irec, msg)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    integer, intent(in) :: irec              !< record index
+    character(len=*), intent(in) :: msg      !< what is ignored
+    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//deck_where(ctx%src, irec)//': '//trim(ctx%kw)// &
+      ': '//msg
+  end subroutine ctx_warn
+
+  !> Warning at a stored source position.
+  subroutine ctx_warn_pos(ctx, pos, msg)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    type(source_pos_t), intent(in) :: pos    !< position
+    character(len=*), intent(in) :: msg      !< what is ignored
+    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//pos%file//':'//itoa(pos%line)//': '// &
+      trim(pos%keyword)//': '//msg
+  end subroutine ctx_warn_pos
+
+  ! ------------------------------------------------------------------ parameters
+
+  !> Error when a parameter outside the list is present.
+  subroutine ctx_allow_params(ctx, names)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: names(:)    !< allowed parameter names
+    integer :: i
+    do i = 1, size(ctx%params)
+      if (all(ctx%params(i)%name /= names)) then
+        call ctx_fail(ctx, ctx%ir, 'unsupported parameter '//ctx%params(i)%name)
+        return
+      end if
+    end do
+  end subroutine ctx_allow_params
+
+  !> Error when a history keyword appears outside a step.
+  subroutine ctx_need_step(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    if (.not. ctx%in_step) call ctx_fail(ctx, ctx%ir, 'history keyword outside a step')
+  end subroutine ctx_need_step
+
+  !> Required parameter value ('' and an error when missing or empty).
+  function ctx_required(ctx, name) result(v)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: name        !< parameter name
+    character(len=:), allocatable :: v
+    v = ''
+    if (.not. deck_has_param(ctx%params, name)) then
+      call ctx_fail(ctx, ctx%ir, 'parameter '//name//'= is required')
+      return
+    end if
+    v = deck_param_value(ctx%params, name)
+    if (len_trim(v) == 0) call ctx_fail(ctx, ctx%ir, 'parameter '//name//'= has no value')
+  end function ctx_required
+
+  !> Integer parameter value, default when absent (error when not an integer).
+  integer function ctx_param_int(ctx, name, default) result(v)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: name        !< parameter name
+    integer, intent(in) :: default              !< value when absent
+    logical :: ok
+    character(len=:), allocatable :: why
+    v = default
+    if (.not. deck_has_param(ctx%params, name)) return
+    call deck_parse_int(deck_param_value(ctx%params, name), v, ok, why)
+    if (.not. ok) call ctx_fail(ctx, ctx%ir, 'parameter '//name//': '//why)
+  end function ctx_param_int
+
+  ! ------------------------------------------------------------------ data fields
+
+  !> Data fields of records i1..i2 concatenated.
+  subroutine ctx_block_fields(ctx, i1, i2, fields, nf)
+    type(deck_context_t), intent(in) :: ctx                   !< reader state
+    integer, intent(in) :: i1                                 !< first record
+    integer, intent(in) :: i2                                 !< last record
+    character(len=flen), allocatable, intent(out) :: fields(:) !< fields
+    integer, intent(out) :: nf                                !< number of fields
+    character(len=flen), allocatable :: f(:), tmp(:)
+    integer :: i, n
+    allocate (fields(16))
+    nf = 0
+    do i = i1, i2
+      call ctx_split(ctx, i, f, n)
+      do while (nf + n > size(fields))
+        allocate (tmp(2 * size(fields)))
+        tmp(1:nf) = fields(1:nf)
+        call move_alloc(tmp, fields)
+      end do
+      fields(nf + 1:nf + n) = f(1:n)
+      nf = nf + n
+    end do
+  end subroutine ctx_block_fields
+
+  !> Data fields of record irec.
+  subroutine ctx_split(ctx, irec, f, n)
+    type(deck_context_t), intent(in) :: ctx              !< reader state
+    integer, intent(in) :: irec                          !< record index
+    character(len=flen), allocatable, intent(out) :: f(:) !< fields
+    integer, intent(out) :: n                            !< number of fields
+    character(len=len(ctx%src%rec(irec)%text)), allocatable :: g(:)
+    integer :: i
+    call deck_split_fields(ctx%src%rec(irec)%text, g, n)
+    allocate (f(n))
+    do i = 1, n
+      f(i) = g(i)
+    end do
+  end subroutine ctx_split
+
+  !> Real data field (error at record irec when not a number).
+  logical function ctx_get_real(ctx, irec, field, v)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record of the field
+    character(len=*), intent(in) :: field       !< field text
+    real(dp), intent(out) :: v                  !< value (not a part of ctx)
+    character(len=:), allocatable :: why
+    logical :: ok
+    call deck_parse_real(field, v, ok, why)
+    if (.not. ok) call ctx_fail(ctx, irec, why)
+    ctx_get_real = ok
+  end function ctx_get_real
+
+  !> Integer data field (error at record irec when not an integer).
+  logical function ctx_get_int(ctx, irec, field, v)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record of the field
+    character(len=*), intent(in) :: field       !< field text
+    integer, intent(out) :: v                   !< value (not a part of ctx)
+    character(len=:), allocatable :: why
+    logical :: ok
+    call deck_parse_int(field, v, ok, why)
+    if (.not. ok) call ctx_fail(ctx, irec, why)
+    ctx_get_int = ok
+  end function ctx_get_int
+
+end module deck_context

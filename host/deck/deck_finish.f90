@@ -1,0 +1,251 @@
+!> Last pass of the deck reader: resolves user node and element ids to indices (connectivity, sets, boundaries),
+!> assigns sections and user-element properties to elements, and checks the model is complete.
+module deck_finish
+  use ldfcz_kinds, only: dp
+  use deck_lines, only: deck_where
+  use model_types, only: boundary_t, source_pos_t, etype_user, model_find_elset, model_find_material
+  use deck_lists, only: itoa, grow_int, unique
+  use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
+  implicit none
+  private
+  public :: finish_model
+
+contains
+
+  !> Resolve ids and check the model read from the deck (stat = 2 with a message naming file:line on error).
+  subroutine finish_model(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: maxid, i, k, id, ie, isec, iset, im, is, ib, iu
+    logical, allocatable :: has_section(:)
+    type(source_pos_t) :: pos
+    type(boundary_t) :: bc
+    character(len=:), allocatable :: what
+    associate (model => ctx%model)
+      if (model%nnode == 0) then
+        call ctx_fail_kw(ctx, 1, '*NODE', 'the deck defines no nodes')
+        return
+      end if
+      if (model%nelem == 0) then
+        call ctx_fail_kw(ctx, 1, '*ELEMENT', 'the deck defines no elements')
+        return
+      end if
+      if (model%nstep == 0) then
+        call ctx_fail_kw(ctx, ctx%src%nrec, '*STEP', 'the deck defines no step')
+        return
+      end if
+      ! node ids
+      maxid = maxval(model%node_id(1:model%nnode))
+      allocate (model%node_index(maxid))
+      model%node_index = 0
+      do i = 1, model%nnode
+        id = model%node_id(i)
+        if (model%node_index(id) /= 0) then
+          call ctx_fail_kw(ctx, ctx%node_rec(i), '*NODE', 'node '//itoa(id)//' defined twice (first at '// &
+            deck_where(ctx%src, ctx%node_rec(model%node_index(id)))//')')
+          return
+        end if
+        model%node_index(id) = i
+      end do
+      model%node_id = model%node_id(1:model%nnode)
+      model%x = model%x(:, 1:model%nnode)
+      ! element ids and connectivity
+      maxid = maxval(model%elem_id(1:model%nelem))
+      allocate (model%elem_index(maxid))
+      model%elem_index = 0
+      do ie = 1, model%nelem
+        id = model%elem_id(ie)
+        if (model%elem_index(id) /= 0) then
+          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//itoa(id)//' defined twice (first at '// &
+            deck_where(ctx%src, ctx%elem_rec(model%elem_index(id)))//')')
+          return
+        end if
+        model%elem_index(id) = ie
+        do k = model%conn_ptr(ie), model%conn_ptr(ie + 1) - 1
+          id = ctx%conn_raw(k)
+          if (id <= 0 .or. id > size(model%node_index)) then
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//itoa(id))
+            return
+          end if
+          if (model%node_index(id) == 0) then
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//itoa(id))
+            return
+          end if
+          ctx%conn_raw(k) = model%node_index(id)
+        end do
+      end do
+      model%conn = ctx%conn_raw(1:model%conn_ptr(model%nelem + 1) - 1)
+      model%elem_id = model%elem_id(1:model%nelem)
+      model%elem_kind = model%elem_kind(1:model%nelem)
+      model%elem_utype = model%elem_utype(1:model%nelem)
+      model%conn_ptr = model%conn_ptr(1:model%nelem + 1)
+      ! sets: negative raw ids -> indices, duplicates removed
+      do iset = 1, model%n_nset
+        model%nsets(iset)%nodes = model%nsets(iset)%nodes(1:model%nsets(iset)%n)
+        what = 'node set '//trim(model%nsets(iset)%name)
+        call resolve_nodes(ctx, iset, what)
+        if (ctx%stat /= 0) return
+      end do
+      do iset = 1, model%n_elset
+        model%elsets(iset)%elems = model%elsets(iset)%elems(1:model%elsets(iset)%n)
+        associate (el => model%elsets(iset)%elems)
+          do k = 1, size(el)
+            if (el(k) < 0) then
+              id = -el(k)
+              if (id > size(model%elem_index)) then
+                ie = 0
+              else
+                ie = model%elem_index(id)
+              end if
+              if (ie == 0) then
+                call ctx_fail_kw(ctx, 1, '*ELSET', 'element set '//trim(model%elsets(iset)%name)// &
+                  ': undefined element '//itoa(id))
+                return
+              end if
+              el(k) = ie
+            end if
+          end do
+        end associate
+        call unique(model%elsets(iset)%elems)
+        model%elsets(iset)%n = size(model%elsets(iset)%elems)
+      end do
+      ! boundaries
+      do ib = 1, model%n_initial_bc
+        bc = model%initial_bcs(ib)
+        call resolve_bc(ctx, bc)
+        model%initial_bcs(ib) = bc
+        if (ctx%stat /= 0) return
+      end do
+      do is = 1, model%nstep
+        do ib = 1, model%steps(is)%nbc
+          bc = model%steps(is)%bcs(ib)
+          call resolve_bc(ctx, bc)
+          model%steps(is)%bcs(ib) = bc
+          if (ctx%stat /= 0) return
+        end do
+        if (model%steps(is)%period < 0.0_dp) then
+          ctx%stat = 2
+          ctx%errmsg = model%steps(is)%pos%file//':'//itoa(model%steps(is)%pos%line)//': *STEP: no procedure '// &
+            '(*STATIC) in this step'
+          return
+        end if
+      end do
+      ! sections
+      allocate (model%elem_section(model%nelem), has_section(model%nelem))
+      model%elem_section = 0
+      has_section = .false.
+      if (.not. allocated(model%elem_uelprop)) then
+        allocate (model%elem_uelprop(model%nelem))
+        model%elem_uelprop = 0
+      else
+        model%elem_uelprop = model%elem_uelprop(1:model%nelem)
+        if (size(model%elem_uelprop) < model%nelem) call grow_int(model%elem_uelprop, model%nelem)
+      end if
+      do isec = 1, model%nsection
+        pos = model%sections(isec)%pos
+        associate (sec => model%sections(isec))
+          iset = model_find_elset(model, sec%elset)
+          if (iset == 0) then
+            call ctx_fail_pos(ctx, pos, 'undefined element set '//trim(sec%elset))
+            return
+          end if
+          im = model_find_material(model, sec%material)
+          if (im == 0) then
+            call ctx_fail_pos(ctx, pos, 'undefined material '//trim(sec%material))
+            return
+          end if
+          if (.not. (model%materials(im)%has_elastic .or. model%materials(im)%has_user)) then
+            pos = model%materials(im)%pos
+            call ctx_fail_pos(ctx, pos, 'material '//trim(sec%material)//' has no *ELASTIC or *USER MATERIAL')
+            return
+          end if
+          if (model%materials(im)%has_elastic .and. model%materials(im)%has_user) then
+            pos = model%materials(im)%pos
+            call ctx_fail_pos(ctx, pos, 'material '//trim(sec%material)//' has both *ELASTIC and *USER MATERIAL')
+            return
+          end if
+          do k = 1, size(model%elsets(iset)%elems)
+            ie = model%elsets(iset)%elems(k)
+            if (model%elem_kind(ie) == etype_user) then
+              call ctx_fail_pos(ctx, pos, 'element '//itoa(model%elem_id(ie))//' is a user element (use *UEL PROPERTY)')
+              return
+            end if
+            if (has_section(ie)) then
+              call ctx_fail_pos(ctx, pos, 'element '//itoa(model%elem_id(ie))//' has two sections')
+              return
+            end if
+            has_section(ie) = .true.
+            model%elem_section(ie) = isec
+          end do
+        end associate
+      end do
+      do ie = 1, model%nelem
+        if (model%elem_kind(ie) == etype_user) then
+          iu = model%elem_utype(ie)
+          if (model%elem_uelprop(ie) == 0 .and. model%utypes(iu)%nprops + model%utypes(iu)%njprops > 0) then
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'user element '//itoa(model%elem_id(ie))// &
+              ' of type '//trim(model%utypes(iu)%name)//' has no *UEL PROPERTY (missing properties)')
+            return
+          end if
+        else if (.not. has_section(ie)) then
+          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//itoa(model%elem_id(ie))// &
+            ' has no *SOLID SECTION')
+          return
+        end if
+      end do
+    end associate
+  end subroutine finish_model
+
+  !> Boundary node ids -> indices; dofs beyond the model dimension dropped (with a warning when none is left).
+  subroutine resolve_bc(ctx, bc)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(boundary_t), intent(inout) :: bc       !< boundary (a copy, not a part of ctx)
+    integer :: k, id
+    do k = 1, size(bc%nodes)
+      if (bc%nodes(k) < 0) then
+        id = -bc%nodes(k)
+        if (id > size(ctx%model%node_index)) then
+          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//itoa(id))
+          return
+        end if
+        if (ctx%model%node_index(id) == 0) then
+          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//itoa(id))
+          return
+        end if
+        bc%nodes(k) = ctx%model%node_index(id)
+      end if
+    end do
+    if (bc%last_dof > ctx%model%ndim) then
+      if (bc%first_dof > ctx%model%ndim) then
+        ! e.g. ZSYMM or dof 3 in a 2D model: nothing to constrain, like Abaqus for inactive dofs
+        call ctx_warn_pos(ctx, bc%pos, 'dof '//itoa(bc%first_dof)//' does not exist in this 2D model: ignored')
+      end if
+      bc%last_dof = ctx%model%ndim
+    end if
+  end subroutine resolve_bc
+
+  !> Node set iset: user ids -> indices, sorted, duplicates removed.
+  subroutine resolve_nodes(ctx, iset, what)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: iset                 !< node set index
+    character(len=*), intent(in) :: what        !< set named in messages (not a part of ctx)
+    integer :: k, id
+    associate (list => ctx%model%nsets(iset)%nodes, node_index => ctx%model%node_index)
+      do k = 1, size(list)
+        if (list(k) < 0) then
+          id = -list(k)
+          if (id > size(node_index)) then
+            call ctx_fail_kw(ctx, 1, '*NSET', what//': undefined node '//itoa(id))
+            return
+          end if
+          if (node_index(id) == 0) then
+            call ctx_fail_kw(ctx, 1, '*NSET', what//': undefined node '//itoa(id))
+            return
+          end if
+          list(k) = node_index(id)
+        end if
+      end do
+    end associate
+    call unique(ctx%model%nsets(iset)%nodes)
+  end subroutine resolve_nodes
+
+end module deck_finish

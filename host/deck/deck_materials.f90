@@ -1,0 +1,207 @@
+!> Material keywords of the deck reader: *MATERIAL with its options *ELASTIC, *USER MATERIAL and *DEPVAR, and
+!> *SOLID SECTION (element set -> material, thickness).
+module deck_materials
+  use ldfcz_kinds, only: dp
+  use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
+  use model_types, only: material_t, section_t, model_find_material
+  use deck_lists, only: itoa
+  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, ctx_param_int, &
+    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+  implicit none
+  private
+  public :: read_material, read_elastic, read_user_material, read_depvar, read_solid_section
+
+contains
+
+  !> *SOLID SECTION, ELSET=, MATERIAL=: optional data line with the thickness (plane strain).
+  subroutine read_solid_section(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(section_t), allocatable :: tmp(:)
+    character(len=flen), allocatable :: f(:)
+    character(len=:), allocatable :: v
+    integer :: n, k, ir, ir_next
+    real(dp) :: t
+    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    ir_next = ctx%ir_next
+    if (ctx%model%nsection == size(ctx%model%sections)) then
+      allocate (tmp(2 * size(ctx%model%sections)))
+      tmp(1:ctx%model%nsection) = ctx%model%sections(1:ctx%model%nsection)
+      call move_alloc(tmp, ctx%model%sections)
+    end if
+    k = ctx%model%nsection + 1
+    v = deck_normalize(ctx_required(ctx, 'ELSET'))
+    ctx%model%sections(k)%elset = v
+    if (ctx%stat /= 0) return
+    v = deck_normalize(ctx_required(ctx, 'MATERIAL'))
+    ctx%model%sections(k)%material = v
+    if (ctx%stat /= 0) return
+    ctx%model%sections(k)%pos = ctx_pos(ctx, ir)
+    ctx%model%sections(k)%thickness = 1.0_dp
+    if (ir_next > ir + 2) then
+      call ctx_fail(ctx, ir + 2, 'more than one data line (only the thickness line is read)')
+      return
+    end if
+    if (ir_next == ir + 2) then
+      call ctx_split(ctx, ir + 1, f, n)
+      if (n > 1) then
+        do k = 2, n
+          if (len_trim(f(k)) > 0) then
+            call ctx_fail(ctx, ir + 1, 'only the first field (thickness) of the data line is supported')
+            return
+          end if
+        end do
+      end if
+      if (len_trim(f(1)) > 0) then
+        if (.not. ctx_get_real(ctx, ir + 1, f(1), t)) return
+        if (t <= 0.0_dp) then
+          call ctx_fail(ctx, ir + 1, 'thickness must be positive')
+          return
+        end if
+        ctx%model%sections(ctx%model%nsection + 1)%thickness = t
+      end if
+    end if
+    ctx%model%nsection = ctx%model%nsection + 1
+  end subroutine read_solid_section
+
+  !> *MATERIAL, NAME=: starts a material definition (options follow as keywords).
+  subroutine read_material(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(material_t), allocatable :: tmp(:)
+    character(len=:), allocatable :: name
+    integer :: imat
+    call ctx_allow_params(ctx, [character(len=8) :: 'NAME'])
+    if (ctx%stat /= 0) return
+    name = ctx_required(ctx, 'NAME')
+    if (ctx%stat /= 0) return
+    associate (model => ctx%model)
+      if (model_find_material(model, deck_normalize(name)) > 0) then
+        call ctx_fail(ctx, ctx%ir, 'material '//name//' defined twice')
+        return
+      end if
+      if (model%nmat == size(model%materials)) then
+        allocate (tmp(2 * size(model%materials)))
+        tmp(1:model%nmat) = model%materials(1:model%nmat)
+        call move_alloc(tmp, model%materials)
+      end if
+      model%nmat = model%nmat + 1
+      imat = model%nmat
+      ctx%imat = imat
+      model%materials(imat)%name = deck_normalize(name)
+      model%materials(imat)%given_name = name
+      model%materials(imat)%pos = ctx_pos(ctx, ctx%ir)
+    end associate
+    if (ctx%ir_next > ctx%ir + 1) call ctx_fail(ctx, ctx%ir + 1, 'no data lines expected')
+  end subroutine read_material
+
+  !> Error when a material option comes outside a *MATERIAL definition.
+  subroutine need_material(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    if (ctx%imat == 0) call ctx_fail(ctx, ctx%ir, 'material option outside a *MATERIAL definition')
+  end subroutine need_material
+
+  !> *ELASTIC (isotropic): one data line E, nu.
+  subroutine read_elastic(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    integer :: n, ir
+    real(dp) :: e, nu
+    call need_material(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    if (deck_has_param(ctx%params, 'TYPE')) then
+      if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'ISOTROPIC') then
+        call ctx_fail(ctx, ir, 'only TYPE=ISOTROPIC is supported')
+        return
+      end if
+    end if
+    if (ctx%ir_next /= ir + 2) then
+      call ctx_fail(ctx, ir, 'exactly one data line (E, nu) expected (no temperature dependence)')
+      return
+    end if
+    call ctx_split(ctx, ir + 1, f, n)
+    if (n < 2) then
+      call ctx_fail(ctx, ir + 1, 'data line needs E, nu')
+      return
+    end if
+    if (n > 2) then
+      if (len_trim(f(3)) > 0) then
+        call ctx_fail(ctx, ir + 1, 'temperature-dependent elasticity is not supported')
+        return
+      end if
+    end if
+    if (.not. ctx_get_real(ctx, ir + 1, f(1), e)) return
+    if (.not. ctx_get_real(ctx, ir + 1, f(2), nu)) return
+    if (e <= 0.0_dp .or. nu <= -1.0_dp .or. nu >= 0.5_dp) then
+      call ctx_fail(ctx, ir + 1, 'need E > 0 and -1 < nu < 0.5')
+      return
+    end if
+    ctx%model%materials(ctx%imat)%has_elastic = .true.
+    ctx%model%materials(ctx%imat)%young = e
+    ctx%model%materials(ctx%imat)%poisson = nu
+  end subroutine read_elastic
+
+  !> *USER MATERIAL, CONSTANTS=n: the n UMAT properties.
+  subroutine read_user_material(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    integer :: n, nc, k, ir, ir_next, imat
+    real(dp) :: r
+    call need_material(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=12) :: 'CONSTANTS', 'UNSYMM', 'TYPE'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    ir_next = ctx%ir_next
+    imat = ctx%imat
+    if (deck_has_param(ctx%params, 'TYPE')) then
+      if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'MECHANICAL') then
+        call ctx_fail(ctx, ir, 'only TYPE=MECHANICAL is supported')
+        return
+      end if
+    end if
+    nc = ctx_param_int(ctx, 'CONSTANTS', 0)
+    if (ctx%stat /= 0) return
+    call ctx_block_fields(ctx, ir + 1, ir_next - 1, f, n)
+    if (n /= nc) then
+      call ctx_fail(ctx, ir, 'CONSTANTS='//itoa(nc)//' but '//itoa(n)//' values given')
+      return
+    end if
+    allocate (ctx%model%materials(imat)%props(nc))
+    do k = 1, nc
+      if (.not. ctx_get_real(ctx, ir + 1, f(k), r)) return
+      ctx%model%materials(imat)%props(k) = r
+    end do
+    ctx%model%materials(imat)%has_user = .true.
+    ctx%model%materials(imat)%unsymm = deck_has_param(ctx%params, 'UNSYMM')
+    ctx%model%materials(imat)%user_pos = ctx_pos(ctx, min(ir + 1, ir_next - 1))
+  end subroutine read_user_material
+
+  !> *DEPVAR: number of state variables of the user material.
+  subroutine read_depvar(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    integer :: n, ir, nstatv
+    call need_material(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=8) :: 'DELETE'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    if (deck_has_param(ctx%params, 'DELETE')) then
+      call ctx_fail(ctx, ir, 'DELETE= (element deletion) is not supported')
+      return
+    end if
+    if (ctx%ir_next /= ir + 2) then
+      call ctx_fail(ctx, ir, 'one data line (number of state variables) expected')
+      return
+    end if
+    call ctx_split(ctx, ir + 1, f, n)
+    if (.not. ctx_get_int(ctx, ir + 1, f(1), nstatv)) return
+    ctx%model%materials(ctx%imat)%nstatv = nstatv
+    if (nstatv < 0) call ctx_fail(ctx, ir + 1, 'negative number of state variables')
+  end subroutine read_depvar
+
+end module deck_materials

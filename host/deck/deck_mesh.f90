@@ -1,0 +1,321 @@
+!> Mesh keywords of the deck reader: *NODE, *ELEMENT, *NSET, *ELSET. Node and element ids and set members are kept
+!> as user ids (set members negative) until deck_finish resolves them to indices.
+module deck_mesh
+  use ldfcz_kinds, only: dp
+  use deck_lines, only: deck_upper, deck_param_value, deck_has_param, deck_normalize
+  use model_types, only: node_set_t, elem_set_t, etype_c3d8, etype_cpe4, etype_user, model_find_nset, &
+    model_find_elset, model_find_user_type
+  use deck_lists, only: itoa, add_member, grow_int
+  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
+    ctx_get_int
+  implicit none
+  private
+  public :: read_node, read_element, read_set
+
+contains
+
+  !> *NODE, NSET=: node number, x, y[, z].
+  subroutine read_node(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: i, n, id, k, iset
+    character(len=flen), allocatable :: f(:)
+    real(dp) :: c
+    character(len=:), allocatable :: setname
+    call ctx_allow_params(ctx, [character(len=8) :: 'NSET', 'SYSTEM', 'INPUT'])
+    if (ctx%stat /= 0) return
+    if (deck_has_param(ctx%params, 'SYSTEM')) then
+      if (deck_upper(deck_param_value(ctx%params, 'SYSTEM')) /= 'R') then
+        call ctx_fail(ctx, ctx%ir, 'only SYSTEM=R (rectangular) is supported')
+        return
+      end if
+    end if
+    if (deck_has_param(ctx%params, 'INPUT')) then
+      call ctx_fail(ctx, ctx%ir, 'INPUT= on *NODE is not supported: use *INCLUDE')
+      return
+    end if
+    iset = 0
+    if (deck_has_param(ctx%params, 'NSET')) then
+      setname = deck_normalize(ctx_required(ctx, 'NSET'))
+      iset = get_nset(ctx, setname)
+    end if
+    associate (model => ctx%model)
+      do i = ctx%ir + 1, ctx%ir_next - 1
+        call ctx_split(ctx, i, f, n)
+        if (n < 2 .or. n > 4) then
+          call ctx_fail(ctx, i, 'expected: node number, x, y[, z]')
+          return
+        end if
+        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+        if (id <= 0) then
+          call ctx_fail(ctx, i, 'node numbers must be positive')
+          return
+        end if
+        if (model%nnode == size(model%node_id)) call grow_nodes(ctx)
+        model%nnode = model%nnode + 1
+        model%node_id(model%nnode) = id
+        ctx%node_rec(model%nnode) = i
+        model%x(:, model%nnode) = 0.0_dp
+        do k = 2, n
+          if (len_trim(f(k)) == 0) cycle
+          if (.not. ctx_get_real(ctx, i, f(k), c)) return
+          model%x(k - 1, model%nnode) = c
+        end do
+        if (iset > 0) call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -id)
+      end do
+    end associate
+  end subroutine read_node
+
+  !> *ELEMENT, TYPE=, ELSET=: element number and its nodes (C3D8, CPE4 or a user type Un defined before).
+  subroutine read_element(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=:), allocatable :: tname, setname
+    integer :: kind, nn, iu, i, n, k, id, iset, node
+    character(len=flen), allocatable :: f(:)
+    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'ELSET'])
+    if (ctx%stat /= 0) return
+    tname = deck_normalize(ctx_required(ctx, 'TYPE'))
+    if (ctx%stat /= 0) return
+    iu = 0
+    select case (tname)
+    case ('C3D8')
+      kind = etype_c3d8
+      nn = 8
+      call set_dim(ctx, 3)
+    case ('CPE4')
+      kind = etype_cpe4
+      nn = 4
+      call set_dim(ctx, 2)
+    case default
+      iu = model_find_user_type(ctx%model, tname)
+      if (iu == 0) then
+        if (tname(1:1) == 'U') then
+          call ctx_fail(ctx, ctx%ir, 'user element type '//tname//' not defined by an earlier *USER ELEMENT')
+        else
+          call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, CPE4 and user types Un)')
+        end if
+        return
+      end if
+      kind = etype_user
+      nn = ctx%model%utypes(iu)%nnode
+      call set_dim(ctx, ctx%model%utypes(iu)%mcrd)
+    end select
+    if (ctx%stat /= 0) return
+    iset = 0
+    if (deck_has_param(ctx%params, 'ELSET')) then
+      setname = deck_normalize(ctx_required(ctx, 'ELSET'))
+      iset = get_elset(ctx, setname)
+    end if
+    associate (model => ctx%model)
+      do i = ctx%ir + 1, ctx%ir_next - 1
+        call ctx_split(ctx, i, f, n)
+        if (n /= nn + 1) then
+          call ctx_fail(ctx, i, 'element type '//tname//' needs '//itoa(nn)//' nodes, '//itoa(n - 1)//' given')
+          return
+        end if
+        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+        if (id <= 0) then
+          call ctx_fail(ctx, i, 'element numbers must be positive')
+          return
+        end if
+        if (model%nelem == size(model%elem_id)) call grow_elems(ctx)
+        model%nelem = model%nelem + 1
+        model%elem_id(model%nelem) = id
+        model%elem_kind(model%nelem) = kind
+        model%elem_utype(model%nelem) = iu
+        ctx%elem_rec(model%nelem) = i
+        do while (model%conn_ptr(model%nelem) + nn > size(ctx%conn_raw))
+          call grow_int(ctx%conn_raw)
+        end do
+        do k = 1, nn
+          if (.not. ctx_get_int(ctx, i, f(k + 1), node)) return
+          ctx%conn_raw(model%conn_ptr(model%nelem) + k - 1) = node
+        end do
+        model%conn_ptr(model%nelem + 1) = model%conn_ptr(model%nelem) + nn
+        if (iset > 0) call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, -id)
+      end do
+    end associate
+  end subroutine read_element
+
+  !> Model dimension from an element type: 2 (plane strain) or 3, the same for all elements.
+  subroutine set_dim(ctx, nd)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: nd                   !< dimension of the element type
+    if (nd /= 2 .and. nd /= 3) then
+      call ctx_fail(ctx, ctx%ir, 'only 2D (plane strain) and 3D models are supported')
+    else if (ctx%model%ndim == 0) then
+      ctx%model%ndim = nd
+    else if (ctx%model%ndim /= nd) then
+      call ctx_fail(ctx, ctx%ir, 'mixing 2D and 3D element types in one model is not supported')
+    end if
+  end subroutine set_dim
+
+  !> *NSET / *ELSET. Members are stored as negative user ids until finish_model resolves them; set names in data
+  !> lines are expanded at once (they must be defined before).
+  subroutine read_set(ctx, is_node)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical, intent(in) :: is_node              !< .true. for *NSET, .false. for *ELSET
+    character(len=:), allocatable :: setname
+    integer :: iset, i, n, k, a, b, s, other, j
+    character(len=flen), allocatable :: f(:)
+    logical :: gen
+    if (is_node) then
+      call ctx_allow_params(ctx, [character(len=12) :: 'NSET', 'GENERATE', 'INTERNAL', 'UNSORTED', 'ELSET'])
+      if (ctx%stat /= 0) return
+      setname = deck_normalize(ctx_required(ctx, 'NSET'))
+    else
+      call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'GENERATE', 'INTERNAL', 'UNSORTED'])
+      if (ctx%stat /= 0) return
+      setname = deck_normalize(ctx_required(ctx, 'ELSET'))
+    end if
+    if (ctx%stat /= 0) return
+    if (is_node .and. deck_has_param(ctx%params, 'ELSET')) then
+      call ctx_fail(ctx, ctx%ir, 'NSET from ELSET= is not supported: list the nodes')
+      return
+    end if
+    gen = deck_has_param(ctx%params, 'GENERATE')
+    if (is_node) then
+      iset = get_nset(ctx, setname)
+    else
+      iset = get_elset(ctx, setname)
+    end if
+    associate (model => ctx%model)
+      do i = ctx%ir + 1, ctx%ir_next - 1
+        call ctx_split(ctx, i, f, n)
+        if (gen) then
+          if (n < 2 .or. n > 3) then
+            call ctx_fail(ctx, i, 'GENERATE expects: first, last[, increment]')
+            return
+          end if
+          if (.not. ctx_get_int(ctx, i, f(1), a)) return
+          if (.not. ctx_get_int(ctx, i, f(2), b)) return
+          s = 1
+          if (n == 3) then
+            if (len_trim(f(3)) > 0) then
+              if (.not. ctx_get_int(ctx, i, f(3), s)) return
+            end if
+          end if
+          if (s <= 0 .or. b < a) then
+            call ctx_fail(ctx, i, 'GENERATE needs first <= last and a positive increment')
+            return
+          end if
+          if (a < 1) then
+            call ctx_fail(ctx, i, 'ids must be positive, got '//itoa(a))
+            return
+          end if
+          do k = a, b, s
+            if (is_node) then
+              call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -k)
+            else
+              call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, -k)
+            end if
+          end do
+        else
+          do k = 1, n
+            if (len_trim(f(k)) == 0) cycle
+            if (verify(trim(f(k)), '0123456789+-') == 0) then
+              if (.not. ctx_get_int(ctx, i, f(k), a)) return
+              if (a < 1) then
+                call ctx_fail(ctx, i, 'ids must be positive, got '//itoa(a))
+                return
+              end if
+              if (is_node) then
+                call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -a)
+              else
+                call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, -a)
+              end if
+            else
+              if (is_node) then
+                other = model_find_nset(model, deck_normalize(f(k)))
+              else
+                other = model_find_elset(model, deck_normalize(f(k)))
+              end if
+              if (other == 0 .or. other == iset) then
+                call ctx_fail(ctx, i, 'undefined set '//trim(deck_normalize(f(k))))
+                return
+              end if
+              if (is_node) then
+                do j = 1, model%nsets(other)%n
+                  call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, model%nsets(other)%nodes(j))
+                end do
+              else
+                do j = 1, model%elsets(other)%n
+                  call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, model%elsets(other)%elems(j))
+                end do
+              end if
+            end if
+          end do
+        end if
+      end do
+    end associate
+  end subroutine read_set
+
+  !> Index of node set name, created empty when new.
+  integer function get_nset(ctx, name) result(k)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: name        !< upper-case set name
+    type(node_set_t), allocatable :: tmp(:)
+    associate (model => ctx%model)
+      k = model_find_nset(model, name)
+      if (k > 0) return
+      if (model%n_nset == size(model%nsets)) then
+        allocate (tmp(2 * size(model%nsets)))
+        tmp(1:model%n_nset) = model%nsets(1:model%n_nset)
+        call move_alloc(tmp, model%nsets)
+      end if
+      model%n_nset = model%n_nset + 1
+      k = model%n_nset
+      model%nsets(k)%name = name
+      allocate (model%nsets(k)%nodes(0))
+    end associate
+  end function get_nset
+
+  !> Index of element set name, created empty when new.
+  integer function get_elset(ctx, name) result(k)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: name        !< upper-case set name
+    type(elem_set_t), allocatable :: tmp(:)
+    associate (model => ctx%model)
+      k = model_find_elset(model, name)
+      if (k > 0) return
+      if (model%n_elset == size(model%elsets)) then
+        allocate (tmp(2 * size(model%elsets)))
+        tmp(1:model%n_elset) = model%elsets(1:model%n_elset)
+        call move_alloc(tmp, model%elsets)
+      end if
+      model%n_elset = model%n_elset + 1
+      k = model%n_elset
+      model%elsets(k)%name = name
+      allocate (model%elsets(k)%elems(0))
+    end associate
+  end function get_elset
+
+  !> Double the node storage.
+  subroutine grow_nodes(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, allocatable :: t1(:), t3(:)
+    real(dp), allocatable :: t2(:, :)
+    integer :: n
+    n = size(ctx%model%node_id)
+    allocate (t1(2 * n), t2(3, 2 * n), t3(2 * n))
+    t1(1:n) = ctx%model%node_id
+    t2(:, 1:n) = ctx%model%x
+    t3(1:n) = ctx%node_rec
+    call move_alloc(t1, ctx%model%node_id)
+    call move_alloc(t2, ctx%model%x)
+    call move_alloc(t3, ctx%node_rec)
+  end subroutine grow_nodes
+
+  !> Double the element storage.
+  subroutine grow_elems(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: n
+    n = size(ctx%model%elem_id)
+    call grow_int(ctx%model%elem_id, 2 * n)
+    call grow_int(ctx%model%elem_kind, 2 * n)
+    call grow_int(ctx%model%elem_utype, 2 * n)
+    call grow_int(ctx%model%conn_ptr, 2 * n + 1)
+    call grow_int(ctx%elem_rec, 2 * n)
+    if (allocated(ctx%model%elem_uelprop)) call grow_int(ctx%model%elem_uelprop, 2 * n)
+  end subroutine grow_elems
+
+end module deck_mesh

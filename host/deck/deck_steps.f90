@@ -1,0 +1,364 @@
+!> History keywords of the deck reader: *STEP, *STATIC, *CONTROLS, *RESTART, *OUTPUT and *NODE PRINT.
+module deck_steps
+  use ldfcz_kinds, only: dp
+  use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
+  use model_types, only: step_t, node_print_t, model_find_nset
+  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_warn, ctx_pos, ctx_allow_params, ctx_need_step, &
+    ctx_required, ctx_param_int, ctx_split, ctx_get_real, ctx_get_int
+  implicit none
+  private
+  public :: read_step, read_static, read_controls, read_restart, read_output, read_node_print
+
+contains
+
+  !> *STEP, NAME=, NLGEOM=, INC=, UNSYMM=, AMPLITUDE=RAMP: opens a step (NLGEOM and the restart request carry over).
+  subroutine read_step(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(step_t), allocatable :: tmp(:)
+    type(step_t) :: empty_step
+    character(len=:), allocatable :: v
+    integer :: istep, ir, max_inc
+    if (ctx%in_step) then
+      call ctx_fail(ctx, ctx%ir, '*STEP inside a step: *END STEP missing')
+      return
+    end if
+    call ctx_allow_params(ctx, [character(len=16) :: 'NAME', 'NLGEOM', 'INC', 'UNSYMM', 'AMPLITUDE', 'EXTRAPOLATION', &
+      'PERTURBATION'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    if (deck_has_param(ctx%params, 'PERTURBATION')) then
+      call ctx_fail(ctx, ir, 'PERTURBATION steps are not supported')
+      return
+    end if
+    if (ctx%model%nstep == size(ctx%model%steps)) then
+      allocate (tmp(2 * size(ctx%model%steps)))
+      tmp(1:ctx%model%nstep) = ctx%model%steps(1:ctx%model%nstep)
+      call move_alloc(tmp, ctx%model%steps)
+    end if
+    ctx%model%nstep = ctx%model%nstep + 1
+    istep = ctx%model%nstep
+    ctx%istep = istep
+    ctx%model%steps(istep) = empty_step
+    allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2))
+    ! NLGEOM carries over from the previous step, as in Abaqus
+    if (istep > 1) ctx%model%steps(istep)%nlgeom = ctx%model%steps(istep - 1)%nlgeom
+    ! a *RESTART, WRITE request stays in effect until changed (Abaqus)
+    ctx%model%steps(istep)%restart_frequency = ctx%restart_freq
+    if (deck_has_param(ctx%params, 'NLGEOM')) then
+      v = deck_normalize(deck_param_value(ctx%params, 'NLGEOM'))
+      if (v == '' .or. v == 'YES') then
+        ctx%model%steps(istep)%nlgeom = .true.
+      else if (v == 'NO') then
+        if (istep > 1) then  ! (no short-circuit in Fortran: steps(0) must not be evaluated)
+          if (ctx%model%steps(istep - 1)%nlgeom) then
+            call ctx_fail(ctx, ir, 'NLGEOM cannot be switched off after a geometrically nonlinear step')
+            return
+          end if
+        end if
+        ctx%model%steps(istep)%nlgeom = .false.
+      else
+        call ctx_fail(ctx, ir, 'NLGEOM must be YES or NO')
+        return
+      end if
+    end if
+    max_inc = ctx_param_int(ctx, 'INC', 100)
+    ctx%model%steps(istep)%max_inc = max_inc
+    if (ctx%stat /= 0) return
+    if (max_inc <= 0) then
+      call ctx_fail(ctx, ir, 'INC must be positive')
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE'))
+    if (len(v) > 0 .and. v /= 'RAMP') then
+      call ctx_fail(ctx, ir, 'only AMPLITUDE=RAMP is supported in static steps')
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'EXTRAPOLATION'))
+    if (len(v) > 0 .and. v /= 'NO') call ctx_warn(ctx, ir, 'EXTRAPOLATION='//v//' ignored: ldfcz never extrapolates')
+    v = deck_normalize(deck_param_value(ctx%params, 'UNSYMM'))
+    if (v == 'YES' .or. v == '') then
+      ctx%model%steps(istep)%unsymm = deck_has_param(ctx%params, 'UNSYMM')
+    else if (v /= 'NO') then
+      call ctx_fail(ctx, ir, 'UNSYMM must be YES or NO')
+      return
+    end if
+    ctx%model%steps(istep)%name = deck_param_value(ctx%params, 'NAME')
+    ctx%model%steps(istep)%pos = ctx_pos(ctx, ir)
+    ctx%model%steps(istep)%period = -1.0_dp  ! marks "no *STATIC yet"
+    ! data lines (a title line) are allowed and not read
+    ctx%in_step = .true.
+    ctx%imat = 0
+  end subroutine read_step
+
+  !> *STATIC[, DIRECT]: initial increment, period, minimum and maximum increments.
+  subroutine read_static(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    integer :: n, ir, ir_next
+    real(dp) :: v(4)
+    logical :: given(4)
+    integer :: k
+    call ctx_need_step(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=12) :: 'DIRECT'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    ir_next = ctx%ir_next
+    if (ctx%model%steps(ctx%istep)%period > 0.0_dp) then
+      call ctx_fail(ctx, ir, 'a second procedure in one step')
+      return
+    end if
+    v = 0.0_dp
+    given = .false.
+    n = 0
+    if (ir_next > ir + 2) then
+      call ctx_fail(ctx, ir + 2, 'one data line expected')
+      return
+    end if
+    if (ir_next == ir + 2) then
+      call ctx_split(ctx, ir + 1, f, n)
+      if (n > 4) then
+        call ctx_fail(ctx, ir + 1, 'only initial, period, minimum and maximum increments are supported')
+        return
+      end if
+      do k = 1, n
+        if (len_trim(f(k)) == 0) cycle
+        if (.not. ctx_get_real(ctx, ir + 1, f(k), v(k))) return
+        if (v(k) <= 0.0_dp) then
+          call ctx_fail(ctx, ir + 1, 'time values must be positive')
+          return
+        end if
+        given(k) = .true.
+      end do
+    end if
+    associate (s => ctx%model%steps(ctx%istep))
+      s%period = 1.0_dp
+      if (given(2)) s%period = v(2)
+      s%dt_initial = s%period
+      if (given(1)) s%dt_initial = v(1)
+      s%dt_min = min(s%dt_initial, 1.0e-5_dp * s%period)
+      if (given(3)) s%dt_min = v(3)
+      s%dt_max = s%period
+      if (given(4)) s%dt_max = v(4)
+      s%direct = deck_has_param(ctx%params, 'DIRECT')
+      if (s%dt_initial > s%period * (1.0_dp + 1.0e-12_dp)) then
+        call ctx_fail(ctx, ir + 1, 'initial increment larger than the step period')
+      else if (s%dt_min > s%dt_initial .and. .not. s%direct) then
+        call ctx_fail(ctx, ir + 1, 'minimum increment larger than the initial increment')
+      else if (s%dt_max < s%dt_initial .and. .not. s%direct) then
+        call ctx_fail(ctx, ir + 1, 'maximum increment smaller than the initial increment')
+      end if
+    end associate
+  end subroutine read_static
+
+  !> *CONTROLS, PARAMETERS=TIME INCREMENTATION (I_C) or FIELD (R_n, C_n); RESET restores the defaults.
+  subroutine read_controls(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=:), allocatable :: v
+    character(len=flen), allocatable :: f(:)
+    integer :: n, k, iv, ir, ir_next, istep
+    real(dp) :: r
+    call ctx_need_step(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=12) :: 'PARAMETERS', 'RESET', 'ANALYSIS'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    ir_next = ctx%ir_next
+    istep = ctx%istep
+    if (deck_has_param(ctx%params, 'ANALYSIS')) then
+      call ctx_fail(ctx, ir, 'ANALYSIS= is not supported')
+      return
+    end if
+    if (deck_has_param(ctx%params, 'RESET')) then
+      ctx%model%steps(istep)%max_iter = 16
+      ctx%model%steps(istep)%r_n = 0.005_dp
+      ctx%model%steps(istep)%c_n = 0.01_dp
+      if (.not. deck_has_param(ctx%params, 'PARAMETERS')) return
+    end if
+    v = deck_normalize(ctx_required(ctx, 'PARAMETERS'))
+    if (ctx%stat /= 0) return
+    if (ir_next > ir + 2) then
+      call ctx_fail(ctx, ir + 2, 'only the first data line is supported')
+      return
+    end if
+    if (ir_next == ir + 1) return
+    call ctx_split(ctx, ir + 1, f, n)
+    select case (v)
+    case ('TIME INCREMENTATION')
+      ! I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A: ldfcz supports I_C (iteration cap); others must stay blank
+      do k = 1, n
+        if (len_trim(f(k)) == 0) cycle
+        if (k /= 4) then
+          call ctx_fail(ctx, ir + 1, 'only field 4 (I_C, maximum iterations) of TIME INCREMENTATION is supported')
+          return
+        end if
+        if (.not. ctx_get_int(ctx, ir + 1, f(k), iv)) return
+        if (iv < 2) then
+          call ctx_fail(ctx, ir + 1, 'I_C must be at least 2')
+          return
+        end if
+        ctx%model%steps(istep)%max_iter = iv
+      end do
+    case ('FIELD')
+      ! R_n, C_n, q0, qu, R_P, eps_l, ...: ldfcz supports R_n and C_n
+      do k = 1, n
+        if (len_trim(f(k)) == 0) cycle
+        if (k > 2) then
+          call ctx_fail(ctx, ir + 1, 'only R_n and C_n (fields 1, 2) of FIELD are supported')
+          return
+        end if
+        if (.not. ctx_get_real(ctx, ir + 1, f(k), r)) return
+        if (r <= 0.0_dp .or. r >= 1.0_dp) then
+          call ctx_fail(ctx, ir + 1, 'tolerances must lie in (0, 1)')
+          return
+        end if
+        if (k == 1) ctx%model%steps(istep)%r_n = r
+        if (k == 2) ctx%model%steps(istep)%c_n = r
+      end do
+    case default
+      call ctx_fail(ctx, ir, 'PARAMETERS='//v//' not supported (TIME INCREMENTATION, FIELD)')
+    end select
+  end subroutine read_controls
+
+  !> *RESTART, WRITE, FREQUENCY=n (model or history data; in effect for the following steps until changed):
+  !> JOB.rst after every n-th increment and at the end of each step. READ is refused: ldfcz restarts with
+  !> --restart-from JOB.rst JOB.inp on the unchanged deck (docs/host.md).
+  subroutine read_restart(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: n, ir
+    call ctx_allow_params(ctx, [character(len=16) :: 'WRITE', 'READ', 'FREQUENCY', 'OVERLAY', 'NUMBER INTERVAL', &
+      'TIME MARKS', 'STEP', 'INC', 'END STEP'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    if (deck_has_param(ctx%params, 'READ')) then
+      call ctx_fail(ctx, ir, 'READ is not supported: restart with ldfcz --restart-from JOB.rst JOB.inp on the '// &
+        'unchanged deck (docs/host.md)')
+      return
+    end if
+    if (.not. deck_has_param(ctx%params, 'WRITE')) then
+      call ctx_fail(ctx, ir, 'WRITE (or READ) is required')
+      return
+    end if
+    if (deck_has_param(ctx%params, 'NUMBER INTERVAL') .or. deck_has_param(ctx%params, 'TIME MARKS')) then
+      call ctx_fail(ctx, ir, 'only FREQUENCY=n is supported (restart data after every n-th increment)')
+      return
+    end if
+    n = ctx_param_int(ctx, 'FREQUENCY', 1)
+    if (ctx%stat /= 0) return
+    if (n < 0) then
+      call ctx_fail(ctx, ir, 'FREQUENCY must be >= 0 (0: no restart file)')
+      return
+    end if
+    if (ctx%ir_next > ir + 1) then
+      call ctx_fail(ctx, ir + 1, 'no data lines expected')
+      return
+    end if
+    ctx%restart_freq = n
+    if (ctx%in_step) ctx%model%steps(ctx%istep)%restart_frequency = n
+  end subroutine read_restart
+
+  !> *OUTPUT, FIELD (FREQUENCY=, NUMBER INTERVAL=) or HISTORY.
+  subroutine read_output(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: k
+    call ctx_need_step(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=16) :: 'FIELD', 'HISTORY', 'FREQUENCY', 'NUMBER INTERVAL', 'VARIABLE', &
+      'TIME MARKS', 'OP'])
+    if (ctx%stat /= 0) return
+    if (deck_has_param(ctx%params, 'FIELD')) then
+      ctx%model%steps(ctx%istep)%field_output = .true.
+      k = ctx_param_int(ctx, 'FREQUENCY', 1)
+      if (ctx%stat /= 0) return
+      if (k < 0) then
+        call ctx_fail(ctx, ctx%ir, 'FREQUENCY must not be negative')
+        return
+      end if
+      ctx%model%steps(ctx%istep)%field_frequency = k
+      k = ctx_param_int(ctx, 'NUMBER INTERVAL', 0)
+      if (ctx%stat /= 0) return
+      if (k < 0) then
+        call ctx_fail(ctx, ctx%ir, 'NUMBER INTERVAL must not be negative')
+        return
+      end if
+      ctx%model%steps(ctx%istep)%field_intervals = k
+    else if (.not. deck_has_param(ctx%params, 'HISTORY')) then
+      call ctx_fail(ctx, ctx%ir, 'FIELD or HISTORY required')
+    end if
+  end subroutine read_output
+
+  !> *NODE PRINT, NSET=: set totals of U1..U3 and RF1..RF3 written to JOB.csv.
+  subroutine read_node_print(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(node_print_t) :: np
+    type(node_print_t), allocatable :: tmp(:)
+    character(len=flen), allocatable :: f(:)
+    character(len=8), allocatable :: vars(:)
+    integer :: i, n, k, nv, ir, ir_next
+    character(len=:), allocatable :: name, v
+    call ctx_need_step(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=12) :: 'NSET', 'TOTALS', 'FREQUENCY', 'SUMMARY', 'GLOBAL'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    ir_next = ctx%ir_next
+    np%nset = deck_normalize(ctx_required(ctx, 'NSET'))
+    if (ctx%stat /= 0) return
+    np%set_index = model_find_nset(ctx%model, np%nset)
+    if (np%set_index == 0) then
+      call ctx_fail(ctx, ir, 'undefined node set '//trim(np%nset))
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'TOTALS'))
+    if (v /= 'YES') call ctx_warn(ctx, ir, 'ldfcz writes set totals (RF sums, U means) to JOB.csv as with TOTALS=YES')
+    allocate (vars(3 * (ir_next - ir) * 8 + 6))
+    nv = 0
+    do i = ir + 1, ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      do k = 1, n
+        name = deck_normalize(f(k))
+        if (len(name) == 0) cycle
+        select case (name)
+        case ('U1', 'U2', 'U3', 'RF1', 'RF2', 'RF3')
+          call add_var(vars, nv, name)
+        case ('U')
+          call add_var(vars, nv, 'U1')
+          call add_var(vars, nv, 'U2')
+          if (ctx%model%ndim /= 2) call add_var(vars, nv, 'U3')
+        case ('RF')
+          call add_var(vars, nv, 'RF1')
+          call add_var(vars, nv, 'RF2')
+          if (ctx%model%ndim /= 2) call add_var(vars, nv, 'RF3')
+        case default
+          call ctx_warn(ctx, i, 'variable '//name//' not supported in JOB.csv (U1..U3, RF1..RF3): ignored')
+        end select
+      end do
+    end do
+    if (nv == 0) then
+      call ctx_warn(ctx, ir, 'no supported variable requested: no column written')
+      return
+    end if
+    np%vars = vars(1:nv)
+    associate (s => ctx%model%steps(ctx%istep))
+      if (s%nprint == size(s%prints)) then
+        allocate (tmp(2 * size(s%prints)))
+        tmp(1:s%nprint) = s%prints(1:s%nprint)
+        call move_alloc(tmp, s%prints)
+      end if
+      s%nprint = s%nprint + 1
+      s%prints(s%nprint) = np
+    end associate
+  end subroutine read_node_print
+
+  !> Append a print variable once.
+  pure subroutine add_var(vars, nv, v)
+    character(len=8), intent(inout) :: vars(:) !< variables
+    integer, intent(inout) :: nv               !< variables in use
+    character(len=*), intent(in) :: v          !< variable to add
+    if (nv == size(vars)) return
+    if (any(vars(1:nv) == v)) return
+    nv = nv + 1
+    vars(nv) = v
+  end subroutine add_var
+
+end module deck_steps
