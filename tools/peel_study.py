@@ -18,10 +18,12 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
 
+THREADS = [2]  # set by main(), quoted in the reports
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
@@ -35,7 +37,7 @@ DEFAULT_3D = ['--3d', '--rigid-substrate']
 def studies(quick):
     """Cases per study: (label, generator arguments, is_reference). quick: fewer/cheaper cases (CI smoke)."""
     s = {}
-    les = [0.02, 0.01, 0.005] if quick else [0.02, 0.01, 0.005, 0.0025]
+    les = [0.02, 0.01, 0.005] if quick else [0.02, 0.01, 0.005, 0.0025, 0.002, 0.00125]
     s['mesh-x'] = [('le=%g' % le, DEFAULT_PS + ['--le', str(le)], le == les[-1]) for le in les]
     nzs = [1, 2, 3] if quick else [1, 2, 3, 5, 9]
     s['mesh-z'] = [('nz=%d' % nz, DEFAULT_PS + ['--nz', str(nz)], nz == nzs[-1]) for nz in nzs]
@@ -47,7 +49,8 @@ def studies(quick):
             cases.append(('b=%g ny=%d' % (b, ny), base3 + ['--width', str(b), '--ny', str(ny)],
                           b == 0.04 and ny == nys[-1]))
     s['mesh-y'] = cases
-    dus = [0.0005, 0.0003, 0.0001] if not quick else [0.0005, 0.0003]
+    # requested pull per increment (the UMAT's PNEWDT cuts it where the plastic strain increment exceeds 0.05)
+    dus = [0.005, 0.002, 0.001, 0.0005, 0.0003, 0.0001, 0.00005] if not quick else [0.0005, 0.0003]
     s['increment'] = [('du=%g um' % (du * 1e3), DEFAULT_PS + ['--du', str(du)], du == dus[-1]) for du in dus]
     s['simplifications'] = [
         ('full: steel, uniform mesh', ['--no-coarse'], True),
@@ -55,17 +58,48 @@ def studies(quick):
         ('rigid, uniform mesh', ['--rigid-substrate', '--no-coarse'], False),
         ('rigid, coarse far field (default)', DEFAULT_PS, False),
     ]
-    ps3 = ['--le', '0.02', '--nz', '2', '--u-total', '0.05']
-    s['ps-vs-3d'] = [('plane strain', DEFAULT_PS + ps3, False),
-                     ('3D b=0.04 ny=2', DEFAULT_3D + ps3 + ['--width', '0.04', '--ny', '2'], True)]
+    # Fig. 14: the main scene's discretisation (l_e = 10 um, n_z = 3) in plane strain and in 3D with the width
+    # resolutions of the mesh-y study (n_y = 2 and 4: converged to < 0.1 % there), b = 0.04 mm; the 3D model with
+    # n_y = 4 is the reference. The coarse pair (l_e = 20 um, n_z = 2) shows the speed-up at a smaller size.
+    ps3 = ['--u-total', '0.05']
+    s['ps-vs-3d'] = [('plane strain le=10 nz=3', DEFAULT_PS + ps3, False),
+                     ('3D le=10 nz=3 b=0.04 ny=2', DEFAULT_3D + ps3 + ['--width', '0.04', '--ny', '2'], False,
+                      ['--newton', 'auto']),
+                     ('3D le=10 nz=3 b=0.04 ny=4', DEFAULT_3D + ps3 + ['--width', '0.04', '--ny', '4'], True,
+                      ['--newton', 'auto'])]
+    if not quick:
+        s['ps-vs-3d'].append(('3D le=10 nz=3 b=0.04 ny=8', DEFAULT_3D + ps3 + ['--width', '0.04', '--ny', '8'], False,
+                              ['--newton', 'auto']))
+    if not quick:
+        psc = ['--le', '0.02', '--nz', '2', '--u-total', '0.05']
+        s['ps-vs-3d'] += [('plane strain le=20 nz=2', DEFAULT_PS + psc, False),
+                          ('3D le=20 nz=2 b=0.04 ny=8', DEFAULT_3D + psc + ['--width', '0.04', '--ny', '8'], False,
+                           ['--newton', 'auto'])]
     s['dofs'] = [('le=%g nz=%d' % (le, nz), DEFAULT_PS + ['--le', str(le), '--nz', str(nz), '--u-total', '0.01'],
                   False) for le, nz in ((0.02, 2), (0.01, 3), (0.005, 3), (0.0025, 5))]
-    # Section 8: 10 elements in y, 3 in z, l_e = 2 um, 0.1 um/inc, to 1.0 mm delamination. In the main scene the
-    # front advances about as fast as the pull once steady (0.045 mm for the last 0.03 mm), so 1.1 mm of pull.
-    # About 18000 hexahedra with the UMAT: days on 2 cores with this host; not run yet.
-    s['application'] = [('paper section 8', DEFAULT_3D + ['--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.0001',
-                                                          '--fine-length', '1.15', '--bonded', '1.5',
-                                                          '--u-total', '1.1', '--field-frequency', '200'], True)]
+    # 3D members (short pulls): a wider range of DOFs, where the factorization begins to show.
+    s['dofs'] += [('3D le=%g nz=%d ny=%d' % (le, nz, ny), DEFAULT_3D + ['--le', str(le), '--nz', str(nz), '--ny',
+                                                                          str(ny), '--u-total', '0.005'], False)
+                  for le, nz, ny in (((0.01, 3, 4), (0.005, 3, 8)) if quick else
+                                     ((0.01, 3, 4), (0.005, 3, 8), (0.0025, 3, 10)))]
+    # Section 8: 10 elements in y, 3 in z, l_e = 2 um (the paper's discretisation in the fine region), rigid
+    # substrate (0.01 % effect, docs/scenes.md), pull increment 0.3 um (the increment study: within 0.2 % of
+    # 0.1 um/inc; the UMAT and --max-opening-increment 0.33 cut it where needed), a shorter delamination length
+    # than the paper's 1.0 mm (the full run is many hours on 2 cores: docs/performance.md). --time-limit stops
+    # it and keeps what converged; the report extrapolates the measured cost per um of pull to 1.0 mm.
+    app_solver = ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', '0.05']
+    if quick:
+        s['application'] = [('section 8 mesh, short', DEFAULT_3D + [
+            '--ny', '10', '--nz', '3', '--le', '0.002', '--fine-length', '0.02', '--bonded', '0.1',
+            '--u-total', '0.01', '--field-frequency', '10'], True, app_solver)]
+    else:
+        s['application'] = [('section 8 mesh', DEFAULT_3D + [
+            '--ny', '10', '--nz', '3', '--le', '0.002', '--fine-length', '0.07', '--bonded', '0.15',
+            '--u-total', '0.06', '--field-frequency', '25'], True, app_solver)]
+    # The paper's full application (1.0 mm of delamination, fine region over all of it), for the extrapolation.
+    s['_application_full'] = [('paper section 8, 1.0 mm', DEFAULT_3D + [
+        '--ny', '10', '--nz', '3', '--le', '0.002', '--fine-length', '1.05', '--bonded', '1.2',
+        '--u-total', '1.1'], True, app_solver)]
     return s
 
 
@@ -110,6 +144,25 @@ def read_summary(log_path):
     return out
 
 
+def read_sta(sta_path):
+    """Increments, attempts, cutbacks and Newton iterations counted from JOB.sta (for runs stopped before their
+    closing summary)."""
+    out = {'increments': 0, 'attempts': 0, 'cutbacks': 0, 'iterations': 0}
+    if not os.path.exists(sta_path):
+        return out
+    for line in open(sta_path):
+        w = line.split()
+        if not w or w[0].startswith('#') or len(w) < 7:
+            continue
+        out['attempts'] += 1
+        out['iterations'] += int(w[3])
+        if w[6] == 'converged':
+            out['increments'] += 1
+        else:
+            out['cutbacks'] += 1
+    return out
+
+
 def steady_force(u, fw, plateau):
     """Mean and relative spread of fw over u >= (1 - plateau) max(u)."""
     if not u:
@@ -148,7 +201,50 @@ def read_vtu_front(vtu_path, delta):
     return min(xs) if xs else None
 
 
-def run_case(label, gen_args, workdir, ldfcz, threads, plateau):
+def last_u1(csv_path):
+    """LOAD.U1 of the last complete row of JOB.csv (None when there is none yet)."""
+    try:
+        with open(csv_path) as fh:
+            lines = fh.read().splitlines()
+    except OSError:
+        return None
+    if len(lines) < 2:
+        return None
+    head = lines[0].split(',')
+    try:
+        return float(lines[-1].split(',')[head.index('LOAD.U1')])
+    except (ValueError, IndexError):
+        return float(lines[-2].split(',')[head.index('LOAD.U1')]) if len(lines) > 2 else None
+
+
+def cpu_busy(dt=1.0):
+    """Fraction of all cores busy over dt seconds (from /proc/stat; 0 where it is not readable)."""
+    def sample():
+        with open('/proc/stat') as fh:
+            v = [int(x) for x in fh.readline().split()[1:]]
+        return sum(v), v[3] + (v[4] if len(v) > 4 else 0)
+    try:
+        t0, i0 = sample()
+        time.sleep(dt)
+        t1, i1 = sample()
+    except (OSError, ValueError):
+        return 0.0
+    return 1.0 - (i1 - i0) / float(max(t1 - t0, 1))
+
+
+def wait_idle(max_wait, threshold=0.15):
+    """Wait (at most max_wait s) until the cores are busy less than threshold; returns the last busy fraction."""
+    t0 = time.time()
+    busy = cpu_busy()
+    while busy > threshold and time.time() - t0 < max_wait:
+        busy = cpu_busy(2.0)
+    return busy
+
+
+def run_case(label, gen_args, workdir, ldfcz, threads, plateau, solver_args=(), time_limit=0.0, idle_wait=0.0,
+             reuse=None):
+    """Generate the deck, run ldfcz (stopped with SIGTERM after time_limit s when > 0: what converged is kept),
+    and collect the results. progress: (wall s, U1 mm) sampled every second from JOB.csv."""
     os.makedirs(workdir, exist_ok=True)
     job = re.sub(r'[^A-Za-z0-9_.-]+', '_', label).strip('_') or 'case'
     deck = os.path.join(workdir, job + '.inp')
@@ -158,24 +254,85 @@ def run_case(label, gen_args, workdir, ldfcz, threads, plateau):
     with open(deck, 'w') as fh:
         fh.write(text)
     outdir = os.path.join(workdir, job)
-    cmd = [ldfcz, '-q', '-t', str(threads), '-o', outdir, deck]
+    if reuse is not None:
+        return reuse_case(label, gen_args, solver_args, outdir, job, info, p, plateau, reuse)
+    if os.path.isdir(outdir):
+        shutil.rmtree(outdir)
+    cmd = [ldfcz, '-q', '-t', str(threads), '-o', outdir] + list(solver_args) + [deck]
+    busy0 = wait_idle(idle_wait) if idle_wait > 0 else cpu_busy(0.5)
+    load0 = os.getloadavg()[0]
     t0 = time.time()
-    rc = subprocess.call(cmd)
+    cpu0 = os.times().children_user + os.times().children_system
+    proc = subprocess.Popen(cmd)
+    progress, stopped = [(0.0, 0.0)], False
+    csv_path = os.path.join(outdir, job + '.csv')
+    while True:
+        try:
+            rc = proc.wait(timeout=1.0)
+            break
+        except subprocess.TimeoutExpired:
+            pass
+        now = time.time() - t0
+        x = last_u1(csv_path)
+        if x is not None and x > progress[-1][1]:
+            progress.append((now, x))
+        if time_limit > 0 and now > time_limit and not stopped:
+            proc.send_signal(signal.SIGTERM)
+            stopped = True
     wall = time.time() - t0
     res = {'label': label, 'job': job, 'exit': rc, 'run_time_s': wall, 'elements': info['elements'],
-           'dofs': info['dofs'], 'l_e_mm': info['l_e_mm'], 'args': ' '.join(gen_args)}
-    res.update({k: v for k, v in read_summary(os.path.join(outdir, job + '.log')).items() if k != 'dofs'})
+           'dofs': info['dofs'], 'l_e_mm': info['l_e_mm'], 'args': ' '.join(gen_args),
+           'solver': ' '.join(solver_args), 'load_avg_start': load0, 'load_avg_end': os.getloadavg()[0],
+           'stopped_at_limit': stopped, 'cpu_busy_before': busy0,
+           'cpu_time_s': os.times().children_user + os.times().children_system - cpu0}
+    summ = read_summary(os.path.join(outdir, job + '.log'))
+    if 'wall_s' not in summ:  # stopped: count from JOB.sta
+        summ.update(read_sta(os.path.join(outdir, job + '.sta')))
+        summ['wall_s'] = wall
+    res.update({k: v for k, v in summ.items() if k != 'dofs'})
+    return collect(res, outdir, job, info, p, plateau, progress)
+
+
+def reuse_case(label, gen_args, solver_args, outdir, job, info, p, plateau, old):
+    """The results of an earlier run in outdir (--reuse: rewrite the reports without running): run time from the
+    closing summary, progress and load figures from the earlier report's rows when given."""
+    summ = read_summary(os.path.join(outdir, job + '.log'))
+    if 'wall_s' not in summ:
+        summ.update(read_sta(os.path.join(outdir, job + '.sta')))
+    res = {'label': label, 'job': job, 'exit': 0 if 'energy_rel_diff' in summ else 3,
+           'run_time_s': float(old.get('run_time_s') or summ.get('wall_s', 0.0)), 'elements': info['elements'],
+           'dofs': info['dofs'], 'l_e_mm': info['l_e_mm'], 'args': ' '.join(gen_args),
+           'solver': ' '.join(solver_args), 'stopped_at_limit': old.get('stopped_at_limit') == 'True'}
+    for k in ('load_avg_start', 'load_avg_end', 'cpu_busy_before', 'cpu_time_s'):
+        if old.get(k):
+            res[k] = float(old[k])
+    res.update({k: v for k, v in summ.items() if k != 'dofs'})
+    return collect(res, outdir, job, info, p, plateau, old.get('progress') or [(0.0, 0.0)])
+
+
+def collect(res, outdir, job, info, p, plateau, progress):
+    """Curves, steady force, front and timing figures of a finished (or stopped) run."""
     csv_path = os.path.join(outdir, job + '.csv')
+    rc = res['exit']
+    wall = res['run_time_s']
     u, f = read_history(csv_path) if os.path.exists(csv_path) else ([], [])
+    if u and (not progress or u[-1] > progress[-1][1]):
+        progress.append((wall, u[-1]))
+    res['progress'] = progress
     fw = [v / info['width_mm'] for v in f]
     res['u_end_mm'] = u[-1] if u else 0.0
+    res['u_total_mm'] = p.u_total
     res['completed'] = bool(u) and abs(u[-1] - p.u_total) <= 1e-6 * p.u_total and rc == 0
     res['F_w'], res['spread'] = steady_force(u, fw, plateau)
     vtus = sorted(x for x in os.listdir(outdir) if x.endswith('.vtu')) if os.path.isdir(outdir) else []
     front = read_vtu_front(os.path.join(outdir, vtus[-1]), info['delta_mm']) if vtus else None
     res['delaminated_mm'] = (info['x_front_mm'] - front) if front is not None else 0.0
+    res['vtus'] = [os.path.join(outdir, x) for x in vtus]
+    res['info'] = info
     if res.get('increments') and res.get('wall_s'):
         res['t_inc_s'] = res['wall_s'] / res['attempts'] if res.get('attempts') else res['wall_s'] / res['increments']
+    if res.get('iterations') and res.get('wall_s'):
+        res['t_iter_s'] = res['wall_s'] / res['iterations']
     res['curve'] = (u, fw)
     return res
 
@@ -189,7 +346,8 @@ def write_report(study, results, outdir):
         r['error'] = abs(r['F_over_Fr'] - 1.0) if r['F_over_Fr'] == r['F_over_Fr'] else float('nan')
     cols = ['label', 'reference', 'completed', 'F_w', 'F_over_Fr', 'error', 'spread', 'delaminated_mm', 'run_time_s',
             'increments', 'cutbacks', 'iterations', 'elements', 'dofs', 't_inc_s', 't_assembly_s', 't_factor_s',
-            'energy_rel_diff', 'max_open_ratio', 'args']
+            't_iter_s', 'attempts', 'energy_rel_diff', 'max_open_ratio', 'cpu_busy_before', 'cpu_time_s',
+            'load_avg_start', 'load_avg_end', 'u_end_mm', 'solver', 'args']
     with open(os.path.join(outdir, study + '.csv'), 'w', newline='') as fh:
         wr = csv.writer(fh)
         wr.writerow(cols)
@@ -201,11 +359,17 @@ def write_report(study, results, outdir):
         for r in results:
             for x, y in zip(*r['curve']):
                 wr.writerow([r['label'], '%.9g' % x, '%.9g' % y])
+    loads = [r.get('load_avg_start', 0.0) for r in results] + [r.get('load_avg_end', 0.0) for r in results]
+    solvers = sorted(set(r.get('solver', '') for r in results))
     lines = ['# Study %s' % study, '',
-             'Generated by `tools/peel_study.py %s` on %s (%s, %d cores visible, other jobs may have shared them: '
-             'compare run times within one table).' % (' '.join(sys.argv[1:2] + [x for x in sys.argv[2:] if x in (
-                 '--quick',)]) or study, time.strftime('%Y-%m-%d %H:%M'), os.uname().nodename, os.cpu_count() or 1),
-             '',
+             'Generated by `tools/peel_study.py %s` on %s (%s, %d cores visible, `-t %d`; 1-min load average '
+             '%.1f-%.1f at the starts and ends of the runs, which include the runs themselves).' % (
+                 ' '.join(sys.argv[1:2] + [x for x in sys.argv[2:] if x in ('--quick',)]) or study,
+                 time.strftime('%Y-%m-%d %H:%M'), os.uname().nodename, os.cpu_count() or 1, THREADS[0],
+                 min(loads) if loads else 0.0, max(loads) if loads else 0.0),
+             '', 'Cores busy before each run (other jobs, 0-1): %s.' % ', '.join(
+                 '%.2f' % r.get('cpu_busy_before', 0.0) for r in results),
+             '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
              'F/w: steady peel force per unit width (N/mm), mean over the last part of the pull; spread: (max-min)/mean '
              'there; error: |F/F_r - 1| against the reference case (marked *).', '',
              '| case | F/w (N/mm) | F/F_r | error | spread | delaminated (mm) | run time (s) | increments | cutbacks '
@@ -217,14 +381,266 @@ def write_report(study, results, outdir):
             r['delaminated_mm'], r['run_time_s'], int(r.get('increments', 0)), int(r.get('cutbacks', 0)),
             r['elements'], r['dofs'], '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-'))
         if not r['completed']:
-            lines[-1] += ' (not completed: exit %d, U = %.4g mm)' % (r['exit'], r['u_end_mm'])
-    if study == 'dofs':
-        pts = [(r['dofs'], r['t_inc_s']) for r in results if r.get('t_inc_s')]
-        n = fit_exponent(pts)
-        lines += ['', 'Fitted t_inc ~ DOFs^n: n = %.3f (paper Fig. 11d: 1.34).' % n]
+            lines[-1] += ' (not completed: exit %d, U = %.4g of %.4g mm%s)' % (
+                r['exit'], r['u_end_mm'], r['u_total_mm'], ', stopped at the time limit' if r.get('stopped_at_limit')
+                else '')
+    lines += study_extras(study, results, outdir)
     with open(os.path.join(outdir, study + '.md'), 'w') as fh:
         fh.write('\n'.join(lines) + '\n')
     plot(study, results, outdir)
+
+
+def _key(label):
+    """The 'le=.. nz=..' part of a label (pairs a plane-strain case with its 3D twins)."""
+    return ' '.join(w for w in label.split() if w.startswith(('le=', 'nz=')))
+
+
+def study_extras(study, results, outdir):
+    """Study-specific lines under the table of STUDY.md."""
+    out = []
+    ok = [r for r in results if r['F_w'] == r['F_w']]
+    if study == 'ps-vs-3d':
+        out += ['', '| pair | F/w plane strain | F/w 3D | plane-strain overestimate | run time PS / 3D (s) | speed-up |',
+                '|---|---|---|---|---|---|']
+        for r3 in (r for r in ok if r['label'].startswith('3D')):
+            ps = [r for r in ok if r['label'].startswith('plane strain') and _key(r['label']) == _key(r3['label'])]
+            if ps:
+                r2 = ps[0]
+                out.append('| %s | %.4f | %.4f | %+.1f %% | %.1f / %.1f | %.1f |' % (
+                    r3['label'], r2['F_w'], r3['F_w'], 100 * (r2['F_w'] / r3['F_w'] - 1), r2['run_time_s'],
+                    r3['run_time_s'], r3['run_time_s'] / r2['run_time_s']))
+        out += ['', 'Paper (Fig. 14, section 9): plane strain overestimates the quasi-static peel force by 4 %, '
+                'and is 15-50 times faster depending on the width discretisation.']
+    elif study == 'mesh-y':
+        widths = sorted(set(w for r in ok for w in r['label'].split() if w.startswith('b=')))
+        nys = sorted(set(int(w[3:]) for r in ok for w in r['label'].split() if w.startswith('ny=')))
+        byl = {r['label']: r for r in ok}
+        out += ['', '| n_y | ' + ' | '.join('F/w %s (error against its n_y = %d)' % (w, nys[-1]) for w in widths)
+                + ' | widths differ |', '|---|' + '---|' * (len(widths) + 1)]
+        for ny in nys:
+            cells, fs = [], []
+            for w in widths:
+                r, rf = byl.get('%s ny=%d' % (w, ny)), byl.get('%s ny=%d' % (w, nys[-1]))
+                if r and rf:
+                    cells.append('%.4f (%.2f %%)' % (r['F_w'], 100 * abs(r['F_w'] / rf['F_w'] - 1)))
+                    fs.append(r['F_w'])
+                else:
+                    cells.append('-')
+            out.append('| %d | %s | %s |' % (ny, ' | '.join(cells), '%.2f %%' % (100 * abs(fs[0] / fs[-1] - 1))
+                                             if len(fs) > 1 else '-'))
+        out += ['', 'Paper (Fig. 11a): 0.5 % error with four elements over the width; both widths almost identical.']
+    elif study == 'dofs':
+        out += ['', '| case | DOFs | attempts | Newton iterations | t/attempt (s) | t/iteration (s) | assembly | '
+                'factorization |', '|---|---|---|---|---|---|---|---|']
+        for r in results:
+            if r.get('t_inc_s'):
+                w = r.get('wall_s') or r['run_time_s']
+                out.append('| %s | %d | %d | %d | %.4f | %.4f | %.0f %% | %.1f %% |' % (
+                    r['label'], r['dofs'], r.get('attempts', 0), r.get('iterations', 0), r['t_inc_s'],
+                    r.get('t_iter_s', float('nan')), 100 * r.get('t_assembly_s', 0) / w,
+                    100 * r.get('t_factor_s', 0) / w))
+        fits = []
+        for name, sel in (('all', results), ('plane strain', [r for r in results if not r['label'].startswith('3D')]),
+                          ('3D', [r for r in results if r['label'].startswith('3D')])):
+            n_inc = fit_exponent([(r['dofs'], r['t_inc_s']) for r in sel if r.get('t_inc_s')])
+            n_it = fit_exponent([(r['dofs'], r['t_iter_s']) for r in sel if r.get('t_iter_s')])
+            n_as = fit_exponent([(r['dofs'], r['t_assembly_s'] / r['iterations']) for r in sel
+                                 if r.get('t_assembly_s') and r.get('iterations')])
+            n_fa = fit_exponent([(r['dofs'], r['t_factor_s'] / r['iterations']) for r in sel
+                                 if r.get('t_factor_s') and r.get('iterations')])
+            fits.append('| %s | %.2f | %.2f | %.2f | %.2f |' % (name, n_inc, n_it, n_as, n_fa))
+        out += ['', 'Fitted exponents n of t = c DOFs^n (paper Fig. 11d: 1.34 for the time of an increment):', '',
+                '| cases | t/attempt | t/iteration | assembly/iteration | factorization/iteration |',
+                '|---|---|---|---|---|'] + fits
+        out += ['', 'Fitted t_inc ~ DOFs^n (all cases): n = %.3f (paper Fig. 11d: 1.34).' %
+                fit_exponent([(r['dofs'], r['t_inc_s']) for r in results if r.get('t_inc_s')])]
+    elif study == 'increment':
+        out += ['', '| case | largest opening increment / delta | energy balance | Newton iterations |',
+                '|---|---|---|---|']
+        for r in results:
+            out.append('| %s | %s | %s | %d |' % (
+                r['label'], '%.3f' % r['max_open_ratio'] if 'max_open_ratio' in r else '-',
+                '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-', r.get('iterations', 0)))
+        out += ['', 'Paper (section 7): opening increments below delta/3 dissipate more than 99 % of phi; '
+                '0.1 um/inc was its stability limit for the PET model.']
+    elif study == 'application':
+        for r in results:
+            out += application_extras(r, outdir)
+    return out
+
+
+def front_history(r):
+    """(pull U1 mm, delaminated length mm) of every VTU frame (U1 = rate x frame time)."""
+    info, hist = r['info'], [(0.0, 0.0)]
+    pvd = [x for x in r['vtus'][:1]]
+    if not pvd:
+        return hist
+    pvd_path = re.sub(r'_\d+\.vtu$', '.pvd', pvd[0])
+    times = [float(t) for t in re.findall(r'timestep="\s*([0-9.Ee+-]+)"', open(pvd_path).read())] \
+        if os.path.exists(pvd_path) else []
+    for t, v in zip(times, r['vtus']):
+        fr = read_vtu_front(v, info['delta_mm'])
+        hist.append((t * info['rate_mm_s'], info['x_front_mm'] - fr if fr is not None else 0.0))
+    return hist
+
+
+def application_extras(r, outdir):
+    """Cost per um of pull over the second half of the run, delamination against pull, the extrapolation to the
+    paper's 1.0 mm, and the rendered Mises PNG of the last frame."""
+    out = ['', '## %s' % r['label'], '']
+    out.append('Run: `%s` generator arguments `%s`; ldfcz `%s`; %d elements, %d DOFs; pulled %.1f of %.1f um in '
+               '%.0f s (%s).' % (r['job'], r['args'], r['solver'], r['elements'], r['dofs'], 1e3 * r['u_end_mm'],
+                                 1e3 * r['u_total_mm'], r['run_time_s'],
+                                 'completed' if r['completed'] else 'stopped at the time limit'
+                                 if r.get('stopped_at_limit') else 'not completed, exit %d' % r['exit']))
+    prog = r['progress']
+    u_end = prog[-1][1]
+    half = [pt for pt in prog if pt[1] >= 0.5 * u_end]
+    cost = (half[-1][0] - half[0][0]) / (1e3 * (half[-1][1] - half[0][1])) \
+        if len(half) > 1 and half[-1][1] > half[0][1] else float('nan')
+    hist = front_history(r)
+    with open(os.path.join(outdir, 'application_front.csv'), 'w', newline='') as fh:
+        wr = csv.writer(fh)
+        wr.writerow(['U1_mm', 'delaminated_mm'])
+        for a, b in hist:
+            wr.writerow(['%.6g' % a, '%.6g' % b])
+    with open(os.path.join(outdir, 'application_progress.csv'), 'w', newline='') as fh:
+        wr = csv.writer(fh)
+        wr.writerow(['wall_s', 'U1_mm'])
+        for a, b in prog:
+            wr.writerow(['%.2f' % a, '%.6g' % b])
+    d_end = hist[-1][1]
+    late = [h for h in hist if h[0] >= 0.5 * hist[-1][0]]
+    rate = (late[-1][1] - late[0][1]) / (late[-1][0] - late[0][0]) if len(late) > 1 and late[-1][0] > late[0][0] \
+        else float('nan')
+    out.append('')
+    out.append('Delamination %.1f um at %.1f um of pull; over the second half of the run the front advanced %.2f um '
+               'per um of pull. Wall time per um of pull over the second half of the pull: **%.1f s/um** '
+               '(application_progress.csv: wall time against pull).' % (1e3 * d_end, 1e3 * hist[-1][0], rate, cost))
+    # extrapolation to 1.0 mm of delamination with the fine region over all of it
+    full = studies(False)['_application_full'][0]
+    pf = peel_deck.parser().parse_args(full[1])
+    _, finfo = peel_deck.build(pf)
+    adv = rate if rate == rate and rate > 0.2 else 1.0
+    u_full = hist[-1][0] + max(1.0 - d_end, 0.0) / adv
+    t_full = cost * 1e3 * u_full * (finfo['dofs'] / r['dofs'])
+    out.append('')
+    out.append('Extrapolation to the paper\'s 1.0 mm of delamination: pull %.2f mm (this run\'s %.1f um, then the '
+               'remaining %.3f mm of front at the measured %.2f mm of front per mm of pull), the fine region over all '
+               'of it (`%s`: %d DOFs, %.1f times this run\'s), the cost per um of pull scaled linearly with the DOFs '
+               '(the element loop dominates: dofs study): **%.0f s = %.1f h** on this machine with `-t %d` (an upper '
+               'estimate where the far elements stay elastic: the UMAT\'s elastic fast path makes them cheaper).' % (
+                   u_full, 1e3 * hist[-1][0], max(1.0 - d_end, 0.0), adv, ' '.join(full[1]), finfo['dofs'],
+                   finfo['dofs'] / r['dofs'], t_full, t_full / 3600, THREADS[0]))
+    if r['vtus']:
+        png = os.path.join(outdir, 'application_mises.png')
+        if render_mises(r['vtus'][-1], r['info'], png, hist[-1]):
+            out += ['', '![deformed coating, von Mises stress](application_mises.png)', '',
+                    'application_mises.png: the last ParaView frame (`%s`), deformed (scale 1), coating coloured by '
+                    'the von Mises stress (cell values), side views of the free edge y = b and of the symmetry '
+                    'plane y = 0, and the top view.' % os.path.relpath(r['vtus'][-1], ROOT)]
+    return out
+
+
+def render_mises(vtu_path, info, png, last):
+    """Side views (free edge y = b, mid-plane y = 0) and top view of the deformed coating, coloured by Mises."""
+    try:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        from matplotlib.collections import PolyCollection
+    except ImportError:
+        return False
+    text = open(vtu_path).read()
+
+    def array(name, typ=float):
+        m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % name, text, re.S)
+        return [typ(float(v)) for v in m.group(1).split()] if m else None
+    pm = re.search(r'<Points><DataArray[^>]*>(.*?)</DataArray>', text, re.S)
+    x0 = [float(v) for v in pm.group(1).split()]
+    uu = array('U')
+    xd = [a + b for a, b in zip(x0, uu)]
+    conn, offs, coh, mises = array('connectivity', int), array('offsets', int), array('cohesive', int), \
+        array('Mises')
+    cells, start = [], 0
+    for i, o in enumerate(offs):
+        if coh[i] == 0:
+            cells.append((conn[start:o], mises[i]))
+        start = o
+    three_d = info['dimension'] == 3
+    b = info['width_mm']
+    xmin = info['x_front_mm'] - 1.5 * max(last[1], 0.01)
+
+    def face(ids, axis, val):
+        """The 4 nodes of hexahedron ids whose reference coordinate `axis` is val (None when not on that plane)."""
+        f = [j for j in ids if abs(x0[3 * j + axis] - val) < 1e-9]
+        return f if len(f) == 4 else None
+
+    def poly(f, ax_h, ax_v):
+        pts = [(xd[3 * j + ax_h], xd[3 * j + ax_v]) for j in f]
+        cx = sum(p[0] for p in pts) / 4
+        cy = sum(p[1] for p in pts) / 4
+        return sorted(pts, key=lambda p: math.atan2(p[1] - cy, p[0] - cx))
+    views = []
+    ztop = max(x0[2::3])
+    if three_d:
+        for title, axis, val, ah, av in (('side view, free edge y = b', 1, b, 0, 2),
+                                         ('side view, symmetry plane y = 0', 1, 0.0, 0, 2),
+                                         ('top view, coating surface z = h_c', 2, None, 0, 1)):
+            polys, vals = [], []
+            for ids, m in cells:
+                v = val
+                if v is None:
+                    v = max(x0[3 * j + 2] for j in ids)
+                    if abs(v - ztop) > 1e-9:
+                        continue
+                f = face(ids, axis, v)
+                if f is None:
+                    continue
+                pp = poly(f, ah, av)
+                if max(p[0] for p in pp) < xmin:
+                    continue
+                polys.append(pp)
+                vals.append(m)
+            views.append((title, polys, vals, ah, av))
+    else:
+        polys, vals = [], []
+        for ids, m in cells:
+            pts = [(xd[3 * j], xd[3 * j + 1]) for j in ids]
+            if max(p[0] for p in pts) >= xmin:
+                polys.append(pts)
+                vals.append(m)
+        views.append(('plane strain', polys, vals, 0, 1))
+    allv = [v for vw in views for v in vw[2]]
+    if not allv:
+        return False
+    spans = []
+    for vw in views:
+        hs = [p[0] for pp in vw[1] for p in pp] or [0.0, 1.0]
+        vs = [p[1] for pp in vw[1] for p in pp] or [0.0, 1.0]
+        spans.append((max(hs) - min(hs), max(vs) - min(vs)))
+    lx = max(sp[0] for sp in spans)
+    heights = [max(1.0, 8.0 * sp[1] / lx) + 0.9 for sp in spans]
+    fig, axs = plt.subplots(len(views), 1, figsize=(10, sum(heights) + 0.5), squeeze=False,
+                            gridspec_kw={'height_ratios': heights})
+    for (title, polys, vals, ah, av), ax in zip(views, axs[:, 0]):
+        pc = PolyCollection([[(1e3 * p[0], 1e3 * p[1]) for p in pp] for pp in polys], array=vals, cmap='jet',
+                            edgecolors='none')
+        pc.set_clim(0, max(allv))
+        ax.add_collection(pc)
+        ax.autoscale_view()
+        ax.set_aspect('equal')
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel('x (um)')
+        ax.set_ylabel(('y' if av == 1 else 'z') + ' (um)')
+        ax.axvline(1e3 * info['x_front_mm'], color='k', lw=0.6, ls='--')
+        fig.colorbar(pc, ax=ax, label='von Mises (MPa)', fraction=0.03, pad=0.01)
+    fig.suptitle('ldfcz application (section 8 mesh): pull %.1f um, delaminated %.1f um (dashed: initial front)' % (
+        1e3 * last[0], 1e3 * last[1]), fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+    return True
 
 
 def fit_exponent(pts):
@@ -257,7 +673,8 @@ def plot(study, results, outdir):
     ax[0].legend(fontsize=7)
     ax[0].grid(alpha=0.3)
     if pts:
-        ax[1].loglog([p[0] for p in pts], [p[1] for p in pts], 'o-')
+        pts.sort()
+        ax[1].loglog([p[0] for p in pts], [p[1] for p in pts], 'o:')
         for t, e, lab in pts:
             ax[1].annotate(lab, (t, e), fontsize=7)
         ax[1].set_xlabel('run time (s)')
@@ -267,6 +684,23 @@ def plot(study, results, outdir):
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, study + '.png'), dpi=110)
     plt.close(fig)
+
+
+def old_rows(outdir, study):
+    """Rows of an existing STUDY.csv by label (and the application's progress samples)."""
+    rows = {}
+    path = os.path.join(outdir, study + '.csv')
+    if os.path.exists(path):
+        with open(path) as fh:
+            for r in csv.DictReader(fh):
+                rows[r['label']] = r
+    prog = os.path.join(outdir, 'application_progress.csv')
+    if study == 'application' and os.path.exists(prog) and len(rows) == 1:
+        with open(prog) as fh:
+            pts = [(float(r['wall_s']), float(r['U1_mm'])) for r in csv.DictReader(fh)]
+        for r in rows.values():
+            r['progress'] = pts
+    return rows
 
 
 def main(argv=None):
@@ -280,17 +714,30 @@ def main(argv=None):
     ap.add_argument('--plateau', type=float, default=0.3, help='fraction of the pull averaged for the steady force')
     ap.add_argument('--quick', action='store_true', help='fewer, cheaper cases')
     ap.add_argument('--only', default='', help='run only cases whose label contains this text')
+    ap.add_argument('--ldfcz-args', default='', help='extra ldfcz options for every case, e.g. "--newton auto"')
+    ap.add_argument('--wait-idle', type=float, default=0.0,
+                    help='before each case wait up to this many seconds for the cores to be idle (< 15 %% busy)')
+    ap.add_argument('--reuse', action='store_true', help='do not run: rewrite the report from the run files of the '
+                    'last run (out/peel/STUDY) and the run times of the existing report')
+    ap.add_argument('--gen-args', default='', help='extra generator options for every case (they override the '
+                    'case\'s), e.g. "--u-total 0.08 --fine-length 0.09"')
+    ap.add_argument('--time-limit', type=float, default=0.0,
+                    help='stop a case (SIGTERM) after this many seconds and keep what converged (0: no limit)')
     a = ap.parse_args(argv)
+    THREADS[0] = a.threads
+    extra = a.ldfcz_args.split()
     all_studies = studies(a.quick)
     if a.study == 'list':
         for k, v in all_studies.items():
+            if k.startswith('_'):
+                continue
             print(k + ': ' + '; '.join('%s%s [%s]' % (c[0], ' *' if c[2] else '', ' '.join(c[1])) for c in v))
         return 0
     ldfcz = find_ldfcz(a.ldfcz)
-    if a.study == 'main':
+    if a.study == 'main' and not a.reuse:
         outdir = os.path.join(a.reports, 'main')
         work = a.work or os.path.join(ROOT, 'out', 'peel', 'main')
-        r = run_case('peel_ps', DEFAULT_PS, work, ldfcz, a.threads, a.plateau)
+        r = run_case('peel_ps', DEFAULT_PS, work, ldfcz, a.threads, a.plateau, extra, a.time_limit, a.wait_idle)
         r['reference'] = True
         write_report('main', [r], outdir)
         print('steady peel force per unit width: %.4f N/mm (plane strain, mean over the last %d%% of the pull, '
@@ -300,15 +747,18 @@ def main(argv=None):
             os.path.join(outdir, 'main_curves.csv'), os.path.join(outdir, 'main.png'),
             os.path.join(work, r['job'], r['job'] + '.pvd')))
         return 0 if r['completed'] else 3
-    if a.study not in all_studies:
+    if a.study not in all_studies or a.study.startswith('_'):
         raise SystemExit('peel_study: unknown study %s (peel_study.py list)' % a.study)
     outdir = os.path.join(a.reports, a.study)
     work = a.work or os.path.join(ROOT, 'out', 'peel', a.study)
     results = []
-    for label, args, is_ref in all_studies[a.study]:
+    for case in all_studies[a.study]:
+        label, args, is_ref = case[:3]
         if a.only and a.only not in label:
             continue
-        r = run_case(label, args, work, ldfcz, a.threads, a.plateau)
+        r = run_case(label, args + a.gen_args.split(), work, ldfcz, a.threads, a.plateau,
+                     list(case[3] if len(case) > 3 else []) + extra, a.time_limit, a.wait_idle,
+                     old_rows(outdir, a.study).get(label, {}) if a.reuse else None)
         r['reference'] = is_ref
         results.append(r)
         print('%-36s F/w = %.4f N/mm  spread %.1e  %.1f s  %s' % (label, r['F_w'], r['spread'], r['run_time_s'],
