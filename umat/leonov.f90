@@ -275,29 +275,11 @@ contains
     real(dp), intent(in) :: a(4, 4), rhs(4)
     real(dp), intent(out) :: x(4)
     logical, intent(out) :: ok
-    real(dp) :: m(4, 5), row(5), f
-    integer :: k, i, piv
-    m(:, 1:4) = a
-    m(:, 5) = rhs
-    ok = .false.
-    x = 0.0_dp
-    do k = 1, 4
-      piv = k - 1 + maxloc(abs(m(k:4, k)), dim=1)
-      if (.not. (abs(m(piv, k)) > 0.0_dp)) return
-      if (piv /= k) then
-        row = m(k, :)
-        m(k, :) = m(piv, :)
-        m(piv, :) = row
-      end if
-      do i = k + 1, 4
-        f = m(i, k) / m(k, k)
-        m(i, k:5) = m(i, k:5) - f * m(k, k:5)
-      end do
-    end do
-    do k = 4, 1, -1
-      x(k) = (m(k, 5) - dot_product(m(k, k + 1:4), x(k + 1:4))) / m(k, k)
-    end do
-    ok = all(ieee_is_finite(x))
+    real(dp) :: b(4, 4), xm(4, 4)
+    b = 0.0_dp
+    b(:, 1) = rhs
+    call solve4m(a, b, xm, ok)
+    x = xm(:, 1)
   end subroutine solve4
 
   !> Solve a x = rhs for four right-hand sides (columns), Gaussian elimination with partial pivoting.
