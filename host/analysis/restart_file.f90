@@ -14,13 +14,14 @@ module restart_file
   use model_types, only: model_t
   use analysis_core, only: elem_state_t
   use step_control, only: step_control_t
+  use run_summary, only: run_summary_t
   implicit none
   private
   public :: restart_state_t, restart_write, restart_read, restart_checksum, restart_magic, restart_version
 
   character(len=8), parameter :: restart_magic = 'LDFCZRST'  !< first 8 bytes of a restart file
   character(len=8), parameter :: end_magic = 'LDFCZEND'      !< last 8 bytes
-  integer, parameter :: restart_version = 1                  !< format version
+  integer, parameter :: restart_version = 2                  !< format version
 
   !> The solver state at the end of a converged increment (element states are passed separately).
   type :: restart_state_t
@@ -42,11 +43,7 @@ module restart_file
     real(dp), allocatable :: u_conv(:), u_start(:), fint(:), rf_old(:), bc_val(:)
     logical, allocatable :: bc_on(:), bc_init(:)
     integer, allocatable :: bc_amp(:)
-    ! summary counters and accumulators
-    integer :: increments = 0, attempts = 0, cutbacks = 0, iterations = 0, factorizations = 0
-    integer :: krylov_solves = 0, krylov_iterations = 0, krylov_failures = 0, reused_solves = 0
-    integer :: accuracy_cutbacks = 0
-    real(dp) :: w_ext = 0.0_dp, max_open_ratio = 0.0_dp, max_statev_inc = 0.0_dp
+    type(run_summary_t) :: summary       !< summary counters and accumulators (factorizations: the whole run's)
     ! VTU frames
     integer :: nframe = 0                !< frames written (JOB_0001.vtu ...)
     real(dp), allocatable :: frame_times(:) !< (nframe) total time of each frame (JOB.pvd)
@@ -235,9 +232,7 @@ contains
       if (ios == 0) call write_mat(elems(ie)%statev)
       if (ios == 0) call write_mat(elems(ie)%eip)
     end do
-    if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%increments, rs%attempts, rs%cutbacks, rs%iterations, &
-      rs%factorizations, rs%krylov_solves, rs%krylov_iterations, rs%krylov_failures, rs%reused_solves, &
-      rs%accuracy_cutbacks, rs%w_ext, rs%max_open_ratio, rs%max_statev_inc
+    if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%summary
     nfr = 0
     if (allocated(rs%frame_times)) nfr = size(rs%frame_times)
     if (ios == 0 .and. nfr > 0) write (u, iostat=ios, iomsg=iom) nfr, rs%frame_times, end_magic
@@ -362,9 +357,7 @@ contains
         return
       end if
     end do
-    if (ios == 0) read (u, iostat=ios) rs%increments, rs%attempts, rs%cutbacks, rs%iterations, rs%factorizations, &
-      rs%krylov_solves, rs%krylov_iterations, rs%krylov_failures, rs%reused_solves, rs%accuracy_cutbacks, &
-      rs%w_ext, rs%max_open_ratio, rs%max_statev_inc
+    if (ios == 0) read (u, iostat=ios) rs%summary
     if (ios == 0) read (u, iostat=ios) rs%nframe
     if (ios == 0 .and. (rs%nframe < 0 .or. rs%nframe > 100000000)) ios = -1
     if (ios == 0) then

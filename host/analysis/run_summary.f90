@@ -10,7 +10,7 @@ module run_summary
   use solver_options, only: newton_full, newton_mode_name
   implicit none
   private
-  public :: run_summary_t, run_summary_collect, run_summary_write, peak_memory_kb
+  public :: run_summary_t, run_summary_collect, run_summary_write, run_summary_continue, peak_memory_kb
   public :: cohesive_ratio, statev_increment
 
   !> Counters and measures of a run (printed in the closing summary).
@@ -30,6 +30,25 @@ module run_summary
   end type run_summary_t
 
 contains
+
+  !> A run continued from a restart file: the counters and accumulators of the earlier run go on (the
+  !> factorization count is carried separately by the caller); times, sizes and options stay this run's.
+  pure subroutine run_summary_continue(summary, saved)
+    type(run_summary_t), intent(inout) :: summary  !< this run's summary
+    type(run_summary_t), intent(in) :: saved       !< the summary stored with the restart point
+    summary%increments = saved%increments
+    summary%attempts = saved%attempts
+    summary%cutbacks = saved%cutbacks
+    summary%iterations = saved%iterations
+    summary%krylov_solves = saved%krylov_solves
+    summary%krylov_iterations = saved%krylov_iterations
+    summary%krylov_failures = saved%krylov_failures
+    summary%reused_solves = saved%reused_solves
+    summary%accuracy_cutbacks = saved%accuracy_cutbacks
+    summary%w_ext = saved%w_ext
+    summary%max_open_ratio = saved%max_open_ratio
+    summary%max_statev_inc = saved%max_statev_inc
+  end subroutine run_summary_continue
 
   !> End of the run: internal energy of the converged states and the solver's times and factorization count
   !> (those of an earlier run continued by restart in fact_offset; the times are of this run only).

@@ -14,7 +14,7 @@ module static_step
   use restart_file, only: restart_state_t, restart_write, restart_read, restart_checksum
   use user_routines, only: user_routines_t
   use solver_options, only: solver_options_t, exit_input, exit_no_convergence, newton_mode_name
-  use run_summary, only: run_summary_t, cohesive_ratio, statev_increment
+  use run_summary, only: run_summary_t, run_summary_continue, cohesive_ratio, statev_increment
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
   use field_frame, only: write_field_frame
   use stop_report, only: stop_message
@@ -362,19 +362,8 @@ contains
       last_frame_inc = rs%last_frame_inc
       ns%reuse_count = rs%reuse_count
       csv_rows = rs%csv_rows
-      summary%increments = rs%increments
-      summary%attempts = rs%attempts
-      summary%cutbacks = rs%cutbacks
-      summary%iterations = rs%iterations
-      fact_offset = rs%factorizations
-      summary%krylov_solves = rs%krylov_solves
-      summary%krylov_iterations = rs%krylov_iterations
-      summary%krylov_failures = rs%krylov_failures
-      summary%reused_solves = rs%reused_solves
-      summary%accuracy_cutbacks = rs%accuracy_cutbacks
-      summary%w_ext = rs%w_ext
-      summary%max_open_ratio = rs%max_open_ratio
-      summary%max_statev_inc = rs%max_statev_inc
+      fact_offset = rs%summary%factorizations
+      call run_summary_continue(summary, rs%summary)
       call output_frames_resume(out, rs%frame_times)
       is_first = rs%step
       if (rs%sc%t >= rs%sc%period) then
@@ -420,20 +409,9 @@ contains
       w%bc_on = bc_on
       w%bc_init = bc_init
       w%bc_amp = bc_amp
-      w%increments = summary%increments
-      w%attempts = summary%attempts
-      w%cutbacks = summary%cutbacks
-      w%iterations = summary%iterations
-      w%factorizations = fact_offset + an%n_factor_done
-      if (an%sys_ready) w%factorizations = w%factorizations + sparse_factor_count(an%sys)
-      w%krylov_solves = summary%krylov_solves
-      w%krylov_iterations = summary%krylov_iterations
-      w%krylov_failures = summary%krylov_failures
-      w%reused_solves = summary%reused_solves
-      w%accuracy_cutbacks = summary%accuracy_cutbacks
-      w%w_ext = summary%w_ext
-      w%max_open_ratio = summary%max_open_ratio
-      w%max_statev_inc = summary%max_statev_inc
+      w%summary = summary
+      w%summary%factorizations = fact_offset + an%n_factor_done
+      if (an%sys_ready) w%summary%factorizations = w%summary%factorizations + sparse_factor_count(an%sys)
       if (allocated(out%frame_times)) then
         w%frame_times = out%frame_times(1:out%nframe)
       else
