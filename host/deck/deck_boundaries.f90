@@ -6,7 +6,7 @@ module deck_boundaries
   use model_types, only: amplitude_t, boundary_t, model_find_nset, model_find_amplitude
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
-    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
   implicit none
   private
   public :: read_amplitude, read_boundary
@@ -25,21 +25,9 @@ contains
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
-    v = deck_normalize(deck_param_value(ctx%params, 'DEFINITION'))
-    if (len(v) > 0 .and. v /= 'TABULAR') then
-      call ctx_fail(ctx, ir, 'only DEFINITION=TABULAR is supported')
-      return
-    end if
-    v = deck_normalize(deck_param_value(ctx%params, 'TIME'))
-    if (len(v) > 0 .and. v /= 'STEP TIME') then
-      call ctx_fail(ctx, ir, 'only TIME=STEP TIME is supported')
-      return
-    end if
-    v = deck_normalize(deck_param_value(ctx%params, 'VALUE'))
-    if (len(v) > 0 .and. v /= 'RELATIVE') then
-      call ctx_fail(ctx, ir, 'only VALUE=RELATIVE is supported')
-      return
-    end if
+    if (.not. ctx_only_value(ctx, ir, 'DEFINITION', 'TABULAR')) return
+    if (.not. ctx_only_value(ctx, ir, 'TIME', 'STEP TIME')) return
+    if (.not. ctx_only_value(ctx, ir, 'VALUE', 'RELATIVE')) return
     if (ctx%model%namp == size(ctx%model%amplitudes)) then
       allocate (tmp(2 * size(ctx%model%amplitudes)))
       tmp(1:ctx%model%namp) = ctx%model%amplitudes(1:ctx%model%namp)
@@ -86,11 +74,7 @@ contains
     if (ctx%stat /= 0) return
     ir = ctx%ir
     istep = ctx%istep
-    v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
-    if (len(v) > 0 .and. v /= 'DISPLACEMENT') then
-      call ctx_fail(ctx, ir, 'only TYPE=DISPLACEMENT is supported')
-      return
-    end if
+    if (.not. ctx_only_value(ctx, ir, 'TYPE', 'DISPLACEMENT')) return
     v = deck_normalize(deck_param_value(ctx%params, 'OP'))
     if (len(v) > 0 .and. v /= 'MOD' .and. v /= 'NEW') then
       call ctx_fail(ctx, ir, 'OP must be MOD or NEW')

@@ -5,14 +5,14 @@ module deck_context
   use ldfcz_kinds, only: dp
   use, intrinsic :: iso_fortran_env, only: error_unit
   use deck_lines, only: deck_source_t, deck_param_t, deck_split_fields, deck_parse_real, deck_parse_int, deck_where, &
-    deck_param_value, deck_has_param
+    deck_param_value, deck_has_param, deck_normalize
   use model_types, only: model_t, source_pos_t
   use deck_lists, only: itoa
   implicit none
   private
   public :: deck_context_t, flen
   public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos
-  public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int
+  public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
   public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
 
   integer, parameter :: flen = 256  !< longest data field
@@ -50,6 +50,25 @@ contains
     pos%line = ctx%src%rec(irec)%line
     pos%keyword = ctx%kw
   end function ctx_pos
+
+  !> A parameter that ldfcz supports with one value only: true when it is absent or has that value; otherwise
+  !> an error 'only NAME=VALUE is supported' (plus note) at record irec.
+  logical function ctx_only_value(ctx, irec, name, value, note) result(ok)
+    type(deck_context_t), intent(inout) :: ctx      !< reader state
+    integer, intent(in) :: irec                     !< record index of the keyword line
+    character(len=*), intent(in) :: name            !< parameter name (upper case)
+    character(len=*), intent(in) :: value           !< the supported value (normalised form)
+    character(len=*), intent(in), optional :: note  !< appended to the message
+    character(len=:), allocatable :: v
+    v = deck_normalize(deck_param_value(ctx%params, name))
+    ok = len(v) == 0 .or. v == value
+    if (ok) return
+    if (present(note)) then
+      call ctx_fail(ctx, irec, 'only '//name//'='//value//' is supported'//note)
+    else
+      call ctx_fail(ctx, irec, 'only '//name//'='//value//' is supported')
+    end if
+  end function ctx_only_value
 
   !> Error at record irec under the current keyword.
   subroutine ctx_fail(ctx, irec, msg)

@@ -4,7 +4,7 @@ module deck_steps
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: step_t, node_print_t, model_find_nset
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_warn, ctx_pos, ctx_allow_params, ctx_need_step, &
-    ctx_required, ctx_param_int, ctx_split, ctx_get_real, ctx_get_int
+    ctx_required, ctx_param_int, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
   implicit none
   private
   public :: read_step, read_static, read_controls, read_restart, read_output, read_node_print
@@ -68,11 +68,7 @@ contains
       call ctx_fail(ctx, ir, 'INC must be positive')
       return
     end if
-    v = deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE'))
-    if (len(v) > 0 .and. v /= 'RAMP') then
-      call ctx_fail(ctx, ir, 'only AMPLITUDE=RAMP is supported in static steps')
-      return
-    end if
+    if (.not. ctx_only_value(ctx, ir, 'AMPLITUDE', 'RAMP', ' in static steps')) return
     v = deck_normalize(deck_param_value(ctx%params, 'EXTRAPOLATION'))
     if (len(v) > 0 .and. v /= 'NO') call ctx_warn(ctx, ir, 'EXTRAPOLATION='//v//' ignored: ldfcz never extrapolates')
     v = deck_normalize(deck_param_value(ctx%params, 'UNSYMM'))
