@@ -96,6 +96,9 @@ if(EXISTS "${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp")
 endif()
 ldfcz_add_perf_test(deck_newton_modes ${LDFCZ_DECKS}/single/cohesive_block.inp newton_modes)
 ldfcz_add_perf_test(deck_opening_control ${LDFCZ_DECKS}/single/cohesive_block.inp opening_control)
+# *STEP, EXTRAPOLATION=LINEAR (the default) against NO: exact start on a linear ramp, same answers when nonlinear
+ldfcz_add_perf_test(deck_extrapolation_linear ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp extrapolation_linear)
+ldfcz_add_perf_test(deck_extrapolation ${LDFCZ_DECKS}/single/cohesive_block.inp extrapolation)
 
 # restart from the last converged increment (docs/host.md, "Restart"; tests/regression/check_restart.py): the run
 # interrupted (--stop-after-increments or SIGKILL) and restarted with --restart-from must give the uninterrupted run's

@@ -234,9 +234,10 @@ def build(p):
         if not three_d:
             w('1.0')
     w('*MATERIAL, NAME=PET')
-    w('*USER MATERIAL, CONSTANTS=10, UNSYMM')
-    w(', '.join('%.9g' % v for v in PET_TABLE1[:8]))
-    w(', '.join('%.9g' % v for v in PET_TABLE1[8:]))
+    pet = list(PET_TABLE1) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
+    w('*USER MATERIAL, CONSTANTS=%d, UNSYMM' % len(pet))
+    w(', '.join('%.9g' % v for v in pet[:8]))
+    w(', '.join('%.9g' % v for v in pet[8:]))
     w('*DEPVAR')
     w('%d' % LEONOV_NSTATV)
     if not p.rigid_substrate:
@@ -291,6 +292,8 @@ def parser():
                    help='3D: modelled width b = half the specimen width (mm), default 0.040')
     g.add_argument('--full-width', action='store_true',
                    help='3D: model y in [-b, b] without the YSYMM plane (checks the quarter model; 2 n_y elements)')
+    g.add_argument('--dgamma-max', type=float, default=0.0,
+                   help='PET accuracy bound on the plastic strain increment, PROPS(11); 0 = UMAT default 0.05')
     g = ap.add_argument_group('interface (LDF, docs/uel.md)')
     g.add_argument('--phi', type=float, default=0.2, help='work of separation (N/mm), default 0.2 (200 J/m^2)')
     g.add_argument('--tmax', type=float, default=20.0, help='T_max (MPa), default 20; delta = phi/(e T_max)')

@@ -25,7 +25,7 @@
 module leonov
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
-  use leonov_parameters, only: leonov_props, leonov_dgamma_max
+  use leonov_parameters, only: leonov_props
   implicit none
   private
   public :: leonov_state, leonov_update, leonov_elastic_tangent
@@ -35,7 +35,7 @@ module leonov
   public :: voigt_i, voigt_j
 
   integer, parameter :: leonov_ok = 0              !< converged, increment accurate
-  integer, parameter :: leonov_step_too_large = 1  !< converged and valid, but dgamma > leonov_dgamma_max
+  integer, parameter :: leonov_step_too_large = 1  !< converged and valid, but dgamma > p%dgamma_max
   integer, parameter :: leonov_no_convergence = 2  !< local Newton failed: outputs are the old state
   integer, parameter :: leonov_bad_input = 3       !< det F <= 0, non-finite or absurd F or state: old state kept
 
@@ -740,7 +740,7 @@ contains
   end function leonov_elastic_tangent
 
   !> One increment of the compressible Leonov model.
-  !> stat: leonov_ok; leonov_step_too_large (results valid, dgamma > leonov_dgamma_max: ask for a smaller step);
+  !> stat: leonov_ok; leonov_step_too_large (results valid, dgamma > p%dgamma_max: ask for a smaller step);
   !> leonov_no_convergence or leonov_bad_input (new = old, sigma = 0, ddsdde elastic: the caller must cut back).
   !> step_factor: suggested ratio of the next to the present time increment (< 1 on any trouble).
   pure subroutine leonov_update(p, f0, f1, dt, old, new, sigma, stat, step_factor, ddsdde, perturbation_tangent)
@@ -778,11 +778,11 @@ contains
     end if
     j1 = det3(f1)
     sigma = tau_k / j1
-    if (new%dgamma > leonov_dgamma_max) then
+    if (new%dgamma > p%dgamma_max) then
       stat = leonov_step_too_large
-      step_factor = max(0.1_dp, 0.9_dp * leonov_dgamma_max / new%dgamma)
+      step_factor = max(0.1_dp, 0.9_dp * p%dgamma_max / new%dgamma)
     else
-      step_factor = min(1.5_dp, max(1.0_dp, 0.9_dp * leonov_dgamma_max / max(new%dgamma, tiny(1.0_dp))))
+      step_factor = min(1.5_dp, max(1.0_dp, 0.9_dp * p%dgamma_max / max(new%dgamma, tiny(1.0_dp))))
     end if
     if (.not. (present(ddsdde) .and. perturb)) return
     do k = 1, 6

@@ -1,6 +1,7 @@
 !> Material properties of the compressible Leonov model (paper section 6, Table 1) and their validation.
 !>
-!> PROPS order (fixed, Table 1 order): E, nu, S_a, eta_0r (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2.
+!> PROPS order (fixed, Table 1 order): E, nu, S_a, eta_0r (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2;
+!> optional PROPS(11): the accuracy bound dgamma_max on the equivalent plastic strain increment (default 0.05).
 !> Derived: shear modulus G = E/(2(1+nu)) and bulk modulus kappa = E/(3(1-2nu)) (Eq. 33).
 module leonov_parameters
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -8,12 +9,14 @@ module leonov_parameters
   implicit none
   private
   public :: leonov_props, leonov_props_from_array, leonov_props_table1
-  public :: leonov_nprops, leonov_nstatv, leonov_dgamma_max
+  public :: leonov_nprops, leonov_nprops_max, leonov_nstatv, leonov_dgamma_max
 
-  integer, parameter :: leonov_nprops = 10   !< number of PROPS the model reads
+  integer, parameter :: leonov_nprops = 10   !< number of PROPS the model needs (Table 1)
+  integer, parameter :: leonov_nprops_max = 11  !< with the optional accuracy bound PROPS(11)
   integer, parameter :: leonov_nstatv = 11   !< minimum number of state variables (see docs/umat.md)
-  !> Largest equivalent plastic strain increment accepted for accuracy; above it the adapters ask for a
-  !> smaller increment (PNEWDT < 1). The step-size study (reports/umat/step_study.md) shows the error it allows.
+  !> Default largest equivalent plastic strain increment accepted for accuracy; above it the adapters ask for a
+  !> smaller increment (PNEWDT < 1). The step-size study (reports/umat/step_study.md) shows the error it allows;
+  !> PROPS(11) overrides it (the peel study `plastic-bound` measures the structural error of larger bounds).
   real(dp), parameter :: leonov_dgamma_max = 0.05_dp
 
   !> Properties of the compressible Leonov model.
@@ -30,10 +33,11 @@ module leonov_parameters
     real(dp) :: r2 = 0.0_dp       !< softening parameter r2 (-), Eq. 42
     real(dp) :: g = 0.0_dp        !< shear modulus G = E/(2(1+nu)) (MPa), Eq. 33
     real(dp) :: kappa = 0.0_dp    !< bulk modulus kappa = E/(3(1-2nu)) (MPa), Eq. 33
+    real(dp) :: dgamma_max = leonov_dgamma_max  !< accuracy bound on the plastic strain increment, PROPS(11)
   end type leonov_props
 
-  character(len=*), parameter :: names(leonov_nprops) = [character(len=6) :: &
-    'E', 'nu', 'S_a', 'eta_0r', 'tau_0', 'mu', 'G_r', 'r0', 'r1', 'r2']
+  character(len=*), parameter :: names(leonov_nprops_max) = [character(len=10) :: &
+    'E', 'nu', 'S_a', 'eta_0r', 'tau_0', 'mu', 'G_r', 'r0', 'r1', 'r2', 'dgamma_max']
 
 contains
 
@@ -59,7 +63,7 @@ contains
       write (errmsg, '(a,i0,a,i0)') 'the Leonov model needs NPROPS = ', leonov_nprops, ' properties, got ', size(props)
       return
     end if
-    do i = 1, leonov_nprops
+    do i = 1, min(size(props), leonov_nprops_max)
       if (.not. ieee_is_finite(props(i))) then
         stat = 1
         write (errmsg, '(a,a,a,i0,a)') 'property ', trim(names(i)), ' (PROPS(', i, ')) is not a finite number'
@@ -76,6 +80,7 @@ contains
     p%r0 = props(8)
     p%r1 = props(9)
     p%r2 = props(10)
+    if (size(props) >= leonov_nprops_max) p%dgamma_max = props(11)
     if (p%e <= 0.0_dp) then
       call bad(props, 1, 'must be > 0', stat, errmsg)
     else if (p%nu <= -1.0_dp .or. p%nu >= 0.5_dp) then
@@ -90,6 +95,8 @@ contains
       call bad(props, 8, 'must be > 0', stat, errmsg)
     else if (p%r1 <= 0.0_dp) then
       call bad(props, 9, 'must be > 0', stat, errmsg)
+    else if (p%dgamma_max <= 0.0_dp) then
+      call bad(props, 11, 'must be > 0 (the accuracy bound on the plastic strain increment)', stat, errmsg)
     end if
     if (stat /= 0) return
     p%g = p%e / (2.0_dp * (1.0_dp + p%nu))

@@ -4,7 +4,9 @@
 !     the pure core (module leonov), packs STRESS, STATEV, DDSDDE.
 !
 !     PROPS (NPROPS = 10, Table 1 order): E (MPa), nu, S_a, eta_0r
-!       (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2.
+!       (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2; optional
+!       PROPS(11) (NPROPS = 11): accuracy bound dgamma_max on the
+!       plastic strain increment (default 0.05, see PNEWDT below).
 !     STATEV (NSTATV >= 11; all zero = virgin state):
 !       1-6  Be~ - I, order 11,22,33,12,13,23, spatial frame of the
 !            current configuration (pushed forward with
@@ -25,13 +27,15 @@
 !     PNEWDT (written only to request a cutback): 0.25 if the local
 !       Newton fails or DFGRD1/STATEV are unusable (STRESS, STATEV
 !       then unchanged, DDSDDE isotropic elastic); < 1 when
-!       dgamma_p > 0.05 in the increment. Reentrant: no SAVE/COMMON.
+!       dgamma_p > dgamma_max in the increment. Reentrant: no SAVE
+!       or COMMON.
       SUBROUTINE UMAT(STRESS,STATEV,DDSDDE,SSE,SPD,SCD,RPL,DDSDDT,
      1 DRPLDE,DRPLDT,STRAN,DSTRAN,TIME,DTIME,TEMP,DTEMP,PREDEF,DPRED,
      2 CMNAME,NDI,NSHR,NTENS,NSTATV,PROPS,NPROPS,COORDS,DROT,PNEWDT,
      3 CELENT,DFGRD0,DFGRD1,NOEL,NPT,LAYER,KSPT,JSTEP,KINC)
       USE LEONOV_PARAMETERS, ONLY: LEONOV_PROPS,
-     1 LEONOV_PROPS_FROM_ARRAY, LEONOV_NPROPS, LEONOV_NSTATV
+     1 LEONOV_PROPS_FROM_ARRAY, LEONOV_NPROPS, LEONOV_NPROPS_MAX,
+     2 LEONOV_NSTATV
       USE LEONOV, ONLY: LEONOV_STATE, LEONOV_UPDATE,
      1 LEONOV_STATE_FROM_STATEV, LEONOV_STATE_TO_STATEV, LEONOV_OK,
      2 LEONOV_STEP_TOO_LARGE, LEONOV_ELASTIC_TANGENT
@@ -78,8 +82,8 @@
      2   //' NDI = ', NDI, ', NSHR = ', NSHR, ' (plane stress?)'
         GO TO 900
       END IF
-      CALL LEONOV_PROPS_FROM_ARRAY(PROPS(1:LEONOV_NPROPS), PR, ISTAT,
-     1 MSG)
+      CALL LEONOV_PROPS_FROM_ARRAY(PROPS(1:MIN(NPROPS,
+     1 LEONOV_NPROPS_MAX)), PR, ISTAT, MSG)
       IF (ISTAT .NE. 0) THEN
         MSG = 'UMAT (Leonov): '//TRIM(MSG)
         GO TO 900

@@ -4,7 +4,7 @@
 !> Format: unformatted stream (native byte order), in this order: magic 'LDFCZRST', format version, the model
 !> fingerprint (nodes, elements, dofs, checksum of the model's numbers: restart_checksum), the position (step,
 !> increment, counters, times, increment control), the dof arrays (u_conv, u_start, fint, rf_old, the boundary
-!> tables), per element the converged ENERGY, SVARS, stress, strain, STATEV and energy densities (each array
+!> tables, the last converged increment's displacement change and its size for the extrapolation), per element the converged ENERGY, SVARS, stress, strain, STATEV and energy densities (each array
 !> preceded by its shape), the summary counters, the VTU frame times, and the end marker 'LDFCZEND' (a truncated
 !> file is refused). Written to JOB.rst.tmp, flushed, closed and renamed over JOB.rst (rename(2) is atomic): a kill
 !> at any moment leaves the previous or the new restart file, never a partial one.
@@ -21,7 +21,7 @@ module restart_file
 
   character(len=8), parameter :: restart_magic = 'LDFCZRST'  !< first 8 bytes of a restart file
   character(len=8), parameter :: end_magic = 'LDFCZEND'      !< last 8 bytes
-  integer, parameter :: restart_version = 2                  !< format version
+  integer, parameter :: restart_version = 3                  !< format version
 
   !> The solver state at the end of a converged increment (element states are passed separately).
   type :: restart_state_t
@@ -41,6 +41,8 @@ module restart_file
     type(step_control_t) :: sc           !< increment control (time, next increment, growth state)
     ! dofs
     real(dp), allocatable :: u_conv(:), u_start(:), fint(:), rf_old(:), bc_val(:)
+    real(dp), allocatable :: du_prev(:)  !< displacement change of the last converged increment (extrapolation)
+    real(dp) :: dt_prev = 0.0_dp         !< its size (0: no extrapolation for the next increment)
     logical, allocatable :: bc_on(:), bc_init(:)
     integer, allocatable :: bc_amp(:)
     type(run_summary_t) :: summary       !< summary counters and accumulators (factorizations: the whole run's)
@@ -222,7 +224,7 @@ contains
     if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%sc%period, rs%sc%dt_min, rs%sc%dt_max, merge(1, 0, rs%sc%direct), &
       rs%sc%easy_iterations, rs%sc%t, rs%sc%dt, rs%sc%easy_count, rs%sc%cutbacks, rs%sc%total_cutbacks
     if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%u_conv, rs%u_start, rs%fint, rs%rf_old, rs%bc_val, &
-      merge(1, 0, rs%bc_on), merge(1, 0, rs%bc_init), rs%bc_amp
+      merge(1, 0, rs%bc_on), merge(1, 0, rs%bc_init), rs%bc_amp, rs%du_prev, rs%dt_prev
     do ie = 1, size(elems)
       if (ios /= 0) exit
       write (u, iostat=ios, iomsg=iom) elems(ie)%energy
@@ -335,8 +337,9 @@ contains
     rs%sc%direct = idirect == 1
     n = rs%ndof
     allocate (rs%u_conv(n), rs%u_start(n), rs%fint(n), rs%rf_old(n), rs%bc_val(n), rs%bc_on(n), rs%bc_init(n), &
-      rs%bc_amp(n), ibuf(2 * n))
-    if (ios == 0) read (u, iostat=ios) rs%u_conv, rs%u_start, rs%fint, rs%rf_old, rs%bc_val, ibuf, rs%bc_amp
+      rs%bc_amp(n), rs%du_prev(n), ibuf(2 * n))
+    if (ios == 0) read (u, iostat=ios) rs%u_conv, rs%u_start, rs%fint, rs%rf_old, rs%bc_val, ibuf, rs%bc_amp, &
+      rs%du_prev, rs%dt_prev
     if (ios == 0) then
       rs%bc_on = ibuf(1:n) == 1
       rs%bc_init = ibuf(n + 1:2 * n) == 1

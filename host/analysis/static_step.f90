@@ -25,6 +25,7 @@ module static_step
 
   integer, parameter :: max_cutbacks = 5        !< Abaqus I_A: attempts per increment
   real(dp), parameter :: opening_target = 0.8_dp        !< next increment aims at this fraction of the bound
+  integer, parameter :: extrapolated_attempts = 2       !< attempts of an increment that start extrapolated
 
 contains
 
@@ -46,8 +47,8 @@ contains
     character(len=96), allocatable :: colnames(:)
     integer, allocatable :: col_set(:), col_var(:), bc_amp(:)
     logical, allocatable :: bc_on(:), bc_init(:)
-    real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:)
-    real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_now, t_end, next_mark
+    real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:), du_prev(:)
+    real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_now, t_end, next_mark, dt_prev
     real(dp) :: open_inc, plastic_inc
     integer(i8) :: c1, rate, cs0
     type(step_control_t) :: sc
@@ -140,7 +141,9 @@ contains
     summarize = .true.
 
     allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
-    allocate (rf_old(an%ndof))
+    allocate (rf_old(an%ndof), du_prev(an%ndof))
+    du_prev = 0.0_dp
+    dt_prev = 0.0_dp
     bc_on = .false.
     bc_init = .false.
     bc_val = 0.0_dp
@@ -196,6 +199,7 @@ contains
             ', NLGEOM '//merge('YES', 'NO ', st%nlgeom)//', '//itoa(an%neq)//' equations')
           call step_control_init(sc, st%dt_initial, st%period, st%dt_min, st%dt_max, st%direct)
           kinc = 0
+          dt_prev = 0.0_dp  ! Abaqus: no extrapolation into the first increment of a step
           q_sum = 0.0_dp
           next_mark = st%period / max(1, st%field_intervals)
           last_frame_inc = -1
@@ -218,6 +222,11 @@ contains
             t_end = sc%t + dt
             ! prescribed displacements at the end of the increment, applied at its start
             an%u = an%u_conv
+            if (st%extrapolate .and. dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts) then
+              ! *STEP, EXTRAPOLATION=LINEAR (Abaqus' default): the free dofs start from the last converged
+              ! increment's change scaled to this increment; a failed start is retried once, then from u_conv
+              where (.not. an%prescribed) an%u = an%u_conv + (dt / dt_prev) * du_prev
+            end if
             do i = 1, an%ndof
               if (an%prescribed(i)) an%u(i) = prescribed_value(i, t_end)
             end do
@@ -289,6 +298,8 @@ contains
           elsewhere
             rf_old = 0.0_dp
           end where
+          du_prev = an%u - an%u_conv
+          dt_prev = dt
           call analysis_commit(an)
           call step_control_converged(sc, dt, iter, pnewdt_min)
           if (open_inc > 0.0_dp .and. .not. st%direct) then
@@ -353,6 +364,8 @@ contains
       an%trial = an%conv
       u_start = rs%u_start
       rf_old = rs%rf_old
+      du_prev = rs%du_prev
+      dt_prev = rs%dt_prev
       bc_val = rs%bc_val
       bc_on = rs%bc_on
       bc_init = rs%bc_init
@@ -405,6 +418,8 @@ contains
       w%u_start = u_start
       w%fint = an%fint
       w%rf_old = rf_old
+      w%du_prev = du_prev
+      w%dt_prev = dt_prev
       w%bc_val = bc_val
       w%bc_on = bc_on
       w%bc_init = bc_init

@@ -70,7 +70,18 @@ contains
     end if
     if (.not. ctx_only_value(ctx, ir, 'AMPLITUDE', 'RAMP', ' in static steps')) return
     v = deck_normalize(deck_param_value(ctx%params, 'EXTRAPOLATION'))
-    if (len(v) > 0 .and. v /= 'NO') call ctx_warn(ctx, ir, 'EXTRAPOLATION='//v//' ignored: ldfcz never extrapolates')
+    select case (v)
+    case ('', 'LINEAR')
+      ctx%model%steps(istep)%extrapolate = .true.
+    case ('NO')
+      ctx%model%steps(istep)%extrapolate = .false.
+    case ('PARABOLIC')
+      ctx%model%steps(istep)%extrapolate = .true.
+      call ctx_warn(ctx, ir, 'EXTRAPOLATION=PARABOLIC: ldfcz extrapolates linearly')
+    case default
+      call ctx_fail(ctx, ir, 'EXTRAPOLATION must be LINEAR, PARABOLIC or NO')
+      return
+    end select
     v = deck_normalize(deck_param_value(ctx%params, 'UNSYMM'))
     if (v == 'YES' .or. v == '') then
       ctx%model%steps(istep)%unsymm = deck_has_param(ctx%params, 'UNSYMM')

@@ -108,6 +108,7 @@ module model_types
     real(dp) :: dt_min = 1.0e-5_dp
     real(dp) :: dt_max = 1.0_dp
     logical :: direct = .false.            !< *STATIC, DIRECT: fixed increments
+    logical :: extrapolate = .true.        !< *STEP, EXTRAPOLATION=LINEAR (Abaqus' default) or NO
     logical :: unsymm = .false.            !< *STEP, UNSYMM=YES: unsymmetric solver
     logical :: op_new = .false.            !< a *BOUNDARY, OP=NEW in this step removes inherited boundaries
     integer :: max_iter = 16               !< *CONTROLS, PARAMETERS=TIME INCREMENTATION: I_A (here the iteration cap)
