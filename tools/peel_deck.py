@@ -255,7 +255,7 @@ def build(p):
     info.update({'period_s': period, 'dt_s': dt, 'increments': ninc})
     # INC only caps runaway runs: the UMAT cuts increments to keep the plastic strain increment below 0.05, which
     # on fine meshes means increments far below --du (about 0.05 um at l_e = 2.5 um)
-    w('*STEP, NLGEOM=YES, INC=%d' % (50 * ninc + 1000))
+    w('*STEP, NLGEOM=YES, INC=%d%s' % (50 * ninc + 1000, ', EXTRAPOLATION=NO' if p.no_extrapolation else ''))
     w('pull the flap end: u_x = %g mm at %g mm/s with %g mm per increment' % (p.u_total, p.rate, p.du))
     w('*STATIC')
     w('%.9g, %.9g, %.9g, %.9g' % (dt, period, dt * p.dt_min_ratio, dt))
@@ -319,6 +319,8 @@ def parser():
     g.add_argument('--du', type=float, default=0.0003,
                    help='pull per increment (mm/inc), default 0.0003; the UMAT cuts back where it needs to')
     g.add_argument('--rate', type=float, default=0.001, help='pull rate (mm/s), default 0.001 (1 um/s)')
+    g.add_argument('--no-extrapolation', action='store_true',
+                   help='*STEP, EXTRAPOLATION=NO: every increment starts from the converged state (default: linear)')
     g.add_argument('--dt-min-ratio', type=float, default=1e-3, help='minimum increment / initial, default 1e-3')
     g.add_argument('--field-frequency', type=int, default=20, help='*OUTPUT, FIELD frequency, default 20')
     ap.add_argument('-o', '--output', default='-', help='deck file (default: standard output)')

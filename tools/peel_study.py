@@ -52,6 +52,21 @@ def studies(quick):
     # requested pull per increment (the UMAT's PNEWDT cuts it where the plastic strain increment exceeds 0.05)
     dus = [0.005, 0.002, 0.001, 0.0005, 0.0003, 0.0001, 0.00005] if not quick else [0.0005, 0.0003]
     s['increment'] = [('du=%g um' % (du * 1e3), DEFAULT_PS + ['--du', str(du)], du == dus[-1]) for du in dus]
+    # the PET model's accuracy bound PROPS(11) on the plastic strain increment (the UMAT's PNEWDT threshold) at the
+    # section 8 discretisation through the thickness (l_e = 2 um, n_z = 3), plane strain, up to 1 um/inc; the
+    # reference: the default bound 0.05 at 0.1 um/inc
+    psb = DEFAULT_PS + ['--le', '0.002', '--nz', '3', '--fine-length', '0.07', '--bonded', '0.15', '--u-total', '0.06']
+    gms = [0.05, 0.2, 1.0] if quick else [0.05, 0.1, 0.2, 0.5, 1.0]
+    s['plastic-bound'] = [('reference: 0.05, 0.1 um/inc', psb + ['--du', '0.0001'], True,
+                           ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', '0.05'])]
+    s['plastic-bound'] += [('dgamma_max=%g' % g, psb + ['--du', '0.001', '--dgamma-max', str(g)], False,
+                            ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', str(g)])
+                           for g in gms]
+    # the same without the linear extrapolation of the increment start (*STEP, EXTRAPOLATION=NO)
+    s['plastic-bound'] += [('dgamma_max=%g, no extrapolation' % g, psb + ['--du', '0.001', '--dgamma-max', str(g),
+                                                                         '--no-extrapolation'], False,
+                            ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', str(g)])
+                           for g in (0.05, 1.0)]
     s['simplifications'] = [
         ('full: steel, uniform mesh', ['--no-coarse'], True),
         ('steel, coarse far field', [], False),
@@ -83,23 +98,28 @@ def studies(quick):
                   for le, nz, ny in (((0.01, 3, 4), (0.005, 3, 8)) if quick else
                                      ((0.01, 3, 4), (0.005, 3, 8), (0.0025, 3, 10)))]
     # Section 8: 10 elements in y, 3 in z, l_e = 2 um (the paper's discretisation in the fine region), rigid
-    # substrate (0.01 % effect, docs/scenes.md), pull increment 0.3 um (the increment study: within 0.2 % of
-    # 0.1 um/inc; the UMAT and --max-opening-increment 0.33 cut it where needed), a shorter delamination length
-    # than the paper's 1.0 mm (the full run is many hours on 2 cores: docs/performance.md). --time-limit stops
-    # it and keeps what converged; the report extrapolates the measured cost per um of pull to 1.0 mm.
-    app_solver = ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', '0.05']
+    # substrate (0.01 % effect, docs/scenes.md). Increment settings (study app-settings: 0.4 % from the reference
+    # settings on the first 60 um of pull, 7.9x faster): up to 1 um of pull per increment, the opening increment
+    # bound delta/3 of paper section 7, the PET accuracy bound PROPS(11) = 1.0 (plastic strain increment), linear
+    # extrapolation (the default).
+    app_solver = ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', '1.0']
+    app_gen = DEFAULT_3D + ['--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.001', '--dgamma-max', '1.0']
+    s60 = ['--fine-length', '0.07', '--bonded', '0.15', '--u-total', '0.06', '--field-frequency', '25']
+    # the reference settings: the UMAT's default bound 0.05, 0.3 um/inc requested, no extrapolation
+    ref_solver = ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', '0.05']
+    ref_gen = DEFAULT_3D + ['--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.0003', '--no-extrapolation']
+    s['app-settings'] = [('reference settings', ref_gen + s60, True, ref_solver),
+                         ('application settings', app_gen + s60, False, app_solver)]
     if quick:
-        s['application'] = [('section 8 mesh, short', DEFAULT_3D + [
-            '--ny', '10', '--nz', '3', '--le', '0.002', '--fine-length', '0.02', '--bonded', '0.1',
-            '--u-total', '0.01', '--field-frequency', '10'], True, app_solver)]
+        s['application'] = [('section 8 mesh, short', app_gen + [
+            '--fine-length', '0.02', '--bonded', '0.1', '--u-total', '0.01', '--field-frequency', '10'], True,
+            app_solver)]
     else:
-        s['application'] = [('section 8 mesh', DEFAULT_3D + [
-            '--ny', '10', '--nz', '3', '--le', '0.002', '--fine-length', '0.07', '--bonded', '0.15',
-            '--u-total', '0.06', '--field-frequency', '25'], True, app_solver)]
-    # The paper's full application (1.0 mm of delamination, fine region over all of it), for the extrapolation.
-    s['_application_full'] = [('paper section 8, 1.0 mm', DEFAULT_3D + [
-        '--ny', '10', '--nz', '3', '--le', '0.002', '--fine-length', '1.05', '--bonded', '1.2',
-        '--u-total', '1.1'], True, app_solver)]
+        # the paper's application: fine region over 1.05 mm, pulled until more than 1.0 mm has delaminated (the
+        # front advances ~1.5 mm per mm of pull after the first 60 um: app-settings)
+        s['application'] = [('paper section 8', app_gen + [
+            '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72', '--field-frequency', '40'], True,
+            app_solver)]
     return s
 
 
@@ -359,16 +379,22 @@ def write_report(study, results, outdir):
         for r in results:
             for x, y in zip(*r['curve']):
                 wr.writerow([r['label'], '%.9g' % x, '%.9g' % y])
-    loads = [r.get('load_avg_start', 0.0) for r in results] + [r.get('load_avg_end', 0.0) for r in results]
+    loads = [r[k] for r in results for k in ('load_avg_start', 'load_avg_end') if k in r]
     solvers = sorted(set(r.get('solver', '') for r in results))
-    lines = ['# Study %s' % study, '',
-             'Generated by `tools/peel_study.py %s` on %s (%s, %d cores visible, `-t %d`; 1-min load average '
-             '%.1f-%.1f at the starts and ends of the runs, which include the runs themselves).' % (
-                 ' '.join(sys.argv[1:2] + [x for x in sys.argv[2:] if x in ('--quick',)]) or study,
-                 time.strftime('%Y-%m-%d %H:%M'), os.uname().nodename, os.cpu_count() or 1, THREADS[0],
-                 min(loads) if loads else 0.0, max(loads) if loads else 0.0),
-             '', 'Cores busy before each run (other jobs, 0-1): %s.' % ', '.join(
-                 '%.2f' % r.get('cpu_busy_before', 0.0) for r in results),
+    cmd = ' '.join(sys.argv[1:2] + [x for x in sys.argv[2:] if x in ('--quick',)]) or study
+    if loads:
+        head = ('Generated by `tools/peel_study.py %s` on %s (%s, %d cores visible, `-t %d`; 1-min load average '
+                '%.1f-%.1f at the starts and ends of the runs, which include the runs themselves).' % (
+                    cmd, time.strftime('%Y-%m-%d %H:%M'), os.uname().nodename, os.cpu_count() or 1, THREADS[0],
+                    min(loads), max(loads)))
+        busy = 'Cores busy before each run (other jobs, 0-1): %s.' % ', '.join(
+            '%.2f' % r['cpu_busy_before'] if 'cpu_busy_before' in r else '-' for r in results)
+    else:
+        head = ('Written by `tools/peel_study.py %s --reuse` on %s from the run files in out/peel/%s/ (the run '
+                'times are the runs\' own closing summaries; no load figures were recorded for these runs).' % (
+                    cmd, time.strftime('%Y-%m-%d %H:%M'), study))
+        busy = 'Machine: %s, %d cores visible.' % (os.uname().nodename, os.cpu_count() or 1)
+    lines = ['# Study %s' % study, '', head, '', busy,
              '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
              'F/w: steady peel force per unit width (N/mm), mean over the last part of the pull; spread: (max-min)/mean '
              'there; error: |F/F_r - 1| against the reference case (marked *).', '',
@@ -469,6 +495,19 @@ def study_extras(study, results, outdir):
     return out
 
 
+def interp(xs, ys, x):
+    """Linear interpolation of y(x) in increasing xs (clamped at the ends)."""
+    if not xs:
+        return float('nan')
+    if x <= xs[0]:
+        return ys[0]
+    for k in range(1, len(xs)):
+        if x <= xs[k]:
+            w = (x - xs[k - 1]) / (xs[k] - xs[k - 1]) if xs[k] > xs[k - 1] else 1.0
+            return ys[k - 1] + w * (ys[k] - ys[k - 1])
+    return ys[-1]
+
+
 def front_history(r):
     """(pull U1 mm, delaminated length mm) of every VTU frame (U1 = rate x frame time)."""
     info, hist = r['info'], [(0.0, 0.0)]
@@ -485,8 +524,9 @@ def front_history(r):
 
 
 def application_extras(r, outdir):
-    """Cost per um of pull over the second half of the run, delamination against pull, the extrapolation to the
-    paper's 1.0 mm, and the rendered Mises PNG of the last frame."""
+    """Cost per um of pull over the second half of the run, delamination against pull, the wall time to the
+    paper's 1.0 mm of delamination (measured, or estimated when not reached), and the rendered Mises PNG of the
+    last frame."""
     out = ['', '## %s' % r['label'], '']
     out.append('Run: `%s` generator arguments `%s`; ldfcz `%s`; %d elements, %d DOFs; pulled %.1f of %.1f um in '
                '%.0f s (%s).' % (r['job'], r['args'], r['solver'], r['elements'], r['dofs'], 1e3 * r['u_end_mm'],
@@ -517,21 +557,28 @@ def application_extras(r, outdir):
     out.append('Delamination %.1f um at %.1f um of pull; over the second half of the run the front advanced %.2f um '
                'per um of pull. Wall time per um of pull over the second half of the pull: **%.1f s/um** '
                '(application_progress.csv: wall time against pull).' % (1e3 * d_end, 1e3 * hist[-1][0], rate, cost))
-    # extrapolation to 1.0 mm of delamination with the fine region over all of it
-    full = studies(False)['_application_full'][0]
-    pf = peel_deck.parser().parse_args(full[1])
-    _, finfo = peel_deck.build(pf)
-    adv = rate if rate == rate and rate > 0.2 else 1.0
-    u_full = hist[-1][0] + max(1.0 - d_end, 0.0) / adv
-    t_full = cost * 1e3 * u_full * (finfo['dofs'] / r['dofs'])
-    out.append('')
-    out.append('Extrapolation to the paper\'s 1.0 mm of delamination: pull %.2f mm (this run\'s %.1f um, then the '
-               'remaining %.3f mm of front at the measured %.2f mm of front per mm of pull), the fine region over all '
-               'of it (`%s`: %d DOFs, %.1f times this run\'s), the cost per um of pull scaled linearly with the DOFs '
-               '(the element loop dominates: dofs study): **%.0f s = %.1f h** on this machine with `-t %d` (an upper '
-               'estimate where the far elements stay elastic: the UMAT\'s elastic fast path makes them cheaper).' % (
-                   u_full, 1e3 * hist[-1][0], max(1.0 - d_end, 0.0), adv, ' '.join(full[1]), finfo['dofs'],
-                   finfo['dofs'] / r['dofs'], t_full, t_full / 3600, THREADS[0]))
+    # the paper's 1.0 mm of delamination: when the run reached it, the wall time at which it did (pull at 1.0 mm
+    # interpolated in the front history, wall time at that pull in the progress record); otherwise the time to
+    # reach it at the measured cost per um of pull and front advance per um of pull (same model, same DOFs)
+    target = 1.0
+    reached = [k for k in range(1, len(hist)) if hist[k][1] >= target > hist[k - 1][1]]
+    if reached:
+        k = reached[0]
+        (u0, d0), (u1, d1) = hist[k - 1], hist[k]
+        u_t = u0 + (target - d0) / (d1 - d0) * (u1 - u0) if d1 > d0 else u1
+        t_t = interp([b for _, b in prog], [a for a, _ in prog], u_t)
+        r['time_to_1mm_s'] = t_t
+        out += ['', '**1.0 mm of delamination reached** at %.1f um of pull, after **%.0f s = %.2f h** of wall time on '
+                'this machine with `-t %d` (front history of the VTU frames, application_front.csv, interpolated; '
+                'wall time against pull, application_progress.csv).' % (1e3 * u_t, t_t, t_t / 3600, THREADS[0])]
+    else:
+        adv = rate if rate == rate and rate > 0.2 else 1.0
+        u_full = hist[-1][0] + max(target - d_end, 0.0) / adv
+        t_full = prog[-1][0] + cost * 1e3 * (u_full - hist[-1][0])
+        r['time_to_1mm_s'] = float('nan')
+        out += ['', 'Not reached in this run: 1.0 mm of delamination would need %.2f mm of pull at the measured %.2f '
+                'mm of front per mm of pull; at the measured cost per um that is **%.0f s = %.1f h** in all on this '
+                'machine with `-t %d` (an estimate).' % (u_full, adv, t_full, t_full / 3600, THREADS[0])]
     if r['vtus']:
         png = os.path.join(outdir, 'application_mises.png')
         if render_mises(r['vtus'][-1], r['info'], png, hist[-1]):
