@@ -131,8 +131,19 @@ def check_case(gen, work, args, bad):
                 bad.append('%s: UEL PROPS %s, expected phi %g delta %.6e' % (tag, f[:2], phi, delta))
         if kw == '*USER MATERIAL':
             f = [float(x) for line in data for x in line.split(',')]
-            if f != [1250.0, 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990, 200.0, -4.0]:
-                bad.append('%s: UMAT constants %s are not Table 1' % (tag, f))
+            exp = [1250.0, 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990, 200.0, -4.0]
+            if '--dgamma-max' in args:
+                exp.append(float(val['dgamma-max']))   # PROPS(11): the accuracy bound dgamma_max
+            if f != exp:
+                bad.append('%s: UMAT constants %s are not Table 1%s' % (tag, f, ' + dgamma_max' if len(exp) > 10
+                                                                         else ''))
+            n = int(params.get('CONSTANTS', '0'))
+            if n != len(exp):
+                bad.append('%s: *USER MATERIAL, CONSTANTS=%d for %d constants' % (tag, n, len(exp)))
+        if kw == '*STEP':
+            has_no = params.get('EXTRAPOLATION', '') == 'NO'
+            if has_no != ('--no-extrapolation' in args):
+                bad.append('%s: *STEP EXTRAPOLATION=NO %s' % (tag, 'missing' if not has_no else 'unexpected'))
         if kw == '*DEPVAR' and int(data[0]) != 11:
             bad.append('%s: *DEPVAR %s, the UMAT needs 11' % (tag, data[0]))
     xload = lb + a0
@@ -151,7 +162,8 @@ def main(argv):
     cases = [[], ['--rigid-substrate'], ['--no-coarse', '--le', '0.02'], ['--nz', '5', '--flap', '0.03'],
              ['--3d', '--ny', '2', '--le', '0.02'], ['--3d', '--rigid-substrate', '--ny', '3', '--width', '0.03'],
              ['--3d', '--full-width', '--ny', '2', '--le', '0.02', '--nz', '2'],
-             ['--tmax', '10', '--phi', '0.1', '--bonded', '0.5', '--coating', '0.02'], ['--flap', '0', '--rigid-substrate']]
+             ['--tmax', '10', '--phi', '0.1', '--bonded', '0.5', '--coating', '0.02'], ['--flap', '0', '--rigid-substrate'],
+             ['--rigid-substrate', '--dgamma-max', '1.0', '--no-extrapolation']]
     for c in cases:
         check_case(gen, work, c, bad)
     for b in bad:
