@@ -319,7 +319,8 @@ def reuse_case(label, gen_args, solver_args, outdir, job, info, p, plateau, old)
     summ = read_summary(os.path.join(outdir, job + '.log'))
     if 'wall_s' not in summ:
         summ.update(read_sta(os.path.join(outdir, job + '.sta')))
-    res = {'label': label, 'job': job, 'exit': 0 if 'energy_rel_diff' in summ else 3,
+    ended = 'energy_rel_diff' in summ   # the closing summary is written only when ldfcz ended by itself
+    res = {'label': label, 'job': job, 'exit': (0 if ended else 3) if ended or not old.get('exit') else int(old['exit']),
            'run_time_s': float(old.get('run_time_s') or summ.get('wall_s', 0.0)), 'elements': info['elements'],
            'dofs': info['dofs'], 'l_e_mm': info['l_e_mm'], 'args': ' '.join(gen_args),
            'solver': ' '.join(solver_args), 'stopped_at_limit': old.get('stopped_at_limit') == 'True'}
@@ -364,7 +365,7 @@ def write_report(study, results, outdir):
     for r in results:
         r['F_over_Fr'] = r['F_w'] / fref if fref == fref and fref else float('nan')
         r['error'] = abs(r['F_over_Fr'] - 1.0) if r['F_over_Fr'] == r['F_over_Fr'] else float('nan')
-    cols = ['label', 'reference', 'completed', 'F_w', 'F_over_Fr', 'error', 'spread', 'delaminated_mm', 'run_time_s',
+    cols = ['label', 'reference', 'completed', 'exit', 'F_w', 'F_over_Fr', 'error', 'spread', 'delaminated_mm', 'run_time_s',
             'increments', 'cutbacks', 'iterations', 'elements', 'dofs', 't_inc_s', 't_assembly_s', 't_factor_s',
             't_iter_s', 'attempts', 'energy_rel_diff', 'max_open_ratio', 'cpu_busy_before', 'cpu_time_s',
             'load_avg_start', 'load_avg_end', 'u_end_mm', 'solver', 'args']
@@ -407,8 +408,8 @@ def write_report(study, results, outdir):
             r['delaminated_mm'], r['run_time_s'], int(r.get('increments', 0)), int(r.get('cutbacks', 0)),
             r['elements'], r['dofs'], '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-'))
         if not r['completed']:
-            lines[-1] += ' (not completed: exit %d, U = %.4g of %.4g mm%s)' % (
-                r['exit'], r['u_end_mm'], r['u_total_mm'], ', stopped at the time limit' if r.get('stopped_at_limit')
+            lines[-1] += ' (not completed: %s, U = %.4g of %.4g mm%s)' % (
+                stop_text(r), r['u_end_mm'], r['u_total_mm'], ', stopped at the time limit' if r.get('stopped_at_limit')
                 else '')
     lines += study_extras(study, results, outdir)
     with open(os.path.join(outdir, study + '.md'), 'w') as fh:
@@ -495,6 +496,11 @@ def study_extras(study, results, outdir):
     return out
 
 
+def stop_text(r):
+    """How an incomplete run ended: ldfcz's exit status, or the signal that ended it (negative status)."""
+    return 'ended by signal %d' % -r['exit'] if r['exit'] < 0 else 'exit %d' % r['exit']
+
+
 def interp(xs, ys, x):
     """Linear interpolation of y(x) in increasing xs (clamped at the ends)."""
     if not xs:
@@ -532,7 +538,7 @@ def application_extras(r, outdir):
                '%.0f s (%s).' % (r['job'], r['args'], r['solver'], r['elements'], r['dofs'], 1e3 * r['u_end_mm'],
                                  1e3 * r['u_total_mm'], r['run_time_s'],
                                  'completed' if r['completed'] else 'stopped at the time limit'
-                                 if r.get('stopped_at_limit') else 'not completed, exit %d' % r['exit']))
+                                 if r.get('stopped_at_limit') else 'not completed, ' + stop_text(r)))
     prog = r['progress']
     u_end = prog[-1][1]
     half = [pt for pt in prog if pt[1] >= 0.5 * u_end]
@@ -571,6 +577,9 @@ def application_extras(r, outdir):
         out += ['', '**1.0 mm of delamination reached** at %.1f um of pull, after **%.0f s = %.2f h** of wall time on '
                 'this machine with `-t %d` (front history of the VTU frames, application_front.csv, interpolated; '
                 'wall time against pull, application_progress.csv).' % (1e3 * u_t, t_t, t_t / 3600, THREADS[0])]
+        if not r['completed']:
+            out[-1] += (' The run was ended (%s) at %.1f um of pull, %.1f um after that point: the rest of the '
+                        'planned pull was not needed.' % (stop_text(r), 1e3 * u_end, 1e3 * (u_end - u_t)))
     else:
         adv = rate if rate == rate and rate > 0.2 else 1.0
         u_full = hist[-1][0] + max(target - d_end, 0.0) / adv
