@@ -583,11 +583,13 @@ def application_extras(r, outdir):
     else:
         adv = rate if rate == rate and rate > 0.2 else 1.0
         u_full = hist[-1][0] + max(target - d_end, 0.0) / adv
-        t_full = prog[-1][0] + cost * 1e3 * (u_full - hist[-1][0])
+        # from the wall time at the last frame's pull (where the front is known) at the measured cost per um
+        t_full = interp([b for _, b in prog], [a for a, _ in prog], hist[-1][0]) + cost * 1e3 * (u_full - hist[-1][0])
         r['time_to_1mm_s'] = float('nan')
-        out += ['', 'Not reached in this run: 1.0 mm of delamination would need %.2f mm of pull at the measured %.2f '
-                'mm of front per mm of pull; at the measured cost per um that is **%.0f s = %.1f h** in all on this '
-                'machine with `-t %d` (an estimate).' % (u_full, adv, t_full, t_full / 3600, THREADS[0])]
+        out += ['', 'Not reached in this run: 1.0 mm of delamination would need %.3f mm of pull (last frame: %.1f um '
+                'delaminated at %.1f um of pull, then the measured %.2f mm of front per mm of pull); at the measured '
+                'cost per um that is **%.0f s = %.2f h** in all on this machine with `-t %d` (an estimate).' % (
+                    u_full, 1e3 * d_end, 1e3 * hist[-1][0], adv, t_full, t_full / 3600, THREADS[0])]
     if r['vtus']:
         png = os.path.join(outdir, 'application_mises.png')
         if render_mises(r['vtus'][-1], r['info'], png, hist[-1]):
