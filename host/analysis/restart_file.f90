@@ -123,6 +123,7 @@ contains
       associate (st => model%steps(k))
         call hl(st%nlgeom)
         call hl(st%direct)
+        call hl(st%extrapolate)
         call hl(st%unsymm)
         call hl(st%op_new)
         call hia([st%max_inc, st%max_iter, st%nbc])

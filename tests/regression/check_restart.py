@@ -152,6 +152,13 @@ def main():
             fail("the refusal does not say 'different model': " + (p.stdout + p.stderr)[-500:])
     bad = os.path.join(out, "bad")
     os.makedirs(bad)
+    # the same deck with another *STEP, EXTRAPOLATION: the continuation would not repeat the run, so refused too
+    no_ex = os.path.join(bad, os.path.basename(run_deck))
+    with open(no_ex, "w") as f:
+        f.write(re.sub(r"(?im)^(\*STEP\b[^\n]*)$", r"\1, EXTRAPOLATION=NO", open(run_deck).read()))
+    p = run(base + ["--out", os.path.join(out, "no_extrapolation"), "--restart-from", rst, no_ex], out, expect=[2])
+    if "different model" not in p.stdout + p.stderr:
+        fail("a restart with EXTRAPOLATION changed is not refused: " + (p.stdout + p.stderr)[-500:])
     data = open(rst, "rb").read()
     with open(os.path.join(bad, "trunc.rst"), "wb") as f:
         f.write(data[: len(data) * 2 // 3])
