@@ -320,7 +320,7 @@ def reuse_case(label, gen_args, solver_args, outdir, job, info, p, plateau, old)
     if 'wall_s' not in summ:
         summ.update(read_sta(os.path.join(outdir, job + '.sta')))
     ended = 'energy_rel_diff' in summ   # the closing summary is written only when ldfcz ended by itself
-    res = {'label': label, 'job': job, 'exit': (0 if ended else 3) if ended or not old.get('exit') else int(old['exit']),
+    res = {'label': label, 'job': job, 'exit': 0 if ended else int(old.get('exit') or 3),
            'run_time_s': float(old.get('run_time_s') or summ.get('wall_s', 0.0)), 'elements': info['elements'],
            'dofs': info['dofs'], 'l_e_mm': info['l_e_mm'], 'args': ' '.join(gen_args),
            'solver': ' '.join(solver_args), 'stopped_at_limit': old.get('stopped_at_limit') == 'True'}
@@ -337,7 +337,7 @@ def collect(res, outdir, job, info, p, plateau, progress):
     rc = res['exit']
     wall = res['run_time_s']
     u, f = read_history(csv_path) if os.path.exists(csv_path) else ([], [])
-    if u and (not progress or u[-1] > progress[-1][1]):
+    if u and (not progress or u[-1] > progress[-1][1] * (1.0 + 1e-5)):  # (the samples are written to 6 digits)
         progress.append((wall, u[-1]))
     res['progress'] = progress
     fw = [v / info['width_mm'] for v in f]
