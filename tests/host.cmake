@@ -113,6 +113,10 @@ endfunction()
 # UEL (cohesive element, SVARS/ENERGY) under a C3D8 block, automatic increments; restart refused for another deck
 ldfcz_add_restart_test(restart_cohesive_block ${LDFCZ_DECKS}/single/cohesive_block.inp --stop 9 --freq 1
   --other-deck ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp)
+# graceful stop (host/analysis/stop_signal.f90): SIGTERM after 5 CSV rows ends the run after the current increment
+# with exit 143, the closing summary and restart data written at the stop (the only ones: frequency 100000); the
+# restart from them gives the uninterrupted run
+ldfcz_add_restart_test(restart_cohesive_sigterm ${LDFCZ_DECKS}/single/cohesive_block.inp --stop 5 --freq 100000 --term)
 if(EXISTS "${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp")
   # Leonov UMAT (STATEV): restart data every 7 increments, stopped after 45: rows 43-45 are dropped and recomputed
   ldfcz_add_restart_test(restart_umat_uniaxial ${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp --stop 45 --freq 7)

@@ -319,8 +319,12 @@ def reuse_case(label, gen_args, solver_args, outdir, job, info, p, plateau, old)
     summ = read_summary(os.path.join(outdir, job + '.log'))
     if 'wall_s' not in summ:
         summ.update(read_sta(os.path.join(outdir, job + '.sta')))
-    ended = 'energy_rel_diff' in summ   # the closing summary is written only when ldfcz ended by itself
-    res = {'label': label, 'job': job, 'exit': 0 if ended else int(old.get('exit') or 3),
+    # the closing summary is written when ldfcz ended by itself or by a graceful stop (SIGTERM: exit 143, said in
+    # JOB.log); older binaries ended by SIGTERM without it
+    log = os.path.join(outdir, job + '.log')
+    term = os.path.exists(log) and 'SIGTERM received' in open(log, errors='replace').read()
+    ended = 'energy_rel_diff' in summ
+    res = {'label': label, 'job': job, 'exit': 143 if term else 0 if ended else int(old.get('exit') or 3),
            'run_time_s': float(old.get('run_time_s') or summ.get('wall_s', 0.0)), 'elements': info['elements'],
            'dofs': info['dofs'], 'l_e_mm': info['l_e_mm'], 'args': ' '.join(gen_args),
            'solver': ' '.join(solver_args), 'stopped_at_limit': old.get('stopped_at_limit') == 'True'}
@@ -498,6 +502,8 @@ def study_extras(study, results, outdir):
 
 def stop_text(r):
     """How an incomplete run ended: ldfcz's exit status, or the signal that ended it (negative status)."""
+    if r['exit'] == 128 + signal.SIGTERM:
+        return 'stopped by SIGTERM after the increment under way (exit 143, closing summary written)'
     return 'ended by signal %d' % -r['exit'] if r['exit'] < 0 else 'exit %d' % r['exit']
 
 

@@ -19,6 +19,7 @@ module static_step
   use field_frame, only: write_field_frame
   use stop_report, only: stop_message
   use solver_text, only: itoa, rtoa
+  use stop_signal, only: stop_signal_install, stop_signal_received, stop_signal_name
   implicit none
   private
   public :: run_steps
@@ -57,7 +58,7 @@ contains
     character(len=64) :: outcome
     type(restart_state_t) :: rs, fp
     logical :: restarting, resumed, fresh_csv
-    integer :: is_first, csv_rows, run_increments
+    integer :: is_first, csv_rows, run_increments, sig
 
     call system_clock(count_rate=rate)
     summarize = .false.
@@ -139,6 +140,7 @@ contains
       call output_csv_header(out, colnames(1:ncol))
     end if
     summarize = .true.
+    call stop_signal_install()
 
     allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
     allocate (rf_old(an%ndof), du_prev(an%ndof))
@@ -345,6 +347,22 @@ contains
             call output_log(out, 'ldfcz: stopped after '//itoa(run_increments)//' increments as asked '// &
               '(--stop-after-increments), at step '//itoa(is)//' time '//rtoa(sc%t)//' of '//rtoa(st%period))
             exit_code = exit_no_convergence
+            exit steps
+          end if
+          sig = stop_signal_received()
+          if (sig /= 0 .and. .not. (is == model%nstep .and. step_control_done(sc))) then
+            ! SIGTERM/SIGINT (stop_signal): end here as a complete run ends; the restart data first, so that a
+            ! restart from them replaces the extra frame below with the uninterrupted run's frames
+            call output_log(out, 'ldfcz: '//stop_signal_name(sig)//' received: stopped after increment '// &
+              itoa(kinc)//' of step '//itoa(is)//' at step time '//rtoa(sc%t)//' of '//rtoa(st%period)// &
+              '; the output of every converged increment is complete')
+            call output_sta_note(out, 'stopped by '//stop_signal_name(sig)//' after step '//itoa(is)// &
+              ' increment '//itoa(kinc))
+            if (k > 0) then
+              if (mod(kinc, k) /= 0) call save_restart()
+            end if
+            if (st%field_output) call write_frame(t_total0 + sc%t)
+            exit_code = 128 + sig
             exit steps
           end if
         end do increments

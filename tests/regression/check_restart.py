@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
 """Restart test (issue 6, "no lost results"; docs/host.md, "Restart"):
 
-  check_restart.py --exe BIN --deck DECK --out DIR [--user FILE] [--stop K] [--freq N] [--kill] [--deck-restart]
+  check_restart.py --exe BIN --deck DECK --out DIR [--user FILE] [--stop K] [--freq N] [--kill | --term]
+                   [--deck-restart]
                    [--other-deck DECK2] [--rel 1e-12] [--expect-exit 0]
 
 1. runs DECK to the end (reference, DIR/full);
 2. runs it again in DIR/cut writing restart data every N increments and stopping after K converged increments
    (--stop-after-increments K), or with --kill: every increment, killed with SIGKILL once JOB.csv holds K rows (the
-   run is advanced in ~1 ms slices between SIGSTOP and SIGCONT);
+   run is advanced in ~1 ms slices between SIGSTOP and SIGCONT), or with --term: sent SIGTERM once JOB.csv holds K
+   rows, restart data every N increments (N large: the only restart data are those the graceful stop writes); the
+   stopped run must end with exit status 143, say so in JOB.log and JOB.sta, and write the closing summary with its
+   energy balance;
    with --deck-restart the frequency comes from a `*RESTART, WRITE, FREQUENCY=N` line inserted into a copy of the
    deck (DIR/deck/JOB.inp) instead of the option --restart-write N;
 3. restarts from DIR/cut/JOB.rst into DIR/cut (ldfcz --restart-from JOB.rst DECK);
@@ -73,6 +77,7 @@ def main():
     ap.add_argument("--stop", type=int, default=9, help="stop (or kill) after this many increments")
     ap.add_argument("--freq", type=int, default=1, help="restart data every N increments")
     ap.add_argument("--kill", action="store_true", help="SIGKILL instead of --stop-after-increments")
+    ap.add_argument("--term", action="store_true", help="SIGTERM (graceful stop) instead of --stop-after-increments")
     ap.add_argument("--deck-restart", action="store_true", help="*RESTART, WRITE in the deck, not the option")
     ap.add_argument("--other-deck", help="a restart with this deck must be refused")
     ap.add_argument("--rel", type=float, default=1e-12)
@@ -111,9 +116,10 @@ def main():
             f.write(text)
         write_opt = []
     rst = os.path.join(cut, job + ".rst")
-    if a.kill:
-        cmd = base + ["--out", cut, "--restart-write", "1", run_deck]
-        print("$ " + " ".join(cmd) + "  (SIGKILL after %d rows)" % a.stop)
+    if a.kill or a.term:
+        sig = signal.SIGTERM if a.term else signal.SIGKILL
+        cmd = base + ["--out", cut, "--restart-write", str(a.freq) if a.term else "1", run_deck]
+        print("$ " + " ".join(cmd) + "  (%s after %d rows)" % (sig.name, a.stop))
         p = subprocess.Popen(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         csv = os.path.join(cut, job + ".csv")
         # the run advances in slices of ~1 ms between SIGSTOP and SIGCONT, so that even a fast run is caught
@@ -128,14 +134,28 @@ def main():
             except FileNotFoundError:
                 rows = 0
             if rows >= a.stop:
-                p.send_signal(signal.SIGKILL)
+                p.send_signal(sig)
+                if a.term:
+                    p.send_signal(signal.SIGCONT)
                 break
             p.send_signal(signal.SIGCONT)
             time.sleep(0.001)
-        rc = p.wait()
-        if rc != -signal.SIGKILL:
-            fail("the run ended (exit %d) before the kill: choose a smaller --stop" % rc)
-        print("killed with %d CSV rows seen" % rows)
+        rc = p.wait(timeout=300)
+        if a.term:
+            if rc != 128 + signal.SIGTERM:
+                fail("exit status %d after SIGTERM, expected %d (graceful stop)" % (rc, 128 + signal.SIGTERM))
+            log = open(os.path.join(cut, job + ".log"), errors="replace").read()
+            if "SIGTERM received: stopped after increment" not in log:
+                fail("JOB.log does not report the stop by SIGTERM")
+            if not energy_line(os.path.join(cut, job + ".log")):
+                fail("no closing summary (energy balance line) after SIGTERM")
+            if "# stopped by SIGTERM" not in open(os.path.join(cut, job + ".sta"), errors="replace").read():
+                fail("JOB.sta does not note the stop by SIGTERM")
+            print("stopped by SIGTERM with %d CSV rows seen: exit 143, closing summary written" % rows)
+        else:
+            if rc != -signal.SIGKILL:
+                fail("the run ended (exit %d) before the kill: choose a smaller --stop" % rc)
+            print("killed with %d CSV rows seen" % rows)
     else:
         run(base + ["--out", cut] + write_opt + ["--stop-after-increments", str(a.stop), run_deck], out, expect=[3])
     if not os.path.exists(rst):
