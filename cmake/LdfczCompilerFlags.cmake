@@ -2,6 +2,11 @@
 # and overflow, and checks bounds (the tests use it), an optimised Release build.
 if(CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
   set(LDFCZ_FORTRAN_WARNINGS -Wall -Wextra -fimplicit-none -Wno-compare-reals -Wno-maybe-uninitialized)
+  # Every routine may run on several threads at once (the OpenMP element loop calls the element, UEL and UMAT
+  # code of libraries built without -fopenmp): local variables on the stack (-frecursive, what -fopenmp implies,
+  # and Abaqus' -auto for user code) instead of static storage for large local arrays; also keeps the Debug
+  # build's recursion check from firing when two threads are in the same routine.
+  add_compile_options($<$<COMPILE_LANGUAGE:Fortran>:-frecursive>)
   set(CMAKE_Fortran_FLAGS_DEBUG "-g -O0 -fcheck=all -ffpe-trap=invalid,zero,overflow -fbacktrace -finit-real=snan")
   set(CMAKE_Fortran_FLAGS_RELEASE "-O2")
   set(CMAKE_Fortran_FLAGS_RELWITHDEBINFO "-O2 -g -fbacktrace")

@@ -41,3 +41,12 @@ add_test(NAME robust_kill_flush
           --deck "${PROJECT_SOURCE_DIR}/decks/stability/stab_peel_brittle_viscous.inp"
           --out "${LDFCZ_ROBUST_RUNS}/kill")
 set_tests_properties(robust_kill_flush PROPERTIES LABELS "robustness" TIMEOUT 200)
+
+# thread safety of the element loop (UMAT, UEL and continuum element called by two threads at once): 1 and 2
+# threads give the same results to round-off; the Debug build also stops on a routine entered by two threads
+# without -frecursive (cmake/LdfczCompilerFlags.cmake)
+add_test(NAME robust_threads_agree
+  COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_threads.py" --exe $<TARGET_FILE:ldfcz>
+          --deck "${PROJECT_SOURCE_DIR}/decks/stability/stab_peel_brittle_viscous.inp" --increments 40
+          --out "${LDFCZ_ROBUST_RUNS}/threads")
+set_tests_properties(robust_threads_agree PROPERTIES LABELS "robustness;deck" TIMEOUT 300)

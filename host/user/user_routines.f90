@@ -89,8 +89,9 @@ contains
         form = ' -ffree-form'
       end select
     end if
-    ! -Bsymbolic: the library's own routines bind inside it, never to same-named host symbols
-    cmd = 'gfortran -shared -fPIC -O2 -Wl,-Bsymbolic'//form//' -I'''//include_dir//''' -o '''// &
+    ! -Bsymbolic: the library's own routines bind inside it, never to same-named host symbols; -frecursive: local
+    ! variables on the stack, as Abaqus' -auto, since the threaded element loop calls the routines concurrently
+    cmd = 'gfortran -shared -fPIC -O2 -frecursive -Wl,-Bsymbolic'//form//' -I'''//include_dir//''' -o '''// &
       library//''' '''//source//''''
   end function user_source_compile_command
 

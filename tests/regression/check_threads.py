@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Thread-safety test of the element loop: the same deck with --threads 1 and --threads 2 gives the same results.
+
+  check_threads.py --exe BIN --deck DECK --out DIR [--increments K] [--rel 1e-9]
+
+The OpenMP element loop calls the element, UEL and UMAT code of several threads at once. The only difference the
+thread count may make is the order of the atomic additions into the sparse matrix, i.e. round-off in the tangent,
+which changes the converged iterates by round-off (measured: 3e-15 relative on the stability peel deck). A data race
+(a static local array, a SAVEd variable written by two threads) gives O(1) differences or, in the Debug build, a
+"Recursive call to nonrecursive procedure" stop. Checks: both runs exit alike, same increments (step, inc, step
+time), every CSV value within --rel relative (1e-300 absolute).
+"""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--deck", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--increments", type=int, default=40, help="stop after so many increments (0: the whole deck)")
+    ap.add_argument("--rel", type=float, default=1e-9)
+    a = ap.parse_args()
+    job = os.path.splitext(os.path.basename(a.deck))[0]
+    shutil.rmtree(a.out, ignore_errors=True)
+    rows, codes = {}, {}
+    for t in (1, 2):
+        d = os.path.join(a.out, "t%d" % t)
+        cmd = [a.exe, "--quiet", "--threads", str(t), "--out", d]
+        if a.increments > 0:
+            cmd += ["--stop-after-increments", str(a.increments)]
+        p = subprocess.run(cmd + [a.deck], capture_output=True, text=True, errors="replace", timeout=600)
+        print("$ " + " ".join(cmd + [a.deck]) + "  -> exit %d" % p.returncode)
+        if p.returncode not in (0, 3) or "Fortran runtime error" in p.stderr:
+            fail("threads %d: exit %d\n%s" % (t, p.returncode, p.stderr[-2000:]))
+        codes[t] = p.returncode
+        with open(os.path.join(d, job + ".csv")) as f:
+            rows[t] = [l.split(",") for l in f.read().split("\n") if l]
+    if codes[1] != codes[2]:
+        fail("exit status %d with 1 thread, %d with 2" % (codes[1], codes[2]))
+    r1, r2 = rows[1], rows[2]
+    if r1[0] != r2[0] or len(r1) != len(r2):
+        fail("CSV header or row count differ: %d and %d rows" % (len(r1) - 1, len(r2) - 1))
+    if len(r1) < 3:
+        fail("too few increments to compare")
+    worst = 0.0
+    for k, (x, y) in enumerate(zip(r1[1:], r2[1:]), 2):
+        if x[:3] != y[:3]:
+            fail("line %d: increment %s with 1 thread, %s with 2" % (k, x[:3], y[:3]))
+        for p, q in zip(x[3:], y[3:]):
+            p, q = float(p), float(q)
+            if abs(p - q) > 1e-300:
+                worst = max(worst, abs(p - q) / max(abs(p), abs(q)))
+    print("%d increments, largest relative difference 1 vs 2 threads %.2e (bound %.0e)" % (len(r1) - 1, worst, a.rel))
+    if worst > a.rel:
+        fail("results depend on the thread count beyond round-off")
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
