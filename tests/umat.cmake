@@ -1,3 +1,11 @@
 # Unit tests of the compressible Leonov model: the pure core and the Abaqus/Marc adapters.
 ldfcz_add_pf_suite(NAME test_leonov PF test_leonov.pf LINK ldfcz_umat)
-ldfcz_add_pf_suite(NAME test_umat PF test_umat.pf LINK ldfcz_umat abaqus_test_stubs)
+# HYPELA2 (umat/hypela2.f) built against test doubles of Marc's include files 'concom' and 'creeps' and of QUIT
+# (tests/support/marc): the Marc entry point itself is called with Marc's argument list, not only its layer
+add_library(marc_hypela2_test STATIC "${PROJECT_SOURCE_DIR}/umat/hypela2.f" support/marc/marc_test_stubs.f)
+target_include_directories(marc_hypela2_test PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/support/marc")
+target_link_libraries(marc_hypela2_test PUBLIC ldfcz_umat)
+if(CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
+  target_compile_options(marc_hypela2_test PRIVATE ${LDFCZ_FIXED_FORM_FLAGS} -Wno-unused-dummy-argument)
+endif()
+ldfcz_add_pf_suite(NAME test_umat PF test_umat.pf LINK ldfcz_umat abaqus_test_stubs marc_hypela2_test)

@@ -1,7 +1,8 @@
 !     ldfcz: MSC.Marc HYPELA2 entry point of the compressible Leonov
-!     model. NOT built by ldfcz's CMake: it includes Marc's common
+!     model. Not part of ldfcz's libraries: it includes Marc's common
 !     blocks 'concom' and 'creeps' (for the time increment timinc),
-!     which only a Marc installation provides. Compile it together
+!     which only a Marc installation provides (the tests build it
+!     against test doubles, tests/support/marc). Compile it together
 !     with umat/leonov_parameters.f90, leonov.f90, leonov_marc.f90
 !     in Marc's user-subroutine build (for example
 !     run_marc -user hypela2.f, with the modules compiled first).
