@@ -3,7 +3,8 @@
 collect JOB.csv, compute the steady peel force per unit width, and write reports/<study>/<study>.{csv,md,png}.
 
   peel_study.py main                 the default plane-strain scene: prints the steady peel force per unit width
-  peel_study.py mesh-x|mesh-z|mesh-y|increment|simplifications|ps-vs-3d|dofs|application [--quick]
+  peel_study.py mesh-x|mesh-z|mesh-y|increment|simplifications|ps-vs-3d|dofs|plastic-bound|app-settings|
+                opening-bound|application [--quick]
   peel_study.py list                 the studies and their cases
 
 Steady peel force: the mean of F/w over the last --plateau fraction of the pulled displacement (default 0.3),
