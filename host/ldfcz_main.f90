@@ -9,8 +9,10 @@ program ldfcz
   use deck_reader, only: read_deck
   use user_routines, only: user_routines_t, user_routines_builtin, user_routines_load
   use output_files, only: output_t, output_open, output_close, output_log
-  use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code
+  use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code, &
+    newton_krylov, newton_auto
   use abaqus_host_state, only: abaqus_set_job
+  use blas_threads, only: blas_threads_default
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg
@@ -21,7 +23,7 @@ program ldfcz
   type(output_t) :: out
   type(run_summary_t) :: summary
   type(solver_options_t) :: options
-  character(len=:), allocatable :: restart_from
+  character(len=:), allocatable :: restart_from, blas_note
 
   interface
     !> mkdir(2); mode_t is a 32-bit unsigned integer on Linux
@@ -55,13 +57,23 @@ program ldfcz
       quiet = .true.
     case ('-v', '--verbose')
       verbose = .true.
-    case ('--newton', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment')
+    case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
       select case (arg)
       case ('--newton')
         options%newton = newton_mode_code(get_arg(i))
         if (options%newton == 0) call die('--newton needs full, modified, krylov or auto')
+      case ('--factors')
+        arg = get_arg(i)
+        select case (arg)
+        case ('exact')
+          options%symmetric_factors = .false.
+        case ('symmetric')
+          options%symmetric_factors = .true.
+        case default
+          call die('--factors needs exact or symmetric')
+        end select
       case ('--max-opening-increment')
         arg = get_arg(i)
         read (arg, *, iostat=stat) options%max_opening
@@ -123,6 +135,8 @@ program ldfcz
     i = i + 1
   end do
   if (len(deck) == 0) call die('no deck given (ldfcz --help)')
+  if (options%symmetric_factors .and. options%newton /= newton_krylov .and. options%newton /= newton_auto) &
+    call die('--factors symmetric needs --newton krylov or auto (the factors only precondition GMRES)')
   inquire (file=deck, exist=exists)
   if (.not. exists) call die(deck//': file not found')
   if (threads > 0) then
@@ -159,6 +173,8 @@ program ldfcz
       call exit(exit_input)
     end if
   end if
+  call blas_threads_default(blas_note)
+  if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call run_analysis(model, routines, out, verbose, summary, exit_code, options)
   call output_close(out)
   call exit(exit_code)
@@ -218,7 +234,10 @@ contains
       '  -v, --verbose      residual, force and correction of every Newton iteration in JOB.log', &
       '  --newton MODE      full (default: new tangent and factorization every iteration), modified (factors', &
       '                     kept while the residual contracts), krylov (new tangent, GMRES preconditioned by', &
-      '                     the last factors), auto (krylov, GMRES budget from the measured costs)', &
+      '                     the last factors), auto (inexact Newton-Krylov: GMRES to Eisenstat-Walker', &
+      '                     tolerances, budget from the measured costs; for large 3D models)', &
+      '  --factors KIND     exact (default: LU/LDL^T of the tangent) or symmetric (unsymmetric tangents: LDL^T', &
+      '                     of (K+K^T)/2 as GMRES preconditioner, half the factor work; needs krylov/auto)', &
       '  --max-opening-increment F  limit increments so that the cohesive opening changes by at most F*delta', &
       '                     per increment (built-in UEL SVARS; paper section 7: F <= 1/3 -> >= 99% of phi)', &
       '  --plastic-statev N report the largest increment of STATEV(N) (default 7 = gamma_p of the built-in', &

@@ -32,6 +32,7 @@ module analysis_core
     integer :: ndof = 0                         !< ndim * nnode
     integer :: neq = 0                          !< free equations
     logical :: symmetric = .true.               !< LDL^T with symmetrised element matrices
+    logical :: sym_factors = .false.            !< unsymmetric: factors of the symmetric part (preconditioner only)
     integer, allocatable :: elem_ptr(:)         !< (nelem+1) into elem_dof
     integer, allocatable :: elem_dof(:)         !< global dof of each element dof
     integer, allocatable :: elem_eq(:)          !< equation of each element dof (0: prescribed/unused)
@@ -248,7 +249,8 @@ contains
       if (an%eq(i) > 0) eq_node(an%eq(i)) = (i - 1) / an%ndim + 1
     end do
     an%elem_eq = an%eq(an%elem_dof)
-    call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg)
+    call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
+      symmetric_factors=an%sym_factors)
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
       stat = 2

@@ -6,7 +6,7 @@ module newton_iteration
   use analysis_core, only: analysis_t, analysis_assemble
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
-    sparse_is_factored, sparse_solve_krylov
+    sparse_is_factored, sparse_solve_krylov, sparse_factors_exact
   use output_files, only: output_t, output_log
   use abaqus_host_state, only: abaqus_stop_requested
   use solver_options, only: newton_modified, newton_krylov, newton_auto
@@ -20,6 +20,15 @@ module newton_iteration
   integer, parameter :: modified_max_reuse = 8          !< modified Newton: new tangent after this many reuses
   real(dp), parameter :: krylov_rel_tol = 1.0e-8_dp     !< GMRES relative residual (an exact Newton step)
   integer, parameter :: krylov_max_iter = 30            !< GMRES budget of mode krylov (restart = budget)
+  ! Mode auto is an inexact Newton-Krylov method: GMRES is stopped at the relative residual eta_k of
+  ! Eisenstat & Walker (1996, SIAM J. Sci. Comput. 17:16-32, "choice 2": eta_k = gamma (|r_k| / |r_(k-1)|)^2,
+  ! safeguarded by gamma eta_(k-1)^2 when that exceeds 0.1, capped by eta_max), and never solved more accurately
+  ! than the Newton criterion needs: eta_k |r_k| >= 0.1 R_n q_avg, a linear residual that small (in 2-norm, so in
+  ! every dof) cannot keep the force criterion r_max <= R_n q_avg from being met. Convergence is still decided by
+  ! the true residual, so the converged results are those of full Newton within its tolerance (deck_newton_modes);
+  ! the early iterations, far from the solution, no longer pay for exact linear solves (docs/performance.md).
+  real(dp), parameter :: ew_gamma = 0.9_dp              !< Eisenstat-Walker gamma
+  real(dp), parameter :: ew_eta_max = 0.1_dp            !< largest forcing term (also the first iteration's)
 
   !> What the variants carry from one iteration, attempt and increment to the next.
   type :: newton_state_t
@@ -64,7 +73,7 @@ contains
     integer :: i, stat, kit, kbudget
     character(len=:), allocatable :: errmsg
     character(len=256) :: smsg
-    real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s
+    real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s, r_norm, r_norm_prev, eta, eta_prev, tol
     real(dp), allocatable :: r_copy(:)
     logical :: want_k, k_fresh
 
@@ -77,6 +86,8 @@ contains
       c_max = 0.0_dp
       r_prev = huge(1.0_dp)
       r_prev2 = huge(1.0_dp)
+      r_norm_prev = 0.0_dp
+      eta_prev = ew_eta_max
       if (.not. allocated(ratios)) allocate (ratios(st%max_iter + 1))
       if (size(ratios) < st%max_iter + 1) then
         deallocate (ratios)
@@ -118,6 +129,8 @@ contains
         end do
         r_max = 0.0_dp
         if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))
+        r_norm = 0.0_dp
+        if (an%neq > 0) r_norm = norm2(r(1:an%neq))
         q_now = typical_force(an%fint)
         q_avg = (q_sum + q_now) / real(kinc, dp)
         du_max = maxval(abs(an%u - an%u_conv))
@@ -143,6 +156,18 @@ contains
           r_prev = huge(1.0_dp)
           r_prev2 = huge(1.0_dp)
         end if
+        tol = krylov_rel_tol
+        if (newton == newton_auto) then
+          ! inexact Newton: the forcing term eta_k (see ew_gamma above)
+          eta = ew_eta_max
+          if (iter >= 1 .and. r_norm_prev > 0.0_dp) then
+            eta = ew_gamma * (r_norm / r_norm_prev)**2
+            if (ew_gamma * eta_prev**2 > 0.1_dp) eta = max(eta, ew_gamma * eta_prev**2)
+          end if
+          eta = min(ew_eta_max, max(eta, 0.1_dp * st%r_n * q_avg / max(r_norm, tiny(1.0_dp))))
+          eta_prev = eta
+          tol = max(krylov_rel_tol, eta)
+        end if
         k_fresh = .true.
         if (.not. want_k) then
           ! modified Newton: the last factors, a residual-only element loop
@@ -157,7 +182,7 @@ contains
             kbudget = max(2, min(krylov_max_iter, int(0.5_dp * ns%t_fact_last / ns%t_solve_last)))
           r_copy = r(1:an%neq)
           t0s = sparse_time_solve(an%sys)
-          call sparse_solve_krylov(an%sys, r(1:an%neq), krylov_rel_tol, kbudget, kbudget, kit, stat, smsg)
+          call sparse_solve_krylov(an%sys, r(1:an%neq), tol, kbudget, kbudget, kit, stat, smsg)
           if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%sys) - t0s) / real(kit, dp)
           summary%krylov_iterations = summary%krylov_iterations + kit
           if (stat == 0) then
@@ -183,14 +208,29 @@ contains
             exit newton_loop
           end if
           t0s = sparse_time_solve(an%sys)
-          call sparse_solve(an%sys, r, stat, smsg)
-          if (ns%t_solve_last <= 0.0_dp) ns%t_solve_last = sparse_time_solve(an%sys) - t0s
+          if (sparse_factors_exact(an%sys)) then
+            call sparse_solve(an%sys, r, stat, smsg)
+            if (ns%t_solve_last <= 0.0_dp) ns%t_solve_last = sparse_time_solve(an%sys) - t0s
+          else
+            ! factors of the symmetric part (--factors symmetric): GMRES with them, the whole budget; when it
+            ! does not reach tol, its best iterate (the residual only decreases in GMRES) is an inexact step
+            call sparse_solve_krylov(an%sys, r(1:an%neq), tol, krylov_max_iter, krylov_max_iter, kit, stat, smsg)
+            if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%sys) - t0s) / real(kit, dp)
+            summary%krylov_iterations = summary%krylov_iterations + kit
+            summary%krylov_solves = summary%krylov_solves + 1
+            if (stat == 1) then
+              if (verbose) call output_log(out, '    GMRES with fresh symmetric factors short of its tolerance '// &
+                'after '//itoa(kit)//' iterations: best iterate used (an inexact Newton step)')
+              stat = 0
+            end if
+          end if
           if (stat /= 0) then
             outcome = 'cutback: solve failed'
             exit newton_loop
           end if
         end if
         iter = iter + 1
+        r_norm_prev = r_norm
         c_max = maxval(abs(r(1:max(an%neq, 1))))
         do i = 1, an%ndof
           if (an%eq(i) > 0) an%u(i) = an%u(i) + r(an%eq(i))

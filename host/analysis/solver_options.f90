@@ -11,8 +11,9 @@ module solver_options
   !> Newton variants (docs/performance.md): full = fresh tangent and factorization every iteration; modified =
   !> factors kept across iterations and increments, elements called for the residual only (UEL LFLAGS(3) = 5),
   !> a fresh tangent when the residual contracts poorly; krylov = fresh tangent every iteration, solved by GMRES
-  !> preconditioned with the last factorization, refactorized when GMRES does not converge quickly; auto = krylov
-  !> with the GMRES budget set from the measured cost of a factorization against a solve.
+  !> preconditioned with the last factorization to 1e-8 (the iterates of full Newton), refactorized when GMRES
+  !> does not converge quickly; auto = inexact Newton-Krylov: GMRES stopped at the forcing terms of Eisenstat and
+  !> Walker (newton_iteration), its budget set from the measured cost of a factorization against a solve.
   integer, parameter :: newton_full = 1, newton_modified = 2, newton_krylov = 3, newton_auto = 4
 
   !> Run-time choices of the solver (command line; defaults: Abaqus-like full Newton, no accuracy control).
@@ -24,6 +25,7 @@ module solver_options
     integer :: restart_write = -1               !< JOB.rst every n increments (-1: as *RESTART in the deck; 0 never)
     character(len=:), allocatable :: restart_from  !< continue from this restart file (docs/host.md, "Restart")
     integer :: stop_after = 0                   !< > 0: stop after so many converged increments (restart tests)
+    logical :: symmetric_factors = .false.      !< unsymmetric systems: LDL^T of (K + K^T)/2 as GMRES preconditioner
   end type solver_options_t
 
 contains

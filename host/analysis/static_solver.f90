@@ -49,6 +49,7 @@ contains
       return
     end if
     summary%ndof = count(an%used)
+    an%sym_factors = opt%symmetric_factors
     call run_steps(model, routines, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
     if (.not. summarize) return
 

@@ -8,7 +8,7 @@ module sparse_pattern
   use ldfcz_kinds, only: i8
   implicit none
   private
-  public :: build_pattern, build_slot_map, sort_int
+  public :: build_pattern, build_slot_map, sort_int, find_in_row
 
 contains
 

@@ -12,9 +12,14 @@
 !>
 !> Symmetric systems store the upper triangle (row <= column) and are factorized by MUMPS as LDL^T (SYM = 2);
 !> the caller passes a symmetric ke and only its entries that map to the upper triangle are added.
+!>
+!> Unsymmetric systems may ask for symmetric factors (sparse_setup, symmetric_factors): all entries are stored
+!> (products and GMRES use the true matrix), and MUMPS factorizes the symmetric part (A + A^T)/2 as LDL^T: half
+!> the factor storage and roughly half the factorization work of LU. Those factors are a preconditioner, not a
+!> solver: sparse_factors_exact is then false and the caller must solve with sparse_solve_krylov.
 module sparse_system
   use ldfcz_kinds, only: dp, i8
-  use sparse_pattern, only: build_pattern, build_slot_map
+  use sparse_pattern, only: build_pattern, build_slot_map, find_in_row
   use metis_ordering, only: node_graph_from_elements, metis_node_order, equation_order_from_nodes, is_permutation
   use mumps_solver, only: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy, &
                           mumps_factor_entries, mumps_pivot_order, mumps_is_factored
@@ -26,7 +31,7 @@ module sparse_system
   public :: sparse_nnz, sparse_neq, sparse_factor_entries, sparse_time_analysis, sparse_time_factor
   public :: sparse_time_solve, sparse_factor_count, sparse_analysis_count, sparse_solve_count
   public :: sparse_ordering, sparse_pivot_order, sparse_to_dense, sparse_is_symmetric
-  public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count
+  public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count, sparse_factors_exact
 
   !> A sparse system with its pattern, values, ordering and MUMPS instance (components private).
   type :: sparse_system_t
@@ -42,6 +47,10 @@ module sparse_system
     integer(i8), allocatable :: slot_ptr(:)         !< start of each element's slot map
     integer, allocatable :: slot(:)                 !< element entry -> value index (0 = skipped)
     integer, allocatable :: eq_position(:)          !< pivot position of each equation (METIS, expanded)
+    logical :: sym_factors = .false.                !< unsymmetric values, LDL^T factors of (A + A^T)/2
+    integer, allocatable :: up_entry(:)             !< sym_factors: entry (i, j), i <= j, of each factor value
+    integer, allocatable :: lo_entry(:)             !< sym_factors: entry (j, i) of each factor value
+    real(dp), allocatable :: val_sym(:)             !< sym_factors: values given to MUMPS
     type(mumps_solver_t) :: solver                  !< the MUMPS instance
     real(dp) :: t_analysis = 0.0_dp                 !< wall seconds in setup (pattern, ordering, analysis)
     real(dp) :: t_factor = 0.0_dp                   !< wall seconds in factorizations
@@ -55,7 +64,8 @@ module sparse_system
 contains
 
   !> Build the pattern, the element -> slot maps, the METIS ordering and the MUMPS analysis, once.
-  subroutine sparse_setup(sys, neq, elem_ptr, elem_eq, eq_node, symmetric, stat, errmsg, use_metis)
+  subroutine sparse_setup(sys, neq, elem_ptr, elem_eq, eq_node, symmetric, stat, errmsg, use_metis, &
+      symmetric_factors)
     type(sparse_system_t), intent(inout) :: sys     !< system (any previous content is destroyed)
     integer, intent(in) :: neq                      !< number of free equations (1..neq)
     integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
@@ -65,9 +75,10 @@ contains
     integer, intent(out) :: stat                    !< 0 on success
     character(len=*), intent(out) :: errmsg         !< reason on failure
     logical, intent(in), optional :: use_metis      !< false: natural order (for comparisons); default true
+    logical, intent(in), optional :: symmetric_factors !< unsymmetric only: LDL^T factors of (A + A^T)/2
     character(len=*), parameter :: here = 'sparse_setup'
     integer, allocatable :: xadj(:), adjncy(:), node_position(:)
-    integer :: nnode, nelem, i
+    integer :: nnode, nelem, i, k, m, j
     integer(i8) :: c0
     logical :: metis
 
@@ -135,7 +146,32 @@ contains
       return
     end if
 
-    call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg)
+    sys%sym_factors = .false.
+    if (present(symmetric_factors)) sys%sym_factors = symmetric_factors .and. .not. symmetric
+    if (sys%sym_factors) then
+      ! the upper triangle of the (structurally symmetric: element pattern) full pattern and each entry's mirror
+      m = count(sys%irn <= sys%jcn)
+      allocate(sys%up_entry(m), sys%lo_entry(m), sys%val_sym(m))
+      m = 0
+      do k = 1, size(sys%jcn)
+        i = sys%irn(k)
+        j = sys%jcn(k)
+        if (i > j) cycle
+        m = m + 1
+        sys%up_entry(m) = k
+        sys%lo_entry(m) = find_in_row(sys%jcn, sys%row_ptr(j), sys%row_ptr(j + 1) - 1, i)
+        if (sys%lo_entry(m) == 0) then
+          stat = 2
+          errmsg = here//': the pattern is not structurally symmetric; symmetric factors impossible'
+          return
+        end if
+      end do
+      sys%val_sym = 0.0_dp
+      call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
+        sys%eq_position, stat, errmsg)
+    else
+      call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg)
+    end if
     sys%n_analysis = sys%n_analysis + 1
     sys%t_analysis = sys%t_analysis + seconds_since(c0)
     if (stat /= 0) return
@@ -183,12 +219,25 @@ contains
       return
     end if
     c0 = clock_count()
-    call mumps_factorize(sys%solver, sys%val, stat, errmsg)
+    if (sys%sym_factors) then
+      sys%val_sym = 0.5_dp * (sys%val(sys%up_entry) + sys%val(sys%lo_entry))
+      call mumps_factorize(sys%solver, sys%val_sym, stat, errmsg)
+    else
+      call mumps_factorize(sys%solver, sys%val, stat, errmsg)
+    end if
     sys%t_factor = sys%t_factor + seconds_since(c0)
     if (stat == 0) sys%n_factor = sys%n_factor + 1
   end subroutine sparse_factorize
 
-  !> Solve A x = rhs with the last factors (MUMPS JOB = 3): rhs in, x out.
+  !> True when the factors are those of the stored matrix (sparse_solve solves it), false when they are the
+  !> symmetric part's (a preconditioner for sparse_solve_krylov only).
+  logical function sparse_factors_exact(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_factors_exact = .not. sys%sym_factors
+  end function sparse_factors_exact
+
+  !> Solve with the last factors (MUMPS JOB = 3): rhs in, x out; x = A^-1 rhs unless the factors are symmetric
+  !> factors of an unsymmetric A (sparse_factors_exact).
   subroutine sparse_solve(sys, rhs, stat, errmsg)
     type(sparse_system_t), intent(inout) :: sys     !< factored system
     real(dp), intent(inout) :: rhs(:)               !< right-hand side (size neq) in, solution out
@@ -213,15 +262,29 @@ contains
     real(dp), intent(in) :: x(:)                    !< vector (size neq)
     real(dp), intent(out) :: y(:)                   !< product (size neq)
     integer :: k, i, j
+    real(dp) :: acc
 
     y = 0.0_dp
     if (.not. allocated(sys%val)) return
-    do k = 1, size(sys%val)
-      i = sys%irn(k)
-      j = sys%jcn(k)
-      y(i) = y(i) + sys%val(k) * x(j)
-      if (sys%symmetric .and. i /= j) y(j) = y(j) + sys%val(k) * x(i)
-    end do
+    if (sys%symmetric) then
+      do k = 1, size(sys%val)
+        i = sys%irn(k)
+        j = sys%jcn(k)
+        y(i) = y(i) + sys%val(k) * x(j)
+        if (i /= j) y(j) = y(j) + sys%val(k) * x(i)
+      end do
+    else
+      ! full storage: rows are independent, so the product is threaded over rows (same sum order as serial)
+      !$omp parallel do schedule(static) private(k, acc) if (sys%neq > 2000)
+      do i = 1, sys%neq
+        acc = 0.0_dp
+        do k = sys%row_ptr(i), sys%row_ptr(i + 1) - 1
+          acc = acc + sys%val(k) * x(sys%jcn(k))
+        end do
+        y(i) = acc
+      end do
+      !$omp end parallel do
+    end if
   end subroutine sparse_matvec
 
   !> True when factors from an earlier sparse_factorize are available (possibly of older values).
@@ -351,6 +414,10 @@ contains
     if (allocated(sys%slot_ptr)) deallocate(sys%slot_ptr)
     if (allocated(sys%slot)) deallocate(sys%slot)
     if (allocated(sys%eq_position)) deallocate(sys%eq_position)
+    if (allocated(sys%up_entry)) deallocate(sys%up_entry)
+    if (allocated(sys%lo_entry)) deallocate(sys%lo_entry)
+    if (allocated(sys%val_sym)) deallocate(sys%val_sym)
+    sys%sym_factors = .false.
     sys%neq = 0
     sys%ready = .false.
     sys%t_analysis = 0.0_dp
