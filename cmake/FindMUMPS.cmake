@@ -1,7 +1,8 @@
 #[=======================================================================[.rst:
 FindMUMPS
 ---------
-Find the SEQUENTIAL double-precision MUMPS (dmumps) with its stub MPI library (libseq).
+Find the SEQUENTIAL MUMPS in double precision (dmumps: the solver) and single precision (smumps: factors used as
+a GMRES preconditioner, ``ldfcz --factors single``) with its stub MPI library (libseq).
 
 Looks first for Debian's names (libdmumps_seq, libmumps_common_seq, libpord_seq, libmpiseq_seq, headers in
 /usr/include and the stub mpif.h in /usr/include/mumps_seq), then for an upstream sequential build (libdmumps,
@@ -28,6 +29,7 @@ endif()
 
 set(_mumps_lib_suffixes lib lib64 lib/x86_64-linux-gnu libseq)
 find_library(MUMPS_DMUMPS_LIBRARY NAMES dmumps_seq dmumps HINTS ${_mumps_hints} PATH_SUFFIXES ${_mumps_lib_suffixes})
+find_library(MUMPS_SMUMPS_LIBRARY NAMES smumps_seq smumps HINTS ${_mumps_hints} PATH_SUFFIXES ${_mumps_lib_suffixes})
 find_library(MUMPS_COMMON_LIBRARY NAMES mumps_common_seq mumps_common HINTS ${_mumps_hints}
   PATH_SUFFIXES ${_mumps_lib_suffixes})
 find_library(MUMPS_PORD_LIBRARY NAMES pord_seq pord HINTS ${_mumps_hints} PATH_SUFFIXES ${_mumps_lib_suffixes})
@@ -51,12 +53,12 @@ find_package(LAPACK QUIET)
 
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(MUMPS
-  REQUIRED_VARS MUMPS_DMUMPS_LIBRARY MUMPS_COMMON_LIBRARY MUMPS_MPISEQ_LIBRARY MUMPS_INCLUDE_DIR
+  REQUIRED_VARS MUMPS_DMUMPS_LIBRARY MUMPS_SMUMPS_LIBRARY MUMPS_COMMON_LIBRARY MUMPS_MPISEQ_LIBRARY MUMPS_INCLUDE_DIR
                 MUMPS_MPISEQ_INCLUDE_DIR LAPACK_FOUND
   VERSION_VAR MUMPS_VERSION)
 
 if(MUMPS_FOUND)
-  set(MUMPS_LIBRARIES ${MUMPS_DMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY})
+  set(MUMPS_LIBRARIES ${MUMPS_DMUMPS_LIBRARY} ${MUMPS_SMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY})
   if(MUMPS_PORD_LIBRARY)
     list(APPEND MUMPS_LIBRARIES ${MUMPS_PORD_LIBRARY})
   endif()
@@ -69,5 +71,5 @@ if(MUMPS_FOUND)
       INTERFACE_LINK_LIBRARIES "${MUMPS_LIBRARIES};${LAPACK_LIBRARIES}")
   endif()
 endif()
-mark_as_advanced(MUMPS_INCLUDE_DIR MUMPS_MPISEQ_INCLUDE_DIR MUMPS_DMUMPS_LIBRARY MUMPS_COMMON_LIBRARY
+mark_as_advanced(MUMPS_INCLUDE_DIR MUMPS_MPISEQ_INCLUDE_DIR MUMPS_DMUMPS_LIBRARY MUMPS_SMUMPS_LIBRARY MUMPS_COMMON_LIBRARY
   MUMPS_PORD_LIBRARY MUMPS_MPISEQ_LIBRARY)

@@ -66,14 +66,10 @@ program ldfcz
         if (options%newton == 0) call die('--newton needs full, modified, krylov or auto')
       case ('--factors')
         arg = get_arg(i)
-        select case (arg)
-        case ('exact')
-          options%symmetric_factors = .false.
-        case ('symmetric')
-          options%symmetric_factors = .true.
-        case default
-          call die('--factors needs exact or symmetric')
-        end select
+        options%symmetric_factors = arg == 'symmetric' .or. arg == 'symmetric-single'
+        options%single_factors = arg == 'single' .or. arg == 'symmetric-single'
+        if (.not. (options%symmetric_factors .or. options%single_factors .or. arg == 'exact')) &
+          call die('--factors needs exact, symmetric, single or symmetric-single')
       case ('--max-opening-increment')
         arg = get_arg(i)
         read (arg, *, iostat=stat) options%max_opening
@@ -135,8 +131,9 @@ program ldfcz
     i = i + 1
   end do
   if (len(deck) == 0) call die('no deck given (ldfcz --help)')
-  if (options%symmetric_factors .and. options%newton /= newton_krylov .and. options%newton /= newton_auto) &
-    call die('--factors symmetric needs --newton krylov or auto (the factors only precondition GMRES)')
+  if ((options%symmetric_factors .or. options%single_factors) .and. options%newton /= newton_krylov .and. &
+      options%newton /= newton_auto) &
+    call die('--factors other than exact needs --newton krylov or auto (the factors only precondition GMRES)')
   inquire (file=deck, exist=exists)
   if (.not. exists) call die(deck//': file not found')
   if (threads > 0) then
@@ -236,8 +233,9 @@ contains
       '                     kept while the residual contracts), krylov (new tangent, GMRES preconditioned by', &
       '                     the last factors), auto (inexact Newton-Krylov: GMRES to Eisenstat-Walker', &
       '                     tolerances, budget from the measured costs; for large 3D models)', &
-      '  --factors KIND     exact (default: LU/LDL^T of the tangent) or symmetric (unsymmetric tangents: LDL^T', &
-      '                     of (K+K^T)/2 as GMRES preconditioner, half the factor work; needs krylov/auto)', &
+      '  --factors KIND     exact (default: LU/LDL^T of the tangent), symmetric (unsymmetric tangents: LDL^T', &
+      '                     of (K+K^T)/2), single (single precision) or symmetric-single: factors that only', &
+      '                     precondition GMRES (half the factor work or memory traffic; needs krylov/auto)', &
       '  --max-opening-increment F  limit increments so that the cohesive opening changes by at most F*delta', &
       '                     per increment (built-in UEL SVARS; paper section 7: F <= 1/3 -> >= 99% of phi)', &
       '  --plastic-statev N report the largest increment of STATEV(N) (default 7 = gamma_p of the built-in', &

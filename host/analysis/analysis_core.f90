@@ -33,6 +33,7 @@ module analysis_core
     integer :: neq = 0                          !< free equations
     logical :: symmetric = .true.               !< LDL^T with symmetrised element matrices
     logical :: sym_factors = .false.            !< unsymmetric: factors of the symmetric part (preconditioner only)
+    logical :: single_factors = .false.         !< factors in single precision (preconditioner only)
     integer, allocatable :: elem_ptr(:)         !< (nelem+1) into elem_dof
     integer, allocatable :: elem_dof(:)         !< global dof of each element dof
     integer, allocatable :: elem_eq(:)          !< equation of each element dof (0: prescribed/unused)
@@ -250,7 +251,7 @@ contains
     end do
     an%elem_eq = an%eq(an%elem_dof)
     call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
-      symmetric_factors=an%sym_factors)
+      symmetric_factors=an%sym_factors, single_factors=an%single_factors)
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
       stat = 2

@@ -26,6 +26,7 @@ module solver_options
     character(len=:), allocatable :: restart_from  !< continue from this restart file (docs/host.md, "Restart")
     integer :: stop_after = 0                   !< > 0: stop after so many converged increments (restart tests)
     logical :: symmetric_factors = .false.      !< unsymmetric systems: LDL^T of (K + K^T)/2 as GMRES preconditioner
+    logical :: single_factors = .false.         !< factors in single precision as GMRES preconditioner
   end type solver_options_t
 
 contains

@@ -50,6 +50,7 @@ contains
     end if
     summary%ndof = count(an%used)
     an%sym_factors = opt%symmetric_factors
+    an%single_factors = opt%single_factors
     call run_steps(model, routines, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
     if (.not. summarize) return
 

@@ -89,7 +89,8 @@ contains
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
       itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver'// &
         trim(merge(' (LDL^T factors of (K+K^T)/2 precondition GMRES)', '                                                ', &
-        an%sym_factors .and. .not. an%symmetric))//'; UEL: '// &
+        an%sym_factors .and. .not. an%symmetric))//trim(merge(' (single-precision factors precondition GMRES)', &
+        '                                              ', an%single_factors))//'; UEL: '// &
       routines%uel_origin//'; UMAT: '//routines%umat_origin)
     summary%newton = opt%newton
     summary%plastic_statev = opt%plastic_statev

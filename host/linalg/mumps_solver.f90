@@ -1,9 +1,14 @@
-!> Thin wrapper of one sequential MUMPS 5.5 instance (double precision, centralized assembled COO input).
+!> Thin wrapper of one sequential MUMPS 5.5 instance (double precision, or single precision factors of the
+!> double-precision values for use as a preconditioner; centralized assembled COO input).
 !>
 !> Phases (MUMPS 5.5 user guide): JOB = -1 initialise, 1 analyse (with the host's METIS ordering passed as a user
 !> ordering, ICNTL(7) = 1 and PERM_IN), 2 factorize, 3 solve, -2 terminate. SYM = 2 is the general symmetric
 !> LDL^T factorization (indefinite matrices allowed: a softening cohesive zone makes the tangent indefinite);
 !> SYM = 0 the unsymmetric LU. All state lives in the mumps_solver_t instance: no module variables.
+!>
+!> Single precision (mumps_analyse, single = .true.; SMUMPS): the values are rounded to real32 for the
+!> factorization and the right-hand side of a solve to real32 and back, so a solve is accurate only to about
+!> cond(A) * 6e-8: half the factor storage and memory traffic, for GMRES preconditioning (sparse_system).
 !>
 !> Debian's sequential MUMPS (libdmumps_seq + libmpiseq_seq) ships a stub MPI: MPI_INIT is a no-op there and
 !> the communicator is only passed through to the stub, so COMM is set to MPI_COMM_WORLD of the stub mpif.h
@@ -13,6 +18,7 @@
 !> other than '' or '0'.
 module mumps_solver
   use ldfcz_kinds, only: dp, i8
+  use, intrinsic :: iso_fortran_env, only: sp => real32
   implicit none
   private
   public :: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy
@@ -20,6 +26,7 @@ module mumps_solver
 
   include 'mpif.h'
   include 'dmumps_struc.h'
+  include 'smumps_struc.h'
 
   integer, parameter :: job_init = -1, job_end = -2, job_analyse = 1, job_factorize = 2, job_solve = 3
   integer, parameter :: max_workspace_retries = 6   !< ICNTL(14) doublings tried before giving up
@@ -28,7 +35,9 @@ module mumps_solver
   !> One MUMPS instance and what the wrapper knows about it.
   type :: mumps_solver_t
     private
-    type(dmumps_struc) :: id                         !< the MUMPS instance
+    type(dmumps_struc) :: id                         !< the MUMPS instance (double precision)
+    type(smumps_struc) :: sid                        !< the MUMPS instance when single
+    logical :: single = .false.                      !< single-precision factors (SMUMPS)
     logical :: initialised = .false.                 !< JOB = -1 done
     logical :: analysed = .false.                    !< JOB = 1 done
     logical :: factored = .false.                    !< JOB = 2 done with the current values
@@ -38,7 +47,7 @@ module mumps_solver
 contains
 
   !> Initialise the instance and run the analysis of the pattern (irn, jcn) with the user pivot order.
-  subroutine mumps_analyse(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg)
+  subroutine mumps_analyse(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, single)
     type(mumps_solver_t), intent(inout) :: ms        !< instance (must be fresh or destroyed)
     logical, intent(in) :: symmetric                 !< SYM = 2 (LDL^T, upper triangle given) or SYM = 0
     integer, intent(in) :: n                         !< order
@@ -47,11 +56,18 @@ contains
     integer, intent(in) :: pivot_position(:)         !< position of each variable in the pivot order (PERM_IN)
     integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFO(1)
     character(len=*), intent(out) :: errmsg          !< reason on failure
+    logical, intent(in), optional :: single          !< single-precision factors (default false)
     character(len=*), parameter :: here = 'mumps_analyse'
 
     stat = 0
     errmsg = ''
     if (ms%initialised) call mumps_destroy(ms)
+    ms%single = .false.
+    if (present(single)) ms%single = single
+    if (ms%single) then
+      call analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg)
+      return
+    end if
     ms%id%COMM = MPI_COMM_WORLD
     ms%id%PAR = 1
     ms%id%SYM = merge(2, 0, symmetric)
@@ -63,7 +79,7 @@ contains
       return
     end if
     ms%initialised = .true.
-    call set_controls(ms%id)
+    call set_controls(ms%id%ICNTL)
     ms%n = n
     ms%id%N = n
     ms%id%NNZ = int(size(irn), i8)
@@ -100,6 +116,10 @@ contains
     if (.not. ms%analysed) then
       stat = -1000
       errmsg = here//': called before a successful analysis'
+      return
+    end if
+    if (ms%single) then
+      call factorize_single(ms, values, stat, errmsg)
       return
     end if
     if (size(values) /= size(ms%id%A)) then
@@ -146,6 +166,10 @@ contains
       errmsg = here//': right-hand side size differs from the matrix order'
       return
     end if
+    if (ms%single) then
+      call solve_single(ms, rhs, stat, errmsg)
+      return
+    end if
     ms%id%RHS = rhs
     ms%id%NRHS = 1
     ms%id%LRHS = ms%n
@@ -162,7 +186,15 @@ contains
   !> Terminate the instance (JOB = -2) and free the arrays given to it.
   subroutine mumps_destroy(ms)
     type(mumps_solver_t), intent(inout) :: ms        !< instance
-    if (ms%initialised) then
+    if (ms%initialised .and. ms%single) then
+      ms%sid%JOB = job_end
+      call smumps(ms%sid)
+      if (associated(ms%sid%IRN)) deallocate(ms%sid%IRN)
+      if (associated(ms%sid%JCN)) deallocate(ms%sid%JCN)
+      if (associated(ms%sid%A)) deallocate(ms%sid%A)
+      if (associated(ms%sid%PERM_IN)) deallocate(ms%sid%PERM_IN)
+      if (associated(ms%sid%RHS)) deallocate(ms%sid%RHS)
+    else if (ms%initialised) then
       ms%id%JOB = job_end
       call dmumps(ms%id)
       if (associated(ms%id%IRN)) deallocate(ms%id%IRN)
@@ -171,6 +203,7 @@ contains
       if (associated(ms%id%PERM_IN)) deallocate(ms%id%PERM_IN)
       if (associated(ms%id%RHS)) deallocate(ms%id%RHS)
     end if
+    ms%single = .false.
     ms%initialised = .false.
     ms%analysed = .false.
     ms%factored = .false.
@@ -185,10 +218,10 @@ contains
 
     nf = 0
     if (.not. ms%analysed) return
-    if (ms%factored) then
-      v = ms%id%INFOG(29)
+    if (ms%single) then
+      v = merge(ms%sid%INFOG(29), ms%sid%INFOG(20), ms%factored)
     else
-      v = ms%id%INFOG(20)
+      v = merge(ms%id%INFOG(29), ms%id%INFOG(20), ms%factored)
     end if
     if (v >= 0) then
       nf = int(v, i8)
@@ -201,7 +234,10 @@ contains
   subroutine mumps_pivot_order(ms, position)
     type(mumps_solver_t), intent(in) :: ms           !< analysed instance
     integer, allocatable, intent(out) :: position(:) !< position of each variable (empty if not analysed)
-    if (ms%analysed .and. associated(ms%id%SYM_PERM)) then
+    if (ms%analysed .and. ms%single) then
+      allocate(position(ms%n))
+      position = ms%sid%SYM_PERM(1:ms%n)
+    else if (ms%analysed .and. associated(ms%id%SYM_PERM)) then
       allocate(position(ms%n))
       position = ms%id%SYM_PERM(1:ms%n)
     else
@@ -220,30 +256,137 @@ contains
   end function mumps_is_factored
 
   !> Controls: streams and print level, centralized assembled input, user ordering, workspace relaxation.
-  subroutine set_controls(id)
-    type(dmumps_struc), intent(inout) :: id          !< instance after JOB = -1
+  subroutine set_controls(icntl)
+    integer, intent(inout) :: icntl(:)               !< ICNTL of an instance after JOB = -1
     character(len=16) :: val
     integer :: length, status
 
     call get_environment_variable('LDFCZ_MUMPS_VERBOSE', val, length, status)
     if (status == 0 .and. length > 0 .and. trim(val) /= '0') then
-      id%ICNTL(1) = 6
-      id%ICNTL(2) = 0
-      id%ICNTL(3) = 6
-      id%ICNTL(4) = 2
+      icntl(1) = 6
+      icntl(2) = 0
+      icntl(3) = 6
+      icntl(4) = 2
     else
-      id%ICNTL(1) = -1     ! error messages suppressed: the wrapper reports INFOG(1) through stat/errmsg
-      id%ICNTL(2) = -1     ! diagnostics suppressed
-      id%ICNTL(3) = -1     ! global information suppressed
-      id%ICNTL(4) = 0      ! print level: none
+      icntl(1) = -1     ! error messages suppressed: the wrapper reports INFOG(1) through stat/errmsg
+      icntl(2) = -1     ! diagnostics suppressed
+      icntl(3) = -1     ! global information suppressed
+      icntl(4) = 0      ! print level: none
     end if
-    id%ICNTL(5) = 0        ! assembled input
-    id%ICNTL(18) = 0       ! centralized on the host
-    id%ICNTL(7) = 1        ! user ordering in PERM_IN (the host's METIS nested dissection)
-    id%ICNTL(14) = icntl14_start
-    id%ICNTL(20) = 0       ! dense right-hand side
-    id%ICNTL(21) = 0       ! centralized solution (overwrites RHS)
+    icntl(5) = 0        ! assembled input
+    icntl(18) = 0       ! centralized on the host
+    icntl(7) = 1        ! user ordering in PERM_IN (the host's METIS nested dissection)
+    icntl(14) = icntl14_start
+    icntl(20) = 0       ! dense right-hand side
+    icntl(21) = 0       ! centralized solution (overwrites RHS)
   end subroutine set_controls
+
+  !> mumps_analyse for single-precision factors (SMUMPS): same pattern, ordering and controls.
+  subroutine analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< fresh instance
+    logical, intent(in) :: symmetric                 !< SYM = 2 or 0
+    integer, intent(in) :: n                         !< order
+    integer, intent(in) :: irn(:)                    !< row index of each entry
+    integer, intent(in) :: jcn(:)                    !< column index of each entry
+    integer, intent(in) :: pivot_position(:)         !< PERM_IN
+    integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1)
+    character(len=*), intent(out) :: errmsg          !< reason on failure
+    character(len=*), parameter :: here = 'mumps_analyse (single precision)'
+
+    ms%sid%COMM = MPI_COMM_WORLD
+    ms%sid%PAR = 1
+    ms%sid%SYM = merge(2, 0, symmetric)
+    ms%sid%JOB = job_init
+    call smumps(ms%sid)
+    if (ms%sid%INFOG(1) < 0) then
+      stat = ms%sid%INFOG(1)
+      call describe(here//' (initialisation)', ms%sid%INFOG(1), ms%sid%INFOG(2), errmsg)
+      return
+    end if
+    ms%initialised = .true.
+    call set_controls(ms%sid%ICNTL)
+    ms%n = n
+    ms%sid%N = n
+    ms%sid%NNZ = int(size(irn), i8)
+    allocate(ms%sid%IRN(size(irn)), ms%sid%JCN(size(jcn)), ms%sid%A(size(irn)), ms%sid%PERM_IN(n), ms%sid%RHS(n))
+    ms%sid%IRN = irn
+    ms%sid%JCN = jcn
+    ms%sid%A = 0.0_sp
+    ms%sid%PERM_IN = pivot_position
+    ms%sid%RHS = 0.0_sp
+    ms%sid%JOB = job_analyse
+    call smumps(ms%sid)
+    if (ms%sid%INFOG(1) < 0) then
+      stat = ms%sid%INFOG(1)
+      call describe(here, ms%sid%INFOG(1), ms%sid%INFOG(2), errmsg)
+      return
+    end if
+    ms%analysed = .true.
+    ms%factored = .false.
+  end subroutine analyse_single
+
+  !> mumps_factorize for single-precision factors: the values rounded to real32 (those beyond its range make
+  !> the factorization fail, reported as a MUMPS error).
+  subroutine factorize_single(ms, values, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< analysed instance
+    real(dp), intent(in) :: values(:)                !< matrix entries
+    integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1)
+    character(len=*), intent(out) :: errmsg          !< reason on failure
+    character(len=*), parameter :: here = 'mumps_factorize (single precision)'
+    integer :: attempt
+
+    if (size(values) /= size(ms%sid%A)) then
+      stat = -1001
+      errmsg = here//': value array size differs from the analysed pattern'
+      return
+    end if
+    if (any(abs(values) > real(huge(1.0_sp), dp))) then
+      stat = -1004
+      errmsg = here//': a matrix entry exceeds the single-precision range'
+      return
+    end if
+    ms%sid%A = real(values, sp)
+    do attempt = 0, max_workspace_retries
+      ms%sid%JOB = job_factorize
+      call smumps(ms%sid)
+      select case (ms%sid%INFOG(1))
+      case (-8, -9, -14, -15, -17, -20)
+        ms%sid%ICNTL(14) = 2 * ms%sid%ICNTL(14)
+      case default
+        exit
+      end select
+    end do
+    if (ms%sid%INFOG(1) < 0) then
+      stat = ms%sid%INFOG(1)
+      call describe(here, ms%sid%INFOG(1), ms%sid%INFOG(2), errmsg)
+      return
+    end if
+    ms%factored = .true.
+  end subroutine factorize_single
+
+  !> mumps_solve with single-precision factors: the right-hand side scaled by its largest entry (so that it
+  !> neither overflows nor underflows in real32), rounded, solved, and the solution scaled back in double.
+  subroutine solve_single(ms, rhs, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< factored instance
+    real(dp), intent(inout) :: rhs(:)                !< right-hand side in, solution out
+    integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1)
+    character(len=*), intent(out) :: errmsg          !< reason on failure
+    real(dp) :: scale
+
+    scale = maxval(abs(rhs))
+    if (scale == 0.0_dp .or. .not. (scale < huge(1.0_dp))) scale = 1.0_dp
+    ms%sid%RHS = real(rhs / scale, sp)
+    ms%sid%NRHS = 1
+    ms%sid%LRHS = ms%n
+    ms%sid%JOB = job_solve
+    call smumps(ms%sid)
+    if (ms%sid%INFOG(1) < 0) then
+      stat = ms%sid%INFOG(1)
+      call describe('mumps_solve (single precision)', ms%sid%INFOG(1), ms%sid%INFOG(2), errmsg)
+      return
+    end if
+    rhs = real(ms%sid%RHS, dp) * scale
+  end subroutine solve_single
 
   !> Message for a MUMPS error code (MUMPS 5.5 user guide, section "Error diagnostics").
   subroutine describe(where, info1, info2, errmsg)

@@ -17,6 +17,8 @@
 !> (products and GMRES use the true matrix), and MUMPS factorizes the symmetric part (A + A^T)/2 as LDL^T: half
 !> the factor storage and roughly half the factorization work of LU. Those factors are a preconditioner, not a
 !> solver: sparse_factors_exact is then false and the caller must solve with sparse_solve_krylov.
+!> Single-precision factors (sparse_setup, single_factors; alone or with symmetric_factors) are a preconditioner
+!> in the same way: half the factor storage and memory traffic of the double-precision ones.
 module sparse_system
   use ldfcz_kinds, only: dp, i8
   use sparse_pattern, only: build_pattern, build_slot_map, find_in_row
@@ -48,6 +50,7 @@ module sparse_system
     integer, allocatable :: slot(:)                 !< element entry -> value index (0 = skipped)
     integer, allocatable :: eq_position(:)          !< pivot position of each equation (METIS, expanded)
     logical :: sym_factors = .false.                !< unsymmetric values, LDL^T factors of (A + A^T)/2
+    logical :: single_factors = .false.             !< factors in single precision (preconditioner only)
     integer, allocatable :: up_entry(:)             !< sym_factors: entry (i, j), i <= j, of each factor value
     integer, allocatable :: lo_entry(:)             !< sym_factors: entry (j, i) of each factor value
     real(dp), allocatable :: val_sym(:)             !< sym_factors: values given to MUMPS
@@ -65,7 +68,7 @@ contains
 
   !> Build the pattern, the element -> slot maps, the METIS ordering and the MUMPS analysis, once.
   subroutine sparse_setup(sys, neq, elem_ptr, elem_eq, eq_node, symmetric, stat, errmsg, use_metis, &
-      symmetric_factors)
+      symmetric_factors, single_factors)
     type(sparse_system_t), intent(inout) :: sys     !< system (any previous content is destroyed)
     integer, intent(in) :: neq                      !< number of free equations (1..neq)
     integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
@@ -76,6 +79,7 @@ contains
     character(len=*), intent(out) :: errmsg         !< reason on failure
     logical, intent(in), optional :: use_metis      !< false: natural order (for comparisons); default true
     logical, intent(in), optional :: symmetric_factors !< unsymmetric only: LDL^T factors of (A + A^T)/2
+    logical, intent(in), optional :: single_factors !< single-precision factors (a preconditioner only)
     character(len=*), parameter :: here = 'sparse_setup'
     integer, allocatable :: xadj(:), adjncy(:), node_position(:)
     integer :: nnode, nelem, i, k, m, j
@@ -148,6 +152,8 @@ contains
 
     sys%sym_factors = .false.
     if (present(symmetric_factors)) sys%sym_factors = symmetric_factors .and. .not. symmetric
+    sys%single_factors = .false.
+    if (present(single_factors)) sys%single_factors = single_factors
     if (sys%sym_factors) then
       ! the upper triangle of the (structurally symmetric: element pattern) full pattern and each entry's mirror
       m = count(sys%irn <= sys%jcn)
@@ -168,9 +174,10 @@ contains
       end do
       sys%val_sym = 0.0_dp
       call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
-        sys%eq_position, stat, errmsg)
+        sys%eq_position, stat, errmsg, single=sys%single_factors)
     else
-      call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg)
+      call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg, &
+        single=sys%single_factors)
     end if
     sys%n_analysis = sys%n_analysis + 1
     sys%t_analysis = sys%t_analysis + seconds_since(c0)
@@ -230,10 +237,10 @@ contains
   end subroutine sparse_factorize
 
   !> True when the factors are those of the stored matrix (sparse_solve solves it), false when they are the
-  !> symmetric part's (a preconditioner for sparse_solve_krylov only).
+  !> symmetric part's or in single precision (a preconditioner for sparse_solve_krylov only).
   logical function sparse_factors_exact(sys)
     type(sparse_system_t), intent(in) :: sys        !< system
-    sparse_factors_exact = .not. sys%sym_factors
+    sparse_factors_exact = .not. (sys%sym_factors .or. sys%single_factors)
   end function sparse_factors_exact
 
   !> Solve with the last factors (MUMPS JOB = 3): rhs in, x out; x = A^-1 rhs unless the factors are symmetric
@@ -418,6 +425,7 @@ contains
     if (allocated(sys%lo_entry)) deallocate(sys%lo_entry)
     if (allocated(sys%val_sym)) deallocate(sys%val_sym)
     sys%sym_factors = .false.
+    sys%single_factors = .false.
     sys%neq = 0
     sys%ready = .false.
     sys%t_analysis = 0.0_dp

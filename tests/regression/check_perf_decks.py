@@ -103,11 +103,13 @@ def case_newton_modes(a):
     Newton (R_n = 0.005 of the force scale, so rtol 5e-3 on the reaction; measured < 1e-4); krylov reuses one
     factorization (the GMRES solves are exact to 1e-8, so it takes the same Newton iterations as full Newton) and
     modified Newton factorizes less often than it iterates. auto is an inexact Newton-Krylov method (forcing terms
-    of Eisenstat and Walker) and auto-symmetric preconditions with LDL^T factors of the symmetric part (this deck's
-    UEL is UNSYMM): both still end within the Newton tolerance of full Newton."""
+    of Eisenstat and Walker), auto-symmetric preconditions with LDL^T factors of the symmetric part (this deck's
+    UEL is UNSYMM) and auto-single with single-precision factors: all still end within the Newton tolerance of full
+    Newton."""
     res = {}
     variants = {'full': ['--newton', 'full'], 'modified': ['--newton', 'modified'], 'krylov': ['--newton', 'krylov'],
-                'auto': ['--newton', 'auto'], 'auto-symmetric': ['--newton', 'auto', '--factors', 'symmetric']}
+                'auto': ['--newton', 'auto'], 'auto-symmetric': ['--newton', 'auto', '--factors', 'symmetric'],
+                'auto-single': ['--newton', 'auto', '--factors', 'single']}
     for mode, opts in variants.items():
         rows, log = run(a, os.path.join(a.out, mode), *opts)
         inc, att, cut, its, fac = summary_int(log, r'^increments (\d+), attempts (\d+), cutbacks (\d+), '
@@ -115,7 +117,7 @@ def case_newton_modes(a):
         res[mode] = (float(rows[-1]['TOP.RF3']), int(its), int(fac))
         print(mode, res[mode])
     rf = res['full'][0]
-    for mode in ('modified', 'krylov', 'auto', 'auto-symmetric'):
+    for mode in ('modified', 'krylov', 'auto', 'auto-symmetric', 'auto-single'):
         check('%s: final RF3 equals full Newton (rtol 5e-3)' % mode, abs(res[mode][0] - rf) <= 5e-3 * abs(rf),
               '%.8g vs %.8g' % (res[mode][0], rf))
     check('full Newton: one factorization per iteration', res['full'][1] == res['full'][2], str(res['full']))
