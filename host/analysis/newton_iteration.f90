@@ -212,14 +212,14 @@ contains
             call sparse_solve(an%sys, r, stat, smsg)
             if (ns%t_solve_last <= 0.0_dp) ns%t_solve_last = sparse_time_solve(an%sys) - t0s
           else
-            ! factors of the symmetric part (--factors symmetric): GMRES with them, the whole budget; when it
-            ! does not reach tol, its best iterate (the residual only decreases in GMRES) is an inexact step
+            ! preconditioning factors only (--factors symmetric/single): GMRES with them, the whole budget; when
+            ! it does not reach tol, its best iterate (the residual only decreases in GMRES) is an inexact step
             call sparse_solve_krylov(an%sys, r(1:an%neq), tol, krylov_max_iter, krylov_max_iter, kit, stat, smsg)
             if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%sys) - t0s) / real(kit, dp)
             summary%krylov_iterations = summary%krylov_iterations + kit
             summary%krylov_solves = summary%krylov_solves + 1
             if (stat == 1) then
-              if (verbose) call output_log(out, '    GMRES with fresh symmetric factors short of its tolerance '// &
+              if (verbose) call output_log(out, '    GMRES with fresh preconditioning factors short of its tolerance '// &
                 'after '//itoa(kit)//' iterations: best iterate used (an inexact Newton step)')
               stat = 0
             end if

@@ -243,8 +243,8 @@ contains
     sparse_factors_exact = .not. (sys%sym_factors .or. sys%single_factors)
   end function sparse_factors_exact
 
-  !> Solve with the last factors (MUMPS JOB = 3): rhs in, x out; x = A^-1 rhs unless the factors are symmetric
-  !> factors of an unsymmetric A (sparse_factors_exact).
+  !> Solve with the last factors (MUMPS JOB = 3): rhs in, x out; x = A^-1 rhs only when sparse_factors_exact
+  !> (otherwise an approximation: factors of the symmetric part, or in single precision).
   subroutine sparse_solve(sys, rhs, stat, errmsg)
     type(sparse_system_t), intent(inout) :: sys     !< factored system
     real(dp), intent(inout) :: rhs(:)               !< right-hand side (size neq) in, solution out
