@@ -86,12 +86,12 @@ contains
         return
       end if
     end if
+    msg = ''
+    if (an%sym_factors .and. .not. an%symmetric) msg = ' (LDL^T factors of (K+K^T)/2 precondition GMRES)'
+    if (an%single_factors) msg = msg//' (single-precision factors precondition GMRES)'
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
-      itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver'// &
-        trim(merge(' (LDL^T factors of (K+K^T)/2 precondition GMRES)', '                                                ', &
-        an%sym_factors .and. .not. an%symmetric))//trim(merge(' (single-precision factors precondition GMRES)', &
-        '                                              ', an%single_factors))//'; UEL: '// &
-      routines%uel_origin//'; UMAT: '//routines%umat_origin)
+      itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver'//msg// &
+      '; UEL: '//routines%uel_origin//'; UMAT: '//routines%umat_origin)
     summary%newton = opt%newton
     summary%plastic_statev = opt%plastic_statev
     if (summary%plastic_statev < 0) summary%plastic_statev = merge(7, 0, routines%umat_origin == 'built-in ldfcz UMAT')
