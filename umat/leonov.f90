@@ -469,6 +469,20 @@ contains
     ok = ieee_is_finite(norm) .and. all(ieee_is_finite(jac))
   end subroutine local_residual
 
+  !> Elastic fast path: .true. when the increment is treated as elastic (no return), from the trial q = tau_bar/G.
+  !> The Eyring increment at the trial stress, dt sinh(tau_tr/tau_0)/A(gamma_n), bounds dgamma (the return lowers
+  !> tau_bar; the softening of A over dgamma is a factor 1 + O(dgamma)); below dgamma_elastic the increment is
+  !> elastic. Also elastic: dt <= 0 and a deviator below q_elastic.
+  pure logical function elastic_increment(p, dt, q_tr, press, gamma_n)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: dt, q_tr, press, gamma_n
+    real(dp) :: la, dla
+    elastic_increment = .true.
+    if (.not. (dt > 0.0_dp) .or. q_tr <= q_elastic) return
+    call log_a(p, press, gamma_n, la, dla)
+    elastic_increment = log(dt) + leonov_ln_sinh(p%g * q_tr / p%tau_0) - la < log_dgamma_elastic
+  end function elastic_increment
+
   !> Implicit exponential-map return on the principal log elastic stretches (see the module header).
   !> Also returns what the consistent tangent needs (implicit function theorem at the converged root of
   !> R(x; e_tr, p) = 0: dx = -(dR/dx)^-1 (dR/de_tr de_tr + dR/dp dp), dR/dx = the local Newton Jacobian):
@@ -481,7 +495,7 @@ contains
     integer, intent(out) :: stat
     real(dp), intent(out) :: dedetr(3, 3), dedp(3), phi
     real(dp) :: b(3), d(3), q_tr, tau_tr, u, tau, x(4), xt(4), r(4), jac(4, 4), dx(4), norm, norm_t, alpha, sc
-    real(dp) :: la, dla, rhs(4, 4), sens(4, 4)
+    real(dp) :: rhs(4, 4), sens(4, 4)
     logical :: ok, accepted
     integer :: it, ls
 
@@ -492,12 +506,8 @@ contains
     dedp = 0.0_dp
     phi = 0.0_dp
     call principal_measures(etr, b, d, q_tr)
-    if (.not. (dt > 0.0_dp) .or. q_tr <= q_elastic) return
+    if (elastic_increment(p, dt, q_tr, press, gamma_n)) return
     tau_tr = p%g * q_tr
-    ! elastic fast path: the Eyring rate at the trial stress bounds dgamma (the return lowers tau_bar; the
-    ! softening of A over dgamma is a factor 1 + O(dgamma)); below dgamma_elastic the increment is elastic
-    call log_a(p, press, gamma_n, la, dla)
-    if (log(dt) + leonov_ln_sinh(tau_tr / p%tau_0) - la < log_dgamma_elastic) return
     call predictor(p, tau_tr, press, dt, gamma_n, u)
     tau = max(tau_tr - p%g * exp(u), 1.0e-12_dp * tau_tr)
     x(1:3) = etr * (tau / tau_tr)
@@ -580,7 +590,7 @@ contains
     integer, intent(out) :: stat
     real(dp), intent(inout), optional :: c(6, 6)   !< consistent tangent (set only when stat = leonov_ok)
     real(dp) :: j0, j1, frel(3, 3), ft(3, 3), betr(3, 3), lam(3), v(3, 3), etr(3), e(3), press, dgamma, detb
-    real(dp) :: be(3, 3), bt(3, 3), sigma(3, 3), la, dla, s, ds, x, dedetr(3, 3), dedp(3), phi
+    real(dp) :: be(3, 3), bt(3, 3), sigma(3, 3), dedetr(3, 3), dedp(3), phi, dbe(3, 3), q_tr
     integer :: a
 
     new = old
@@ -599,22 +609,53 @@ contains
     ft = frel * (j1 / j0)**(-third)
     betr = matmul(ft, matmul(old%be * detb**(-third), transpose(ft)))
     if (.not. all(ieee_is_finite(betr))) return
+    ! p = -tr(sigma)/3 = -kappa (J - 1) (Eq. 38; the hardening and driving deviators are traceless)
+    press = -p%kappa * (j1 - 1.0_dp)
+    bt = j1**(-2.0_dp * third) * matmul(f1, transpose(f1))
+    ! elastic fast path in Cartesian form (most points of a peel run: the bonded coating ahead of the front):
+    ! Be~_n+1 = Be~_trial, no eigen-decomposition. tau_bar/G = |dev Be~_trial|/sqrt(2) as in principal_measures
+    ! (det Be~_trial = 1 to round-off: det F~_rel = 1 and Be~_n is rescaled to det 1 above). Only for moderate
+    ! elastic strains (q < 1); larger trial deviators take the spectral route with its range checks.
+    dbe = dev3(betr)
+    q_tr = sqrt(0.5_dp * sum(dbe * dbe))
+    if (q_tr < 1.0_dp) then
+      if (elastic_increment(p, dt, q_tr, press, old%gamma_p)) then
+        be = betr
+        sigma = p%g * dbe + p%kappa * (j1 - 1.0_dp) * identity + p%g_r * dev3(bt)
+        dgamma = 0.0_dp
+        call finish_update(p, old, be, sigma, dgamma, press, j1, dt, new, tau_k)
+        if (present(c)) call elastic_tangent(p, j1, sigma, be, bt, c)
+        stat = leonov_ok
+        return
+      end if
+    end if
     call sym3_eigen(betr, lam, v)
     if (.not. all(lam > 0.0_dp)) return
     etr = 0.5_dp * log(lam)
     etr = etr - third * sum(etr)
     if (maxval(abs(etr)) > 25.0_dp) return
-    ! p = -tr(sigma)/3 = -kappa (J - 1) (Eq. 38; the hardening and driving deviators are traceless)
-    press = -p%kappa * (j1 - 1.0_dp)
     call return_map(p, etr, press, dt, old%gamma_p, e, dgamma, stat, dedetr, dedp, phi)
     if (stat /= leonov_ok) return
     be = 0.0_dp
     do a = 1, 3
       be = be + exp(2.0_dp * e(a)) * spread(v(:, a), 2, 3) * spread(v(:, a), 1, 3)
     end do
-    bt = j1**(-2.0_dp * third) * matmul(f1, transpose(f1))
     ! Eqs. 31-33
     sigma = p%g * dev3(be) + p%kappa * (j1 - 1.0_dp) * identity + p%g_r * dev3(bt)
+    call finish_update(p, old, be, sigma, dgamma, press, j1, dt, new, tau_k)
+    if (present(c)) call consistent_tangent(p, j1, sigma, bt, v, etr, e, dedetr, dedp, phi, c)
+    stat = leonov_ok
+
+  end subroutine kirchhoff_update
+
+  !> Kirchhoff stress and the new state (with its outputs tau_bar, S, eta, rate) from Be~_n+1, sigma and dgamma.
+  pure subroutine finish_update(p, old, be, sigma, dgamma, press, j1, dt, new, tau_k)
+    type(leonov_props), intent(in) :: p
+    type(leonov_state), intent(in) :: old
+    real(dp), intent(in) :: be(3, 3), sigma(3, 3), dgamma, press, j1, dt
+    type(leonov_state), intent(inout) :: new
+    real(dp), intent(out) :: tau_k(3, 3)
+    real(dp) :: s, ds, la, dla, x
     tau_k = j1 * sigma
     new%be = be
     new%gamma_p = old%gamma_p + dgamma
@@ -630,9 +671,35 @@ contains
     else
       new%gamma_dot = 0.0_dp
     end if
-    if (present(c)) call consistent_tangent(p, j1, sigma, bt, v, etr, e, dedetr, dedp, phi, c)
-    stat = leonov_ok
-  end subroutine kirchhoff_update
+  end subroutine finish_update
+
+  !> Tangent of an elastic increment (Be~_n+1 = Be~_trial), Cartesian: the elastic limit of consistent_tangent
+  !> (phi = 0, de/de_tr = identity, de/dp = 0, c_ab = b_a + b_b), i.e. dBe~ = dE' Be~ + Be~ dE' for dF = dE F:
+  !>   dtau/J = dev(dE' M + M dE') + tr(dE) (sigma + kappa J I),  M = G Be~ + G_r B~,  dE' = dev(dE)  (Eqs. 31-33).
+  pure subroutine elastic_tangent(p, j1, sigma, be, bt, c)
+    type(leonov_props), intent(in) :: p
+    real(dp), intent(in) :: j1, sigma(3, 3), be(3, 3), bt(3, 3)
+    real(dp), intent(out) :: c(6, 6)
+    real(dp) :: mm(3, 3), dd(3, 3), dsig(3, 3), tr
+    integer :: i, j, k, kk
+    mm = p%g * be + p%g_r * bt
+    do k = 1, 6
+      i = voigt_i(k)
+      j = voigt_j(k)
+      dd = 0.0_dp
+      dd(i, j) = 0.5_dp
+      dd(j, i) = dd(j, i) + 0.5_dp
+      tr = dd(1, 1) + dd(2, 2) + dd(3, 3)
+      dd = dev3(dd)
+      dsig = dev3(matmul(dd, mm) + matmul(mm, dd)) + tr * sigma
+      do kk = 1, 3
+        dsig(kk, kk) = dsig(kk, kk) + p%kappa * j1 * tr
+      end do
+      do kk = 1, 6
+        c(kk, k) = dsig(voigt_i(kk), voigt_j(kk))
+      end do
+    end do
+  end subroutine elastic_tangent
 
   !> x/tanh(x), smooth at 0.
   elemental real(dp) function x_over_tanh(x)

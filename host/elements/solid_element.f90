@@ -28,6 +28,7 @@ module solid_element
   use solid_umat_interface, only: umat_interface
   use solid_shape, only: solid_shape_eval, solid_gauss_point, SHAPE_C3D8, SHAPE_CPE4
   use solid_elastic, only: elastic_update, elastic_check
+  use solid_tangent_kernel, only: k_point_c3d8
   implicit none
   private
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
@@ -520,24 +521,6 @@ contains
     end do
     if (nlgeom) q(1:ndim, 1:ndim) = q(1:ndim, 1:ndim) - (1.0_dp - 1.0_dp / m) * sig(1:ndim, 1:ndim)
   end subroutine spatial_tangent
-
-  !> Tangent contribution of one C3D8 integration point: kl(i, a, k, b) += sum_j dN_a/dx_j t_ij with
-  !> t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv (fixed sizes, so the compiler unrolls and vectorises it).
-  pure subroutine k_point_c3d8(a4, q, dndx, bc, dv, kl)
-    real(dp), intent(in) :: a4(3, 3, 3, 3), q(3, 3), dndx(maxnode, 3), bc(maxnode, 3), dv
-    real(dp), intent(inout) :: kl(8, 3, 3, 8)    !< kl(a, i, k, b): node a fastest (contiguous 8-vectors)
-    real(dp) :: t(3, 3)
-    integer :: b, k, i
-    do b = 1, 8
-      do k = 1, 3
-        t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
-             + a4(:, :, k, 3) * dndx(b, 3)) * dv
-        do i = 1, 3
-          kl(:, i, k, b) = kl(:, i, k, b) + t(i, 1) * dndx(:, 1) + t(i, 2) * dndx(:, 2) + t(i, 3) * dndx(:, 3)
-        end do
-      end do
-    end do
-  end subroutine k_point_c3d8
 
   !> Number of PROPS of a material (0 when none were given).
   pure integer function nprops_of(mat)
