@@ -10,6 +10,7 @@ endif()
 # finite-difference check of the assembled tangent (host assembly + continuum element + sparse system)
 if(TARGET ldfcz_host)
   ldfcz_add_pf_suite(NAME test_assembled_tangent PF test_assembled_tangent.pf LINK ldfcz_host ldfcz_abaqus_utils)
+  ldfcz_add_pf_suite(NAME test_element_colors PF test_element_colors.pf LINK ldfcz_host)
 endif()
 
 if(NOT TARGET ldfcz)

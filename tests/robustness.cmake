@@ -43,8 +43,8 @@ add_test(NAME robust_kill_flush
 set_tests_properties(robust_kill_flush PROPERTIES LABELS "robustness" TIMEOUT 200)
 
 # thread safety of the element loop (UMAT, UEL and continuum element called by two threads at once): 1 and 2
-# threads give the same results to round-off; the Debug build also stops on a routine entered by two threads
-# without -frecursive (cmake/LdfczCompilerFlags.cmake)
+# threads give bitwise the same results (coloured assembly); the Debug build also stops on a routine entered by
+# two threads without -frecursive (cmake/LdfczCompilerFlags.cmake)
 add_test(NAME robust_threads_agree
   COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_threads.py" --exe $<TARGET_FILE:ldfcz>
           --deck "${PROJECT_SOURCE_DIR}/decks/stability/stab_peel_brittle_viscous.inp" --increments 40

@@ -680,23 +680,27 @@ contains
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: j1, sigma(3, 3), be(3, 3), bt(3, 3)
     real(dp), intent(out) :: c(6, 6)
-    real(dp) :: mm(3, 3), dd(3, 3), dsig(3, 3), tr
-    integer :: i, j, k, kk
+    real(dp) :: mm(3, 3), trm, tr, trx, x
+    integer :: i, j, k, kk, a, b
+    ! column k: dE = (e_i e_j^T + e_j e_i^T)/2, tr = delta_ij; X = dE' M + M dE' = dE M + M dE - (2 tr/3) M,
+    ! (dE M + M dE)_ab = (delta_ai M_jb + delta_aj M_ib + M_ai delta_bj + M_aj delta_bi)/2, tr X = 2 M_ij - (2 tr/3) tr M
     mm = p%g * be + p%g_r * bt
+    trm = mm(1, 1) + mm(2, 2) + mm(3, 3)
     do k = 1, 6
       i = voigt_i(k)
       j = voigt_j(k)
-      dd = 0.0_dp
-      dd(i, j) = 0.5_dp
-      dd(j, i) = dd(j, i) + 0.5_dp
-      tr = dd(1, 1) + dd(2, 2) + dd(3, 3)
-      dd = dev3(dd)
-      dsig = dev3(matmul(dd, mm) + matmul(mm, dd)) + tr * sigma
-      do kk = 1, 3
-        dsig(kk, kk) = dsig(kk, kk) + p%kappa * j1 * tr
-      end do
+      tr = merge(1.0_dp, 0.0_dp, i == j)
+      trx = 2.0_dp * mm(i, j) - 2.0_dp * third * tr * trm
       do kk = 1, 6
-        c(kk, k) = dsig(voigt_i(kk), voigt_j(kk))
+        a = voigt_i(kk)
+        b = voigt_j(kk)
+        x = -2.0_dp * third * tr * mm(a, b)
+        if (a == i) x = x + 0.5_dp * mm(j, b)
+        if (a == j) x = x + 0.5_dp * mm(i, b)
+        if (b == j) x = x + 0.5_dp * mm(a, i)
+        if (b == i) x = x + 0.5_dp * mm(a, j)
+        if (a == b) x = x - third * trx + p%kappa * j1 * tr
+        c(kk, k) = x + tr * sigma(a, b)
       end do
     end do
   end subroutine elastic_tangent

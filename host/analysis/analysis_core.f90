@@ -7,6 +7,7 @@ module analysis_core
   use model_types, only: model_t, etype_c3d8, etype_cpe4, etype_user
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
+  use element_colors, only: color_elements
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
     sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
@@ -53,6 +54,9 @@ module analysis_core
     logical :: sys_ready = .false.
     type(user_routines_t) :: routines           !< UEL and UMAT in use
     integer :: max_ndofel = 0
+    integer :: ncolor = 0                       !< element colours (element_colors: no shared dof within one)
+    integer, allocatable :: color_ptr(:)        !< (ncolor+1) into color_elem
+    integer, allocatable :: color_elem(:)       !< (nelem) elements by colour
     real(dp) :: t_factor_done = 0.0_dp          !< factorization seconds of earlier sparse systems (pattern changes)
     real(dp) :: t_solve_done = 0.0_dp           !< solve seconds of earlier sparse systems
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
@@ -132,6 +136,7 @@ contains
       an%used(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)) = .true.
     end do
     an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
+    call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%ncolor, an%color_ptr, an%color_elem)
 
     ! materials per section
     allocate (an%mats(max(1, model%nsection)))
@@ -277,7 +282,7 @@ contains
     real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
     integer, intent(out) :: stat                         !< 0 ok, 1 an element failed
     character(len=:), allocatable, intent(out) :: errmsg !< message of the first failure
-    integer :: ie, n, k, fail_elem, st
+    integer :: ie, ic, c, n, k, fail_elem, st
     real(dp), allocatable :: ke(:, :), fel(:)
     real(dp) :: pn
     character(len=256) :: msg, first_msg
@@ -290,32 +295,39 @@ contains
     fail_elem = huge(1)
     first_msg = ''
     if (want_k) call sparse_zero(an%sys)
-    !$omp parallel default(shared) private(ie, n, ke, fel, pn, st, msg)
+    ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
+    ! contributions in the same order on any number of threads
+    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg)
     allocate (ke(an%max_ndofel, an%max_ndofel), fel(an%max_ndofel))
-    !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min)
-    do ie = 1, model%nelem
-      n = an%elem_ptr(ie + 1) - an%elem_ptr(ie)
-      pn = pnewdt_large
-      call element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel(1:n), &
-        ke(1:n, 1:n), pn, st, msg)
-      if (st /= 0) then
-        !$omp critical (analysis_fail)
-        if (model%elem_id(ie) < fail_elem) then
-          fail_elem = model%elem_id(ie)
-          first_msg = msg
+    do c = 1, an%ncolor
+      !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min)
+      do ic = an%color_ptr(c), an%color_ptr(c + 1) - 1
+        ie = an%color_elem(ic)
+        ! a model truncated to its first elements (stop_report's search for the element that called XIT)
+        if (ie > model%nelem) cycle
+        n = an%elem_ptr(ie + 1) - an%elem_ptr(ie)
+        pn = pnewdt_large
+        call element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel(1:n), &
+          ke(1:n, 1:n), pn, st, msg)
+        if (st /= 0) then
+          !$omp critical (analysis_fail)
+          if (model%elem_id(ie) < fail_elem) then
+            fail_elem = model%elem_id(ie)
+            first_msg = msg
+          end if
+          !$omp end critical (analysis_fail)
+          fel(1:n) = 0.0_dp
+          ke(1:n, 1:n) = 0.0_dp
         end if
-        !$omp end critical (analysis_fail)
-        fel(1:n) = 0.0_dp
-        ke(1:n, 1:n) = 0.0_dp
-      end if
-      pnewdt_min = min(pnewdt_min, pn)
-      an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
-      if (want_k) then
-        if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
-        call sparse_add_element(an%sys, ie, ke(1:n, 1:n))
-      end if
+        pnewdt_min = min(pnewdt_min, pn)
+        an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
+        if (want_k) then
+          if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
+          call sparse_add_element(an%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+        end if
+      end do
+      !$omp end do
     end do
-    !$omp end do
     deallocate (ke, fel)
     !$omp end parallel
     an%fint = 0.0_dp

@@ -193,15 +193,30 @@ contains
 
   !> Add the element matrix ke (n_e x n_e, element dof order) of element ielem into its slots.
   !> Safe when called concurrently from OpenMP threads for different (or the same) elements: atomic adds.
-  subroutine sparse_add_element(sys, ielem, ke)
+  subroutine sparse_add_element(sys, ielem, ke, exclusive)
     type(sparse_system_t), intent(inout) :: sys     !< system
     integer, intent(in) :: ielem                    !< element number (1..nelem)
     real(dp), intent(in) :: ke(:, :)                !< element matrix, full (symmetric when the system is)
+    !> .true.: no other thread adds to this element's entries meanwhile (coloured assembly): plain additions
+    logical, intent(in), optional :: exclusive
     integer :: a, b, n, s
     integer(i8) :: p
+    logical :: excl
 
+    excl = .false.
+    if (present(exclusive)) excl = exclusive
     n = sys%elem_size(ielem)
     p = sys%slot_ptr(ielem)
+    if (excl) then
+      do b = 1, n
+        do a = 1, n
+          s = sys%slot(p)
+          p = p + 1
+          if (s /= 0) sys%val(s) = sys%val(s) + ke(a, b)
+        end do
+      end do
+      return
+    end if
     do b = 1, n
       do a = 1, n
         s = sys%slot(p)
