@@ -21,7 +21,8 @@
 !> perturbation dF = eps/2 (e_i e_j^T + e_j e_i^T) F_n+1 (Miehe 1996): implicit function theorem at the converged
 !> return for the principal values, spectral derivative of the isotropic map Be~_trial -> Be~_n+1 for the
 !> eigenvectors (subroutine consistent_tangent). The central perturbation (13 local solves) is kept as an option.
-!> Elastic fast path: no return when the Eyring increment at the trial stress is below 1e-10 (docs/umat.md).
+!> Elastic fast path: no return when the Eyring increment at the trial stress is below 1e-10 (docs/umat.md), worked in
+!> Cartesian form on Be~_trial (no eigen-decomposition; subroutine elastic_tangent for its tangent).
 module leonov
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
@@ -645,7 +646,6 @@ contains
     call finish_update(p, old, be, sigma, dgamma, press, j1, dt, new, tau_k)
     if (present(c)) call consistent_tangent(p, j1, sigma, bt, v, etr, e, dedetr, dedp, phi, c)
     stat = leonov_ok
-
   end subroutine kirchhoff_update
 
   !> Kirchhoff stress and the new state (with its outputs tau_bar, S, eta, rate) from Be~_n+1, sigma and dgamma.
@@ -683,7 +683,8 @@ contains
     real(dp) :: mm(3, 3), trm, tr, trx, x
     integer :: i, j, k, kk, a, b
     ! column k: dE = (e_i e_j^T + e_j e_i^T)/2, tr = delta_ij; X = dE' M + M dE' = dE M + M dE - (2 tr/3) M,
-    ! (dE M + M dE)_ab = (delta_ai M_jb + delta_aj M_ib + M_ai delta_bj + M_aj delta_bi)/2, tr X = 2 M_ij - (2 tr/3) tr M
+    ! (dE M + M dE)_ab = (delta_ai M_jb + delta_aj M_ib + M_ai delta_bj + M_aj delta_bi)/2,
+    ! tr X = 2 M_ij - (2 tr/3) tr M
     mm = p%g * be + p%g_r * bt
     trm = mm(1, 1) + mm(2, 2) + mm(3, 3)
     do k = 1, 6

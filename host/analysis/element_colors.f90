@@ -17,7 +17,7 @@ contains
   pure subroutine color_elements(nelem, ndof, elem_ptr, elem_dof, ncolor, color_ptr, color_elem)
     integer, intent(in) :: nelem                         !< number of elements
     integer, intent(in) :: ndof                          !< number of dofs
-    integer, intent(in) :: elem_ptr(:)                   !< (nelem+1) element e's dofs: elem_dof(elem_ptr(e):elem_ptr(e+1)-1)
+    integer, intent(in) :: elem_ptr(:)                   !< (nelem+1) dofs of e: elem_dof(elem_ptr(e):elem_ptr(e+1)-1)
     integer, intent(in) :: elem_dof(:)                   !< global dof of each element dof (1..ndof)
     integer, intent(out) :: ncolor                       !< number of colours
     integer, allocatable, intent(out) :: color_ptr(:)    !< (ncolor+1)
