@@ -8,7 +8,9 @@
 !> may run in any OpenMP schedule without colouring. Atomic adds make the sum order (and so the last bits of a
 !> value shared by several elements) depend on the schedule; the tests compare threaded and serial assembly to a
 !> relative tolerance for that reason. The library must be compiled with OpenMP for the directive to act (the
-!> CMake target links OpenMP::OpenMP_Fortran when found).
+!> CMake target links OpenMP::OpenMP_Fortran when found). With exclusive=.true. the caller guarantees that no other
+!> thread adds to the element's entries meanwhile (the host's coloured element loop, host/analysis/element_colors):
+!> plain additions in a fixed order, so the assembled matrix does not depend on the thread count.
 !>
 !> Symmetric systems store the upper triangle (row <= column) and are factorized by MUMPS as LDL^T (SYM = 2);
 !> the caller passes a symmetric ke and only its entries that map to the upper triangle are added.
