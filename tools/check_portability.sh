@@ -12,8 +12,9 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-# Dependency order: kinds, then each area's modules in the order its CMakeLists lists them, then the adapters.
-sources=("$root/common/ldfcz_kinds.f90")
+# Dependency order: kinds and the finiteness test (common/), then each area's modules in the order its CMakeLists
+# lists them, then the adapters.
+sources=("$root/common/ldfcz_kinds.f90" "$root/common/ldfcz_finite.f90")
 for area in uel umat; do
   [ -f "$root/$area/CMakeLists.txt" ] || continue
   while read -r f; do sources+=("$root/$area/$f"); done < <(

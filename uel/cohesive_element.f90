@@ -10,7 +10,7 @@
 !> the contact stiffness is then unsymmetric.
 !> Pure and host-free: no SAVE, no module state.
 module cohesive_element
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use ldfcz_finite, only: is_finite
   use ldfcz_kinds, only: dp
   use cohesive_law, only: cohesive_props, law_ldf, law_classical, ldf_traction, contact_traction, classical_traction
   implicit none
@@ -196,7 +196,7 @@ contains
       x(1:ndim, k) = coords0(1:ndim, k) + u(ndim * (k - 1) + 1:ndim * k)
       xs(1:ndim, k) = u(ndim * (k - 1) + 1:ndim * k) - u_start(ndim * (k - 1) + 1:ndim * k)
     end do
-    if (.not. all(ieee_is_finite(x))) then
+    if (.not. all(is_finite(x))) then
       stat = stat_bad_state
       errmsg = proc // ': non-finite nodal position'
       return

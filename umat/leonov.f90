@@ -24,7 +24,7 @@
 !> Elastic fast path: no return when the Eyring increment at the trial stress is below 1e-10 (docs/umat.md), worked in
 !> Cartesian form on Be~_trial (no eigen-decomposition; subroutine elastic_tangent for its tangent).
 module leonov
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use ldfcz_finite, only: is_finite
   use ldfcz_kinds, only: dp
   use leonov_parameters, only: leonov_props
   implicit none
@@ -130,36 +130,38 @@ contains
     end if
   end function log1p_exp_neg
 
-  !> logistic(x) = 1/(1 + exp(-x)) without overflow.
-  elemental real(dp) function logistic(x)
-    real(dp), intent(in) :: x
-    if (x >= 0.0_dp) then
-      logistic = 1.0_dp / (1.0_dp + exp(-min(x, 745.0_dp)))
-    else
-      logistic = exp(max(x, -745.0_dp)) / (1.0_dp + exp(max(x, -745.0_dp)))
-    end if
-  end function logistic
-
   !> ln R_gamma(gamma_p) of Eq. 42 in log space:
   !> ln R = ((r2 - 1)/r1) [softplus(r1 (ln r0 + gamma_p)) - softplus(r1 ln r0)]; finite for every finite gamma_p
   !> (the printed form overflows for gamma_p > ~3.5 with r1 = 200).
   elemental real(dp) function leonov_log_r_gamma(p, gamma_p)
     type(leonov_props), intent(in) :: p   !< properties (r0, r1, r2)
     real(dp), intent(in) :: gamma_p       !< equivalent plastic strain
-    real(dp) :: lr0
-    lr0 = log(p%r0)
-    leonov_log_r_gamma = ((p%r2 - 1.0_dp) / p%r1) * (softplus(p%r1 * (lr0 + gamma_p)) - softplus(p%r1 * lr0))
+    leonov_log_r_gamma = ((p%r2 - 1.0_dp) / p%r1) * (softplus(p%r1 * (p%ln_r0 + gamma_p)) - p%softplus_0)
   end function leonov_log_r_gamma
 
-  !> S(gamma_p) = S_a R_gamma (Eq. 41) and dS/dgamma_p.
+  !> S(gamma_p) = S_a R_gamma (Eq. 41) and dS/dgamma_p = S (r2 - 1) logistic(z), z = r1 (ln r0 + gamma_p): the
+  !> softplus of leonov_log_r_gamma and the logistic share e = exp(-|z|) (softplus(z) = max(z, 0) + ln(1 + e),
+  !> logistic(z) = 1/(1 + e) for z >= 0, e/(1 + e) otherwise): three transcendental calls in all.
   elemental subroutine softening(p, gamma_p, s, ds)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: gamma_p
     real(dp), intent(out) :: s, ds
-    real(dp) :: r
-    r = exp(max(leonov_log_r_gamma(p, gamma_p), -700.0_dp))
-    s = p%s_a * r
-    ds = p%s_a * r * (p%r2 - 1.0_dp) * logistic(p%r1 * (log(p%r0) + gamma_p))
+    real(dp) :: z, y, e, l1, lg
+    z = p%r1 * (p%ln_r0 + gamma_p)
+    y = abs(z)
+    e = exp(-min(y, 745.0_dp))
+    if (y > 30.0_dp) then
+      l1 = e                     ! ln(1 + e) = e to round-off
+    else
+      l1 = log(1.0_dp + e)
+    end if
+    if (z >= 0.0_dp) then
+      lg = 1.0_dp / (1.0_dp + e)
+    else
+      lg = e / (1.0_dp + e)
+    end if
+    s = p%s_a * exp(max(((p%r2 - 1.0_dp) / p%r1) * (max(z, 0.0_dp) + l1 - p%softplus_0), -700.0_dp))
+    ds = s * (p%r2 - 1.0_dp) * lg
   end subroutine softening
 
   !> ln sinh(x) for x > 0 without overflow.
@@ -181,6 +183,8 @@ contains
     real(dp), intent(in) :: x   !< argument tau_bar/tau_0 >= 0
     if (x < 1.0e-4_dp) then
       leonov_log_x_over_sinh = -x * x / 6.0_dp
+    else if (x <= 20.0_dp) then
+      leonov_log_x_over_sinh = log(x / sinh(x))
     else
       leonov_log_x_over_sinh = log(x) - leonov_ln_sinh(x)
     end if
@@ -279,11 +283,29 @@ contains
     real(dp), intent(in) :: a(4, 4), rhs(4)
     real(dp), intent(out) :: x(4)
     logical, intent(out) :: ok
-    real(dp) :: b(4, 4), xm(4, 4)
-    b = 0.0_dp
-    b(:, 1) = rhs
-    call solve4m(a, b, xm, ok)
-    x = xm(:, 1)
+    real(dp) :: m(4, 5), row(5), f
+    integer :: k, i, piv
+    m(:, 1:4) = a
+    m(:, 5) = rhs
+    ok = .false.
+    x = 0.0_dp
+    do k = 1, 4
+      piv = k - 1 + maxloc(abs(m(k:4, k)), dim=1)
+      if (.not. (abs(m(piv, k)) > 0.0_dp)) return
+      if (piv /= k) then
+        row = m(k, :)
+        m(k, :) = m(piv, :)
+        m(piv, :) = row
+      end if
+      do i = k + 1, 4
+        f = m(i, k) / m(k, k)
+        m(i, k:5) = m(i, k:5) - f * m(k, k:5)
+      end do
+    end do
+    do k = 4, 1, -1
+      x(k) = (m(k, 5) - dot_product(m(k, k + 1:4), x(k + 1:4))) / m(k, k)
+    end do
+    ok = all(is_finite(x))
   end subroutine solve4
 
   !> Solve a x = rhs for four right-hand sides (columns), Gaussian elimination with partial pivoting.
@@ -315,7 +337,7 @@ contains
         x(k, i) = (m(k, 4 + i) - dot_product(m(k, k + 1:4), x(k + 1:4, i))) / m(k, k)
       end do
     end do
-    ok = all(ieee_is_finite(x))
+    ok = all(is_finite(x))
   end subroutine solve4m
 
   ! ------------------------------------------------------------------------------------------------------------
@@ -339,27 +361,17 @@ contains
   pure subroutine principal_measures(e, b, d, q)
     real(dp), intent(in) :: e(3)
     real(dp), intent(out) :: b(3), d(3), q
-    integer :: a, c
+    real(dp) :: d12, d13, d23
     b = exp(2.0_dp * e)
-    d = 0.0_dp
-    do a = 1, 3
-      do c = 1, 3
-        if (c /= a) d(a) = d(a) + b(c) * expm1(2.0_dp * (e(a) - e(c)))
-      end do
-    end do
-    d = third * d
+    ! b_a - b_c = b_c expm1(2 (e_a - e_c)) for the three pairs; d_a = (1/3) sum_c (b_a - b_c)
+    d12 = b(2) * expm1(2.0_dp * (e(1) - e(2)))
+    d13 = b(3) * expm1(2.0_dp * (e(1) - e(3)))
+    d23 = b(3) * expm1(2.0_dp * (e(2) - e(3)))
+    d(1) = third * (d12 + d13)
+    d(2) = third * (d23 - d12)
+    d(3) = -third * (d13 + d23)
     q = sqrt(0.5_dp * sum(d * d))
   end subroutine principal_measures
-
-  !> d/dx ln(sinh(x)/x) = coth(x) - 1/x, smooth at x = 0.
-  elemental real(dp) function dlog_sinh_over_x(x)
-    real(dp), intent(in) :: x
-    if (x < 1.0e-3_dp) then
-      dlog_sinh_over_x = x / 3.0_dp - x**3 / 45.0_dp
-    else
-      dlog_sinh_over_x = coth(x) - 1.0_dp / x
-    end if
-  end function dlog_sinh_over_x
 
   !> ln A(gamma) with A = eta_0r exp(mu p/tau_0) exp(S)/tau_0 (s): the Eyring flow rule is gamma_p_dot = sinh(x)/A.
   elemental subroutine log_a(p, press, gamma_p, la, dla)
@@ -368,7 +380,7 @@ contains
     real(dp), intent(out) :: la, dla    !< ln A and d ln A / d gamma_p
     real(dp) :: s, ds
     call softening(p, gamma_p, s, ds)
-    la = log(p%eta_0r / p%tau_0) + p%mu * press / p%tau_0 + s
+    la = p%ln_eta_0r - p%ln_tau_0 + p%mu * press / p%tau_0 + s
     dla = ds
   end subroutine log_a
 
@@ -378,11 +390,12 @@ contains
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: tau_tr, press, dt, gamma_n
     real(dp), intent(out) :: u
-    real(dp) :: u_lo, u_hi, g, dg, la, dla, un
+    real(dp) :: u_lo, u_hi, g, dg, la, dla, un, ldt
     integer :: k
+    ldt = log(dt)
     u_hi = log(tau_tr / p%g)
     call log_a(p, press, gamma_n, la, dla)
-    u = min(log(dt) + leonov_ln_sinh(tau_tr / p%tau_0) - la, u_hi - log(2.0_dp))
+    u = min(ldt + leonov_ln_sinh(tau_tr / p%tau_0) - la, u_hi - log(2.0_dp))
     u_lo = u
     do k = 1, 200
       call g_of(u_lo, g, dg)
@@ -421,7 +434,7 @@ contains
         dgg = -1.0_dp
         return
       end if
-      gg = leonov_ln_sinh(tau / p%tau_0) - uu - lau + log(dt)
+      gg = leonov_ln_sinh(tau / p%tau_0) - uu - lau + ldt
       dgg = -coth(tau / p%tau_0) * p%g * dgam / p%tau_0 - 1.0_dp - dgam * dlau
     end subroutine g_of
   end subroutine predictor
@@ -430,13 +443,16 @@ contains
   !>   r_a = e_a - e_a^tr + phi d_a,  phi = dt G/(2 eta) = (dt G/(2 tau_0)) exp(-ln A) sinh(x)/x,  x = tau_bar/tau_0
   !>   (dgamma/2 N_a = dt Dp_a: the viscosity form stays smooth when tau_bar -> 0),
   !>   r_4 = ln sinh(x) - u - ln A(gamma_n + e^u) + ln dt  (Eq. 37 with dgamma = dt tau_bar/eta).
-  pure subroutine local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
+  pure subroutine local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
     type(leonov_props), intent(in) :: p
-    real(dp), intent(in) :: etr(3), press, dt, gamma_n, x(4)
+    real(dp), intent(in) :: etr(3), press
+    real(dp), intent(in) :: ldt         !< ln dt
+    real(dp), intent(in) :: lphi0       !< ln(dt G/(2 tau_0))
+    real(dp), intent(in) :: gamma_n, x(4)
     real(dp), intent(out) :: r(4), jac(4, 4), norm
     logical, intent(out) :: ok
     real(dp), intent(out) :: phi       !< dt G/(2 eta) at x
-    real(dp) :: b(3), d(3), q, dgam, xs, la, dla, dxs(3), lphi, dlx
+    real(dp) :: b(3), d(3), q, dgam, xs, la, dla, dxs(3), lphi, dlx, ls, cth
     integer :: a, c
     ok = .false.
     r = 0.0_dp
@@ -449,13 +465,24 @@ contains
     dgam = exp(x(4))
     xs = p%g * q / p%tau_0
     call log_a(p, press, gamma_n + dgam, la, dla)
-    lphi = log(dt * p%g / (2.0_dp * p%tau_0)) - la - leonov_log_x_over_sinh(xs)
+    ! ln sinh(x), ln(x/sinh x) and coth x once each (shared by r, phi and the Jacobian)
+    ls = leonov_ln_sinh(xs)
+    cth = coth(xs)
+    if (xs < 1.0e-4_dp) then
+      lphi = lphi0 - la + xs * xs / 6.0_dp
+    else
+      lphi = lphi0 - la - (log(xs) - ls)
+    end if
     if (lphi > 600.0_dp) return
     phi = exp(lphi)
-    dlx = dlog_sinh_over_x(xs)
+    if (xs < 1.0e-3_dp) then
+      dlx = xs / 3.0_dp - xs**3 / 45.0_dp
+    else
+      dlx = cth - 1.0_dp / xs
+    end if
     dxs = (p%g / p%tau_0) * b * d / q
     r(1:3) = x(1:3) - etr + phi * d
-    r(4) = leonov_ln_sinh(xs) - x(4) - la + log(dt)
+    r(4) = ls - x(4) - la + ldt
     do a = 1, 3
       do c = 1, 3
         jac(a, c) = phi * (2.0_dp * b(c) * (merge(1.0_dp, 0.0_dp, a == c) - third) + d(a) * dlx * dxs(c))
@@ -463,11 +490,11 @@ contains
       jac(a, a) = jac(a, a) + 1.0_dp
       jac(a, 4) = -phi * d(a) * dla * dgam
     end do
-    jac(4, 1:3) = coth(xs) * dxs
+    jac(4, 1:3) = cth * dxs
     jac(4, 4) = -1.0_dp - dgam * dla
     ! norm in log-strain units: r4 times the larger of d tau/d r4 / (2 G) and d(dgamma)/d u / 2
     norm = max(maxval(abs(r(1:3))), abs(r(4)) * max(p%tau_0 * tanh(xs) / (2.0_dp * p%g), 0.5_dp * dgam))
-    ok = ieee_is_finite(norm) .and. all(ieee_is_finite(jac))
+    ok = is_finite(norm) .and. all(is_finite(jac))
   end subroutine local_residual
 
   !> Elastic fast path: .true. when the increment is treated as elastic (no return), from the trial q = tau_bar/G.
@@ -496,7 +523,7 @@ contains
     integer, intent(out) :: stat
     real(dp), intent(out) :: dedetr(3, 3), dedp(3), phi
     real(dp) :: b(3), d(3), q_tr, tau_tr, u, tau, x(4), xt(4), r(4), jac(4, 4), dx(4), norm, norm_t, alpha, sc
-    real(dp) :: rhs(4, 4), sens(4, 4)
+    real(dp) :: rhs(4, 4), sens(4, 4), ldt, lphi0
     logical :: ok, accepted
     integer :: it, ls
 
@@ -510,14 +537,16 @@ contains
     if (elastic_increment(p, dt, q_tr, press, gamma_n)) return
     tau_tr = p%g * q_tr
     call predictor(p, tau_tr, press, dt, gamma_n, u)
+    ldt = log(dt)
+    lphi0 = ldt + log(p%g / (2.0_dp * p%tau_0))
     tau = max(tau_tr - p%g * exp(u), 1.0e-12_dp * tau_tr)
     x(1:3) = etr * (tau / tau_tr)
     x(4) = u
-    call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
+    call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
     if (.not. ok) then
       x(1:3) = etr
       x(4) = u
-      call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
+      call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
       if (.not. ok) then
         stat = leonov_no_convergence
         return
@@ -536,7 +565,7 @@ contains
       accepted = .false.
       do ls = 1, merge(3, 30, norm <= tol_stall)
         xt = x + alpha * dx
-        call local_residual(p, etr, press, dt, gamma_n, xt, r, jac, norm_t, ok, phi)
+        call local_residual(p, etr, press, ldt, lphi0, gamma_n, xt, r, jac, norm_t, ok, phi)
         if (ok .and. norm_t < (1.0_dp - 1.0e-4_dp * alpha) * norm) then
           accepted = .true.
           exit
@@ -545,7 +574,7 @@ contains
       end do
       if (.not. accepted) then
         ! round-off floor: accept if already tight, otherwise fail
-        call local_residual(p, etr, press, dt, gamma_n, x, r, jac, norm, ok, phi)
+        call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
         if (ok .and. norm <= tol_stall) exit
         stat = leonov_no_convergence
         return
@@ -590,16 +619,17 @@ contains
     real(dp), intent(out) :: tau_k(3, 3)
     integer, intent(out) :: stat
     real(dp), intent(inout), optional :: c(6, 6)   !< consistent tangent (set only when stat = leonov_ok)
-    real(dp) :: j0, j1, frel(3, 3), ft(3, 3), betr(3, 3), lam(3), v(3, 3), etr(3), e(3), press, dgamma, detb
+    real(dp) :: j0, j1, frel(3, 3), betr(3, 3), lam(3), v(3, 3), etr(3), e(3), press, dgamma, detb
     real(dp) :: be(3, 3), bt(3, 3), sigma(3, 3), dedetr(3, 3), dedp(3), phi, dbe(3, 3), q_tr
-    integer :: a
+    real(dp) :: bv(3)
+    integer :: i, j
 
     new = old
     tau_k = 0.0_dp
     stat = leonov_bad_input
-    if (.not. (all(ieee_is_finite(f0)) .and. all(ieee_is_finite(f1)) .and. all(ieee_is_finite(old%be)))) return
+    if (.not. (all(is_finite(f0)) .and. all(is_finite(f1)) .and. all(is_finite(old%be)))) return
     if (maxval(abs(f0)) > 1.0e50_dp .or. maxval(abs(f1)) > 1.0e50_dp .or. maxval(abs(old%be)) > 1.0e50_dp) return
-    if (.not. ieee_is_finite(old%gamma_p) .or. .not. ieee_is_finite(dt)) return
+    if (.not. is_finite(old%gamma_p) .or. .not. is_finite(dt)) return
     j0 = det3(f0)
     j1 = det3(f1)
     if (.not. (j0 > 1.0e-50_dp .and. j1 > 1.0e-50_dp)) return
@@ -607,9 +637,10 @@ contains
     if (.not. (detb > 1.0e-50_dp)) return
     ! elastic predictor (exact for the elastic part of Eq. 35)
     frel = matmul(f1, inv3(f0, j0))
-    ft = frel * (j1 / j0)**(-third)
-    betr = matmul(ft, matmul(old%be * detb**(-third), transpose(ft)))
-    if (.not. all(ieee_is_finite(betr))) return
+    ! Be~_trial = F~_rel (Be~_n / det(Be~_n)^(1/3)) F~_rel^T, F~_rel = (J/J_n)^(-1/3) F_rel: one power for both
+    ! factors ((J/J_n) sqrt(det Be~_n))^(-2/3), in range for every accepted input (|F|, |Be~_n| <= 1e50)
+    betr = matmul(frel, matmul(old%be, transpose(frel))) * ((j1 / j0) * sqrt(detb))**(-2.0_dp * third)
+    if (.not. all(is_finite(betr))) return
     ! p = -tr(sigma)/3 = -kappa (J - 1) (Eq. 38; the hardening and driving deviators are traceless)
     press = -p%kappa * (j1 - 1.0_dp)
     bt = j1**(-2.0_dp * third) * matmul(f1, transpose(f1))
@@ -637,9 +668,12 @@ contains
     if (maxval(abs(etr)) > 25.0_dp) return
     call return_map(p, etr, press, dt, old%gamma_p, e, dgamma, stat, dedetr, dedp, phi)
     if (stat /= leonov_ok) return
-    be = 0.0_dp
-    do a = 1, 3
-      be = be + exp(2.0_dp * e(a)) * spread(v(:, a), 2, 3) * spread(v(:, a), 1, 3)
+    ! Be~_n+1 = sum_a exp(2 e_a) v_a v_a^T in the trial eigenbasis
+    bv = exp(2.0_dp * e)
+    do j = 1, 3
+      do i = 1, 3
+        be(i, j) = bv(1) * v(i, 1) * v(j, 1) + bv(2) * v(i, 2) * v(j, 2) + bv(3) * v(i, 3) * v(j, 3)
+      end do
     end do
     ! Eqs. 31-33
     sigma = p%g * dev3(be) + p%kappa * (j1 - 1.0_dp) * identity + p%g_r * dev3(bt)
@@ -655,7 +689,7 @@ contains
     real(dp), intent(in) :: be(3, 3), sigma(3, 3), dgamma, press, j1, dt
     type(leonov_state), intent(inout) :: new
     real(dp), intent(out) :: tau_k(3, 3)
-    real(dp) :: s, ds, la, dla, x
+    real(dp) :: s, ds, x
     tau_k = j1 * sigma
     new%be = be
     new%gamma_p = old%gamma_p + dgamma
@@ -663,9 +697,9 @@ contains
     new%tau_bar = p%g * sqrt(0.5_dp * sum(dev3(be)**2))
     call softening(p, new%gamma_p, s, ds)
     new%s_soft = s
-    call log_a(p, press, new%gamma_p, la, dla)
+    ! eta = tau_0 A x/sinh(x) (Eq. 37), ln(tau_0 A) = ln eta_0r + mu p/tau_0 + S (log_a)
     x = new%tau_bar / p%tau_0
-    new%eta = exp(min(la + log(p%tau_0) + leonov_log_x_over_sinh(x), 700.0_dp))
+    new%eta = exp(min(p%ln_eta_0r + p%mu * press / p%tau_0 + s + leonov_log_x_over_sinh(x), 700.0_dp))
     if (dt > 0.0_dp) then
       new%gamma_dot = dgamma / dt
     else
@@ -757,14 +791,15 @@ contains
     real(dp) :: coef(3, 3), dd(3, 3), dq(3, 3), dbe(3, 3), dsig(3, 3), de(3), tr, dpress, dlt, dltr, ratio, b(3)
     integer :: a, bb, i, j, k, kk
     b = exp(2.0_dp * e)
+    ! coef is symmetric (b_b expm1(2 D)/D = (b_a - b_b)/D; sinh(D)/D and D/tanh(D) are even): three pairs
     coef = 0.0_dp
-    do a = 1, 3
-      do bb = 1, 3
-        if (a == bb) cycle
+    do a = 1, 2
+      do bb = a + 1, 3
         dlt = e(a) - e(bb)
         dltr = etr(a) - etr(bb)
         ratio = 1.0_dp / (1.0_dp + phi * b(bb) * expm1_2x_over_x(dlt))
         coef(a, bb) = 2.0_dp * exp(e(a) + e(bb)) * sinh_over_x(dlt) * ratio * x_over_tanh(dltr)
+        coef(bb, a) = coef(a, bb)
       end do
     end do
     do k = 1, 6

@@ -4,7 +4,7 @@
 !> optional PROPS(11): the accuracy bound dgamma_max on the equivalent plastic strain increment (default 0.05).
 !> Derived: shear modulus G = E/(2(1+nu)) and bulk modulus kappa = E/(3(1-2nu)) (Eq. 33).
 module leonov_parameters
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use ldfcz_finite, only: is_finite
   use ldfcz_kinds, only: dp
   implicit none
   private
@@ -34,6 +34,11 @@ module leonov_parameters
     real(dp) :: g = 0.0_dp        !< shear modulus G = E/(2(1+nu)) (MPa), Eq. 33
     real(dp) :: kappa = 0.0_dp    !< bulk modulus kappa = E/(3(1-2nu)) (MPa), Eq. 33
     real(dp) :: dgamma_max = leonov_dgamma_max  !< accuracy bound on the plastic strain increment, PROPS(11)
+    ! derived constants of the flow rule, set with the moduli (the logs the update would otherwise repeat per call)
+    real(dp) :: ln_r0 = 0.0_dp        !< ln r0 (Eq. 42)
+    real(dp) :: softplus_0 = 0.0_dp   !< ln(1 + r0^r1) = softplus(r1 ln r0): ln R_gamma(0) = 0 (Eq. 42)
+    real(dp) :: ln_eta_0r = 0.0_dp    !< ln eta_0,r (Eq. 37)
+    real(dp) :: ln_tau_0 = 0.0_dp     !< ln tau_0 (Eq. 39)
   end type leonov_props
 
   character(len=*), parameter :: names(leonov_nprops_max) = [character(len=10) :: &
@@ -64,7 +69,7 @@ contains
       return
     end if
     do i = 1, min(size(props), leonov_nprops_max)
-      if (.not. ieee_is_finite(props(i))) then
+      if (.not. is_finite(props(i))) then
         stat = 1
         write (errmsg, '(a,a,a,i0,a)') 'property ', trim(names(i)), ' (PROPS(', i, ')) is not a finite number'
         return
@@ -101,6 +106,16 @@ contains
     if (stat /= 0) return
     p%g = p%e / (2.0_dp * (1.0_dp + p%nu))
     p%kappa = p%e / (3.0_dp * (1.0_dp - 2.0_dp * p%nu))
+    p%ln_r0 = log(p%r0)
+    p%softplus_0 = abs(p%r1 * p%ln_r0)
+    if (p%softplus_0 > 30.0_dp) then
+      p%softplus_0 = exp(-p%softplus_0)   ! ln(1 + e^-y) = e^-y to round-off (0 below e^-745)
+    else
+      p%softplus_0 = log(1.0_dp + exp(-p%softplus_0))
+    end if
+    p%softplus_0 = max(p%r1 * p%ln_r0, 0.0_dp) + p%softplus_0
+    p%ln_eta_0r = log(p%eta_0r)
+    p%ln_tau_0 = log(p%tau_0)
   end subroutine leonov_props_from_array
 
   !> Message for property i violating its requirement.

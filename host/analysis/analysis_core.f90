@@ -6,6 +6,7 @@ module analysis_core
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, etype_c3d8, etype_cpe4, etype_user
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
+    solid_geometry_t, solid_element_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
   use element_colors, only: color_elements
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
@@ -57,6 +58,8 @@ module analysis_core
     integer :: ncolor = 0                       !< element colours (element_colors: no shared dof within one)
     integer, allocatable :: color_ptr(:)        !< (ncolor+1) into color_elem
     integer, allocatable :: color_elem(:)       !< (nelem) elements by colour
+    integer, allocatable :: elem_geo(:)         !< (nelem) index into geo of a continuum element, 0 for user elements
+    type(solid_geometry_t), allocatable :: geo(:)  !< reference data of the continuum elements (computed once)
     real(dp) :: t_factor_done = 0.0_dp          !< factorization seconds of earlier sparse systems (pattern changes)
     real(dp) :: t_solve_done = 0.0_dp           !< solve seconds of earlier sparse systems
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
@@ -137,6 +140,22 @@ contains
     end do
     an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
     call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%ncolor, an%color_ptr, an%color_elem)
+    ! reference shape-function derivatives and weights of the continuum elements, once (original coordinates)
+    allocate (an%elem_geo(model%nelem))
+    an%elem_geo = 0
+    n = 0
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) /= etype_user) then
+        n = n + 1
+        an%elem_geo(ie) = n
+      end if
+    end do
+    allocate (an%geo(n))
+    do ie = 1, model%nelem
+      if (an%elem_geo(ie) == 0) cycle
+      call solid_element_geometry(an%elem_tname(ie), &
+        model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+    end do
 
     ! materials per section
     allocate (an%mats(max(1, model%nsection)))
@@ -422,7 +441,7 @@ contains
         call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
           an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
           model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip)
+          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)))
         st%energy = 0.0_dp
         st%energy(2) = e2(1)
         st%energy(4) = e2(2)

@@ -32,6 +32,7 @@ module solid_element
   implicit none
   private
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
+  public :: solid_geometry_t, solid_element_geometry
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
 
   integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
@@ -53,6 +54,18 @@ module solid_element
     real(dp) :: thickness = 1.0_dp                      !< *SOLID SECTION thickness of plane elements (CPE4)
     procedure(umat_interface), pointer, nopass :: umat => null()  !< the UMAT to call when kind = SOLID_MAT_UMAT
   end type solid_material_t
+
+  !> Reference-configuration data of one element, the same on every call (original coordinates): shape functions,
+  !> dN/dX and Gauss weight x det(dX/dxi) at the integration points, dN/dX at the centre. A host may compute it once
+  !> per element (solid_element_geometry) and pass it to solid_element_compute instead of the per-call recomputation.
+  type :: solid_geometry_t
+    logical :: valid = .false.                          !< computed, every reference Jacobian > 0
+    ! (no default values: a local copy per element call stays a plain copy; solid_element_geometry sets them all)
+    real(dp) :: nfun(maxnode, maxip)           !< N_a at the integration points
+    real(dp) :: dndx_ref(maxnode, 3, maxip)    !< dN_a/dX_j at the integration points
+    real(dp) :: wdet(maxip)                    !< Gauss weight x det(dX/dxi)
+    real(dp) :: dndx_0c(maxnode, 3)            !< dN_a/dX_j at the element centre
+  end type solid_geometry_t
 
 contains
 
@@ -77,11 +90,59 @@ contains
     end select
   end subroutine solid_element_info
 
+  !> Reference-configuration data of an element (solid_geometry_t); geo%valid = .false. for an unknown type, sizes
+  !> that do not match it, or a reference Jacobian <= 0 (solid_element_compute then reports the element itself).
+  subroutine solid_element_geometry(etype, coords0, geo)
+    character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
+    real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
+    type(solid_geometry_t), intent(out) :: geo        !< reference data
+    integer :: shape, nnode, ndim, nip, ntens, ndi, nshr, ip
+    real(dp) :: xi(3), w, detj, nc(maxnode)
+    geo%nfun = 0.0_dp
+    geo%dndx_ref = 0.0_dp
+    geo%wdet = 0.0_dp
+    geo%dndx_0c = 0.0_dp
+    shape = shape_of(etype)
+    call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
+    if (nnode == 0) return
+    if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode) return
+    xi = 0.0_dp
+    call solid_reference_derivatives(shape, nnode, ndim, coords0, xi, nc, geo%dndx_0c, detj)
+    if (.not. (detj > 0.0_dp)) return
+    do ip = 1, nip
+      call solid_gauss_point(shape, ip, xi, w)
+      call solid_reference_derivatives(shape, nnode, ndim, coords0, xi, geo%nfun(:, ip), geo%dndx_ref(:, :, ip), detj)
+      if (.not. (detj > 0.0_dp)) return
+      geo%wdet(ip) = w * detj
+    end do
+    geo%valid = .true.
+  end subroutine solid_element_geometry
+
+  !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi) (dndx = 0 if <= 0).
+  pure subroutine solid_reference_derivatives(shape, nnode, ndim, coords0, xi, n_p, dndx_p, detj)
+    integer, intent(in) :: shape, nnode, ndim
+    real(dp), intent(in) :: coords0(:, :), xi(3)
+    real(dp), intent(out) :: n_p(maxnode), dndx_p(maxnode, 3), detj
+    real(dp) :: dndxi(maxnode, 3), jac(3, 3), jinv(3, 3)
+    dndxi = 0.0_dp
+    n_p = 0.0_dp
+    call solid_shape_eval(shape, xi(1:ndim), n_p(1:nnode), dndxi(1:nnode, 1:ndim))
+    jac = identity()
+    jac(1:ndim, 1:ndim) = matmul(coords0(1:ndim, 1:nnode), dndxi(1:nnode, 1:ndim))
+    detj = det3(jac)
+    dndx_p = 0.0_dp
+    if (detj > 0.0_dp) then
+      jinv = inv3(jac)
+      dndx_p(1:nnode, 1:ndim) = matmul(dndxi(1:nnode, 1:ndim), jinv(1:ndim, 1:ndim))
+    end if
+  end subroutine solid_reference_derivatives
+
+
   !> Internal force, tangent and updated integration-point state of one element for the current Newton estimate.
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new)
+      energy_ip_old, energy_ip_new, geo)
     character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -108,13 +169,16 @@ contains
     character(len=*), intent(out) :: errmsg           !< message when stat /= 0
     real(dp), intent(in), optional :: energy_ip_old(:, :)  !< (3, nip) converged SSE, SPD, SCD (zeros if absent)
     real(dp), intent(out), optional :: energy_ip_new(:, :) !< (3, nip) updated SSE, SPD, SCD
+    !> reference data of this element from solid_element_geometry (computed here when absent or not valid)
+    type(solid_geometry_t), intent(in), optional, target :: geo
 
-    integer :: shape, nnode, ndim, nip, ntens, ndi, nshr, ndof, nsv, np
+    integer :: nnode, ndim, nip, ntens, ndi, nshr, ndof, nsv, np
     integer :: a, b, i, k, ip, r, c, jstep(4)
     real(dp) :: xref(3, maxnode), un(3, maxnode), u1(3, maxnode), dun(3, maxnode)
-    real(dp) :: nfun(maxnode, maxip), dndx_ref(maxnode, 3, maxip), wdet(maxip)
-    real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), dndx_c(maxnode, 3), dndxi(maxnode, 3), dndx_0c(maxnode, 3)
-    real(dp) :: xi(3), w, jac(3, 3), jinv(3, 3), detj, fc0(3, 3), fc1(3, 3), jc0, jc1, j0, j1, vol, celent
+    type(solid_geometry_t), target :: gl          ! reference data computed here when the host has none
+    type(solid_geometry_t), pointer :: gp         ! the reference data in use (no per-call copy of the host's)
+    real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), dndx_c(maxnode, 3)
+    real(dp) :: fc0(3, 3), fc1(3, 3), jc0, jc1, j0, j1, vol, celent
     real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3), eye(3, 3)
     real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), finv(3, 3), dv, gc(3, 3), trc, trg, m
     real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
@@ -127,7 +191,6 @@ contains
     errmsg = ''
     f_int = 0.0_dp
     energy = 0.0_dp
-    shape = shape_of(etype)
     call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
     ndof = ndim * nnode
     nsv = mat%nstatv
@@ -193,15 +256,21 @@ contains
       un(1:ndim, a) = u1(1:ndim, a) - dun(1:ndim, a)
     end do
 
-    ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
-    xi = 0.0_dp
-    call shape_derivatives(xi, nfun(:, 1), dndx_0c, detj)
-    if (.not. (detj > 0.0_dp)) then
-      call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre)')
+    ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
+    gp => gl
+    if (present(geo)) then
+      if (geo%valid) gp => geo
+    end if
+    if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
+    if (.not. gp%valid) then
+      call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
+                'integration point)')
       return
     end if
-    fc0 = def_grad(un, dndx_0c)
-    fc1 = def_grad(u1, dndx_0c)
+
+    ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
+    fc0 = def_grad(un, gp%dndx_0c)
+    fc1 = def_grad(u1, gp%dndx_0c)
     jc0 = det3(fc0)
     jc1 = det3(fc1)
     if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
@@ -211,31 +280,23 @@ contains
     if (nlgeom) then
       finv = inv3(fc1)
       dndx_c = 0.0_dp
-      dndx_c(1:nnode, 1:ndim) = matmul(dndx_0c(1:nnode, 1:ndim), finv(1:ndim, 1:ndim))
+      dndx_c(1:nnode, 1:ndim) = matmul(gp%dndx_0c(1:nnode, 1:ndim), finv(1:ndim, 1:ndim))
     else
-      dndx_c = dndx_0c
+      dndx_c = gp%dndx_0c
     end if
 
     ! ---- first pass: kinematics at the integration points, checks, volume for CELENT
     vol = 0.0_dp
     do ip = 1, nip
-      call solid_gauss_point(shape, ip, xi, w)
-      call shape_derivatives(xi, nfun(:, ip), dndx_ref(:, :, ip), detj)
-      if (.not. (detj > 0.0_dp)) then
-        call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at integration point ' &
-                  // itoa(ip) // ')')
-        return
-      end if
-      wdet(ip) = w * detj
-      fg0(:, :, ip) = def_grad(un, dndx_ref(:, :, ip))
-      fg1(:, :, ip) = def_grad(u1, dndx_ref(:, :, ip))
+      fg0(:, :, ip) = def_grad(un, gp%dndx_ref(:, :, ip))
+      fg1(:, :, ip) = def_grad(u1, gp%dndx_ref(:, :, ip))
       j0 = det3(fg0(:, :, ip))
       j1 = det3(fg1(:, :, ip))
       if (.not. (j0 > 0.0_dp .and. j1 > 0.0_dp)) then
         call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')')
         return
       end if
-      vol = vol + wdet(ip) * merge(j1, 1.0_dp, nlgeom)
+      vol = vol + gp%wdet(ip) * merge(j1, 1.0_dp, nlgeom)
     end do
     celent = vol**(1.0_dp / m)
 
@@ -262,12 +323,15 @@ contains
           return
         end if
         g = matmul(fb1 - fb0, inv3(fm))
-        wsk = 0.5_dp * (g - transpose(g))
-        drot = matmul(inv3(eye - 0.5_dp * wsk), eye + 0.5_dp * wsk)
+        ! DROT = (I - W/2)^-1 (I + W/2), W = (G - G^T)/2 (Hughes-Winget), in closed form: with A = W/2 (skew,
+        ! axial vector a), A^3 = -|a|^2 A gives (I - A)^-1 = I + (A + A^2)/(1 + |a|^2),
+        ! so DROT = I + 2 (A + A^2)/(1 + |a|^2)
+        wsk = 0.25_dp * (g - transpose(g))
+        drot = eye + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
       else
         ! small strain: grad(du) w.r.t. X with the centre dilatation (B-bar)
-        g = def_grad(dun, dndx_ref(:, :, ip)) - eye
-        gc = def_grad(dun, dndx_0c) - eye
+        g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
+        gc = def_grad(dun, gp%dndx_0c) - eye
         trg = 0.0_dp
         trc = 0.0_dp
         do i = 1, ndim
@@ -306,7 +370,7 @@ contains
         sv = 0.0_dp
         if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
         do i = 1, 3
-          coords(i) = dot_product(nfun(1:nnode, ip), xref(i, 1:nnode) + u1(i, 1:nnode))
+          coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + u1(i, 1:nnode))
         end do
         call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
           ntens, nsv, pr, np, coords, drot, pn, celent, fb0, fb1, noel, ip, jstep, kinc)
@@ -331,11 +395,11 @@ contains
       dndx = 0.0_dp
       if (nlgeom) then
         finv = inv3(fg1(:, :, ip))
-        dndx(1:nnode, 1:ndim) = matmul(dndx_ref(1:nnode, 1:ndim, ip), finv(1:ndim, 1:ndim))
-        dv = wdet(ip) * j1 * mat%thickness
+        dndx(1:nnode, 1:ndim) = matmul(gp%dndx_ref(1:nnode, 1:ndim, ip), finv(1:ndim, 1:ndim))
+        dv = gp%wdet(ip) * j1 * mat%thickness
       else
-        dndx(1:nnode, 1:ndim) = dndx_ref(1:nnode, 1:ndim, ip)
-        dv = wdet(ip) * mat%thickness
+        dndx(1:nnode, 1:ndim) = gp%dndx_ref(1:nnode, 1:ndim, ip)
+        dv = gp%wdet(ip) * mat%thickness
       end if
       energy = energy + [sse, spd] * dv
 
@@ -414,23 +478,6 @@ contains
       end if
       if (code == 1 .or. code == 3) pnewdt = min(pnewdt, 0.25_dp)
     end subroutine fail
-
-    !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi).
-    subroutine shape_derivatives(xi_p, n_p, dndx_p, detj_p)
-      real(dp), intent(in) :: xi_p(3)
-      real(dp), intent(out) :: n_p(maxnode), dndx_p(maxnode, 3), detj_p
-      dndxi = 0.0_dp
-      n_p = 0.0_dp
-      call solid_shape_eval(shape, xi_p(1:ndim), n_p(1:nnode), dndxi(1:nnode, 1:ndim))
-      jac = eye
-      jac(1:ndim, 1:ndim) = matmul(xref(1:ndim, 1:nnode), dndxi(1:nnode, 1:ndim))
-      detj_p = det3(jac)
-      dndx_p = 0.0_dp
-      if (detj_p > 0.0_dp) then
-        jinv = inv3(jac)
-        dndx_p(1:nnode, 1:ndim) = matmul(dndxi(1:nnode, 1:ndim), jinv(1:ndim, 1:ndim))
-      end if
-    end subroutine shape_derivatives
 
     !> Deformation gradient I + sum_a disp_a (x) dN_a/dX (3x3, F33 = 1 in plane strain).
     pure function def_grad(disp, dn) result(f)
