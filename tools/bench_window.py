@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Solver settings compared on a window of the paper's application scene (docs/performance.md).
 
-  bench_window.py [--ldfcz EXE] [--work DIR] [--start N] [--window K] [--threads T]
+  bench_window.py [--ldfcz EXE] [--work DIR] [--start N] [--window K] [--threads T] [--gen-args ARGS]
                   [--config LABEL=OPTIONS ...] [--exe LABEL=EXE ...] [--env LABEL=VAR=VALUE ...] [--md FILE]
 
 1. Generates the application deck of `tools/peel_study.py application` (tools/peel_deck.py: 3D quarter, rigid
    substrate, 10 x 3 elements, l_e = 2 um over 1.05 mm; 89595 DOFs) into DIR and runs its first N increments
    (default 62: about 30 um of pull, the front is moving) once, writing the restart file (reused when present
-   and the deck is unchanged).
+   and the deck is unchanged). --gen-args appends generator options (they override the defaults), e.g.
+   "--ny 2" for a narrower proxy of the same scene whose late stage (--start 600: the peeled arm flows) is
+   cheap to reach.
 2. Runs every configuration from that restart file for K increments (default 25) in its own copy of the run
    directory: `ldfcz -t T --max-opening-increment 0.33 --max-plastic-increment 1.0 OPTIONS --restart-from ...
    --stop-after-increments K` (OPTIONS default `--newton auto`), optionally with another executable (--exe, e.g.
@@ -69,6 +71,7 @@ def main():
     ap.add_argument('--exe', action='append', default=[], help='LABEL=executable for that configuration')
     ap.add_argument('--env', action='append', default=[], help='LABEL=VAR=VALUE for that configuration')
     ap.add_argument('--md', help='also write the table to this file')
+    ap.add_argument('--gen-args', default='', help='extra tools/peel_deck.py options (override the defaults)')
     a = ap.parse_args()
     configs = [c.split('=', 1) for c in a.config] or [['auto', '--newton auto']]
     exes = dict(e.split('=', 1) for e in a.exe)
@@ -82,7 +85,8 @@ def main():
     os.makedirs(a.work, exist_ok=True)
     deck = os.path.join(a.work, JOB + '.inp')
     new_deck = deck + '.new'
-    subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'peel_deck.py')] + GEN + ['-o', new_deck],
+    subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'peel_deck.py')] + GEN + a.gen_args.split() +
+                   ['-o', new_deck],
                    check=True, stdout=subprocess.DEVNULL)
     base = os.path.join(a.work, 'base')
     rst = os.path.join(base, JOB + '.rst')
@@ -119,7 +123,8 @@ def main():
         w = {k: s[k] - b[k] for k in ('inc', 'cut', 'its', 'fac', 'gmres')}
         w.update({k: s[k] for k in ('wall', 'asm', 'fact', 'solve')})
         rows.append((label, opts, w, t, rf))
-    out = ['Window of the application scene: increments %d-%d from the restart file, `-t %d`, %s.' % (
+    out = ['Window of the application scene%s: increments %d-%d from the restart file, `-t %d`, %s.' % (
+        (' (generator options added: `%s`)' % a.gen_args) if a.gen_args else '',
         a.start + 1, a.start + a.window, a.threads, ' '.join(COMMON)), '',
         '| configuration | options | increments | Newton iterations | factorizations | GMRES iterations | wall (s) '
         '| assembly / factorization / solve (s) | assembly per iteration (s) | '
