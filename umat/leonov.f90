@@ -283,40 +283,22 @@ contains
     real(dp), intent(in) :: a(4, 4), rhs(4)
     real(dp), intent(out) :: x(4)
     logical, intent(out) :: ok
-    real(dp) :: m(4, 5), row(5), f
-    integer :: k, i, piv
-    m(:, 1:4) = a
-    m(:, 5) = rhs
-    ok = .false.
-    x = 0.0_dp
-    do k = 1, 4
-      piv = k - 1 + maxloc(abs(m(k:4, k)), dim=1)
-      if (.not. (abs(m(piv, k)) > 0.0_dp)) return
-      if (piv /= k) then
-        row = m(k, :)
-        m(k, :) = m(piv, :)
-        m(piv, :) = row
-      end if
-      do i = k + 1, 4
-        f = m(i, k) / m(k, k)
-        m(i, k:5) = m(i, k:5) - f * m(k, k:5)
-      end do
-    end do
-    do k = 4, 1, -1
-      x(k) = (m(k, 5) - dot_product(m(k, k + 1:4), x(k + 1:4))) / m(k, k)
-    end do
-    ok = all(is_finite(x))
+    real(dp) :: b(4, 1), xm(4, 1)
+    b(:, 1) = rhs
+    call solve4m(a, b, xm, ok)
+    x = xm(:, 1)
   end subroutine solve4
 
-  !> Solve a x = rhs for four right-hand sides (columns), Gaussian elimination with partial pivoting.
+  !> Solve a x = rhs for the right-hand sides in the columns of rhs, Gaussian elimination with partial pivoting.
   pure subroutine solve4m(a, rhs, x, ok)
-    real(dp), intent(in) :: a(4, 4), rhs(4, 4)
-    real(dp), intent(out) :: x(4, 4)
+    real(dp), intent(in) :: a(4, 4), rhs(:, :)   !< rhs(4, nrhs)
+    real(dp), intent(out) :: x(:, :)             !< x(4, nrhs)
     logical, intent(out) :: ok
-    real(dp) :: m(4, 8), row(8), f
-    integer :: k, i, piv
+    real(dp) :: m(4, 4 + size(rhs, 2)), row(4 + size(rhs, 2)), f
+    integer :: k, i, piv, nc
+    nc = 4 + size(rhs, 2)
     m(:, 1:4) = a
-    m(:, 5:8) = rhs
+    m(:, 5:nc) = rhs(1:4, :)
     ok = .false.
     x = 0.0_dp
     do k = 1, 4
@@ -329,11 +311,11 @@ contains
       end if
       do i = k + 1, 4
         f = m(i, k) / m(k, k)
-        m(i, k:8) = m(i, k:8) - f * m(k, k:8)
+        m(i, k:nc) = m(i, k:nc) - f * m(k, k:nc)
       end do
     end do
     do k = 4, 1, -1
-      do i = 1, 4
+      do i = 1, nc - 4
         x(k, i) = (m(k, 4 + i) - dot_product(m(k, k + 1:4), x(k + 1:4, i))) / m(k, k)
       end do
     end do
