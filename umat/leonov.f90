@@ -31,7 +31,7 @@ module leonov
   private
   public :: leonov_state, leonov_update, leonov_elastic_tangent
   public :: leonov_state_from_statev, leonov_state_to_statev
-  public :: leonov_log_r_gamma, leonov_log_x_over_sinh, leonov_ln_sinh
+  public :: leonov_log_r_gamma, leonov_log_x_over_sinh, leonov_ln_sinh, leonov_ln_sinh_coth
   public :: leonov_ok, leonov_step_too_large, leonov_no_convergence, leonov_bad_input
   public :: voigt_i, voigt_j
 
@@ -167,16 +167,40 @@ contains
   !> ln sinh(x) for x > 0 without overflow.
   elemental real(dp) function leonov_ln_sinh(x)
     real(dp), intent(in) :: x   !< argument, > 0
-    if (x <= tiny(1.0_dp)) then
-      leonov_ln_sinh = log(tiny(1.0_dp))
-    else if (x > 20.0_dp) then
-      leonov_ln_sinh = x - log(2.0_dp) + log(1.0_dp - exp(-2.0_dp * x))
-    else if (x < 1.0e-4_dp) then
-      leonov_ln_sinh = log(x) + x * x / 6.0_dp
-    else
-      leonov_ln_sinh = log(sinh(x))
-    end if
+    real(dp) :: cth
+    call leonov_ln_sinh_coth(x, leonov_ln_sinh, cth)
   end function leonov_ln_sinh
+
+  !> ln sinh(x) and coth(x) for x > 0 together, one or two transcendental calls instead of three:
+  !>   x < 1/2:    sinh(x)/x and cosh(x) from their Taylor series (8 terms: truncation < 1e-21 at x = 1/2),
+  !>               ls = ln(x sinh(x)/x), coth = cosh/(x sinh(x)/x);
+  !>   x <= 20:    e = exp(-2x) <= 1/e, ls = x - ln 2 + ln(1 - e), coth = (1 + e)/(1 - e);
+  !>   x > 20:     ls = x - ln 2 (ln(1 - e) < 5e-18 rounds away against x - ln 2 > 19.3), coth = 1.
+  elemental subroutine leonov_ln_sinh_coth(x, ls, cth)
+    real(dp), intent(in) :: x     !< argument, > 0
+    real(dp), intent(out) :: ls   !< ln sinh(x)
+    real(dp), intent(out) :: cth  !< coth(x)
+    real(dp) :: x2, sh, ch, e
+    if (x <= tiny(1.0_dp)) then
+      ls = log(tiny(1.0_dp))
+      cth = 1.0_dp / tiny(1.0_dp)
+    else if (x > 20.0_dp) then
+      ls = x - log(2.0_dp)
+      cth = 1.0_dp
+    else if (x >= 0.5_dp) then
+      e = exp(-2.0_dp * x)
+      ls = x - log(2.0_dp) + log(1.0_dp - e)
+      cth = (1.0_dp + e) / (1.0_dp - e)
+    else
+      x2 = x * x
+      sh = 1.0_dp + x2 / 6.0_dp * (1.0_dp + x2 / 20.0_dp * (1.0_dp + x2 / 42.0_dp * (1.0_dp + x2 / 72.0_dp * &
+           (1.0_dp + x2 / 110.0_dp * (1.0_dp + x2 / 156.0_dp * (1.0_dp + x2 / 210.0_dp * (1.0_dp + x2 / 272.0_dp)))))))
+      ch = 1.0_dp + x2 / 2.0_dp * (1.0_dp + x2 / 12.0_dp * (1.0_dp + x2 / 30.0_dp * (1.0_dp + x2 / 56.0_dp * &
+           (1.0_dp + x2 / 90.0_dp * (1.0_dp + x2 / 132.0_dp * (1.0_dp + x2 / 182.0_dp * (1.0_dp + x2 / 240.0_dp)))))))
+      ls = log(x * sh)
+      cth = ch / (x * sh)
+    end if
+  end subroutine leonov_ln_sinh_coth
 
   !> ln(x / sinh(x)) for x >= 0 (the Eyring factor of Eq. 37), overflow-free.
   elemental real(dp) function leonov_log_x_over_sinh(x)
@@ -189,16 +213,6 @@ contains
       leonov_log_x_over_sinh = log(x) - leonov_ln_sinh(x)
     end if
   end function leonov_log_x_over_sinh
-
-  !> coth(x) for x > 0.
-  elemental real(dp) function coth(x)
-    real(dp), intent(in) :: x
-    if (x > 20.0_dp) then
-      coth = 1.0_dp
-    else
-      coth = 1.0_dp / tanh(max(x, tiny(1.0_dp)))
-    end if
-  end function coth
 
   ! ------------------------------------------------------------------------------------------------------------
   ! Small tensor algebra
@@ -367,35 +381,62 @@ contains
   end subroutine log_a
 
   !> Scalar radial-return predictor (small elastic strain): tau = tau_tr - G dgamma with the log flow rule;
-  !> g(u) = ln sinh(tau/tau_0) - u - ln A(gamma_n + e^u) + ln dt = 0, u = ln dgamma, bracketed Newton/bisection.
+  !> g(u) = ln sinh(x) - u - ln A(gamma_n + e^u) + ln dt = 0, u = ln dgamma, x = tau/tau_0 = x_tr - v, v = G e^u/tau_0
+  !> the stress drop (u < ln(tau_tr/G): tau > 0). Safeguarded Newton from the Eyring increment at the trial stress
+  !> (at most half the trial stress relaxed), each step taken in the variable in which g is nearly linear:
+  !>   v > x and x < 1 (a low stress, mostly relaxed: g ~ ln x - u): in ln x;
+  !>   otherwise v > 1 (g ~ x - u with x = x_tr - v, a large drop): in v, u_new = u + ln(1 + du);
+  !>   otherwise (a small drop, g ~ -u): in u, du = -g/g'.
+  !> A step that leaves the bracket is replaced by bisection, or by a step down of 5 while no lower bound is known
+  !> (g need not be monotone under strong softening). Newton steps in u alone needed 23 evaluations of g per call
+  !> on a late state of the application scene (a singularity at tau -> 0 and a bracket test that failed on a step
+  !> below round-off); this form needs about 4 there (docs/umat.md "Integration").
   pure subroutine predictor(p, tau_tr, press, dt, gamma_n, u)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: tau_tr, press, dt, gamma_n
     real(dp), intent(out) :: u
-    real(dp) :: u_lo, u_hi, g, dg, la, dla, un, ldt
+    real(dp) :: u_lo, u_hi, g, dg, v, x, x_tr, du, dy, la, dla, un, ldt
+    logical :: have_lo
     integer :: k
     ldt = log(dt)
+    x_tr = tau_tr / p%tau_0
     u_hi = log(tau_tr / p%g)
     call log_a(p, press, gamma_n, la, dla)
-    u = min(ldt + leonov_ln_sinh(tau_tr / p%tau_0) - la, u_hi - log(2.0_dp))
+    u = min(ldt + leonov_ln_sinh(x_tr) - la, u_hi - log(2.0_dp))
     u_lo = u
+    have_lo = .false.
     do k = 1, 200
-      call g_of(u_lo, g, dg)
-      if (g > 0.0_dp) exit
-      u_hi = u_lo
-      u_lo = u_lo - 5.0_dp * k
-    end do
-    u = u_lo
-    do k = 1, 200
-      call g_of(u, g, dg)
+      call g_of(u, g, dg, v)
       if (g > 0.0_dp) then
         u_lo = u
+        have_lo = .true.
       else
         u_hi = u
       end if
-      un = u - g / dg
-      if (.not. (un > u_lo .and. un < u_hi)) un = 0.5_dp * (u_lo + u_hi)
-      if (abs(un - u) <= 1.0e-12_dp * max(1.0_dp, abs(u)) .or. u_hi - u_lo <= 1.0e-12_dp) then
+      du = -g / dg
+      x = x_tr - v
+      if (v > x .and. x < 1.0_dp) then
+        ! step in ln x: d(ln x)/du = -v/x; new drop v' = x_tr - x exp(dy) must stay in (0, x_tr)
+        dy = -du * v / x
+        if (dy < 30.0_dp) then
+          if (x * exp(dy) < x_tr) du = log((x_tr - x * exp(dy)) / v)
+        end if
+      else if (v > 1.0_dp .and. du > -1.0_dp) then
+        du = log(1.0_dp + du)
+      end if
+      un = u + du
+      if (abs(du) <= 1.0e-12_dp * max(1.0_dp, abs(u))) then
+        u = un
+        exit
+      end if
+      if (.not. (un < u_hi .and. (un > u_lo .or. .not. have_lo) .and. un > u - 50.0_dp)) then
+        if (have_lo) then
+          un = 0.5_dp * (u_lo + u_hi)
+        else
+          un = u - 5.0_dp
+        end if
+      end if
+      if (have_lo .and. u_hi - u_lo <= 1.0e-12_dp * max(1.0_dp, abs(u))) then
         u = un
         exit
       end if
@@ -404,20 +445,22 @@ contains
 
   contains
 
-    pure subroutine g_of(uu, gg, dgg)
+    pure subroutine g_of(uu, gg, dgg, vv)
       real(dp), intent(in) :: uu
-      real(dp), intent(out) :: gg, dgg
-      real(dp) :: dgam, tau, lau, dlau
+      real(dp), intent(out) :: gg, dgg, vv
+      real(dp) :: dgam, tau, lau, dlau, ls, cth
       dgam = exp(min(uu, 50.0_dp))
       tau = tau_tr - p%g * dgam
+      vv = p%g * dgam / p%tau_0
       call log_a(p, press, gamma_n + dgam, lau, dlau)
       if (tau <= 0.0_dp) then
         gg = -huge(1.0_dp)
         dgg = -1.0_dp
         return
       end if
-      gg = leonov_ln_sinh(tau / p%tau_0) - uu - lau + ldt
-      dgg = -coth(tau / p%tau_0) * p%g * dgam / p%tau_0 - 1.0_dp - dgam * dlau
+      call leonov_ln_sinh_coth(tau / p%tau_0, ls, cth)
+      gg = ls - uu - lau + ldt
+      dgg = -cth * vv - 1.0_dp - dgam * dlau
     end subroutine g_of
   end subroutine predictor
 
@@ -448,8 +491,7 @@ contains
     xs = p%g * q / p%tau_0
     call log_a(p, press, gamma_n + dgam, la, dla)
     ! ln sinh(x), ln(x/sinh x) and coth x once each (shared by r, phi and the Jacobian)
-    ls = leonov_ln_sinh(xs)
-    cth = coth(xs)
+    call leonov_ln_sinh_coth(xs, ls, cth)
     if (xs < 1.0e-4_dp) then
       lphi = lphi0 - la + xs * xs / 6.0_dp
     else
@@ -780,7 +822,7 @@ contains
         dlt = e(a) - e(bb)
         dltr = etr(a) - etr(bb)
         ratio = 1.0_dp / (1.0_dp + phi * b(bb) * expm1_2x_over_x(dlt))
-        coef(a, bb) = 2.0_dp * exp(e(a) + e(bb)) * sinh_over_x(dlt) * ratio * x_over_tanh(dltr)
+        coef(a, bb) = 2.0_dp * sqrt(b(a) * b(bb)) * sinh_over_x(dlt) * ratio * x_over_tanh(dltr)
         coef(bb, a) = coef(a, bb)
       end do
     end do

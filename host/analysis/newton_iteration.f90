@@ -29,12 +29,22 @@ module newton_iteration
   ! the early iterations, far from the solution, no longer pay for exact linear solves (docs/performance.md).
   real(dp), parameter :: ew_gamma = 0.9_dp              !< Eisenstat-Walker gamma
   real(dp), parameter :: ew_eta_max = 0.1_dp            !< largest forcing term (also the first iteration's)
+  ! Mode auto also skips the tangent of an iteration that is likely to be the last, since a converged iteration's
+  ! tangent is never used: when the residual, shrinking at its last rate (r_k^2 / r_(k-1), an upper estimate once
+  ! Newton converges quadratically), comes within skip_margin of the force criterion, the elements compute
+  ! forces only (UEL LFLAGS(3) = 5). If the criterion is not met after all, GMRES solves with the tangent still
+  ! assembled, that of the previous iterate (a Newton step with a one-iteration-old Jacobian, close to the
+  ! solution), and the next iteration assembles it anew. Late in the application scene: 10 skips in 10
+  ! increments, 1 of them not converged, no extra iterations (docs/performance.md, fifth pass).
+  real(dp), parameter :: skip_margin = 10.0_dp          !< skip when r_k^2 / r_(k-1) < skip_margin R_n q_avg
 
   !> What the variants carry from one iteration, attempt and increment to the next.
   type :: newton_state_t
     integer :: reuse_count = 0          !< modified Newton: solves with the current factors (saved in restarts)
     real(dp) :: t_fact_last = 0.0_dp    !< wall time of the last factorization
     real(dp) :: t_solve_last = 0.0_dp   !< wall time of one solve (GMRES iteration) with the factors
+    integer :: tangents_skipped = 0     !< mode auto: iterations assembled without a tangent (this run)
+    integer :: stale_solves = 0         !< of those, not converged: solved with the previous iterate's tangent
   end type newton_state_t
 
 contains
@@ -75,7 +85,7 @@ contains
     character(len=256) :: smsg
     real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s, r_norm, r_norm_prev, eta, eta_prev, tol
     real(dp), allocatable :: r_copy(:)
-    logical :: want_k, k_fresh
+    logical :: want_k, k_fresh, k_skip, k_stale
 
     associate (st => model%steps(is))
       converged = .false.
@@ -88,6 +98,7 @@ contains
       r_prev2 = huge(1.0_dp)
       r_norm_prev = 0.0_dp
       eta_prev = ew_eta_max
+      k_stale = .false.
       if (.not. allocated(ratios)) allocate (ratios(st%max_iter + 1))
       if (size(ratios) < st%max_iter + 1) then
         deallocate (ratios)
@@ -103,6 +114,15 @@ contains
               if (r_max > modified_contraction * r_prev) want_k = .true.
             end if
           end if
+        end if
+        ! mode auto: no tangent for an iteration likely to converge (see skip_margin above); never twice running
+        k_skip = newton == newton_auto .and. iter >= 2 .and. .not. k_stale .and. an%sys_ready
+        if (k_skip) k_skip = sparse_is_factored(an%sys) .and. r_prev < huge(1.0_dp)
+        if (k_skip) k_skip = r_max * (r_max / r_prev) < skip_margin * st%r_n * q_avg
+        k_stale = k_skip
+        if (k_skip) then
+          want_k = .false.
+          ns%tangents_skipped = ns%tangents_skipped + 1
         end if
         if (iter >= 1) then
           r_prev2 = r_prev
@@ -169,6 +189,11 @@ contains
           tol = max(krylov_rel_tol, eta)
         end if
         k_fresh = .true.
+        if (k_skip) then
+          ! the expected convergence did not come: GMRES with the previous iterate's tangent (still assembled)
+          want_k = .true.
+          ns%stale_solves = ns%stale_solves + 1
+        end if
         if (.not. want_k) then
           ! modified Newton: the last factors, a residual-only element loop
           call sparse_solve(an%sys, r, stat, smsg)

@@ -373,6 +373,9 @@ contains
         call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(kinc)//' increments')
       end associate
     end do steps
+    if (ns%tangents_skipped > 0) call output_log(out, 'ldfcz: Newton auto: '//itoa(ns%tangents_skipped)// &
+      ' iterations expected to converge assembled without a tangent, '//itoa(ns%stale_solves)// &
+      ' of them not converged and solved with the previous iterate''s tangent (this run)')
 
   contains
 
