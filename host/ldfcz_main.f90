@@ -13,6 +13,7 @@ program ldfcz
     newton_krylov, newton_auto
   use abaqus_host_state, only: abaqus_set_job
   use blas_threads, only: blas_threads_default
+  use heap_reuse, only: heap_reuse_default
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg
@@ -171,6 +172,8 @@ program ldfcz
     end if
   end if
   call blas_threads_default(blas_note)
+  if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
+  call heap_reuse_default(blas_note)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call run_analysis(model, routines, out, verbose, summary, exit_code, options)
   call output_close(out)

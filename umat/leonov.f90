@@ -33,7 +33,7 @@ module leonov
   public :: leonov_state_from_statev, leonov_state_to_statev
   public :: leonov_log_r_gamma, leonov_log_x_over_sinh, leonov_ln_sinh, leonov_ln_sinh_coth
   public :: leonov_ok, leonov_step_too_large, leonov_no_convergence, leonov_bad_input
-  public :: voigt_i, voigt_j
+  public :: voigt_i, voigt_j, leonov_predictor_evaluations
 
   integer, parameter :: leonov_ok = 0              !< converged, increment accurate
   integer, parameter :: leonov_step_too_large = 1  !< converged and valid, but dgamma > p%dgamma_max
@@ -391,22 +391,25 @@ contains
   !> (g need not be monotone under strong softening). Newton steps in u alone needed 23 evaluations of g per call
   !> on a late state of the application scene (a singularity at tau -> 0 and a bracket test that failed on a step
   !> below round-off); this form needs about 4 there (docs/umat.md "Integration").
-  pure subroutine predictor(p, tau_tr, press, dt, gamma_n, u)
+  pure subroutine predictor(p, tau_tr, press, dt, gamma_n, la, u, n_eval)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: tau_tr, press, dt, gamma_n
+    real(dp), intent(in) :: la       !< ln A(gamma_n) (log_a)
     real(dp), intent(out) :: u
-    real(dp) :: u_lo, u_hi, g, dg, v, x, x_tr, du, dy, la, dla, un, ldt
+    integer, intent(out) :: n_eval   !< evaluations of g
+    real(dp) :: u_lo, u_hi, g, dg, v, x, x_tr, du, dy, un, ldt
     logical :: have_lo
     integer :: k
     ldt = log(dt)
     x_tr = tau_tr / p%tau_0
     u_hi = log(tau_tr / p%g)
-    call log_a(p, press, gamma_n, la, dla)
     u = min(ldt + leonov_ln_sinh(x_tr) - la, u_hi - log(2.0_dp))
     u_lo = u
     have_lo = .false.
+    n_eval = 0
     do k = 1, 200
       call g_of(u, g, dg, v)
+      n_eval = k
       if (g > 0.0_dp) then
         u_lo = u
         have_lo = .true.
@@ -464,11 +467,27 @@ contains
     end subroutine g_of
   end subroutine predictor
 
+  !> The scalar predictor alone (diagnostics for tests and tools/bench_leonov_calls.f90): its root u = ln dgamma
+  !> for the trial equivalent stress tau_tr (MPa), pressure press, time increment dt and gamma_n, and the
+  !> evaluations of g it took.
+  pure subroutine leonov_predictor_evaluations(p, tau_tr, press, dt, gamma_n, u, n_eval)
+    type(leonov_props), intent(in) :: p   !< properties
+    real(dp), intent(in) :: tau_tr        !< trial tau_bar (MPa), > 0
+    real(dp), intent(in) :: press         !< pressure (MPa)
+    real(dp), intent(in) :: dt            !< time increment (s), > 0
+    real(dp), intent(in) :: gamma_n       !< equivalent plastic strain at the start
+    real(dp), intent(out) :: u            !< ln dgamma
+    integer, intent(out) :: n_eval        !< evaluations of g
+    real(dp) :: la, dla
+    call log_a(p, press, gamma_n, la, dla)
+    call predictor(p, tau_tr, press, dt, gamma_n, la, u, n_eval)
+  end subroutine leonov_predictor_evaluations
+
   !> Residual and Jacobian of the local problem in x = (e_1, e_2, e_3, u = ln dgamma):
   !>   r_a = e_a - e_a^tr + phi d_a,  phi = dt G/(2 eta) = (dt G/(2 tau_0)) exp(-ln A) sinh(x)/x,  x = tau_bar/tau_0
   !>   (dgamma/2 N_a = dt Dp_a: the viscosity form stays smooth when tau_bar -> 0),
   !>   r_4 = ln sinh(x) - u - ln A(gamma_n + e^u) + ln dt  (Eq. 37 with dgamma = dt tau_bar/eta).
-  pure subroutine local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
+  pure subroutine local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi, s)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: etr(3), press
     real(dp), intent(in) :: ldt         !< ln dt
@@ -477,19 +496,23 @@ contains
     real(dp), intent(out) :: r(4), jac(4, 4), norm
     logical, intent(out) :: ok
     real(dp), intent(out) :: phi       !< dt G/(2 eta) at x
+    real(dp), intent(out) :: s         !< S(gamma_n + dgamma) at x (Eq. 41)
     real(dp) :: b(3), d(3), q, dgam, xs, la, dla, dxs(3), lphi, dlx, ls, cth
     integer :: a, c
     ok = .false.
     r = 0.0_dp
     jac = 0.0_dp
     phi = 0.0_dp
+    s = 0.0_dp
     norm = huge(1.0_dp)
     if (any(abs(x(1:3)) > 50.0_dp) .or. x(4) > 50.0_dp) return
     call principal_measures(x(1:3), b, d, q)
     if (q <= tiny(1.0_dp) * 1.0e10_dp) return
     dgam = exp(x(4))
     xs = p%g * q / p%tau_0
-    call log_a(p, press, gamma_n + dgam, la, dla)
+    ! ln A as log_a computes it, keeping S for the state's output (finish_update)
+    call softening(p, gamma_n + dgam, s, dla)
+    la = p%ln_eta_0r - p%ln_tau_0 + p%mu * press / p%tau_0 + s
     ! ln sinh(x), ln(x/sinh x) and coth x once each (shared by r, phi and the Jacobian)
     call leonov_ln_sinh_coth(xs, ls, cth)
     if (xs < 1.0e-4_dp) then
@@ -525,13 +548,12 @@ contains
   !> The Eyring increment at the trial stress, dt sinh(tau_tr/tau_0)/A(gamma_n), bounds dgamma (the return lowers
   !> tau_bar; the softening of A over dgamma is a factor 1 + O(dgamma)); below dgamma_elastic the increment is
   !> elastic. Also elastic: dt <= 0 and a deviator below q_elastic.
-  pure logical function elastic_increment(p, dt, q_tr, press, gamma_n)
+  pure logical function elastic_increment(p, dt, q_tr, la)
     type(leonov_props), intent(in) :: p
-    real(dp), intent(in) :: dt, q_tr, press, gamma_n
-    real(dp) :: la, dla
+    real(dp), intent(in) :: dt, q_tr
+    real(dp), intent(in) :: la     !< ln A(gamma_n) (log_a)
     elastic_increment = .true.
     if (.not. (dt > 0.0_dp) .or. q_tr <= q_elastic) return
-    call log_a(p, press, gamma_n, la, dla)
     elastic_increment = log(dt) + leonov_ln_sinh(p%g * q_tr / p%tau_0) - la < log_dgamma_elastic
   end function elastic_increment
 
@@ -540,16 +562,18 @@ contains
   !> R(x; e_tr, p) = 0: dx = -(dR/dx)^-1 (dR/de_tr de_tr + dR/dp dp), dR/dx = the local Newton Jacobian):
   !> dedetr(a, c) = de_a/de_tr,c, dedp(a) = de_a/dp, phi = dt G/(2 eta) at the solution (identity, 0, 0 when the
   !> increment is elastic).
-  pure subroutine return_map(p, etr, press, dt, gamma_n, e, dgamma, stat, dedetr, dedp, phi)
+  pure subroutine return_map(p, etr, press, dt, gamma_n, la_n, s_n, e, dgamma, stat, dedetr, dedp, phi, s_new)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: etr(3), press, dt, gamma_n
+    real(dp), intent(in) :: la_n, s_n   !< ln A(gamma_n) and S(gamma_n) (log_a, softening)
     real(dp), intent(out) :: e(3), dgamma
     integer, intent(out) :: stat
     real(dp), intent(out) :: dedetr(3, 3), dedp(3), phi
+    real(dp), intent(out) :: s_new      !< S(gamma_n + dgamma)
     real(dp) :: b(3), d(3), q_tr, tau_tr, u, tau, x(4), xt(4), r(4), jac(4, 4), dx(4), norm, norm_t, alpha, sc
     real(dp) :: rhs(4, 4), sens(4, 4), ldt, lphi0
     logical :: ok, accepted
-    integer :: it, ls
+    integer :: it, ls, n_eval
 
     stat = leonov_ok
     e = etr
@@ -557,20 +581,21 @@ contains
     dedetr = identity
     dedp = 0.0_dp
     phi = 0.0_dp
+    s_new = s_n
     call principal_measures(etr, b, d, q_tr)
-    if (elastic_increment(p, dt, q_tr, press, gamma_n)) return
+    if (elastic_increment(p, dt, q_tr, la_n)) return
     tau_tr = p%g * q_tr
-    call predictor(p, tau_tr, press, dt, gamma_n, u)
+    call predictor(p, tau_tr, press, dt, gamma_n, la_n, u, n_eval)
     ldt = log(dt)
     lphi0 = ldt + log(p%g / (2.0_dp * p%tau_0))
     tau = max(tau_tr - p%g * exp(u), 1.0e-12_dp * tau_tr)
     x(1:3) = etr * (tau / tau_tr)
     x(4) = u
-    call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
+    call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi, s_new)
     if (.not. ok) then
       x(1:3) = etr
       x(4) = u
-      call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
+      call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi, s_new)
       if (.not. ok) then
         stat = leonov_no_convergence
         return
@@ -589,7 +614,7 @@ contains
       accepted = .false.
       do ls = 1, merge(3, 30, norm <= tol_stall)
         xt = x + alpha * dx
-        call local_residual(p, etr, press, ldt, lphi0, gamma_n, xt, r, jac, norm_t, ok, phi)
+        call local_residual(p, etr, press, ldt, lphi0, gamma_n, xt, r, jac, norm_t, ok, phi, s_new)
         if (ok .and. norm_t < (1.0_dp - 1.0e-4_dp * alpha) * norm) then
           accepted = .true.
           exit
@@ -598,7 +623,7 @@ contains
       end do
       if (.not. accepted) then
         ! round-off floor: accept if already tight, otherwise fail
-        call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi)
+        call local_residual(p, etr, press, ldt, lphi0, gamma_n, x, r, jac, norm, ok, phi, s_new)
         if (ok .and. norm <= tol_stall) exit
         stat = leonov_no_convergence
         return
@@ -645,6 +670,7 @@ contains
     real(dp), intent(inout), optional :: c(6, 6)   !< consistent tangent (set only when stat = leonov_ok)
     real(dp) :: j0, j1, frel(3, 3), betr(3, 3), lam(3), v(3, 3), etr(3), e(3), press, dgamma, detb
     real(dp) :: be(3, 3), bt(3, 3), sigma(3, 3), dedetr(3, 3), dedp(3), phi, dbe(3, 3), q_tr
+    real(dp) :: s_n, ds_n, la_n, s_new
     real(dp) :: bv(3)
     integer :: i, j
 
@@ -667,6 +693,9 @@ contains
     if (.not. all(is_finite(betr))) return
     ! p = -tr(sigma)/3 = -kappa (J - 1) (Eq. 38; the hardening and driving deviators are traceless)
     press = -p%kappa * (j1 - 1.0_dp)
+    ! ln A(gamma_n) as log_a computes it, S(gamma_n) kept for an elastic increment's outputs
+    call softening(p, old%gamma_p, s_n, ds_n)
+    la_n = p%ln_eta_0r - p%ln_tau_0 + p%mu * press / p%tau_0 + s_n
     bt = j1**(-2.0_dp * third) * matmul(f1, transpose(f1))
     ! elastic fast path in Cartesian form (most points of a peel run: the bonded coating ahead of the front):
     ! Be~_n+1 = Be~_trial, no eigen-decomposition. tau_bar/G = |dev Be~_trial|/sqrt(2) as in principal_measures
@@ -675,11 +704,11 @@ contains
     dbe = dev3(betr)
     q_tr = sqrt(0.5_dp * sum(dbe * dbe))
     if (q_tr < 1.0_dp) then
-      if (elastic_increment(p, dt, q_tr, press, old%gamma_p)) then
+      if (elastic_increment(p, dt, q_tr, la_n)) then
         be = betr
         sigma = p%g * dbe + p%kappa * (j1 - 1.0_dp) * identity + p%g_r * dev3(bt)
         dgamma = 0.0_dp
-        call finish_update(p, old, be, sigma, dgamma, press, j1, dt, new, tau_k)
+        call finish_update(p, old, be, sigma, dgamma, press, j1, dt, s_n, new, tau_k)
         if (present(c)) call elastic_tangent(p, j1, sigma, be, bt, c)
         stat = leonov_ok
         return
@@ -690,7 +719,7 @@ contains
     etr = 0.5_dp * log(lam)
     etr = etr - third * sum(etr)
     if (maxval(abs(etr)) > 25.0_dp) return
-    call return_map(p, etr, press, dt, old%gamma_p, e, dgamma, stat, dedetr, dedp, phi)
+    call return_map(p, etr, press, dt, old%gamma_p, la_n, s_n, e, dgamma, stat, dedetr, dedp, phi, s_new)
     if (stat /= leonov_ok) return
     ! Be~_n+1 = sum_a exp(2 e_a) v_a v_a^T in the trial eigenbasis
     bv = exp(2.0_dp * e)
@@ -701,25 +730,26 @@ contains
     end do
     ! Eqs. 31-33
     sigma = p%g * dev3(be) + p%kappa * (j1 - 1.0_dp) * identity + p%g_r * dev3(bt)
-    call finish_update(p, old, be, sigma, dgamma, press, j1, dt, new, tau_k)
+    call finish_update(p, old, be, sigma, dgamma, press, j1, dt, s_new, new, tau_k)
     if (present(c)) call consistent_tangent(p, j1, sigma, bt, v, etr, e, dedetr, dedp, phi, c)
     stat = leonov_ok
   end subroutine kirchhoff_update
 
-  !> Kirchhoff stress and the new state (with its outputs tau_bar, S, eta, rate) from Be~_n+1, sigma and dgamma.
-  pure subroutine finish_update(p, old, be, sigma, dgamma, press, j1, dt, new, tau_k)
+  !> Kirchhoff stress and the new state (with its outputs tau_bar, S, eta, rate) from Be~_n+1, sigma, dgamma and
+  !> s = S(gamma_n + dgamma) (from the return or, for an elastic increment, S(gamma_n): the softening is not
+  !> evaluated a second time).
+  pure subroutine finish_update(p, old, be, sigma, dgamma, press, j1, dt, s, new, tau_k)
     type(leonov_props), intent(in) :: p
     type(leonov_state), intent(in) :: old
-    real(dp), intent(in) :: be(3, 3), sigma(3, 3), dgamma, press, j1, dt
+    real(dp), intent(in) :: be(3, 3), sigma(3, 3), dgamma, press, j1, dt, s
     type(leonov_state), intent(inout) :: new
     real(dp), intent(out) :: tau_k(3, 3)
-    real(dp) :: s, ds, x
+    real(dp) :: x
     tau_k = j1 * sigma
     new%be = be
     new%gamma_p = old%gamma_p + dgamma
     new%dgamma = dgamma
     new%tau_bar = p%g * sqrt(0.5_dp * sum(dev3(be)**2))
-    call softening(p, new%gamma_p, s, ds)
     new%s_soft = s
     ! eta = tau_0 A x/sinh(x) (Eq. 37), ln(tau_0 A) = ln eta_0r + mu p/tau_0 + S (log_a)
     x = new%tau_bar / p%tau_0
