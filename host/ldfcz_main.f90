@@ -24,7 +24,7 @@ program ldfcz
   type(output_t) :: out
   type(run_summary_t) :: summary
   type(solver_options_t) :: options
-  character(len=:), allocatable :: restart_from, blas_note
+  character(len=:), allocatable :: restart_from, blas_note, heap_note
 
   interface
     !> mkdir(2); mode_t is a 32-bit unsigned integer on Linux
@@ -173,8 +173,8 @@ program ldfcz
   end if
   call blas_threads_default(blas_note)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
-  call heap_reuse_default(blas_note)
-  if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
+  call heap_reuse_default(heap_note)
+  if (len(heap_note) > 0) call output_log(out, 'ldfcz: '//heap_note)
   call run_analysis(model, routines, out, verbose, summary, exit_code, options)
   call output_close(out)
   call exit(exit_code)

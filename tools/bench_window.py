@@ -131,7 +131,7 @@ def main():
         'step time at the end (s = um of pull) | LOAD.RF1 at the end (N) |',
         '|---|---|---|---|---|---|---|---|---|---|---|']
     for label, opts, w, t, rf in rows:
-        extra = ' '.join(['%s=%s' % kv for kv in envs.get(label, [])] +
+        extra = ' '.join(['%s=%s' % tuple(kv) for kv in envs.get(label, [])] +
                          (['exe ' + exes[label]] if label in exes else []))
         out.append('| %s | `%s`%s | %d | %d | %d | %d | %.1f | %.1f / %.1f / %.1f | %.3f | %.4f | %.9e |' % (
             label, opts, (' ' + extra) if extra else '', w['inc'], w['its'], w['fac'], w['gmres'], w['wall'],

@@ -390,7 +390,7 @@ contains
   !> A step that leaves the bracket is replaced by bisection, or by a step down of 5 while no lower bound is known
   !> (g need not be monotone under strong softening). Newton steps in u alone needed 23 evaluations of g per call
   !> on a late state of the application scene (a singularity at tau -> 0 and a bracket test that failed on a step
-  !> below round-off); this form needs about 4 there (docs/umat.md "Integration").
+  !> below round-off); this form needs about 5 there (docs/umat.md "Integration").
   pure subroutine predictor(p, tau_tr, press, dt, gamma_n, la, u, n_eval)
     type(leonov_props), intent(in) :: p
     real(dp), intent(in) :: tau_tr, press, dt, gamma_n

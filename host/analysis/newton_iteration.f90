@@ -34,8 +34,8 @@ module newton_iteration
   ! Newton converges quadratically), comes within skip_margin of the force criterion, the elements compute
   ! forces only (UEL LFLAGS(3) = 5). If the criterion is not met after all, GMRES solves with the tangent still
   ! assembled, that of the previous iterate (a Newton step with a one-iteration-old Jacobian, close to the
-  ! solution), and the next iteration assembles it anew. Late in the application scene: 10 skips in 10
-  ! increments, 1 of them not converged, no extra iterations (docs/performance.md, fifth pass).
+  ! solution), and the next iteration assembles it anew. Late in the application scene about one skip per
+  ! increment, few of them not converged (docs/performance.md, fifth pass).
   real(dp), parameter :: skip_margin = 10.0_dp          !< skip when r_k^2 / r_(k-1) < skip_margin R_n q_avg
 
   !> What the variants carry from one iteration, attempt and increment to the next.
