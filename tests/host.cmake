@@ -133,3 +133,9 @@ if(EXISTS "${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp")
   # PET cube with 12 cutbacks (UMAT PNEWDT): increment size and growth state carried over
   ldfcz_add_restart_test(restart_pet_cutbacks ${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp --stop 8)
 endif()
+
+# field output as ParaView reads it: tensors in VTK's order with names, principal values, requests carried over
+# to the next step, a warning for a variable that cannot be written (python3-vtk9 reads the frames)
+add_test(NAME deck_field_output COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_field_output.py
+  --exe $<TARGET_FILE:ldfcz> --deck ${LDFCZ_DECKS}/single/field_output_shear.inp --out ${LDFCZ_RUNS}/deck_field_output)
+set_tests_properties(deck_field_output PROPERTIES LABELS "deck" TIMEOUT 300)

@@ -1,8 +1,10 @@
-!> One VTU frame of the converged state: displacements, reactions, element mean stress, von Mises, the first
-!> state variables, and for the cohesive elements opening, traction and largest opening (docs/host.md).
+!> One VTU frame of the converged state: displacements, reactions, element mean stress with its principal values and
+!> von Mises stress, the requested strain and state variables (the step's field request), and for the cohesive
+!> elements opening, traction and largest opening (docs/host.md, "Outputs").
 module field_frame
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, etype_user, etype_c3d8, etype_cpe4
+  use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4
+  use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use output_files, only: output_t, output_vtu_frame, output_vtu_t
   use user_routines, only: user_routines_t
@@ -10,20 +12,22 @@ module field_frame
   private
   public :: write_field_frame
 
-  integer, parameter :: n_sdv_out = 3           !< state variables written to the VTU frames
+  integer, parameter :: n_sdv_default = 3       !< state variables written when the request names no variable
 
 contains
 
   !> The frame of the converged state of an at total time ttot.
-  subroutine write_field_frame(out, model, routines, an, ttot)
+  subroutine write_field_frame(out, model, routines, an, ttot, step)
     type(output_t), intent(inout) :: out           !< output files
     type(model_t), intent(in) :: model             !< the model
     type(user_routines_t), intent(in) :: routines  !< UEL and UMAT (only the built-in UEL's SVARS are known)
     type(analysis_t), intent(in) :: an             !< converged state
     real(dp), intent(in) :: ttot                   !< total time of the frame
+    type(step_t), intent(in) :: step               !< the step whose field request applies
     type(output_vtu_t) :: fr
-    integer :: ie, nn, k, ncell, nip, ip, nsv, h
-    real(dp) :: s(6), p
+    integer :: ie, nn, k, ncell, nip, ip, nsv, h, nt
+    real(dp) :: s(6), e(6), p(3)
+    logical :: want_strain
     ncell = model%nelem
     allocate (fr%x(3, model%nnode), fr%u(3, model%nnode), fr%rf(3, model%nnode))
     fr%x = model%x
@@ -36,12 +40,27 @@ contains
       end do
     end do
     allocate (fr%cell_type(ncell), fr%cell_ptr(ncell + 1), fr%cell_conn(size(model%conn)), fr%cell_id(ncell))
-    allocate (fr%stress(6, ncell), fr%mises(ncell), fr%sdv(n_sdv_out, ncell), fr%opening(3, ncell))
+    call sdv_selection(model, an, step, fr%sdv_index)
+    want_strain = step%out_le .or. step%out_e
+    allocate (fr%stress(6, ncell), fr%principal(3, ncell), fr%mises(ncell), fr%sdv(size(fr%sdv_index), ncell))
+    allocate (fr%opening(3, ncell))
+    if (want_strain) then
+      allocate (fr%strain(6, ncell))
+      fr%strain = 0.0_dp
+      allocate (fr%strain_names(count([step%out_le, step%out_e])))
+      k = 0
+      if (step%out_le) then
+        k = k + 1
+        fr%strain_names(k) = 'LE'
+      end if
+      if (step%out_e) fr%strain_names(k + 1) = 'E'
+    end if
     allocate (fr%traction(ncell), fr%delta_max(ncell), fr%cohesive(ncell))
     fr%cell_ptr = model%conn_ptr
     fr%cell_conn = model%conn - 1
     fr%cell_id = model%elem_id
     fr%stress = 0.0_dp
+    fr%principal = 0.0_dp
     fr%mises = 0.0_dp
     fr%sdv = 0.0_dp
     fr%opening = 0.0_dp
@@ -78,26 +97,52 @@ contains
         end if
       else
         nip = size(an%conv(ie)%stress, 2)
+        nt = size(an%conv(ie)%stress, 1)
         s = 0.0_dp
+        e = 0.0_dp
         do ip = 1, nip
-          if (size(an%conv(ie)%stress, 1) == 6) then
-            s = s + an%conv(ie)%stress(:, ip) / nip
-          else
-            s(1:4) = s(1:4) + an%conv(ie)%stress(:, ip) / nip
-          end if
+          s(1:nt) = s(1:nt) + an%conv(ie)%stress(:, ip) / nip
+          e(1:nt) = e(1:nt) + an%conv(ie)%stran(:, ip) / nip
         end do
         fr%stress(:, ie) = s
-        p = (s(1) + s(2) + s(3)) / 3.0_dp
-        fr%mises(ie) = sqrt(1.5_dp * ((s(1) - p)**2 + (s(2) - p)**2 + (s(3) - p)**2 + &
-          2.0_dp * (s(4)**2 + s(5)**2 + s(6)**2)))
-        k = min(n_sdv_out, size(an%conv(ie)%statev, 1))
-        do ip = 1, nip
-          fr%sdv(1:k, ie) = fr%sdv(1:k, ie) + an%conv(ie)%statev(1:k, ip) / nip
+        call principal_stresses(s, p)
+        fr%principal(:, ie) = [p(3), p(2), p(1)]
+        fr%mises(ie) = mises_stress(s)
+        if (want_strain) fr%strain(:, ie) = [e(1:3), 0.5_dp * e(4:6)]  ! engineering -> tensor shear
+        nsv = size(an%conv(ie)%statev, 1)
+        do k = 1, size(fr%sdv_index)
+          if (fr%sdv_index(k) > nsv) cycle
+          fr%sdv(k, ie) = sum(an%conv(ie)%statev(fr%sdv_index(k), :)) / nip
         end do
       end if
     end do
     call output_vtu_frame(out, fr, ttot)
   end subroutine write_field_frame
+
+  !> The state variables a frame holds: every one (SDV requested), the listed ones (SDVn), the first three when the
+  !> request names no variable at all (the frames of earlier versions), none otherwise.
+  subroutine sdv_selection(model, an, step, idx)
+    type(model_t), intent(in) :: model           !< the model
+    type(analysis_t), intent(in) :: an           !< state (the number of state variables per element)
+    type(step_t), intent(in) :: step             !< field request
+    integer, allocatable, intent(out) :: idx(:)  !< state-variable numbers, ascending, no repeats
+    integer :: ie, nmax, k
+    nmax = 0
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) /= etype_user .and. allocated(an%conv(ie)%statev)) &
+        nmax = max(nmax, size(an%conv(ie)%statev, 1))
+    end do
+    if (step%out_sdv_all) then
+      idx = [(k, k = 1, nmax)]
+    else if (allocated(step%out_sdv)) then
+      idx = [(k, k = 1, maxval([0, step%out_sdv]))]
+      idx = pack(idx, [(any(step%out_sdv == k), k = 1, size(idx))])
+    else if (.not. step%field_vars_named) then
+      idx = [(k, k = 1, min(n_sdv_default, nmax))]
+    else
+      allocate (idx(0))
+    end if
+  end subroutine sdv_selection
 
   !> Mean opening (top - bottom face displacement) of cohesive element ie with nn nodes.
   subroutine cell_opening(model, an, ie, nn, op)

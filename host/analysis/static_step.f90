@@ -162,7 +162,7 @@ contains
     if (restarting) then
       call resume_state()
     else if (any(model%steps(1:model%nstep)%field_output)) then
-      call write_frame(0.0_dp)
+      call write_frame(0.0_dp, findloc(model%steps(1:model%nstep)%field_output, .true., 1))
     end if
 
     steps: do is = is_first, model%nstep
@@ -329,13 +329,13 @@ contains
           if (st%field_output) then
             if (st%field_intervals > 0) then
               if (sc%t >= next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(sc)) then
-                call write_frame(t_total0 + sc%t)
+                call write_frame(t_total0 + sc%t, is)
                 do while (next_mark <= sc%t * (1.0_dp + 1.0e-9_dp))
                   next_mark = next_mark + st%period / st%field_intervals
                 end do
               end if
             else if (st%field_frequency > 0) then
-              if (mod(kinc, st%field_frequency) == 0 .or. step_control_done(sc)) call write_frame(t_total0 + sc%t)
+              if (mod(kinc, st%field_frequency) == 0 .or. step_control_done(sc)) call write_frame(t_total0 + sc%t, is)
             end if
           end if
           call system_clock(c1)
@@ -364,7 +364,7 @@ contains
             if (k > 0) then
               if (mod(kinc, k) /= 0) call save_restart()
             end if
-            if (st%field_output) call write_frame(t_total0 + sc%t)
+            if (st%field_output) call write_frame(t_total0 + sc%t, is)
             exit_code = 128 + sig
             exit steps
           end if
@@ -510,11 +510,12 @@ contains
     end function column_value
 
     !> A VTU frame of the converged state, once per converged increment.
-    subroutine write_frame(ttot)
+    subroutine write_frame(ttot, istep)
       real(dp), intent(in) :: ttot  !< total time of the frame
+      integer, intent(in) :: istep  !< step whose field request applies
       if (kinc_total == last_frame_inc) return
       last_frame_inc = kinc_total
-      call write_field_frame(out, model, routines, an, ttot)
+      call write_field_frame(out, model, routines, an, ttot, model%steps(istep))
     end subroutine write_frame
 
   end subroutine run_steps

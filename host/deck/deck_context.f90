@@ -32,6 +32,7 @@ module deck_context
     integer :: istep = 0                              !< current step
     logical :: in_step = .false.                      !< between *STEP and *END STEP
     integer :: restart_freq = 0                       !< *RESTART, WRITE, FREQUENCY in effect (0: none)
+    integer :: output_kind = 0                        !< the step's last *OUTPUT: 1 FIELD, 2 HISTORY, 0 none
     integer, allocatable :: node_rec(:)               !< record of each node (duplicate-id messages)
     integer, allocatable :: elem_rec(:)               !< record of each element
     integer, allocatable :: conn_raw(:)               !< connectivity as user node ids until finish

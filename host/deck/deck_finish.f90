@@ -3,7 +3,7 @@
 module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where
-  use model_types, only: boundary_t, source_pos_t, etype_user, model_find_elset, model_find_material
+  use model_types, only: model_t, boundary_t, source_pos_t, etype_user, model_find_elset, model_find_material
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -192,8 +192,37 @@ contains
           return
         end if
       end do
+      call carry_field_requests(model)
     end associate
   end subroutine finish_model
+
+  !> Field output requests stay in effect in later steps until changed, as in Abaqus: a step without its own
+  !> *OUTPUT, FIELD takes the previous step's request; a step with one adds its variables to the inherited ones
+  !> (OP=ADD, the default, and REPLACE) or starts afresh (OP=NEW). Frequency and intervals are the step's own.
+  pure subroutine carry_field_requests(model)
+    type(model_t), intent(inout) :: model  !< the model
+    integer :: is
+    do is = 2, model%nstep
+      associate (st => model%steps(is), prev => model%steps(is - 1))
+        if (.not. prev%field_output) cycle
+        if (.not. st%field_given) then
+          st%field_output = .true.
+          st%field_frequency = prev%field_frequency
+          st%field_intervals = prev%field_intervals
+        else if (st%field_op_new) then
+          cycle
+        end if
+        st%field_vars_named = st%field_vars_named .or. prev%field_vars_named
+        st%out_le = st%out_le .or. prev%out_le
+        st%out_e = st%out_e .or. prev%out_e
+        st%out_sdv_all = st%out_sdv_all .or. prev%out_sdv_all
+        if (allocated(prev%out_sdv)) then
+          if (.not. allocated(st%out_sdv)) allocate (st%out_sdv(0))
+          st%out_sdv = [st%out_sdv, prev%out_sdv]
+        end if
+      end associate
+    end do
+  end subroutine carry_field_requests
 
   !> Boundary node ids -> indices; dofs beyond the model dimension dropped (with a warning when none is left).
   subroutine resolve_bc(ctx, bc)

@@ -11,7 +11,8 @@ module deck_reader
   use deck_materials, only: read_material, read_elastic, read_user_material, read_depvar, read_solid_section
   use deck_user_elements, only: read_user_element, read_uel_property
   use deck_boundaries, only: read_amplitude, read_boundary
-  use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print
+  use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print, &
+    read_field_variables
   use deck_finish, only: finish_model
   implicit none
   private
@@ -129,9 +130,7 @@ contains
     case ('*OUTPUT')
       call read_output(ctx)
     case ('*NODE OUTPUT', '*ELEMENT OUTPUT')
-      call ctx_need_step(ctx)
-      if (ctx%stat == 0) call ctx_allow_params(ctx, [character(len=16) :: 'ELSET', 'NSET', 'VARIABLE', 'POSITION', &
-        'DIRECTIONS', 'INVARIANT'])
+      call read_field_variables(ctx)
     case ('*NODE PRINT')
       call read_node_print(ctx)
     case ('*END STEP')

@@ -7,7 +7,7 @@ module deck_steps
     ctx_required, ctx_param_int, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
   implicit none
   private
-  public :: read_step, read_static, read_controls, read_restart, read_output, read_node_print
+  public :: read_field_variables, read_step, read_static, read_controls, read_restart, read_output, read_node_print
 
 contains
 
@@ -39,6 +39,7 @@ contains
     istep = ctx%model%nstep
     ctx%istep = istep
     ctx%model%steps(istep) = empty_step
+    ctx%output_kind = 0
     allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2))
     ! NLGEOM carries over from the previous step, as in Abaqus
     if (istep > 1) ctx%model%steps(istep)%nlgeom = ctx%model%steps(istep - 1)%nlgeom
@@ -268,13 +269,44 @@ contains
   subroutine read_output(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     integer :: k
+    character(len=:), allocatable :: v
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=16) :: 'FIELD', 'HISTORY', 'FREQUENCY', 'NUMBER INTERVAL', 'VARIABLE', &
       'TIME MARKS', 'OP'])
     if (ctx%stat /= 0) return
     if (deck_has_param(ctx%params, 'FIELD')) then
+      ctx%output_kind = 1
       ctx%model%steps(ctx%istep)%field_output = .true.
+      ctx%model%steps(ctx%istep)%field_given = .true.
+      v = deck_normalize(deck_param_value(ctx%params, 'OP'))
+      select case (v)
+      case ('', 'ADD', 'REPLACE')
+      case ('NEW')
+        ctx%model%steps(ctx%istep)%field_op_new = .true.
+      case default
+        call ctx_fail(ctx, ctx%ir, 'OP must be ADD, NEW or REPLACE')
+        return
+      end select
+      v = deck_normalize(deck_param_value(ctx%params, 'VARIABLE'))
+      select case (v)
+      case ('')
+      case ('PRESELECT')
+        ! Abaqus' default field list of a static step; here the variables of it that the host has (docs/host.md)
+        call field_variable(ctx, ctx%ir, 'S')
+        call field_variable(ctx, ctx%ir, 'LE')
+        call field_variable(ctx, ctx%ir, 'U')
+        call field_variable(ctx, ctx%ir, 'RF')
+      case ('ALL')
+        call field_variable(ctx, ctx%ir, 'S')
+        call field_variable(ctx, ctx%ir, 'LE')
+        call field_variable(ctx, ctx%ir, 'SDV')
+        call field_variable(ctx, ctx%ir, 'U')
+        call field_variable(ctx, ctx%ir, 'RF')
+      case default
+        call ctx_fail(ctx, ctx%ir, 'VARIABLE must be PRESELECT or ALL')
+        return
+      end select
       k = ctx_param_int(ctx, 'FREQUENCY', 1)
       if (ctx%stat /= 0) return
       if (k < 0) then
@@ -289,10 +321,91 @@ contains
         return
       end if
       ctx%model%steps(ctx%istep)%field_intervals = k
-    else if (.not. deck_has_param(ctx%params, 'HISTORY')) then
+    else if (deck_has_param(ctx%params, 'HISTORY')) then
+      ctx%output_kind = 2
+      call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
+        'this request and its *NODE/*ELEMENT OUTPUT lines write nothing')
+    else
       call ctx_fail(ctx, ctx%ir, 'FIELD or HISTORY required')
     end if
   end subroutine read_output
+
+  !> *ELEMENT OUTPUT / *NODE OUTPUT under *OUTPUT, FIELD: the variables of the data lines (or VARIABLE=) join the
+  !> step's field request; a variable the host cannot write is warned about with its line (never silently dropped).
+  subroutine read_field_variables(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    character(len=:), allocatable :: v
+    integer :: i, k, n
+    call ctx_need_step(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=16) :: 'ELSET', 'NSET', 'VARIABLE', 'POSITION', 'DIRECTIONS', &
+      'INVARIANT', 'EXTERIOR'])
+    if (ctx%stat /= 0) return
+    if (ctx%output_kind /= 1) then
+      if (ctx%output_kind == 0) then
+        call ctx_fail(ctx, ctx%ir, 'must follow *OUTPUT, FIELD or *OUTPUT, HISTORY')
+      end if
+      return  ! history output: warned at *OUTPUT, HISTORY
+    end if
+    if (deck_has_param(ctx%params, 'ELSET') .or. deck_has_param(ctx%params, 'NSET')) &
+      call ctx_warn(ctx, ctx%ir, 'ELSET/NSET: ldfcz writes the requested variables for the whole model')
+    v = deck_normalize(deck_param_value(ctx%params, 'VARIABLE'))
+    select case (v)
+    case ('')
+    case ('PRESELECT', 'ALL')
+      if (ctx%kw == '*NODE OUTPUT') then
+        call field_variable(ctx, ctx%ir, 'U')
+        call field_variable(ctx, ctx%ir, 'RF')
+      else
+        call field_variable(ctx, ctx%ir, 'S')
+        call field_variable(ctx, ctx%ir, 'LE')
+        if (v == 'ALL') call field_variable(ctx, ctx%ir, 'SDV')
+      end if
+    case default
+      call ctx_fail(ctx, ctx%ir, 'VARIABLE must be PRESELECT or ALL')
+      return
+    end select
+    do i = ctx%ir + 1, ctx%ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      do k = 1, n
+        v = deck_normalize(f(k))
+        if (len(v) > 0) call field_variable(ctx, i, v)
+      end do
+    end do
+  end subroutine read_field_variables
+
+  !> One requested field variable (upper case) read at record irec.
+  subroutine field_variable(ctx, irec, name)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record of the request
+    character(len=*), intent(in) :: name        !< variable key
+    integer :: n, ios
+    associate (st => ctx%model%steps(ctx%istep))
+      st%field_vars_named = .true.
+      select case (name)
+      case ('S', 'MISES', 'SP', 'U', 'RF', 'COORD')
+        ! always written: S (with Mises and principal values), U, RF and the coordinates of the frames
+      case ('LE')
+        st%out_le = .true.
+      case ('E', 'NE')
+        st%out_e = .true.
+      case ('SDV', 'STATEV')
+        st%out_sdv_all = .true.
+      case default
+        if (len(name) > 3 .and. name(1:min(3, len(name))) == 'SDV') then
+          read (name(4:), *, iostat=ios) n
+          if (ios == 0 .and. n >= 1) then
+            if (.not. allocated(st%out_sdv)) allocate (st%out_sdv(0))
+            st%out_sdv = [st%out_sdv, n]
+            return
+          end if
+        end if
+        call ctx_warn(ctx, irec, 'output variable '//name//' cannot be written by ldfcz and is not written '// &
+          '(written: S, LE, E, SDV, SDVn, U, RF and the cohesive cell data; docs/host.md, "Outputs")')
+      end select
+    end associate
+  end subroutine field_variable
 
   !> *NODE PRINT, NSET=: set totals of U1..U3 and RF1..RF3 written to JOB.csv.
   subroutine read_node_print(ctx)

@@ -119,6 +119,14 @@ module model_types
     logical :: field_output = .false.      !< *OUTPUT, FIELD present
     integer :: field_frequency = 1         !< FREQUENCY (increments), 0 = last only
     integer :: field_intervals = 0         !< NUMBER INTERVAL (0 = not given)
+    logical :: field_given = .false.       !< this step has its own *OUTPUT, FIELD (otherwise the previous step's
+                                           !< field request stays in effect, as in Abaqus)
+    logical :: field_op_new = .false.      !< *OUTPUT, FIELD, OP=NEW: earlier requests do not carry over
+    logical :: field_vars_named = .false.  !< variables were named (VARIABLE=, *ELEMENT/*NODE OUTPUT data lines)
+    logical :: out_le = .false.            !< LE requested (integrated strain STRAN, logarithmic under NLGEOM)
+    logical :: out_e = .false.             !< E requested (the same STRAN, under Abaqus' small-strain name)
+    logical :: out_sdv_all = .false.       !< SDV requested: every state variable
+    integer, allocatable :: out_sdv(:)     !< SDVn requested one by one
     type(node_print_t), allocatable :: prints(:)
     integer :: nprint = 0
     integer :: restart_frequency = 0       !< *RESTART, WRITE, FREQUENCY=n in effect (0: no restart file)

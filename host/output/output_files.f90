@@ -11,7 +11,8 @@ module output_files
   public :: output_progress, output_progress_clear, output_vtu_frame, output_vtu_t, stdout_is_terminal
   public :: output_csv_resume, output_frames_resume, output_sta_note
 
-  !> Cell and point data of one VTU frame.
+  !> Cell and point data of one VTU frame. Tensors are held in Abaqus' component order (11, 22, 33, 12, 13, 23,
+  !> tensor shear components) and written in VTK's (XX, YY, ZZ, XY, YZ, XZ) with component names.
   type :: output_vtu_t
     real(dp), allocatable :: x(:, :)         !< (3, npoint) original coordinates
     real(dp), allocatable :: u(:, :)         !< (3, npoint) displacement
@@ -21,8 +22,12 @@ module output_files
     integer, allocatable :: cell_conn(:)     !< 0-based point indices
     integer, allocatable :: cell_id(:)       !< element label
     real(dp), allocatable :: stress(:, :)    !< (6, ncell) mean Cauchy stress 11,22,33,12,13,23 (0 for cohesive cells)
+    real(dp), allocatable :: principal(:, :) !< (3, ncell) principal values of the mean stress, min, mid, max
     real(dp), allocatable :: mises(:)        !< (ncell)
-    real(dp), allocatable :: sdv(:, :)       !< (nsdv, ncell) first state variables (mean over the points)
+    real(dp), allocatable :: strain(:, :)    !< (6, ncell) mean integrated strain STRAN, tensor shear (if requested)
+    character(len=2), allocatable :: strain_names(:) !< names the strain is written under (LE and/or E)
+    real(dp), allocatable :: sdv(:, :)       !< (nsdv, ncell) state variables (mean over the points)
+    integer, allocatable :: sdv_index(:)     !< (nsdv) which state variable each row of sdv is
     real(dp), allocatable :: opening(:, :)   !< (3, ncell) cohesive opening top - bottom (global frame), mean
     real(dp), allocatable :: traction(:)     !< (ncell) |T| from SVARS (mean over the points)
     real(dp), allocatable :: delta_max(:)    !< (ncell) Delta_max from SVARS (mean over the points)
@@ -367,12 +372,19 @@ contains
     write (u, '(a)') '<DataArray type="Int32" Name="element" format="ascii">'
     write (u, '(*(i0,1x))') frame%cell_id
     write (u, '(a)') '</DataArray>'
-    write (u, '(a)') '<DataArray type="Float64" Name="S" NumberOfComponents="6" format="ascii">'
-    write (u, '(6es16.8)') frame%stress
+    call sym_tensor('S', frame%stress)
+    write (u, '(a)') '<DataArray type="Float64" Name="S_principal" NumberOfComponents="3" '// &
+      'ComponentName0="min" ComponentName1="mid" ComponentName2="max" format="ascii">'
+    write (u, '(3es16.8)') frame%principal
     write (u, '(a)') '</DataArray>'
     call sca('Mises', frame%mises)
+    if (allocated(frame%strain) .and. allocated(frame%strain_names)) then
+      do k = 1, size(frame%strain_names)
+        call sym_tensor(trim(frame%strain_names(k)), frame%strain)
+      end do
+    end if
     do k = 1, size(frame%sdv, 1)
-      write (b, '(i0)') k
+      write (b, '(i0)') frame%sdv_index(k)
       call sca('SDV'//trim(b), frame%sdv(k, :))
     end do
     write (u, '(a)') '<DataArray type="Int32" Name="cohesive" format="ascii">'
@@ -391,6 +403,20 @@ contains
     call system_clock(c1)
     out%t_output = out%t_output + real(c1 - c0, dp) / real(rate, dp)
   contains
+    !> A symmetric tensor held in Abaqus order (11, 22, 33, 12, 13, 23), written in VTK's order (XX, YY, ZZ, XY,
+    !> YZ, XZ) with component names, so that ParaView's tensor filters read it as the same tensor.
+    subroutine sym_tensor(label, a)
+      character(len=*), intent(in) :: label
+      real(dp), intent(in) :: a(:, :)
+      integer :: c
+      write (u, '(a)') '<DataArray type="Float64" Name="'//label//'" NumberOfComponents="6" '// &
+        'ComponentName0="XX" ComponentName1="YY" ComponentName2="ZZ" ComponentName3="XY" ComponentName4="YZ" '// &
+        'ComponentName5="XZ" format="ascii">'
+      do c = 1, size(a, 2)
+        write (u, '(6es16.8)') a(1:4, c), a(6, c), a(5, c)
+      end do
+      write (u, '(a)') '</DataArray>'
+    end subroutine sym_tensor
     subroutine vec(label, a)
       character(len=*), intent(in) :: label
       real(dp), intent(in) :: a(:, :)
