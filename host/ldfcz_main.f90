@@ -14,11 +14,14 @@ program ldfcz
   use abaqus_host_state, only: abaqus_set_job
   use blas_threads, only: blas_threads_default
   use heap_reuse, only: heap_reuse_default
+  use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg
   integer :: i, n, stat, threads, exit_code, k
-  logical :: quiet, verbose, exists
+  logical :: quiet, verbose, exists, reorient, orient_error
+  type(interface_check_t) :: orient
+  character(len=:), allocatable :: orient_text
   type(model_t) :: model
   type(user_routines_t) :: routines
   type(output_t) :: out
@@ -42,6 +45,7 @@ program ldfcz
   threads = 0
   quiet = .false.
   verbose = .false.
+  reorient = .false.
   restart_from = ''
   n = command_argument_count()
   i = 1
@@ -58,6 +62,8 @@ program ldfcz
       quiet = .true.
     case ('-v', '--verbose')
       verbose = .true.
+    case ('--reorient-interfaces')
+      reorient = .true.
     case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
@@ -171,6 +177,17 @@ program ldfcz
       call exit(exit_input)
     end if
   end if
+  ! interface elements meshed the wrong way round read opening as penetration: refuse them (or reorder them)
+  call check_interface_orientation(model, reorient, orient)
+  call interface_check_messages(orient, orient_text, orient_error)
+  if (len(orient_text) > 0) then
+    call output_log(out, orient_text)
+    if (quiet .or. orient_error) write (error_unit, '(a)') orient_text
+  end if
+  if (orient_error) then
+    call output_close(out)
+    call exit(exit_input)
+  end if
   call blas_threads_default(blas_note)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call heap_reuse_default(heap_note)
@@ -232,6 +249,8 @@ contains
       '                     instead of the built-in routines, as abaqus job=... user=FILE', &
       '  -q, --quiet        no messages on standard output (JOB.log is still written)', &
       '  -v, --verbose      residual, force and correction of every Newton iteration in JOB.log', &
+      '  --reorient-interfaces  reverse the face order of interface elements whose normal points into the', &
+      '                     solid of their bottom face (default: such elements are an error)', &
       '  --newton MODE      full (default: new tangent and factorization every iteration), modified (factors', &
       '                     kept while the residual contracts), krylov (new tangent, GMRES preconditioned by', &
       '                     the last factors), auto (inexact Newton-Krylov: GMRES to Eisenstat-Walker', &

@@ -139,3 +139,9 @@ endif()
 add_test(NAME deck_field_output COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_field_output.py
   --exe $<TARGET_FILE:ldfcz> --deck ${LDFCZ_DECKS}/single/field_output_shear.inp --out ${LDFCZ_RUNS}/deck_field_output)
 set_tests_properties(deck_field_output PROPERTIES LABELS "deck" TIMEOUT 300)
+
+# double-cantilever beam bonded by the LDF element (tools/dcb_deck.py): beam theory within 1 % on the propagation
+# branch; the two classic mis-orientations refused before the analysis, and reordered by --reorient-interfaces
+add_test(NAME deck_dcb_orientation COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_dcb.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/deck_dcb_orientation)
+set_tests_properties(deck_dcb_orientation PROPERTIES LABELS "deck" TIMEOUT 600)
