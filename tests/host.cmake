@@ -133,3 +133,12 @@ if(EXISTS "${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp")
   # PET cube with 12 cutbacks (UMAT PNEWDT): increment size and growth state carried over
   ldfcz_add_restart_test(restart_pet_cutbacks ${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp --stop 8)
 endif()
+
+# concentrated loads, amplitudes and load propagation across steps (tests/regression/check_loads.py: decks written
+# by the script, checked against beam theory, the elastica and the linear response to the load history)
+set(LDFCZ_CHECK_LOADS "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py")
+foreach(case small large steps release)
+  add_test(NAME deck_cload_${case} COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/cload_${case} --case ${case})
+  set_tests_properties(deck_cload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()

@@ -50,6 +50,7 @@ module analysis_core
     real(dp), allocatable :: u(:)               !< current total displacement
     real(dp), allocatable :: u_conv(:)          !< converged displacement
     real(dp), allocatable :: fint(:)            !< internal force (all dofs)
+    real(dp), allocatable :: fext(:)            !< external nodal force (all dofs) at the end of the increment
     real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
     type(sparse_system_t) :: sys                !< sparse tangent
     logical :: sys_ready = .false.
@@ -226,6 +227,8 @@ contains
     an%u_conv = 0.0_dp
     an%fint = 0.0_dp
     an%fe = 0.0_dp
+    allocate (an%fext(an%ndof))
+    an%fext = 0.0_dp
     allocate (an%prescribed(an%ndof), an%eq(an%ndof))
     an%prescribed = .false.
     an%eq = 0

@@ -3,7 +3,7 @@
 module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where
-  use model_types, only: boundary_t, source_pos_t, etype_user, model_find_elset, model_find_material
+  use model_types, only: boundary_t, cload_t, source_pos_t, etype_user, model_find_elset, model_find_material
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -19,6 +19,7 @@ contains
     logical, allocatable :: has_section(:)
     type(source_pos_t) :: pos
     type(boundary_t) :: bc
+    type(cload_t) :: cl
     character(len=:), allocatable :: what
     associate (model => ctx%model)
       if (model%nnode == 0) then
@@ -122,6 +123,12 @@ contains
           model%steps(is)%bcs(ib) = bc
           if (ctx%stat /= 0) return
         end do
+        do ib = 1, model%steps(is)%ncload
+          cl = model%steps(is)%cloads(ib)
+          call resolve_cload(ctx, cl)
+          model%steps(is)%cloads(ib) = cl
+          if (ctx%stat /= 0) return
+        end do
         if (model%steps(is)%period < 0.0_dp) then
           ctx%stat = 2
           ctx%errmsg = model%steps(is)%pos%file//':'//itoa(model%steps(is)%pos%line)//': *STEP: no procedure '// &
@@ -194,6 +201,29 @@ contains
       end do
     end associate
   end subroutine finish_model
+
+  !> Concentrated-load node ids -> indices; a dof beyond the model dimension is an error (no such force exists).
+  subroutine resolve_cload(ctx, cl)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(cload_t), intent(inout) :: cl          !< load (a copy, not a part of ctx)
+    integer :: k, id
+    do k = 1, size(cl%nodes)
+      if (cl%nodes(k) < 0) then
+        id = -cl%nodes(k)
+        if (id > size(ctx%model%node_index)) then
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          return
+        end if
+        if (ctx%model%node_index(id) == 0) then
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          return
+        end if
+        cl%nodes(k) = ctx%model%node_index(id)
+      end if
+    end do
+    if (cl%dof > ctx%model%ndim) call ctx_fail_pos(ctx, cl%pos, 'dof '//itoa(cl%dof)//' does not exist in this '// &
+      itoa(ctx%model%ndim)//'D model')
+  end subroutine resolve_cload
 
   !> Boundary node ids -> indices; dofs beyond the model dimension dropped (with a warning when none is left).
   subroutine resolve_bc(ctx, bc)

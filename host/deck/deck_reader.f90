@@ -12,6 +12,7 @@ module deck_reader
   use deck_user_elements, only: read_user_element, read_uel_property
   use deck_boundaries, only: read_amplitude, read_boundary
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print
+  use deck_loads, only: read_cload
   use deck_finish, only: finish_model
   implicit none
   private
@@ -120,6 +121,8 @@ contains
       call read_amplitude(ctx)
     case ('*BOUNDARY')
       call read_boundary(ctx)
+    case ('*CLOAD')
+      call read_cload(ctx)
     case ('*STEP')
       call read_step(ctx)
     case ('*STATIC')

@@ -11,7 +11,7 @@ module deck_steps
 
 contains
 
-  !> *STEP, NAME=, NLGEOM=, INC=, UNSYMM=, AMPLITUDE=RAMP: opens a step (NLGEOM and the restart request carry over).
+  !> *STEP, NAME=, NLGEOM=, INC=, UNSYMM=, AMPLITUDE=RAMP|STEP: opens a step (NLGEOM and the restart request carry over).
   subroutine read_step(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(step_t), allocatable :: tmp(:)
@@ -39,7 +39,7 @@ contains
     istep = ctx%model%nstep
     ctx%istep = istep
     ctx%model%steps(istep) = empty_step
-    allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2))
+    allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2), ctx%model%steps(istep)%cloads(4))
     ! NLGEOM carries over from the previous step, as in Abaqus
     if (istep > 1) ctx%model%steps(istep)%nlgeom = ctx%model%steps(istep - 1)%nlgeom
     ! a *RESTART, WRITE request stays in effect until changed (Abaqus)
@@ -68,7 +68,16 @@ contains
       call ctx_fail(ctx, ir, 'INC must be positive')
       return
     end if
-    if (.not. ctx_only_value(ctx, ir, 'AMPLITUDE', 'RAMP', ' in static steps')) return
+    v = deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE'))
+    select case (v)
+    case ('', 'RAMP')
+      ctx%model%steps(istep)%amp_step = .false.
+    case ('STEP')
+      ctx%model%steps(istep)%amp_step = .true.
+    case default
+      call ctx_fail(ctx, ir, 'AMPLITUDE must be RAMP or STEP')
+      return
+    end select
     v = deck_normalize(deck_param_value(ctx%params, 'EXTRAPOLATION'))
     select case (v)
     case ('', 'LINEAR')

@@ -5,10 +5,10 @@ module model_types
   implicit none
   private
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
-  public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t
+  public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
-  public :: amplitude_value
+  public :: amplitude_value, amplitude_factor
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   integer, parameter :: etype_c3d8 = 1     !< 8-node hexahedron, F-bar
@@ -80,6 +80,8 @@ module model_types
     character(len=name_len) :: name = ''
     real(dp), allocatable :: t(:)          !< times (step time)
     real(dp), allocatable :: a(:)          !< amplitude values
+    logical :: smooth = .false.            !< DEFINITION=SMOOTH STEP (else TABULAR: piecewise linear)
+    logical :: total_time = .false.        !< TIME=TOTAL TIME (else step time)
   end type amplitude_t
 
   !> One prescribed dof range on a set of nodes.
@@ -91,6 +93,15 @@ module model_types
     integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
     type(source_pos_t) :: pos
   end type boundary_t
+
+  !> One *CLOAD data line: a fixed-direction nodal force on one dof of a set of nodes.
+  type :: cload_t
+    integer, allocatable :: nodes(:)       !< node indices
+    integer :: dof = 0                     !< dof (1..3)
+    real(dp) :: value = 0.0_dp             !< magnitude [N]
+    integer :: amplitude = 0               !< amplitude index, 0 = the step's default (RAMP or STEP)
+    type(source_pos_t) :: pos
+  end type cload_t
 
   !> *NODE PRINT, NSET=..., TOTALS=YES request: one CSV column per variable.
   type :: node_print_t
@@ -111,6 +122,10 @@ module model_types
     logical :: extrapolate = .true.        !< *STEP, EXTRAPOLATION=LINEAR (Abaqus' default) or NO
     logical :: unsymm = .false.            !< *STEP, UNSYMM=YES: unsymmetric solver
     logical :: op_new = .false.            !< a *BOUNDARY, OP=NEW in this step removes inherited boundaries
+    logical :: amp_step = .false.          !< *STEP, AMPLITUDE=STEP (default RAMP: loads vary linearly over the step)
+    logical :: cload_op_new = .false.      !< a *CLOAD, OP=NEW in this step removes inherited concentrated loads
+    type(cload_t), allocatable :: cloads(:)!< concentrated loads given in this step
+    integer :: ncload = 0
     integer :: max_iter = 16               !< *CONTROLS, PARAMETERS=TIME INCREMENTATION: I_A (here the iteration cap)
     real(dp) :: r_n = 0.005_dp             !< *CONTROLS, PARAMETERS=FIELD: R_n
     real(dp) :: c_n = 0.01_dp              !< *CONTROLS, PARAMETERS=FIELD: C_n
@@ -216,11 +231,27 @@ contains
     k = 0
   end function model_find_user_type
 
-  !> Piecewise-linear tabular amplitude at time t (constant beyond the ends, as Abaqus).
+  !> Amplitude at step time t_step of a step that began at total time t_total0 (TIME=TOTAL TIME reads the curve at
+  !> t_total0 + t_step).
+  pure real(dp) function amplitude_factor(amp, t_step, t_total0) result(a)
+    type(amplitude_t), intent(in) :: amp  !< amplitude
+    real(dp), intent(in) :: t_step        !< step time
+    real(dp), intent(in) :: t_total0      !< total time at the start of the step
+    if (amp%total_time) then
+      a = amplitude_value(amp, t_total0 + t_step)
+    else
+      a = amplitude_value(amp, t_step)
+    end if
+  end function amplitude_factor
+
+  !> Tabular amplitude at time t (constant beyond the ends, as Abaqus): piecewise linear, or for DEFINITION=SMOOTH
+  !> STEP the fifth-order polynomial of Abaqus between consecutive points, a_i + (a_i+1 - a_i) xi^3 (10 - 15 xi +
+  !> 6 xi^2), xi = (t - t_i) / (t_i+1 - t_i), whose first and second derivatives vanish at every data point.
   pure real(dp) function amplitude_value(amp, t) result(a)
     type(amplitude_t), intent(in) :: amp  !< tabular amplitude
-    real(dp), intent(in) :: t             !< step time
+    real(dp), intent(in) :: t             !< step time (total time for TIME=TOTAL TIME)
     integer :: i, n
+    real(dp) :: xi
     n = size(amp%t)
     if (n == 0) then
       a = 1.0_dp
@@ -233,7 +264,9 @@ contains
     do i = 2, n
       if (t <= amp%t(i)) then
         if (amp%t(i) > amp%t(i - 1)) then
-          a = amp%a(i - 1) + (amp%a(i) - amp%a(i - 1)) * (t - amp%t(i - 1)) / (amp%t(i) - amp%t(i - 1))
+          xi = (t - amp%t(i - 1)) / (amp%t(i) - amp%t(i - 1))
+          if (amp%smooth) xi = xi**3 * (10.0_dp - 15.0_dp * xi + 6.0_dp * xi**2)
+          a = amp%a(i - 1) + (amp%a(i) - amp%a(i - 1)) * xi
         else
           a = amp%a(i)
         end if

@@ -92,6 +92,20 @@ CASES = [
      "*STATIC", "2.0, 1.0"),
     ("depvar_negative", "*DEPVAR with a negative count", "*ELASTIC\n1000., 0.3\n",
      "*USER MATERIAL, CONSTANTS=2\n1000., 0.3\n*DEPVAR\n-3\n", "*DEPVAR", "-3"),
+    # loads (issue 18)
+    ("cload_moment", "*CLOAD on a rotational dof", "*END STEP", "*CLOAD\nTOP, 5, 1.0\n*END STEP", "*CLOAD",
+     "TOP, 5, 1.0"),
+    ("cload_follower", "*CLOAD, FOLLOWER", "*END STEP", "*CLOAD, FOLLOWER\nTOP, 3, 1.0\n*END STEP", "*CLOAD",
+     "*CLOAD, FOLLOWER"),
+    ("cload_undefined_node", "*CLOAD on an undefined node", "*END STEP", "*CLOAD\n99, 3, 1.0\n*END STEP",
+     "*CLOAD", "99, 3, 1.0"),
+    ("cload_model_data", "*CLOAD outside a step", "*STEP, NLGEOM=YES", "*CLOAD\nTOP, 3, 1.0\n*STEP, NLGEOM=YES",
+     "*CLOAD", "*CLOAD"),
+    ("amplitude_definition", "*AMPLITUDE, DEFINITION=PERIODIC", "*STEP, NLGEOM=YES",
+     "*AMPLITUDE, NAME=A, DEFINITION=PERIODIC\n0., 0., 1., 1.\n*STEP, NLGEOM=YES", "*AMPLITUDE",
+     "*AMPLITUDE, NAME=A"),
+    ("step_amplitude_value", "*STEP, AMPLITUDE=SINE", "*STEP, NLGEOM=YES", "*STEP, NLGEOM=YES, AMPLITUDE=SINE",
+     "*STEP", "*STEP, NLGEOM=YES, AMPLITUDE"),
 ]
 
 
