@@ -12,12 +12,14 @@ module analysis_core
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
     sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
+  use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
   implicit none
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
   public :: analysis_restore, pnewdt_large, elem_type_name
 
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
+  integer, parameter :: mdload = 8   !< MDLOAD: distributed loads of a user element at most (Un on one element)
 
   !> State of one element (integration-point arrays of continuum elements, SVARS and ENERGY of user elements).
   type :: elem_state_t
@@ -51,6 +53,9 @@ module analysis_core
     real(dp), allocatable :: u_conv(:)          !< converged displacement
     real(dp), allocatable :: fint(:)            !< internal force (all dofs)
     real(dp), allocatable :: fext(:)            !< external nodal force (all dofs) at the end of the increment
+    real(dp), allocatable :: fdl(:)             !< distributed-load nodal forces (all dofs) at the current estimate
+    real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
+    type(dload_state_t) :: dl                   !< distributed loads of the current step (distributed_loads)
     real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
     type(sparse_system_t) :: sys                !< sparse tangent
     logical :: sys_ready = .false.
@@ -227,8 +232,10 @@ contains
     an%u_conv = 0.0_dp
     an%fint = 0.0_dp
     an%fe = 0.0_dp
-    allocate (an%fext(an%ndof))
+    allocate (an%fext(an%ndof), an%fdl(an%ndof), an%fdle(size(an%fe)))
     an%fext = 0.0_dp
+    an%fdl = 0.0_dp
+    an%fdle = 0.0_dp
     allocate (an%prescribed(an%ndof), an%eq(an%ndof))
     an%prescribed = .false.
     an%eq = 0
@@ -317,6 +324,7 @@ contains
     fail_elem = huge(1)
     first_msg = ''
     if (want_k) call sparse_zero(an%sys)
+    an%fdle = 0.0_dp
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
     !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg)
@@ -353,8 +361,10 @@ contains
     deallocate (ke, fel)
     !$omp end parallel
     an%fint = 0.0_dp
+    an%fdl = 0.0_dp
     do k = 1, size(an%elem_dof)
       an%fint(an%elem_dof(k)) = an%fint(an%elem_dof(k)) + an%fe(k)
+      an%fdl(an%elem_dof(k)) = an%fdl(an%elem_dof(k)) + an%fdle(k)
     end do
     if (fail_elem /= huge(1)) then
       stat = 1
@@ -379,9 +389,9 @@ contains
     character(len=*), intent(out) :: msg
     integer :: nn, a, iu, ip, mcrd, nsv
     real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 8), energy(8), svars(1)
-    real(dp) :: params(1), adlmag(1, 1), ddlmag(1, 1), e2(2)
+    real(dp) :: params(1), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
-    integer :: jdltyp(1, 1), lflags(5)
+    integer :: jdltyp(mdload, 1), lflags(5), ndload, im
     integer, allocatable :: jprops(:)
     character(len=16) :: b
 
@@ -417,14 +427,15 @@ contains
       v = 0.0_dp
       acc = 0.0_dp
       params = 0.0_dp
-      jdltyp = 0
-      adlmag = 0.0_dp
-      ddlmag = 0.0_dp
+      ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
+      ! DDLMAG(k,1) its increment (Abaqus UEL interface)
+      call dload_uel_arrays(an%dl, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
+        ddlmag(:, 1))
       ! LFLAGS(3) = 1: RHS and AMATRX; 5: RHS only (a reused factorization needs no tangent)
       lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, 0]
       call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
-        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, 0, jdltyp, &
-        adlmag, predef, 1, lflags, n, ddlmag, 1, pnewdt, jprops, model%utypes(iu)%njprops, period)
+        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
+        adlmag, predef, 1, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
       fel = -rhs(:, 1)
       if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
         write (b, '(i0)') model%elem_id(ie)
@@ -454,8 +465,31 @@ contains
         msg = 'element '//trim(b)//': '//trim(msg)
         stat = 1
       end if
+      if (stat == 0 .and. dload_has(an%dl, ie)) then
+        ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
+        im = model%elem_section(ie)
+        rho = 0.0_dp
+        if (im > 0) rho = model_density(model, im)
+        associate (g => an%geo(an%elem_geo(ie)))
+          call dload_element(an%dl, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue, nlgeom, &
+            g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, fl, kl)
+        end associate
+        an%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
+        if (want_k) ke = ke + kl
+      end if
     end if
   end subroutine element_compute
+
+  !> Density of the material of section isec (0 without *DENSITY).
+  pure real(dp) function model_density(model, isec) result(rho)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: isec         !< section
+    integer :: k
+    rho = 0.0_dp
+    do k = 1, model%nmat
+      if (model%materials(k)%name == model%sections(isec)%material) rho = model%materials(k)%density
+    end do
+  end function model_density
 
   !> The increment converged: the trial state becomes the converged one.
   subroutine analysis_commit(an)

@@ -145,7 +145,7 @@ contains
           exit newton_loop
         end if
         do i = 1, an%ndof
-          if (an%eq(i) > 0) r(an%eq(i)) = an%fext(i) - an%fint(i)
+          if (an%eq(i) > 0) r(an%eq(i)) = an%fext(i) + an%fdl(i) - an%fint(i)
         end do
         r_max = 0.0_dp
         if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))

@@ -6,6 +6,7 @@ module static_step
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, amplitude_factor
   use step_loads, only: load_state_t, load_state_init, load_step_begin, load_vector
+  use distributed_loads, only: dload_step_begin
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
   use step_control, only: step_control_t, step_control_init, step_control_cutback, step_control_converged, &
     step_control_done, step_control_dt
@@ -50,7 +51,7 @@ contains
     integer, allocatable :: col_set(:), col_var(:), bc_amp(:)
     logical, allocatable :: bc_on(:), bc_init(:)
     real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:), du_prev(:)
-    real(dp), allocatable :: fext_old(:)
+    real(dp), allocatable :: fext_old(:), fcl_old(:)
     logical, allocatable :: bc_was_on(:)
     type(load_state_t) :: ls
     real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_now, t_end, next_mark, dt_prev
@@ -91,9 +92,10 @@ contains
       end if
     end if
     if (restarting .and. (any(model%steps(1:model%nstep)%ncload > 0) .or. &
-        any(model%steps(1:model%nstep)%op_new))) then
+        any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new))) then
       ! the load state (step_loads) is not in the restart file
-      errmsg = opt%restart_from//': a restart of a deck with *CLOAD or *BOUNDARY, OP=NEW is not supported'
+      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD or *BOUNDARY, OP=NEW is '// &
+        'not supported'
       call output_log(out, 'ldfcz: error: '//errmsg)
       if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
@@ -159,9 +161,10 @@ contains
     call stop_signal_install()
 
     allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
-    allocate (rf_old(an%ndof), du_prev(an%ndof), fext_old(an%ndof), bc_was_on(an%ndof))
+    allocate (rf_old(an%ndof), du_prev(an%ndof), fext_old(an%ndof), bc_was_on(an%ndof), fcl_old(an%ndof))
     call load_state_init(ls, an%ndof)
     fext_old = 0.0_dp
+    fcl_old = 0.0_dp
     du_prev = 0.0_dp
     dt_prev = 0.0_dp
     bc_on = .false.
@@ -200,7 +203,14 @@ contains
           elsewhere
             bc_was_on = .false.
           end where
-          call load_step_begin(ls, model, is, fext_old, merge(rf_old, 0.0_dp, bc_was_on))
+          call load_step_begin(ls, model, is, fcl_old, merge(rf_old, 0.0_dp, bc_was_on))
+          call dload_step_begin(an%dl, model, is, t_total0, stat, errmsg)
+          if (stat /= 0) then
+            call output_log(out, 'ldfcz: error: '//errmsg)
+            if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+            exit_code = exit_input
+            exit steps
+          end if
         end if
         an%prescribed = bc_on .and. an%used
         call analysis_number_equations(an, model, stat, errmsg)
@@ -321,18 +331,20 @@ contains
           ! work of the reactions (trapezoidal) and of the external forces on the free dofs
           do i = 1, an%ndof
             if (an%prescribed(i)) then
-              summary%w_ext = summary%w_ext + 0.5_dp * (rf_old(i) + an%fint(i) - an%fext(i)) * &
+              summary%w_ext = summary%w_ext + 0.5_dp * (rf_old(i) + an%fint(i) - an%fext(i) - an%fdl(i)) * &
                 (an%u(i) - an%u_conv(i))
             else
-              summary%w_ext = summary%w_ext + 0.5_dp * (fext_old(i) + an%fext(i)) * (an%u(i) - an%u_conv(i))
+              summary%w_ext = summary%w_ext + 0.5_dp * (fext_old(i) + an%fext(i) + an%fdl(i)) * &
+                (an%u(i) - an%u_conv(i))
             end if
           end do
           where (an%prescribed)
-            rf_old = an%fint - an%fext
+            rf_old = an%fint - an%fext - an%fdl
           elsewhere
             rf_old = 0.0_dp
           end where
-          fext_old = an%fext
+          fext_old = an%fext + an%fdl
+          fcl_old = an%fext
           du_prev = an%u - an%u_conv
           dt_prev = dt
           call analysis_commit(an)
@@ -533,7 +545,7 @@ contains
         if (mod(ivar, 10) > model%ndim) cycle
         dof = (model%nsets(iset)%nodes(k) - 1) * model%ndim + mod(ivar, 10)
         if (ivar > 10) then
-          if (an%prescribed(dof)) v = v + an%fint(dof) - an%fext(dof)
+          if (an%prescribed(dof)) v = v + an%fint(dof) - an%fext(dof) - an%fdl(dof)
         else
           v = v + an%u(dof)
         end if

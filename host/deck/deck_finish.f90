@@ -3,7 +3,8 @@
 module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where
-  use model_types, only: boundary_t, cload_t, source_pos_t, etype_user, model_find_elset, model_find_material
+  use model_types, only: boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, etype_user, &
+    model_find_elset, model_find_material
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -199,8 +200,86 @@ contains
           return
         end if
       end do
+      if (ctx%stat == 0) call resolve_dloads(ctx)
     end associate
   end subroutine finish_model
+
+  !> Distributed loads: element sets and surfaces expanded into element lists with their faces, ids resolved;
+  !> pressure, BX..BZ and GRAV only on continuum elements (GRAV with a *DENSITY), Un only on user elements.
+  subroutine resolve_dloads(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: is, k, j, m, ie, id, im, isf
+    integer, allocatable :: el(:), fc(:)
+    type(dload_t) :: dl
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      do is = 1, model%nstep
+        do k = 1, model%steps(is)%ndload
+          dl = model%steps(is)%dloads(k)
+          pos = dl%pos
+          allocate (el(0), fc(0))
+          if (dl%elset > 0) then
+            el = model%elsets(dl%elset)%elems
+            fc = [(dl%label, j = 1, size(el))]
+          else if (dl%elset == 0) then
+            id = -dl%elems(1)
+            ie = 0
+            if (id <= size(model%elem_index)) ie = model%elem_index(id)
+            if (ie == 0) then
+              call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+              return
+            end if
+            el = [ie]
+            fc = [dl%label]
+          else
+            isf = -dl%elset
+            do m = 1, model%surfaces(isf)%n
+              if (model%surfaces(isf)%elsets(m) > 0) then
+                j = model%surfaces(isf)%elsets(m)
+                el = [el, model%elsets(j)%elems]
+                fc = [fc, (model%surfaces(isf)%faces(m), id = 1, size(model%elsets(j)%elems))]
+              else
+                id = -model%surfaces(isf)%elems(m)
+                ie = 0
+                if (id <= size(model%elem_index)) ie = model%elem_index(id)
+                if (ie == 0) then
+                  pos = model%surfaces(isf)%pos
+                  call ctx_fail_pos(ctx, pos, 'surface '//trim(model%surfaces(isf)%name)//': undefined element '// &
+                    itoa(id))
+                  return
+                end if
+                el = [el, ie]
+                fc = [fc, model%surfaces(isf)%faces(m)]
+              end if
+            end do
+          end if
+          do j = 1, size(el)
+            ie = el(j)
+            if (dl%kind == dload_user .neqv. model%elem_kind(ie) == etype_user) then
+              if (dl%kind == dload_user) then
+                call ctx_fail_pos(ctx, pos, 'load type U'//itoa(dl%label)//' on element '// &
+                  itoa(model%elem_id(ie))//', which is not a user element')
+              else
+                call ctx_fail_pos(ctx, pos, 'user element '//itoa(model%elem_id(ie))//' takes only load types Un '// &
+                  '(its UEL receives them), not BX/BY/BZ/GRAV/P')
+              end if
+              return
+            end if
+            if (dl%kind == dload_grav) then
+              im = model_find_material(model, model%sections(model%elem_section(ie))%material)
+              if (.not. model%materials(im)%has_density) then
+                call ctx_fail_pos(ctx, pos, 'GRAV on element '//itoa(model%elem_id(ie))//' whose material '// &
+                  trim(model%materials(im)%given_name)//' has no *DENSITY')
+                return
+              end if
+            end if
+          end do
+          call move_alloc(el, model%steps(is)%dloads(k)%elems)
+          call move_alloc(fc, model%steps(is)%dloads(k)%faces)
+        end do
+      end do
+    end associate
+  end subroutine resolve_dloads
 
   !> Concentrated-load node ids -> indices; a dof beyond the model dimension is an error (no such force exists).
   subroutine resolve_cload(ctx, cl)

@@ -8,11 +8,11 @@ module deck_reader
   use model_types, only: model_t
   use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_need_step
   use deck_mesh, only: read_node, read_element, read_set
-  use deck_materials, only: read_material, read_elastic, read_user_material, read_depvar, read_solid_section
+  use deck_materials, only: read_material, read_elastic, read_density, read_user_material, read_depvar, read_solid_section
   use deck_user_elements, only: read_user_element, read_uel_property
   use deck_boundaries, only: read_amplitude, read_boundary
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print
-  use deck_loads, only: read_cload
+  use deck_loads, only: read_cload, read_dload, read_dsload, read_surface
   use deck_finish, only: finish_model
   implicit none
   private
@@ -123,6 +123,14 @@ contains
       call read_boundary(ctx)
     case ('*CLOAD')
       call read_cload(ctx)
+    case ('*DLOAD')
+      call read_dload(ctx)
+    case ('*DSLOAD')
+      call read_dsload(ctx)
+    case ('*SURFACE')
+      call read_surface(ctx)
+    case ('*DENSITY')
+      call read_density(ctx)
     case ('*STEP')
       call read_step(ctx)
     case ('*STATIC')
@@ -158,7 +166,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
-          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING')
+          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

@@ -39,7 +39,8 @@ contains
     istep = ctx%model%nstep
     ctx%istep = istep
     ctx%model%steps(istep) = empty_step
-    allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2), ctx%model%steps(istep)%cloads(4))
+    allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2), ctx%model%steps(istep)%cloads(4), &
+      ctx%model%steps(istep)%dloads(4))
     ! NLGEOM carries over from the previous step, as in Abaqus
     if (istep > 1) ctx%model%steps(istep)%nlgeom = ctx%model%steps(istep - 1)%nlgeom
     ! a *RESTART, WRITE request stays in effect until changed (Abaqus)

@@ -5,7 +5,8 @@ module model_types
   implicit none
   private
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
-  public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t
+  public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
+  public :: dload_bx, dload_grav, dload_pressure, dload_user, model_find_surface
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
@@ -15,6 +16,10 @@ module model_types
   integer, parameter :: etype_cpe4 = 2     !< 4-node plane-strain quadrilateral, F-bar
   integer, parameter :: etype_user = 3     !< user element (UEL)
   integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
+  integer, parameter :: dload_bx = 1       !< body force per unit reference volume along dir (BX, BY, BZ)
+  integer, parameter :: dload_grav = 2     !< gravity: density x magnitude along dir (GRAV)
+  integer, parameter :: dload_pressure = 3 !< face pressure Pn (follower under NLGEOM)
+  integer, parameter :: dload_user = 4     !< user element load type Un (passed to the UEL)
 
   !> Where an item came from in the deck (for error messages found after reading).
   type :: source_pos_t
@@ -45,6 +50,8 @@ module model_types
     real(dp), allocatable :: props(:)      !< user material constants
     logical :: unsymm = .false.            !< *USER MATERIAL, UNSYMM
     integer :: nstatv = 0                  !< *DEPVAR
+    logical :: has_density = .false.      !< *DENSITY given
+    real(dp) :: density = 0.0_dp           !< mass density [t/mm^3 in N, mm, s units]
     type(source_pos_t) :: pos              !< where *MATERIAL was
     type(source_pos_t) :: user_pos         !< first data line of *USER MATERIAL (messages of a UMAT's XIT)
   end type material_t
@@ -103,6 +110,29 @@ module model_types
     type(source_pos_t) :: pos
   end type cload_t
 
+  !> One distributed load definition (*DLOAD or *DSLOAD data line) on a list of elements.
+  type :: dload_t
+    integer, allocatable :: elems(:)       !< element indices (user ids, negative, until finish_model)
+    integer, allocatable :: faces(:)       !< per element: face 1..6 (pressure), else 0
+    integer :: kind = 0                    !< dload_bx, dload_grav, dload_pressure, dload_user
+    integer :: label = 0                   !< face number of Pn, n of Un
+    real(dp) :: value = 0.0_dp             !< magnitude
+    real(dp) :: dir(3) = 0.0_dp            !< direction of BX/BY/BZ/GRAV (unit)
+    integer :: amplitude = 0               !< amplitude index, 0 = the step's default
+    integer :: elset = 0                   !< element set of the data line (resolved in finish_model), 0: one element
+    type(source_pos_t) :: pos
+  end type dload_t
+
+  !> *SURFACE, TYPE=ELEMENT: element faces.
+  type :: surface_t
+    character(len=name_len) :: name = ''   !< upper-case name
+    integer, allocatable :: elems(:)       !< element indices (user ids, negative, or -huge for a set until finish)
+    integer, allocatable :: faces(:)       !< face 1..6 per element
+    integer, allocatable :: elsets(:)      !< per data line: element set index (0: one element)
+    integer :: n = 0                       !< data lines
+    type(source_pos_t) :: pos
+  end type surface_t
+
   !> *NODE PRINT, NSET=..., TOTALS=YES request: one CSV column per variable.
   type :: node_print_t
     character(len=name_len) :: nset = ''   !< set name
@@ -126,6 +156,9 @@ module model_types
     logical :: cload_op_new = .false.      !< a *CLOAD, OP=NEW in this step removes inherited concentrated loads
     type(cload_t), allocatable :: cloads(:)!< concentrated loads given in this step
     integer :: ncload = 0
+    logical :: dload_op_new = .false.      !< a *DLOAD/*DSLOAD, OP=NEW in this step removes inherited distributed loads
+    type(dload_t), allocatable :: dloads(:)!< distributed loads given in this step
+    integer :: ndload = 0
     integer :: max_iter = 16               !< *CONTROLS, PARAMETERS=TIME INCREMENTATION: I_A (here the iteration cap)
     real(dp) :: r_n = 0.005_dp             !< *CONTROLS, PARAMETERS=FIELD: R_n
     real(dp) :: c_n = 0.01_dp              !< *CONTROLS, PARAMETERS=FIELD: C_n
@@ -173,6 +206,8 @@ module model_types
     integer :: n_uelprop = 0
     type(amplitude_t), allocatable :: amplitudes(:)
     integer :: namp = 0
+    type(surface_t), allocatable :: surfaces(:)
+    integer :: nsurf = 0
     type(boundary_t), allocatable :: initial_bcs(:) !< model-data *BOUNDARY (fixed, value 0 or given)
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)
@@ -220,6 +255,16 @@ contains
     end do
     k = 0
   end function model_find_amplitude
+
+  !> Index of a surface by (upper-case) name, 0 if absent.
+  pure integer function model_find_surface(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%nsurf
+      if (model%surfaces(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_surface
 
   !> Index of a user element type by (upper-case) name, 0 if absent.
   pure integer function model_find_user_type(model, name) result(k)
