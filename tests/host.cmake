@@ -142,3 +142,15 @@ foreach(case small large steps release)
     --out ${LDFCZ_RUNS}/cload_${case} --case ${case})
   set_tests_properties(deck_cload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
+# distributed loads: gravity column (exact), thick cylinder under *DSLOAD/*DLOAD pressure (Lame, CPE4 and C3D8),
+# follower pressure inflating a neo-Hookean ring (quadratic Newton convergence), a UEL reading its Un loads
+foreach(case gravity lame2d lame3d)
+  add_test(NAME deck_dload_${case} COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/dload_${case} --case ${case})
+  set_tests_properties(deck_dload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+add_test(NAME deck_dload_balloon COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/dload_balloon --case balloon --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90)
+add_test(NAME deck_dload_uel COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/dload_uel --case uel_loads --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_dload.f90)
+set_tests_properties(deck_dload_balloon deck_dload_uel PROPERTIES LABELS "deck" TIMEOUT 300)

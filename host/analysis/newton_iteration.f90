@@ -151,7 +151,9 @@ contains
         if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))
         r_norm = 0.0_dp
         if (an%neq > 0) r_norm = norm2(r(1:an%neq))
-        q_now = typical_force(an%fint)
+        ! typical force: of the internal forces, or of the applied loads where they are larger (the first iteration
+        ! of a load-controlled increment starts from zero internal force; Abaqus counts the applied loads in q)
+        q_now = max(typical_force(an%fint), typical_force(an%fext + an%fdl))
         q_avg = (q_sum + q_now) / real(kinc, dp)
         du_max = maxval(abs(an%u - an%u_conv))
         ratios(iter + 1) = r_max / max(q_avg, tiny(1.0_dp))

@@ -108,11 +108,12 @@ def load(p, ny, op="", amp=""):
     return "\n".join([head, "TIPIN, 2, %.15g" % (p / ny), "TIPEND, 2, %.15g" % (p / ny / 2)])
 
 
-def run(exe, out, job, deck_writer):
+def run(exe, out, job, deck_writer, user=None):
     os.makedirs(out, exist_ok=True)
     deck = os.path.join(out, job + ".inp")
     deck_writer(deck)
-    res = subprocess.run([exe, "-q", deck], cwd=out, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    cmd = [exe, "-q", deck] + (["--user", user] if user else [])
+    res = subprocess.run(cmd, cwd=out, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     if res.returncode != 0:
         print(res.stdout)
         fail("ldfcz exited with %d on %s" % (res.returncode, deck))
@@ -189,14 +190,193 @@ def case_release(exe, out):
               1e-8 * abs(r1["ROOT.RF2"]))
 
 
+def write(path, lines):
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def column_deck(path, nz, h, rho, g):
+    """C3D8 column 1 x 1 x h, nz elements, nu = 0, on rollers at z = 0 with symmetry planes x = 0, y = 0: step 1
+    GRAV (g along -z), step 2 *DLOAD, OP=NEW replacing it by the same force as BZ = -rho g."""
+    out = ["*HEADING", "C3D8 column under gravity (tests/regression/check_loads.py)", "*NODE, NSET=ALL"]
+    nid = lambda i, j, k: k * 4 + j * 2 + i + 1
+    for k in range(nz + 1):
+        for j in range(2):
+            for i in range(2):
+                out.append("%d, %g, %g, %.12g" % (nid(i, j, k), i, j, h * k / nz))
+    out.append("*ELEMENT, TYPE=C3D8, ELSET=COL")
+    for k in range(nz):
+        c = [nid(0, 0, k), nid(1, 0, k), nid(1, 1, k), nid(0, 1, k)]
+        out.append("%d, %s" % (k + 1, ", ".join(str(n) for n in c + [n + 4 for n in c])))
+    out += ["*NSET, NSET=BASE", "1, 2, 3, 4", "*NSET, NSET=TOP", ", ".join(str(nid(i, j, nz)) for j in range(2)
+                                                                          for i in range(2)),
+            "*NSET, NSET=X0, GENERATE", "1, %d, 2" % (4 * nz + 3), "*NSET, NSET=Y0"]
+    out += ["%d, %d," % (nid(0, 0, k), nid(1, 0, k)) for k in range(nz + 1)]
+    out += ["*SOLID SECTION, ELSET=COL, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.0",
+            "*DENSITY", "%g" % rho, "*BOUNDARY", "BASE, ZSYMM", "X0, XSYMM", "Y0, YSYMM",
+            "*STEP, NLGEOM=NO", "*STATIC, DIRECT", "0.25, 1.", "*DLOAD", "COL, GRAV, %g, 0., 0., -1." % g,
+            "*NODE PRINT, NSET=TOP, TOTALS=YES", "U3", "*NODE PRINT, NSET=BASE, TOTALS=YES", "RF3", "*END STEP",
+            "*STEP, NLGEOM=NO", "*STATIC, DIRECT", "0.25, 1.", "*DLOAD, OP=NEW", "COL, BZ, %g" % (-rho * g),
+            "*END STEP"]
+    write(path, out)
+
+
+def case_gravity(exe, out):
+    h, rho, g, e = 4.0, 2.0e-3, 10.0, 1000.0
+    rows = run(exe, out, "gravity", lambda d: column_deck(d, 4, h, rho, g))
+    # 1D bar under its weight: u(h) = -rho g h^2 / (2 E); linear elements with consistent loads are exact at the
+    # nodes; the base carries the weight rho g V
+    want = -rho * g * h ** 2 / (2 * e)
+    for r in rows:
+        s = r["step_time"] if r["step"] == 1 else 1.0
+        close("step %d time %g top U3" % (r["step"], r["step_time"]), r["TOP.U3"], want * s, 1e-9)
+        close("step %d time %g base RF3 = weight" % (r["step"], r["step_time"]), r["BASE.RF3"], rho * g * h * s, 1e-9)
+
+
+def ring_deck(path, a, b, nr, nt, p, quarter=True, three_d=False, nlgeom=False, material=None, steps=1,
+              surface=True, unsymm=False):
+    """Thick cylinder a < r < b under internal pressure p: plane strain CPE4 (or C3D8 one element thick with
+    u3 = 0), a quarter with symmetry planes or the full ring (held against rigid motion at three inner nodes)."""
+    span = math.pi / 2 if quarter else 2 * math.pi
+    ntn = nt + 1 if quarter else nt
+    layers = 2 if three_d else 1
+    nid = lambda i, j, k=0: k * (nr + 1) * ntn + (j % ntn) * (nr + 1) + i + 1
+    out = ["*HEADING", "thick cylinder under pressure (tests/regression/check_loads.py)", "*NODE, NSET=ALL"]
+    for k in range(layers):
+        for j in range(ntn):
+            for i in range(nr + 1):
+                r = a + (b - a) * i / nr
+                t = span * j / nt
+                out.append("%d, %.15g, %.15g" % (nid(i, j, k), r * math.cos(t), r * math.sin(t)) +
+                           (", %g" % (0.1 * k) if three_d else ""))
+    out.append("*ELEMENT, TYPE=%s, ELSET=RING" % ("C3D8" if three_d else "CPE4"))
+    e = 1
+    for j in range(nt):
+        for i in range(nr):
+            c = [nid(i, j), nid(i + 1, j), nid(i + 1, j + 1), nid(i, j + 1)]
+            if three_d:
+                c = c + [nid(i, j, 1), nid(i + 1, j, 1), nid(i + 1, j + 1, 1), nid(i, j + 1, 1)]
+            out.append("%d, %s" % (e, ", ".join(str(n) for n in c)))
+            e += 1
+    out.append("*ELSET, ELSET=INNER")
+    out += ["%d," % (j * nr + 1) for j in range(nt)]
+    out += ["*NSET, NSET=RIN"] + ["%d," % nid(0, 0)] + ["*NSET, NSET=ROUT"] + ["%d," % nid(nr, 0)]
+    face = "S6" if three_d else "S4"
+    if quarter:
+        out += ["*NSET, NSET=T0"] + ["%d," % nid(i, 0, k) for k in range(layers) for i in range(nr + 1)]
+        out += ["*NSET, NSET=T90"] + ["%d," % nid(i, nt, k) for k in range(layers) for i in range(nr + 1)]
+    mat = material or ["*ELASTIC", "1000., 0.3"]
+    out += ["*SOLID SECTION, ELSET=RING, MATERIAL=M", "*MATERIAL, NAME=M"] + mat
+    if surface:
+        out += ["*SURFACE, NAME=BORE", "INNER, %s" % face]
+    out += ["*BOUNDARY"]
+    if quarter:
+        out += ["T0, 2, 2", "T90, 1, 1"]
+    else:
+        q = nt // 4
+        out += ["%d, 2, 2" % nid(0, 0), "%d, 2, 2" % nid(0, 2 * q), "%d, 1, 1" % nid(0, q)]
+    if three_d:
+        out += ["ALL, 3, 3"]
+    for st in range(steps):
+        out += ["*STEP, NLGEOM=%s, INC=100%s" % ("YES" if nlgeom else "NO", ", UNSYMM=YES" if unsymm else ""),
+                "*STATIC", "%g, 1., 1e-5, %g" % (0.25, 0.25)]
+        if surface:
+            out += ["*DSLOAD", "BORE, P, %.15g" % (p * (st + 1))]
+        else:
+            out += ["*DLOAD", "INNER, P%s, %.15g" % (face[1], p * (st + 1))]
+        out += ["*NODE PRINT, NSET=RIN", "U1", "*NODE PRINT, NSET=ROUT", "U1", "*END STEP"]
+    write(path, out)
+
+
+def lame(r, a, b, p, e, nu):
+    """Plane-strain radial displacement of a thick cylinder under internal pressure p (Lame)."""
+    big_a = p * a * a / (b * b - a * a)
+    big_b = p * a * a * b * b / (b * b - a * a)
+    return (1 + nu) / e * ((1 - 2 * nu) * big_a * r + big_b / r)
+
+
+def check_lame(rows, a, b, p, tol):
+    r = rows[-1]
+    close("inner radial displacement (Lame)", r["RIN.U1"], lame(a, a, b, p, 1000.0, 0.3), tol)
+    close("outer radial displacement (Lame)", r["ROUT.U1"], lame(b, a, b, p, 1000.0, 0.3), tol)
+
+
+def case_lame2d(exe, out):
+    a, b, p = 1.0, 2.0, 1.0
+    rows = run(exe, out, "lame2d", lambda d: ring_deck(d, a, b, 8, 24, p))
+    # straight-edged bilinear elements on the circle: O(h^2), measured 0.1 % at 8 x 24
+    check_lame(rows, a, b, p, 3e-3)
+    rows = run(exe, out, "lame2d_dload", lambda d: ring_deck(d, a, b, 8, 24, p, surface=False))
+    check_lame(rows, a, b, p, 3e-3)
+
+
+def case_lame3d(exe, out):
+    a, b, p = 1.0, 2.0, 1.0
+    rows = run(exe, out, "lame3d", lambda d: ring_deck(d, a, b, 8, 24, p, three_d=True))
+    check_lame(rows, a, b, p, 3e-3)
+
+
+def case_balloon(exe, out, user):
+    """Full ring of a neo-Hookean UMAT (exact tangent) inflated under NLGEOM by follower pressure (the bore grows
+    by about 23 %): with the load stiffness and UNSYMM=YES Newton converges quadratically."""
+    mat = ["*USER MATERIAL, CONSTANTS=2", "384.6, 576.9"]
+    rows = run(exe, out, "balloon", lambda d: ring_deck(d, 1.0, 1.2, 2, 32, 30.0, quarter=False, nlgeom=True,
+                                                       material=mat, unsymm=True), user=user)
+    r_in = 1.0 + rows[-1]["RIN.U1"]
+    print("inner radius after inflation %.4f" % r_in)
+    if not r_in > 1.15:
+        fail("the ring did not inflate (inner radius %g)" % r_in)
+    ratios = []
+    with open(os.path.join(out, "balloon.sta")) as f:
+        for line in f:
+            if "converged" in line and "r/q:" in line:
+                ratios.append([float(x) for x in line.split("r/q:")[1].split()])
+    checked = 0
+    for r in ratios:
+        if len(r) < 3:
+            continue
+        ok = any(r[k + 1] <= 10.0 * r[k] ** 2 / max(r[0], 1e-300) or r[k + 1] < 1e-10
+                 for k in range(len(r) - 1) if r[k] < 1e-2)
+        print("ratios", " ".join("%.2e" % x for x in r), "quadratic" if ok else "NOT quadratic")
+        if not ok:
+            fail("residual ratios do not converge quadratically")
+        checked += 1
+    if checked == 0:
+        fail("no increment with three or more residual evaluations")
+
+
+def case_uel_loads(exe, out, user):
+    k, m1, m2 = 50.0, 2.0, 3.0
+    lines = ["*HEADING", "user element reading JDLTYP/ADLMAG/DDLMAG (tests/regression/check_loads.py)",
+             "*NODE, NSET=ALL", "1, 0., 0., 0.", "2, 1., 0., 0.", "*NSET, NSET=FIX", "1,", "*NSET, NSET=FREE", "2,",
+             "*USER ELEMENT, TYPE=U7, NODES=2, COORDINATES=3, PROPERTIES=1, VARIABLES=1", "1, 2, 3",
+             "*ELEMENT, TYPE=U7, ELSET=SPRING", "1, 1, 2", "*UEL PROPERTY, ELSET=SPRING", "%g" % k,
+             "*BOUNDARY", "FIX, 1, 3", "FREE, 3, 3",
+             "*STEP", "*STATIC, DIRECT", "0.25, 1.", "*DLOAD", "SPRING, U1, %g" % m1, "SPRING, U2, %g" % m1,
+             "*NODE PRINT, NSET=FREE", "U1, U2", "*END STEP",
+             "*STEP", "*STATIC, DIRECT", "0.25, 1.", "*DLOAD", "SPRING, U1, %g" % m2, "SPRING, U2, %g" % m2,
+             "*END STEP"]
+    rows = run(exe, out, "uel_loads", lambda d: write(d, lines), user=user)
+    for r in rows:
+        s = r["step_time"]
+        mag = m1 * s if r["step"] == 1 else m1 + (m2 - m1) * s
+        close("step %d time %g U1 = ADLMAG / k" % (r["step"], s), r["FREE.U1"], mag / k, 1e-12)
+        close("step %d time %g U2 = sum DDLMAG / k" % (r["step"], s), r["FREE.U2"], mag / k, 1e-12)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
-    ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release"])
+    ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
+                                                      "lame3d", "balloon", "uel_loads"])
+    ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
-    globals()["case_" + a.case](a.exe, a.out)
+    if a.case in ("balloon", "uel_loads"):
+        globals()["case_" + a.case](a.exe, a.out, os.path.abspath(a.user))
+    else:
+        globals()["case_" + a.case](a.exe, a.out)
     print("PASS")
 
 
