@@ -278,6 +278,15 @@ contains
           call move_alloc(fc, model%steps(is)%dloads(k)%faces)
         end do
       end do
+      ! a density without gravity loads cannot change a static result: accepted with a note
+      do im = 1, model%nmat
+        if (.not. model%materials(im)%has_density) cycle
+        if (any([((model%steps(is)%dloads(k)%kind == dload_grav, k = 1, model%steps(is)%ndload), &
+            is = 1, model%nstep)])) cycle
+        pos = model%materials(im)%pos
+        call ctx_warn_pos(ctx, pos, 'material '//trim(model%materials(im)%given_name)//': *DENSITY has no effect '// &
+          'in a static analysis without GRAV loads')
+      end do
     end associate
   end subroutine resolve_dloads
 
