@@ -153,4 +153,7 @@ add_test(NAME deck_dload_balloon COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOAD
   --out ${LDFCZ_RUNS}/dload_balloon --case balloon --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90)
 add_test(NAME deck_dload_uel COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
   --out ${LDFCZ_RUNS}/dload_uel --case uel_loads --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_dload.f90)
-set_tests_properties(deck_dload_balloon deck_dload_uel PROPERTIES LABELS "deck" TIMEOUT 300)
+add_test(NAME deck_initial_stress COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/initial_stress --case initial_stress
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
+set_tests_properties(deck_dload_balloon deck_dload_uel deck_initial_stress PROPERTIES LABELS "deck" TIMEOUT 300)

@@ -226,6 +226,8 @@ contains
       end if
       an%conv(ie)%energy = 0.0_dp
     end do
+    call apply_initial_conditions(an, model, stat, errmsg)
+    if (stat /= 0) return
     an%trial = an%conv
     allocate (an%u(an%ndof), an%u_conv(an%ndof), an%fint(an%ndof), an%fe(an%elem_ptr(model%nelem + 1) - 1))
     an%u = 0.0_dp
@@ -479,6 +481,70 @@ contains
       end if
     end if
   end subroutine element_compute
+
+  !> *INITIAL CONDITIONS, TYPE=STRESS (every integration point of the element gets the given stress; not in
+  !> equilibrium, it is equilibrated by the first increment as in Abaqus without *GEOSTATIC) and TYPE=SOLUTION (the
+  !> UMAT's NSTATV state variables at every integration point), in deck order (a later line wins).
+  subroutine apply_initial_conditions(an, model, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: k, j, ie, nt, nv, ip
+    character(len=16) :: b, c
+    stat = 0
+    errmsg = ''
+    do k = 1, model%ninit
+      associate (ic => model%inits(k))
+        do j = 1, size(ic%elems)
+          ie = ic%elems(j)
+          write (b, '(i0)') model%elem_id(ie)
+          write (c, '(i0)') ic%pos%line
+          if (model%elem_kind(ie) == etype_user) then
+            stat = 2
+            errmsg = ic%pos%file//':'//trim(c)//': *INITIAL CONDITIONS: element '//trim(b)//' is a user element '// &
+              '(initial stress and solution only for continuum elements)'
+            return
+          end if
+          nv = size(ic%values)
+          if (ic%kind == 1) then
+            nt = size(an%conv(ie)%stress, 1)
+            if (nv > nt) then
+              if (any(ic%values(nt + 1:) /= 0.0_dp)) then
+                stat = 2
+                errmsg = ic%pos%file//':'//trim(c)//': *INITIAL CONDITIONS: element '//trim(b)//' has only '// &
+                  char(48 + nt)//' stress components'
+                return
+              end if
+            end if
+            do ip = 1, size(an%conv(ie)%stress, 2)
+              an%conv(ie)%stress(1:min(nt, nv), ip) = ic%values(1:min(nt, nv))
+            end do
+          else
+            if (nv /= an%mats(model%elem_section(ie))%nstatv) then
+              write (c, '(i0)') an%mats(model%elem_section(ie))%nstatv
+              stat = 2
+              errmsg = ic%pos%file//':'//itoa_line(ic%pos%line)//': *INITIAL CONDITIONS: element '//trim(b)// &
+                ' has NSTATV = '//trim(c)//' state variables (*DEPVAR); TYPE=SOLUTION needs exactly that many '// &
+                'values on one logical data line (continue lines with a trailing comma)'
+              return
+            end if
+            do ip = 1, size(an%conv(ie)%statev, 2)
+              an%conv(ie)%statev(1:nv, ip) = ic%values
+            end do
+          end if
+        end do
+      end associate
+    end do
+  end subroutine apply_initial_conditions
+
+  pure function itoa_line(i) result(s)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: s
+    character(len=16) :: b
+    write (b, '(i0)') i
+    s = trim(b)
+  end function itoa_line
 
   !> Density of the material of section isec (0 without *DENSITY).
   pure real(dp) function model_density(model, isec) result(rho)

@@ -278,6 +278,22 @@ contains
           call move_alloc(fc, model%steps(is)%dloads(k)%faces)
         end do
       end do
+      ! initial conditions: element ids and sets resolved
+      do k = 1, model%ninit
+        if (model%inits(k)%elset > 0) then
+          model%inits(k)%elems = model%elsets(model%inits(k)%elset)%elems
+        else
+          id = -model%inits(k)%elems(1)
+          ie = 0
+          if (id <= size(model%elem_index)) ie = model%elem_index(id)
+          if (ie == 0) then
+            pos = model%inits(k)%pos
+            call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+            return
+          end if
+          model%inits(k)%elems = [ie]
+        end if
+      end do
       ! a density without gravity loads cannot change a static result: accepted with a note
       do im = 1, model%nmat
         if (.not. model%materials(im)%has_density) cycle

@@ -13,6 +13,7 @@ module deck_reader
   use deck_boundaries, only: read_amplitude, read_boundary
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print
   use deck_loads, only: read_cload, read_dload, read_dsload, read_surface
+  use deck_fields, only: read_initial_conditions
   use deck_finish, only: finish_model
   implicit none
   private
@@ -131,6 +132,8 @@ contains
       call read_surface(ctx)
     case ('*DENSITY')
       call read_density(ctx)
+    case ('*INITIAL CONDITIONS')
+      call read_initial_conditions(ctx)
     case ('*STEP')
       call read_step(ctx)
     case ('*STATIC')
@@ -166,7 +169,8 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
-          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY')
+          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
+          '*INITIAL CONDITIONS')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

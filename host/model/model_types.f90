@@ -7,6 +7,7 @@ module model_types
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
   public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
   public :: dload_bx, dload_grav, dload_pressure, dload_user, model_find_surface
+  public :: initial_condition_t, init_stress, init_solution
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
@@ -16,6 +17,8 @@ module model_types
   integer, parameter :: etype_cpe4 = 2     !< 4-node plane-strain quadrilateral, F-bar
   integer, parameter :: etype_user = 3     !< user element (UEL)
   integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
+  integer, parameter :: init_stress = 1    !< *INITIAL CONDITIONS, TYPE=STRESS
+  integer, parameter :: init_solution = 2  !< *INITIAL CONDITIONS, TYPE=SOLUTION
   integer, parameter :: dload_bx = 1       !< body force per unit reference volume along dir (BX, BY, BZ)
   integer, parameter :: dload_grav = 2     !< gravity: density x magnitude along dir (GRAV)
   integer, parameter :: dload_pressure = 3 !< face pressure Pn (follower under NLGEOM)
@@ -123,6 +126,15 @@ module model_types
     type(source_pos_t) :: pos
   end type dload_t
 
+  !> One data line of *INITIAL CONDITIONS (TYPE=STRESS or SOLUTION): values for a list of elements.
+  type :: initial_condition_t
+    integer :: kind = 0                    !< init_stress, init_solution
+    integer, allocatable :: elems(:)       !< element indices (a negative user id or empty until finish_model)
+    integer :: elset = 0                   !< element set of the data line, 0: one element
+    real(dp), allocatable :: values(:)     !< stress components (Abaqus order) or state variables
+    type(source_pos_t) :: pos
+  end type initial_condition_t
+
   !> *SURFACE, TYPE=ELEMENT: element faces.
   type :: surface_t
     character(len=name_len) :: name = ''   !< upper-case name
@@ -208,6 +220,8 @@ module model_types
     integer :: namp = 0
     type(surface_t), allocatable :: surfaces(:)
     integer :: nsurf = 0
+    type(initial_condition_t), allocatable :: inits(:) !< *INITIAL CONDITIONS data lines, in deck order
+    integer :: ninit = 0
     type(boundary_t), allocatable :: initial_bcs(:) !< model-data *BOUNDARY (fixed, value 0 or given)
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)

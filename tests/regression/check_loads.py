@@ -364,16 +364,51 @@ def case_uel_loads(exe, out, user):
         close("step %d time %g U2 = sum DDLMAG / k" % (r["step"], s), r["FREE.U2"], mag / k, 1e-12)
 
 
+def cube_deck(path, init, clamped, material):
+    """Unit C3D8 cube on symmetry planes x = 0, y = 0, z = 0 with an initial-conditions block; clamped: x = 1 held
+    as well."""
+    out = ["*HEADING", "C3D8 cube with an initial state (tests/regression/check_loads.py)", "*NODE, NSET=ALL",
+           "1, 0., 0., 0.", "2, 1., 0., 0.", "3, 1., 1., 0.", "4, 0., 1., 0.", "5, 0., 0., 1.", "6, 1., 0., 1.",
+           "7, 1., 1., 1.", "8, 0., 1., 1.", "*ELEMENT, TYPE=C3D8, ELSET=CUBE", "1, 1, 2, 3, 4, 5, 6, 7, 8",
+           "*NSET, NSET=X0", "1, 4, 5, 8", "*NSET, NSET=X1", "2, 3, 6, 7", "*NSET, NSET=Y0", "1, 2, 5, 6",
+           "*NSET, NSET=Y1", "3, 4, 7, 8", "*NSET, NSET=Z0", "1, 2, 3, 4",
+           "*SOLID SECTION, ELSET=CUBE, MATERIAL=M", "*MATERIAL, NAME=M"] + material + init + [
+           "*BOUNDARY", "X0, XSYMM", "Y0, YSYMM", "Z0, ZSYMM"] + (["X1, XSYMM"] if clamped else []) + [
+           "*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*NODE PRINT, NSET=X1, TOTALS=YES", "U1, RF1",
+           "*NODE PRINT, NSET=Y1", "U2", "*END STEP"]
+    write(path, out)
+
+
+def case_initial_stress(exe, out, user):
+    """*INITIAL CONDITIONS, TYPE=STRESS: an initial S11 = s on a free cube relaxes to zero stress (strain -s/E
+    along x, +nu s/E across); on a cube held at x = 0 and x = 1 it stays, carried by the reaction s A. TYPE=SOLUTION:
+    the same eigen-stress held in a UMAT's state variables (tests/regression/user_umat_prestress.f90)."""
+    s, e, nu = 10.0, 1000.0, 0.3
+    elastic = ["*ELASTIC", "%g, %g" % (e, nu)]
+    init = ["*INITIAL CONDITIONS, TYPE=STRESS", "CUBE, %g, 0., 0., 0., 0., 0." % s]
+    r = run(exe, out, "init_free", lambda d: cube_deck(d, init, False, elastic))[-1]
+    close("free: U1 at x = 1 = -s/E", r["X1.U1"], -s / e, 1e-9)
+    close("free: U2 at y = 1 = nu s/E", r["Y1.U2"], nu * s / e, 1e-9)
+    r = run(exe, out, "init_clamped", lambda d: cube_deck(d, init, True, elastic))[-1]
+    close("clamped: RF1 at x = 1 = s A", r["X1.RF1"], s, 1e-9)
+    close("clamped: U2 at y = 1 = 0 (in equilibrium)", r["Y1.U2"], 0.0, 0.0, 1e-12)
+    umat = ["*USER MATERIAL, CONSTANTS=2", "%g, %g" % (e, nu), "*DEPVAR", "6"]
+    init = ["*INITIAL CONDITIONS, TYPE=SOLUTION", "CUBE, %g, 0., 0., 0., 0., 0." % s]
+    r = run(exe, out, "init_solution", lambda d: cube_deck(d, init, False, umat), user=user)[-1]
+    close("solution: U1 at x = 1 = -s/E", r["X1.U1"], -s / e, 1e-9)
+    close("solution: U2 at y = 1 = nu s/E", r["Y1.U2"], nu * s / e, 1e-9)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "balloon", "uel_loads"])
+                                                      "lame3d", "balloon", "uel_loads", "initial_stress"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
-    if a.case in ("balloon", "uel_loads"):
+    if a.case in ("balloon", "uel_loads", "initial_stress"):
         globals()["case_" + a.case](a.exe, a.out, os.path.abspath(a.user))
     else:
         globals()["case_" + a.case](a.exe, a.out)

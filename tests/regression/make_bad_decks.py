@@ -118,6 +118,14 @@ CASES = [
      "*DSLOAD", "NOPE, P"),
     ("density_two_lines", "*DENSITY with two data lines", "*ELASTIC\n1000., 0.3\n",
      "*ELASTIC\n1000., 0.3\n*DENSITY\n1e-9\n2e-9\n", "*DENSITY", "*DENSITY"),
+    ("initial_temperature", "*INITIAL CONDITIONS, TYPE=TEMPERATURE", "*STEP, NLGEOM=YES",
+     "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nALL, 20.\n*STEP, NLGEOM=YES", "*INITIAL CONDITIONS",
+     "*INITIAL CONDITIONS, TYPE=TEMPERATURE"),
+    ("initial_stress_components", "seven initial stress components", "*STEP, NLGEOM=YES",
+     "*INITIAL CONDITIONS, TYPE=STRESS\nCUBE, 1., 2., 3., 4., 5., 6., 7.\n*STEP, NLGEOM=YES", "*INITIAL CONDITIONS",
+     "CUBE, 1., 2."),
+    ("initial_solution_elastic", "TYPE=SOLUTION on a material without state variables", "*STEP, NLGEOM=YES",
+     "*INITIAL CONDITIONS, TYPE=SOLUTION\nCUBE, 1.\n*STEP, NLGEOM=YES", "*INITIAL CONDITIONS", "CUBE, 1."),
 ]
 
 
