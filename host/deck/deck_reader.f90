@@ -136,7 +136,7 @@ contains
       call read_initial_conditions(ctx)
     case ('*STEP')
       call read_step(ctx)
-    case ('*STATIC')
+    case ('*STATIC', '*VISCO')
       call read_static(ctx)
     case ('*CONTROLS')
       call read_controls(ctx)

@@ -107,7 +107,8 @@ contains
     ctx%imat = 0
   end subroutine read_step
 
-  !> *STATIC[, DIRECT]: initial increment, period, minimum and maximum increments.
+  !> *STATIC[, DIRECT] or *VISCO[, CETOL=]: initial increment, period, minimum and maximum increments. *VISCO is the
+  !> quasi-static step of rate-dependent materials: the same equilibrium step here (the UMAT sees the real time).
   subroutine read_static(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=flen), allocatable :: f(:)
@@ -115,12 +116,28 @@ contains
     real(dp) :: v(4)
     logical :: given(4)
     integer :: k
+    real(dp) :: cetol
+    logical :: visco
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=12) :: 'DIRECT'])
+    visco = ctx%kw == '*VISCO'
+    if (visco) then
+      call ctx_allow_params(ctx, [character(len=12) :: 'CETOL'])
+    else
+      call ctx_allow_params(ctx, [character(len=12) :: 'DIRECT'])
+    end if
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
+    if (visco .and. deck_has_param(ctx%params, 'CETOL')) then
+      if (.not. ctx_get_real(ctx, ir, deck_param_value(ctx%params, 'CETOL'), cetol)) return
+      if (cetol <= 0.0_dp) then
+        call ctx_fail(ctx, ir, 'CETOL must be positive')
+        return
+      end if
+      call ctx_warn(ctx, ir, 'CETOL: the host does not see a UMAT''s creep strain; the increments are controlled '// &
+        'by the Newton iteration and the UMAT''s PNEWDT (Abaqus applies CETOL to its built-in creep laws)')
+    end if
     if (ctx%model%steps(ctx%istep)%period > 0.0_dp) then
       call ctx_fail(ctx, ir, 'a second procedure in one step')
       return
@@ -157,7 +174,9 @@ contains
       if (given(3)) s%dt_min = v(3)
       s%dt_max = s%period
       if (given(4)) s%dt_max = v(4)
+      ! *VISCO: fixed increments unless CETOL is given (Abaqus); *STATIC: DIRECT
       s%direct = deck_has_param(ctx%params, 'DIRECT')
+      if (visco) s%direct = .not. deck_has_param(ctx%params, 'CETOL')
       if (s%dt_initial > s%period * (1.0_dp + 1.0e-12_dp)) then
         call ctx_fail(ctx, ir + 1, 'initial increment larger than the step period')
       else if (s%dt_min > s%dt_initial .and. .not. s%direct) then

@@ -399,12 +399,37 @@ def case_initial_stress(exe, out, user):
     close("solution: U2 at y = 1 = nu s/E", r["Y1.U2"], nu * s / e, 1e-9)
 
 
+def case_visco(exe, out):
+    """*VISCO without CETOL runs fixed increments (Abaqus), with CETOL automatic ones; on a linear elastic beam both
+    give the static answer: step 1 (*VISCO, 0.1, 1.) ramps P in exactly 10 increments, step 2 (*VISCO, CETOL)
+    ramps to 2P in fewer."""
+    p, ny = 0.01, 2
+
+    def deck(path):
+        cantilever_deck(path, 20, 2, False, [("", load(p, ny)), ("", load(2 * p, ny))])
+        with open(path) as f:
+            text = f.read()
+        text = text.replace("*STATIC, DIRECT\n0.1, 1.0", "*VISCO\n0.1, 1.0", 1)
+        text = text.replace("*STATIC, DIRECT\n0.1, 1.0", "*VISCO, CETOL=1e-3\n0.1, 1.0", 1)
+        with open(path, "w") as f:
+            f.write(text)
+    rows = run(exe, out, "visco", deck)
+    n1 = len([r for r in rows if r["step"] == 1])
+    n2 = len([r for r in rows if r["step"] == 2])
+    print("increments: step 1 (fixed) %d, step 2 (CETOL, automatic) %d" % (n1, n2))
+    if n1 != 10 or not n2 < 10:
+        fail("expected 10 fixed increments in step 1 and fewer automatic ones in step 2")
+    d1 = [r for r in rows if r["step"] == 1][-1]["TIP.U2"]
+    close("step 1 end: PL^3/3EI (20x2 mesh)", d1, p * L ** 3 / (3 * EI) * SHEAR, 5e-3)
+    close("step 2 end: twice step 1", rows[-1]["TIP.U2"], 2 * d1, 1e-9)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "balloon", "uel_loads", "initial_stress"])
+                                                      "lame3d", "balloon", "uel_loads", "initial_stress", "visco"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
