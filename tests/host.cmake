@@ -156,4 +156,7 @@ add_test(NAME deck_dload_uel COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} -
 add_test(NAME deck_initial_stress COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
   --out ${LDFCZ_RUNS}/initial_stress --case initial_stress
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
-set_tests_properties(deck_dload_balloon deck_dload_uel deck_initial_stress PROPERTIES LABELS "deck" TIMEOUT 300)
+add_test(NAME deck_thermal_expansion COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/thermal --case thermal --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
+set_tests_properties(deck_dload_balloon deck_dload_uel deck_initial_stress deck_thermal_expansion PROPERTIES
+  LABELS "deck" TIMEOUT 300)

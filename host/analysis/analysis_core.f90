@@ -54,6 +54,8 @@ module analysis_core
     real(dp), allocatable :: fint(:)            !< internal force (all dofs)
     real(dp), allocatable :: fext(:)            !< external nodal force (all dofs) at the end of the increment
     real(dp), allocatable :: fdl(:)             !< distributed-load nodal forces (all dofs) at the current estimate
+    real(dp), allocatable :: temp_start(:)      !< (nnode) temperatures at the start of the increment
+    real(dp), allocatable :: temp_end(:)        !< (nnode) temperatures at the end of the increment
     real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
     type(dload_state_t) :: dl                   !< distributed loads of the current step (distributed_loads)
     real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
@@ -174,6 +176,7 @@ contains
       associate (mt => model%materials(im), sm => an%mats(is))
         sm%thickness = model%sections(is)%thickness
         sm%cmname = mt%given_name
+        sm%alpha = mt%alpha
         if (mt%has_elastic) then
           sm%kind = SOLID_MAT_ELASTIC
           sm%e = mt%young
@@ -228,6 +231,13 @@ contains
     end do
     call apply_initial_conditions(an, model, stat, errmsg)
     if (stat /= 0) return
+    ! initial temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 elsewhere), in deck order
+    allocate (an%temp_start(model%nnode), an%temp_end(model%nnode))
+    an%temp_start = 0.0_dp
+    do k = 1, model%ntemp_init
+      an%temp_start(model%temp_inits(k)%nodes) = model%temp_inits(k)%value
+    end do
+    an%temp_end = an%temp_start
     an%trial = an%conv
     allocate (an%u(an%ndof), an%u_conv(an%ndof), an%fint(an%ndof), an%fe(an%elem_ptr(model%nelem + 1) - 1))
     an%u = 0.0_dp
@@ -409,7 +419,11 @@ contains
       do a = 1, nn
         xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
       end do
-      predef = 0.0_dp
+      ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment (Abaqus UEL)
+      do a = 1, nn
+        predef(1, 1, a) = an%temp_end(model%conn(model%conn_ptr(ie) + a - 1))
+        predef(2, 1, a) = predef(1, 1, a) - an%temp_start(model%conn(model%conn_ptr(ie) + a - 1))
+      end do
       ip = model%elem_uelprop(ie)
       if (ip > 0) then
         props = model%uelprops(ip)%props
@@ -457,7 +471,10 @@ contains
         call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
           an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
           model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)))
+          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
+          temp_nodes=an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
+          dtemp_nodes=an%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
+          an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)))
         st%energy = 0.0_dp
         st%energy(2) = e2(1)
         st%energy(4) = e2(2)

@@ -53,7 +53,8 @@ contains
     real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:), du_prev(:)
     real(dp), allocatable :: fext_old(:), fcl_old(:)
     logical, allocatable :: bc_was_on(:)
-    type(load_state_t) :: ls
+    type(load_state_t) :: ls, ls_temp
+    real(dp), allocatable :: zero_nodes(:)
     real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_now, t_end, next_mark, dt_prev
     real(dp) :: open_inc, plastic_inc
     integer(i8) :: c1, rate, cs0
@@ -92,9 +93,10 @@ contains
       end if
     end if
     if (restarting .and. (any(model%steps(1:model%nstep)%ncload > 0) .or. &
-        any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new))) then
+        any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new) .or. &
+        any(model%steps(1:model%nstep)%ntemp > 0))) then
       ! the load state (step_loads) is not in the restart file
-      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD or *BOUNDARY, OP=NEW is '// &
+      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE or *BOUNDARY, OP=NEW is '// &
         'not supported'
       call output_log(out, 'ldfcz: error: '//errmsg)
       if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
@@ -163,6 +165,13 @@ contains
     allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
     allocate (rf_old(an%ndof), du_prev(an%ndof), fext_old(an%ndof), bc_was_on(an%ndof), fcl_old(an%ndof))
     call load_state_init(ls, an%ndof)
+    ! nodal temperatures: every node holds its initial temperature until a *TEMPERATURE changes it
+    call load_state_init(ls_temp, model%nnode)
+    ls_temp%on = .true.
+    ls_temp%base = an%temp_start
+    ls_temp%target = an%temp_start
+    allocate (zero_nodes(model%nnode))
+    zero_nodes = 0.0_dp
     fext_old = 0.0_dp
     fcl_old = 0.0_dp
     du_prev = 0.0_dp
@@ -203,7 +212,9 @@ contains
           elsewhere
             bc_was_on = .false.
           end where
-          call load_step_begin(ls, model, is, fcl_old, merge(rf_old, 0.0_dp, bc_was_on))
+          call load_step_begin(ls, fcl_old, merge(rf_old, 0.0_dp, bc_was_on), st%cloads, st%ncload, &
+            st%cload_op_new, model%ndim)
+          call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
           call dload_step_begin(an%dl, model, is, t_total0, stat, errmsg)
           if (stat /= 0) then
             call output_log(out, 'ldfcz: error: '//errmsg)
@@ -269,6 +280,7 @@ contains
               if (an%prescribed(i)) an%u(i) = prescribed_value(i, t_end)
             end do
             call load_vector(ls, model, is, t_end, t_total0, an%fext)
+            call load_vector(ls_temp, model, is, t_end, t_total0, an%temp_end)
             call newton_solve(an, model, is, kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, q_sum, &
               converged, stopped, iter, q_now, pnewdt_min, outcome)
             if (stopped) then
@@ -348,6 +360,7 @@ contains
           du_prev = an%u - an%u_conv
           dt_prev = dt
           call analysis_commit(an)
+          an%temp_start = an%temp_end
           call step_control_converged(sc, dt, iter, pnewdt_min)
           if (open_inc > 0.0_dp .and. .not. st%direct) then
             ! next increment from the opening bound: at most x1.5 after an easy increment, PNEWDT > 1 honoured

@@ -4,7 +4,7 @@
 !> step (linearly with RAMP, at once with STEP), as Abaqus/Standard documents for prescribed conditions.
 module step_loads
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, amplitude_factor
+  use model_types, only: model_t, amplitude_factor, cload_t
   implicit none
   private
   public :: load_state_t, load_state_init, load_step_begin, load_vector
@@ -36,37 +36,39 @@ contains
   !> reaction the reaction force (internal minus external force) of the dofs whose boundary this step removes
   !> (zero elsewhere). Loads not re-specified keep their value (OP=MOD) or are released (OP=NEW); the step's
   !> *CLOAD lines are applied in deck order (the last line for a node and dof wins).
-  pure subroutine load_step_begin(ls, model, is, f_now, reaction)
+  !> The same machinery carries the nodal temperatures (*TEMPERATURE: list = the step's temperatures, stride 1,
+  !> every node on from the start with its initial temperature).
+  pure subroutine load_step_begin(ls, f_now, reaction, list, n, op_new, stride)
     type(load_state_t), intent(inout) :: ls  !< load state
-    type(model_t), intent(in) :: model       !< the model
-    integer, intent(in) :: is                !< step number
     real(dp), intent(in) :: f_now(:)         !< external force at the end of the previous step
     real(dp), intent(in) :: reaction(:)      !< reactions of the boundaries removed at this step's start
+    type(cload_t), intent(in) :: list(:)     !< the step's definitions (*CLOAD lines)
+    integer, intent(in) :: n                 !< definitions in use
+    logical, intent(in) :: op_new            !< OP=NEW in this step
+    integer, intent(in) :: stride            !< entries per node (the model dimension for forces)
     integer :: k, a, i
-    associate (st => model%steps(is))
-      ! inherited loads hold the value reached
-      where (ls%on)
-        ls%base = f_now
-        ls%target = f_now
-      end where
-      ls%amp = 0
-      ls%released = reaction
-      if (st%cload_op_new) then
-        where (ls%on) ls%released = ls%released + f_now
-        ls%on = .false.
-        ls%base = 0.0_dp
-        ls%target = 0.0_dp
-      end if
-      do k = 1, st%ncload
-        do a = 1, size(st%cloads(k)%nodes)
-          i = (st%cloads(k)%nodes(a) - 1) * model%ndim + st%cloads(k)%dof
-          if (.not. ls%on(i)) ls%base(i) = 0.0_dp
-          ls%on(i) = .true.
-          ls%target(i) = st%cloads(k)%value
-          ls%amp(i) = st%cloads(k)%amplitude
-        end do
+    ! inherited loads hold the value reached
+    where (ls%on)
+      ls%base = f_now
+      ls%target = f_now
+    end where
+    ls%amp = 0
+    ls%released = reaction
+    if (op_new) then
+      where (ls%on) ls%released = ls%released + f_now
+      ls%on = .false.
+      ls%base = 0.0_dp
+      ls%target = 0.0_dp
+    end if
+    do k = 1, n
+      do a = 1, size(list(k)%nodes)
+        i = (list(k)%nodes(a) - 1) * stride + list(k)%dof
+        if (.not. ls%on(i)) ls%base(i) = 0.0_dp
+        ls%on(i) = .true.
+        ls%target(i) = list(k)%value
+        ls%amp(i) = list(k)%amplitude
       end do
-    end associate
+    end do
   end subroutine load_step_begin
 
   !> External nodal forces at step time t of step is (which began at total time t_total0).

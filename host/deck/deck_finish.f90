@@ -117,6 +117,12 @@ contains
         model%initial_bcs(ib) = bc
         if (ctx%stat /= 0) return
       end do
+      do ib = 1, model%ntemp_init
+        cl = model%temp_inits(ib)
+        call resolve_cload(ctx, cl)
+        model%temp_inits(ib) = cl
+        if (ctx%stat /= 0) return
+      end do
       do is = 1, model%nstep
         do ib = 1, model%steps(is)%nbc
           bc = model%steps(is)%bcs(ib)
@@ -128,6 +134,12 @@ contains
           cl = model%steps(is)%cloads(ib)
           call resolve_cload(ctx, cl)
           model%steps(is)%cloads(ib) = cl
+          if (ctx%stat /= 0) return
+        end do
+        do ib = 1, model%steps(is)%ntemp
+          cl = model%steps(is)%temps(ib)
+          call resolve_cload(ctx, cl)
+          model%steps(is)%temps(ib) = cl
           if (ctx%stat /= 0) return
         end do
         if (model%steps(is)%period < 0.0_dp) then

@@ -53,6 +53,8 @@ module model_types
     real(dp), allocatable :: props(:)      !< user material constants
     logical :: unsymm = .false.            !< *USER MATERIAL, UNSYMM
     integer :: nstatv = 0                  !< *DEPVAR
+    logical :: has_expansion = .false.     !< *EXPANSION given
+    real(dp) :: alpha = 0.0_dp             !< isotropic thermal expansion coefficient [1/K]
     logical :: has_density = .false.      !< *DENSITY given
     real(dp) :: density = 0.0_dp           !< mass density [t/mm^3 in N, mm, s units]
     type(source_pos_t) :: pos              !< where *MATERIAL was
@@ -171,6 +173,8 @@ module model_types
     logical :: dload_op_new = .false.      !< a *DLOAD/*DSLOAD, OP=NEW in this step removes inherited distributed loads
     type(dload_t), allocatable :: dloads(:)!< distributed loads given in this step
     integer :: ndload = 0
+    type(cload_t), allocatable :: temps(:) !< *TEMPERATURE lines (node list, value; dof = 1)
+    integer :: ntemp = 0
     integer :: max_iter = 16               !< *CONTROLS, PARAMETERS=TIME INCREMENTATION: I_A (here the iteration cap)
     real(dp) :: r_n = 0.005_dp             !< *CONTROLS, PARAMETERS=FIELD: R_n
     real(dp) :: c_n = 0.01_dp              !< *CONTROLS, PARAMETERS=FIELD: C_n
@@ -222,6 +226,8 @@ module model_types
     integer :: nsurf = 0
     type(initial_condition_t), allocatable :: inits(:) !< *INITIAL CONDITIONS data lines, in deck order
     integer :: ninit = 0
+    type(cload_t), allocatable :: temp_inits(:) !< *INITIAL CONDITIONS, TYPE=TEMPERATURE lines (dof = 1)
+    integer :: ntemp_init = 0
     type(boundary_t), allocatable :: initial_bcs(:) !< model-data *BOUNDARY (fixed, value 0 or given)
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)

@@ -364,7 +364,7 @@ def case_uel_loads(exe, out, user):
         close("step %d time %g U2 = sum DDLMAG / k" % (r["step"], s), r["FREE.U2"], mag / k, 1e-12)
 
 
-def cube_deck(path, init, clamped, material):
+def cube_deck(path, init, clamped, material, step_lines=()):
     """Unit C3D8 cube on symmetry planes x = 0, y = 0, z = 0 with an initial-conditions block; clamped: x = 1 held
     as well."""
     out = ["*HEADING", "C3D8 cube with an initial state (tests/regression/check_loads.py)", "*NODE, NSET=ALL",
@@ -374,7 +374,7 @@ def cube_deck(path, init, clamped, material):
            "*NSET, NSET=Y1", "3, 4, 7, 8", "*NSET, NSET=Z0", "1, 2, 3, 4",
            "*SOLID SECTION, ELSET=CUBE, MATERIAL=M", "*MATERIAL, NAME=M"] + material + init + [
            "*BOUNDARY", "X0, XSYMM", "Y0, YSYMM", "Z0, ZSYMM"] + (["X1, XSYMM"] if clamped else []) + [
-           "*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*NODE PRINT, NSET=X1, TOTALS=YES", "U1, RF1",
+           "*STEP, NLGEOM=NO", "*STATIC", "0.5, 1."] + list(step_lines) + ["*NODE PRINT, NSET=X1, TOTALS=YES", "U1, RF1",
            "*NODE PRINT, NSET=Y1", "U2", "*END STEP"]
     write(path, out)
 
@@ -424,16 +424,40 @@ def case_visco(exe, out):
     close("step 2 end: twice step 1", rows[-1]["TIP.U2"], 2 * d1, 1e-9)
 
 
+def case_thermal(exe, out, user):
+    """*INITIAL CONDITIONS, TYPE=TEMPERATURE (20) and *TEMPERATURE (120) with *EXPANSION alpha = 1e-5: a free cube
+    expands by alpha dT in every direction; held at x = 0 and x = 1 it carries sigma_11 = -E alpha dT (reaction
+    -E alpha dT A) and expands across by (1 + nu) alpha dT. A UMAT with *EXPANSION receives the mechanical strain
+    (total minus alpha dT): the prestress UMAT gives the same clamped stress, plus c (TEMP + DTEMP) = c T_end from
+    its third constant, which checks the temperature it is passed."""
+    e, nu, alpha, t0, t1 = 1000.0, 0.3, 1.0e-5, 20.0, 120.0
+    dt = t1 - t0
+    mat = ["*ELASTIC", "%g, %g" % (e, nu), "*EXPANSION", "%g" % alpha]
+    init = ["*INITIAL CONDITIONS, TYPE=TEMPERATURE", "ALL, %g" % t0]
+    temp = ["*TEMPERATURE", "ALL, %g" % t1]
+    rows = run(exe, out, "thermal_free", lambda d: cube_deck(d, init, False, mat, temp))
+    close("free: U1 at x = 1, half step (ramp)", rows[0]["X1.U1"], 0.5 * alpha * dt, 1e-9)
+    close("free: U1 at x = 1 = alpha dT", rows[-1]["X1.U1"], alpha * dt, 1e-9)
+    close("free: U2 at y = 1 = alpha dT", rows[-1]["Y1.U2"], alpha * dt, 1e-9)
+    r = run(exe, out, "thermal_clamped", lambda d: cube_deck(d, init, True, mat, temp))[-1]
+    close("clamped: RF1 at x = 1 = -E alpha dT A", r["X1.RF1"], -e * alpha * dt, 1e-9)
+    close("clamped: U2 at y = 1 = (1 + nu) alpha dT", r["Y1.U2"], (1 + nu) * alpha * dt, 1e-9)
+    c = 1.0e-3
+    umat = ["*USER MATERIAL, CONSTANTS=3", "%g, %g, %g" % (e, nu, c), "*DEPVAR", "6", "*EXPANSION", "%g" % alpha]
+    r = run(exe, out, "thermal_umat", lambda d: cube_deck(d, init, True, umat, temp), user=user)[-1]
+    close("UMAT clamped: RF1 = (-E alpha dT + c T1) A", r["X1.RF1"], -e * alpha * dt + c * t1, 1e-9)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "balloon", "uel_loads", "initial_stress", "visco"])
+                                                      "lame3d", "balloon", "uel_loads", "initial_stress", "visco", "thermal"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
-    if a.case in ("balloon", "uel_loads", "initial_stress"):
+    if a.case in ("balloon", "uel_loads", "initial_stress", "thermal"):
         globals()["case_" + a.case](a.exe, a.out, os.path.abspath(a.user))
     else:
         globals()["case_" + a.case](a.exe, a.out)

@@ -1,6 +1,7 @@
 ! A user UMAT whose state variables hold a residual (eigen) stress (run with ldfcz --user): small-strain isotropic
 ! elasticity plus STATEV(1:NTENS), kept constant, STRESS = C : (STRAN + DSTRAN) + STATEV. PROPS(1) = E, PROPS(2) =
 ! nu; NSTATV >= NTENS. Set by *INITIAL CONDITIONS, TYPE=SOLUTION, the state stress relaxes like an initial stress.
+! With a third constant c, S11 gets c (TEMP + DTEMP) in addition: a check that the temperature reaches the UMAT.
 subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, dstran, &
     time, dtime, temp, dtemp, predef, dpred, cmname, ndi, nshr, ntens, nstatv, props, nprops, coords, drot, &
     pnewdt, celent, dfgrd0, dfgrd1, noel, npt, layer, kspt, jstep, kinc)
@@ -29,4 +30,5 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
     ddsdde(i, i) = g
   end do
   stress = matmul(ddsdde, stran + dstran) + statev(1:ntens)
+  if (nprops >= 3) stress(1) = stress(1) + props(3) * (temp + dtemp)
 end subroutine umat
