@@ -151,6 +151,9 @@ foreach(case gravity lame2d lame3d)
 endforeach()
 add_test(NAME deck_dload_balloon COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
   --out ${LDFCZ_RUNS}/dload_balloon --case balloon --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90)
+add_test(NAME deck_dload_balloon3d COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/dload_balloon3d --case balloon3d
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90)
 add_test(NAME deck_dload_uel COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
   --out ${LDFCZ_RUNS}/dload_uel --case uel_loads --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_dload.f90)
 add_test(NAME deck_initial_stress COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
@@ -158,5 +161,5 @@ add_test(NAME deck_initial_stress COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOA
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
 add_test(NAME deck_thermal_expansion COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
   --out ${LDFCZ_RUNS}/thermal --case thermal --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
-set_tests_properties(deck_dload_balloon deck_dload_uel deck_initial_stress deck_thermal_expansion PROPERTIES
+set_tests_properties(deck_dload_balloon deck_dload_balloon3d deck_dload_uel deck_initial_stress deck_thermal_expansion PROPERTIES
   LABELS "deck" TIMEOUT 300)

@@ -316,18 +316,19 @@ def case_lame3d(exe, out):
     check_lame(rows, a, b, p, 3e-3)
 
 
-def case_balloon(exe, out, user):
+def case_balloon(exe, out, user, three_d=False):
     """Full ring of a neo-Hookean UMAT (exact tangent) inflated under NLGEOM by follower pressure (the bore grows
     by about 23 %): with the load stiffness and UNSYMM=YES Newton converges quadratically."""
     mat = ["*USER MATERIAL, CONSTANTS=2", "384.6, 576.9"]
-    rows = run(exe, out, "balloon", lambda d: ring_deck(d, 1.0, 1.2, 2, 32, 30.0, quarter=False, nlgeom=True,
-                                                       material=mat, unsymm=True), user=user)
+    job = "balloon3d" if three_d else "balloon"
+    rows = run(exe, out, job, lambda d: ring_deck(d, 1.0, 1.2, 2, 32, 30.0, quarter=False, nlgeom=True,
+                                                 material=mat, unsymm=True, three_d=three_d), user=user)
     r_in = 1.0 + rows[-1]["RIN.U1"]
     print("inner radius after inflation %.4f" % r_in)
     if not r_in > 1.15:
         fail("the ring did not inflate (inner radius %g)" % r_in)
     ratios = []
-    with open(os.path.join(out, "balloon.sta")) as f:
+    with open(os.path.join(out, job + ".sta")) as f:
         for line in f:
             if "converged" in line and "r/q:" in line:
                 ratios.append([float(x) for x in line.split("r/q:")[1].split()])
@@ -343,6 +344,11 @@ def case_balloon(exe, out, user):
         checked += 1
     if checked == 0:
         fail("no increment with three or more residual evaluations")
+
+
+def case_balloon3d(exe, out, user):
+    """The inflated ring with C3D8 one element thick (u3 = 0): the 3D face pressure's load stiffness."""
+    case_balloon(exe, out, user, three_d=True)
 
 
 def case_uel_loads(exe, out, user):
@@ -453,11 +459,11 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "balloon", "uel_loads", "initial_stress", "visco", "thermal"])
+                                                      "lame3d", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
-    if a.case in ("balloon", "uel_loads", "initial_stress", "thermal"):
+    if a.case in ("balloon", "balloon3d", "uel_loads", "initial_stress", "thermal"):
         globals()["case_" + a.case](a.exe, a.out, os.path.abspath(a.user))
     else:
         globals()["case_" + a.case](a.exe, a.out)
