@@ -13,6 +13,7 @@ module analysis_core
     sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
   use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
+  use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
   implicit none
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
@@ -58,6 +59,7 @@ module analysis_core
     real(dp), allocatable :: temp_end(:)        !< (nnode) temperatures at the end of the increment
     real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
     type(dload_state_t) :: dl                   !< distributed loads of the current step (distributed_loads)
+    type(constraint_set_t) :: cs                !< *EQUATION constraints (linear_constraints), eliminated
     real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
     type(sparse_system_t) :: sys                !< sparse tangent
     logical :: sys_ready = .false.
@@ -231,6 +233,8 @@ contains
     end do
     call apply_initial_conditions(an, model, stat, errmsg)
     if (stat /= 0) return
+    call constraints_build(an%cs, model, an%used, stat, errmsg)
+    if (stat /= 0) return
     ! initial temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 elsewhere), in deck order
     allocate (an%temp_start(model%nnode), an%temp_end(model%nnode))
     an%temp_start = 0.0_dp
@@ -269,9 +273,17 @@ contains
     eq_new = 0
     n = 0
     do i = 1, an%ndof
-      if (an%used(i) .and. .not. an%prescribed(i)) then
+      if (an%used(i) .and. .not. an%prescribed(i) .and. an%cs%of_dof(i) == 0) then
         n = n + 1
         eq_new(i) = n
+      end if
+      if (an%prescribed(i) .and. an%cs%of_dof(i) /= 0) then
+        stat = 2
+        write (msg, '(a,i0,a,i0)') 'a *BOUNDARY prescribes dof ', mod(i - 1, an%ndim) + 1, ' of node ', &
+          model%node_id((i - 1) / an%ndim + 1)
+        errmsg = trim(msg)//', which an *EQUATION eliminates (its first term): prescribe another dof of the '// &
+          'equation instead'
+        return
       end if
     end do
     if (an%sys_ready .and. all(eq_new == an%eq)) return
@@ -296,8 +308,18 @@ contains
       if (an%eq(i) > 0) eq_node(an%eq(i)) = (i - 1) / an%ndim + 1
     end do
     an%elem_eq = an%eq(an%elem_dof)
-    call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
-      symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+    if (an%cs%n > 0) then
+      ! eliminated dofs: extended element lists (masters appended), colours of the extended lists
+      if (allocated(an%cs%xptr)) deallocate (an%cs%xptr, an%cs%xeq, an%cs%xdof, an%cs%tptr, an%cs%trow, &
+        an%cs%tcol, an%cs%tw)
+      call constraints_extend(an%cs, an%elem_ptr, an%elem_dof, an%eq)
+      call color_elements(model%nelem, an%ndof, an%cs%xptr, an%cs%xdof, an%ncolor, an%color_ptr, an%color_elem)
+      call sparse_setup(an%sys, n, an%cs%xptr, an%cs%xeq, eq_node, an%symmetric, stat, msg, &
+        symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+    else
+      call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
+        symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+    end if
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
       stat = 2
@@ -323,8 +345,8 @@ contains
     real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
     integer, intent(out) :: stat                         !< 0 ok, 1 an element failed
     character(len=:), allocatable, intent(out) :: errmsg !< message of the first failure
-    integer :: ie, ic, c, n, k, fail_elem, st
-    real(dp), allocatable :: ke(:, :), fel(:)
+    integer :: ie, ic, c, n, k, fail_elem, st, m
+    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :)
     real(dp) :: pn
     character(len=256) :: msg, first_msg
     integer(i8) :: c0, c1, rate
@@ -339,8 +361,9 @@ contains
     an%fdle = 0.0_dp
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
-    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg)
+    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, m)
     allocate (ke(an%max_ndofel, an%max_ndofel), fel(an%max_ndofel))
+    allocate (kx(max(1, an%cs%max_x), max(1, an%cs%max_x)))
     do c = 1, an%ncolor
       !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min)
       do ic = an%color_ptr(c), an%color_ptr(c + 1) - 1
@@ -365,12 +388,18 @@ contains
         an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
         if (want_k) then
           if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
-          call sparse_add_element(an%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+          if (an%cs%n > 0) then
+            ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
+            call constraints_transform(an%cs, ie, ke(1:n, 1:n), m, kx)
+            call sparse_add_element(an%sys, ie, kx(1:m, 1:m), exclusive=.true.)
+          else
+            call sparse_add_element(an%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+          end if
         end if
       end do
       !$omp end do
     end do
-    deallocate (ke, fel)
+    deallocate (ke, fel, kx)
     !$omp end parallel
     an%fint = 0.0_dp
     an%fdl = 0.0_dp

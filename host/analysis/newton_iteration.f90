@@ -4,6 +4,7 @@ module newton_iteration
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
   use analysis_core, only: analysis_t, analysis_assemble
+  use linear_constraints, only: constraints_residual, constraints_apply
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
     sparse_is_factored, sparse_solve_krylov, sparse_factors_exact
@@ -147,6 +148,8 @@ contains
         do i = 1, an%ndof
           if (an%eq(i) > 0) r(an%eq(i)) = an%fext(i) + an%fdl(i) - an%fint(i)
         end do
+        ! *EQUATION: the residual of an eliminated dof acts on its masters
+        if (an%cs%n > 0 .and. an%neq > 0) call constraints_residual(an%cs, an%eq, an%fext + an%fdl - an%fint, r)
         r_max = 0.0_dp
         if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))
         r_norm = 0.0_dp
@@ -262,6 +265,7 @@ contains
         do i = 1, an%ndof
           if (an%eq(i) > 0) an%u(i) = an%u(i) + r(an%eq(i))
         end do
+        if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
       end do newton_loop
     end associate
   end subroutine newton_solve

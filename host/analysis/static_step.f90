@@ -7,6 +7,7 @@ module static_step
   use model_types, only: model_t, amplitude_factor
   use step_loads, only: load_state_t, load_state_init, load_step_begin, load_vector
   use distributed_loads, only: dload_step_begin
+  use linear_constraints, only: constraints_apply
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
   use step_control, only: step_control_t, step_control_init, step_control_cutback, step_control_converged, &
     step_control_done, step_control_dt
@@ -279,6 +280,7 @@ contains
             do i = 1, an%ndof
               if (an%prescribed(i)) an%u(i) = prescribed_value(i, t_end)
             end do
+            if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
             call load_vector(ls, model, is, t_end, t_total0, an%fext)
             call load_vector(ls_temp, model, is, t_end, t_total0, an%temp_end)
             call newton_solve(an, model, is, kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, q_sum, &

@@ -117,6 +117,19 @@ contains
         model%initial_bcs(ib) = bc
         if (ctx%stat /= 0) return
       end do
+      do ib = 1, model%nequation
+        do k = 1, size(model%equations(ib)%terms)
+          cl = model%equations(ib)%terms(k)
+          call resolve_cload(ctx, cl)
+          model%equations(ib)%terms(k) = cl
+          if (ctx%stat /= 0) return
+          if (size(cl%nodes) /= size(model%equations(ib)%terms(1)%nodes)) then
+            pos = model%equations(ib)%pos
+            call ctx_fail_pos(ctx, pos, 'the node sets of the terms differ in size (one equation per member)')
+            return
+          end if
+        end do
+      end do
       do ib = 1, model%ntemp_init
         cl = model%temp_inits(ib)
         call resolve_cload(ctx, cl)

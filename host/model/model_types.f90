@@ -7,7 +7,7 @@ module model_types
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
   public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
   public :: dload_bx, dload_grav, dload_pressure, dload_user, model_find_surface
-  public :: initial_condition_t, init_stress, init_solution
+  public :: initial_condition_t, init_stress, init_solution, equation_t
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
@@ -137,6 +137,12 @@ module model_types
     type(source_pos_t) :: pos
   end type initial_condition_t
 
+  !> One *EQUATION: terms (node list, dof, coefficient in value); node sets expand into one equation per member.
+  type :: equation_t
+    type(cload_t), allocatable :: terms(:)
+    type(source_pos_t) :: pos
+  end type equation_t
+
   !> *SURFACE, TYPE=ELEMENT: element faces.
   type :: surface_t
     character(len=name_len) :: name = ''   !< upper-case name
@@ -228,6 +234,8 @@ module model_types
     integer :: ninit = 0
     type(cload_t), allocatable :: temp_inits(:) !< *INITIAL CONDITIONS, TYPE=TEMPERATURE lines (dof = 1)
     integer :: ntemp_init = 0
+    type(equation_t), allocatable :: equations(:) !< *EQUATION
+    integer :: nequation = 0
     type(boundary_t), allocatable :: initial_bcs(:) !< model-data *BOUNDARY (fixed, value 0 or given)
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)

@@ -454,12 +454,48 @@ def case_thermal(exe, out, user):
     close("UMAT clamped: RF1 = (-E alpha dT + c T1) A", r["X1.RF1"], -e * alpha * dt + c * t1, 1e-9)
 
 
+def stack_deck(path, tied):
+    """Two unit C3D8 cubes stacked along z, clamped at z = 0, the top moved by (0.05, 0, 0.1) under NLGEOM: one
+    mesh sharing the nodes at z = 1, or (tied) two meshes with coincident nodes joined by *EQUATION u_B - u_A = 0
+    (node sets of equal size, member by member)."""
+    base = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    out = ["*HEADING", "two stacked cubes (tests/regression/check_loads.py)", "*NODE, NSET=ALL"]
+    for k, z in enumerate([0.0, 1.0, 2.0]):
+        for a, (x, y) in enumerate(base):
+            out.append("%d, %g, %g, %g" % (10 * k + a + 1, x, y, z))
+    if tied:
+        for a, (x, y) in enumerate(base):
+            out.append("%d, %g, %g, 1." % (40 + a + 1, x, y))
+    out += ["*ELEMENT, TYPE=C3D8, ELSET=ALLE", "1, 1, 2, 3, 4, 11, 12, 13, 14"]
+    if tied:
+        out += ["2, 41, 42, 43, 44, 21, 22, 23, 24", "*NSET, NSET=IA", "11, 12, 13, 14", "*NSET, NSET=IB",
+                "41, 42, 43, 44", "*EQUATION", "2", "IB, 1, 1., IA, 1, -1.", "2", "IB, 2, 1., IA, 2, -1.", "2",
+                "IB, 3, 1., IA, 3, -1."]
+    else:
+        out += ["2, 11, 12, 13, 14, 21, 22, 23, 24"]
+    out += ["*NSET, NSET=BOT", "1, 2, 3, 4", "*NSET, NSET=TOP", "21, 22, 23, 24", "*NSET, NSET=MID", "11, 12, 13, 14",
+            "*SOLID SECTION, ELSET=ALLE, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3",
+            "*BOUNDARY", "BOT, ENCASTRE", "*STEP, NLGEOM=YES", "*STATIC", "0.25, 1.", "*BOUNDARY", "TOP, 1, 1, 0.05",
+            "TOP, 2, 2, 0.", "TOP, 3, 3, 0.1", "*NODE PRINT, NSET=TOP, TOTALS=YES", "RF1, RF3",
+            "*NODE PRINT, NSET=MID", "U1, U2, U3", "*END STEP"]
+    write(path, out)
+
+
+def case_equation(exe, out):
+    one = run(exe, out, "stack_one", lambda d: stack_deck(d, False))[-1]
+    two = run(exe, out, "stack_tied", lambda d: stack_deck(d, True))[-1]
+    # the same discrete problem: equal to the Newton tolerance (R_n = 5e-3 of the typical force, far smaller here
+    # after the quadratic last iteration)
+    for k in ("TOP.RF1", "TOP.RF3", "MID.U1", "MID.U2", "MID.U3"):
+        close("tied vs one mesh " + k, two[k], one[k], 1e-6, 1e-12)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal"])
+                                                      "lame3d", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
