@@ -137,7 +137,7 @@ endif()
 # concentrated loads, amplitudes and load propagation across steps (tests/regression/check_loads.py: decks written
 # by the script, checked against beam theory, the elastica and the linear response to the load history)
 set(LDFCZ_CHECK_LOADS "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py")
-foreach(case small large steps release visco equation)
+foreach(case small large steps release visco equation tie)
   add_test(NAME deck_cload_${case} COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/cload_${case} --case ${case})
   set_tests_properties(deck_cload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)

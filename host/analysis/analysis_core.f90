@@ -281,8 +281,8 @@ contains
         stat = 2
         write (msg, '(a,i0,a,i0)') 'a *BOUNDARY prescribes dof ', mod(i - 1, an%ndim) + 1, ' of node ', &
           model%node_id((i - 1) / an%ndim + 1)
-        errmsg = trim(msg)//', which an *EQUATION eliminates (its first term): prescribe another dof of the '// &
-          'equation instead'
+        errmsg = trim(msg)//', which an *EQUATION (its first term) or a *TIE (a slave node) eliminates: prescribe '// &
+          'another dof of the constraint, or drop it from the slave surface'
         return
       end if
     end do

@@ -6,6 +6,7 @@
 module linear_constraints
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
+  use element_faces, only: element_face_nodes
   implicit none
   private
   public :: constraint_set_t, constraints_build, constraints_extend, constraints_transform, constraints_residual, &
@@ -85,14 +86,17 @@ contains
         end do
       end associate
     end do
+    do k = 1, model%ntie
+      call add_tie(cs, model, k, used, stat, errmsg)
+      if (stat /= 0) return
+    end do
     do c = 1, cs%n
       do i = cs%ptr(c), cs%ptr(c + 1) - 1
         if (cs%of_dof(cs%mdof(i)) /= 0 .or. cs%mdof(i) == cs%slave(c)) then
           k = c
           stat = 2
-          errmsg = model%equations(1)%pos%file//': *EQUATION: a dof eliminated by one equation (its first term) '// &
-            'appears in another one or in its own: chains of equations are not supported (put the eliminated '// &
-            'dofs first only once)'
+          errmsg = 'ldfcz: *EQUATION/*TIE: a dof eliminated by one constraint (an equation''s first term, a tied '// &
+            'slave node) appears in another one: chains of constraints are not supported'
           return
         end if
       end do
@@ -112,6 +116,169 @@ contains
     end subroutine fail
 
   end subroutine constraints_build
+
+  !> *TIE k: every node of the slave surface that is not a node of the master surface is tied to the master face
+  !> it projects onto (within the position tolerance), u_s = sum_a N_a(xi) u_a for each displacement dof.
+  subroutine add_tie(cs, model, k, used, stat, errmsg)
+    type(constraint_set_t), intent(inout) :: cs          !< constraints
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(in) :: k                             !< tie
+    logical, intent(in) :: used(:)                       !< dofs attached to elements
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: j, a, nfn, loc(8), ie, nd, best, d, s, c
+    integer, allocatable :: snodes(:), mnodes(:, :), mn(:)
+    real(dp) :: xi(2), dist, bestd, bestxi(2), tol, nf(4), size_f
+    character(len=16) :: b1, b2
+    stat = 0
+    errmsg = ''
+    nd = model%ndim
+    associate (t => model%ties(k), sm => model%surfaces(model%ties(k)%slave), &
+        ms => model%surfaces(model%ties(k)%master))
+      allocate (mnodes(4, size(ms%relems)), mn(size(ms%relems)))
+      mnodes = 0
+      do j = 1, size(ms%relems)
+        ie = ms%relems(j)
+        call element_face_nodes(model%elem_kind(ie), ms%rfaces(j), loc, nfn)
+        if (.not. ((nd == 3 .and. nfn == 4) .or. (nd == 2 .and. nfn == 2))) then
+          call fail('master surface '//trim(ms%name)//': a face that is not a 4-node (3D) or 2-node (2D) face')
+          return
+        end if
+        mn(j) = nfn
+        mnodes(1:nfn, j) = model%conn(model%conn_ptr(ie) + loc(1:nfn) - 1)
+      end do
+      allocate (snodes(0))
+      do j = 1, size(sm%relems)
+        ie = sm%relems(j)
+        call element_face_nodes(model%elem_kind(ie), sm%rfaces(j), loc, nfn)
+        do a = 1, nfn
+          s = model%conn(model%conn_ptr(ie) + loc(a) - 1)
+          if (any(snodes == s) .or. any(mnodes == s)) cycle
+          snodes = [snodes, s]
+        end do
+      end do
+      do j = 1, size(snodes)
+        s = snodes(j)
+        best = 0
+        bestd = huge(1.0_dp)
+        do a = 1, size(mn)
+          call project(model%x(1:nd, mnodes(1:mn(a), a)), model%x(1:nd, s), xi, dist, size_f)
+          tol = t%tolerance
+          if (tol < 0.0_dp) tol = 0.05_dp * size_f
+          if (any(abs(xi(1:nd - 1)) > 1.0_dp + 1.0e-6_dp) .or. dist > tol) cycle
+          if (dist < bestd) then
+            bestd = dist
+            best = a
+            bestxi = xi
+          end if
+        end do
+        if (best == 0) then
+          write (b1, '(i0)') model%node_id(s)
+          call fail('slave node '//trim(b1)//' of surface '//trim(sm%name)//' projects onto no face of '// &
+            trim(ms%name)//' within the position tolerance')
+          return
+        end if
+        if (bestd > 1.0e-6_dp * max(1.0_dp, size_f)) then
+          write (b1, '(i0)') model%node_id(s)
+          write (b2, '(es10.3)') bestd
+          call fail('slave node '//trim(b1)//' is '//trim(adjustl(b2))//' away from the master surface: ldfcz '// &
+            'does not move slave nodes onto it (ADJUST); mesh the tied surfaces to coincide')
+          return
+        end if
+        if (nd == 3) then
+          nf = 0.25_dp * [(1 - bestxi(1)) * (1 - bestxi(2)), (1 + bestxi(1)) * (1 - bestxi(2)), &
+            (1 + bestxi(1)) * (1 + bestxi(2)), (1 - bestxi(1)) * (1 + bestxi(2))]
+        else
+          nf(1:2) = [0.5_dp * (1 - bestxi(1)), 0.5_dp * (1 + bestxi(1))]
+        end if
+        do d = 1, nd
+          c = (s - 1) * nd + d
+          if (.not. used(c)) cycle
+          if (cs%of_dof(c) /= 0) then
+            write (b1, '(i0)') model%node_id(s)
+            call fail('slave node '//trim(b1)//' is already constrained by another equation or tie')
+            return
+          end if
+          call append(cs, c, (mnodes(1:mn(best), best) - 1) * nd + d, nf(1:mn(best)))
+        end do
+      end do
+    end associate
+
+  contains
+
+    subroutine fail(msg)
+      character(len=*), intent(in) :: msg
+      character(len=16) :: bl
+      write (bl, '(i0)') model%ties(k)%pos%line
+      stat = 2
+      errmsg = model%ties(k)%pos%file//':'//trim(bl)//': *TIE: '//msg
+    end subroutine fail
+
+  end subroutine add_tie
+
+  !> Closest point of a face (2 nodes in 2D, 4 in 3D, bilinear) to point p: parent coordinates xi, distance, and
+  !> the face size (largest node distance from the first node).
+  pure subroutine project(xf, p, xi, dist, size_f)
+    real(dp), intent(in) :: xf(:, :), p(:)
+    real(dp), intent(out) :: xi(2), dist, size_f
+    real(dp) :: x(size(p)), g1(size(p)), g2(size(p)), r(size(p)), a11, a12, a22, b1, b2, det, nf(4)
+    integer :: it, nd, a
+    nd = size(p)
+    xi = 0.0_dp
+    size_f = 0.0_dp
+    do a = 2, size(xf, 2)
+      size_f = max(size_f, norm2(xf(:, a) - xf(:, 1)))
+    end do
+    do it = 1, 20
+      if (nd == 2) then
+        x = 0.5_dp * (1 - xi(1)) * xf(:, 1) + 0.5_dp * (1 + xi(1)) * xf(:, 2)
+        g1 = 0.5_dp * (xf(:, 2) - xf(:, 1))
+        r = p - x
+        xi(1) = xi(1) + dot_product(g1, r) / max(dot_product(g1, g1), tiny(1.0_dp))
+      else
+        nf = 0.25_dp * [(1 - xi(1)) * (1 - xi(2)), (1 + xi(1)) * (1 - xi(2)), (1 + xi(1)) * (1 + xi(2)), &
+          (1 - xi(1)) * (1 + xi(2))]
+        x = matmul(xf(:, 1:4), nf)
+        g1 = 0.25_dp * (-(1 - xi(2)) * xf(:, 1) + (1 - xi(2)) * xf(:, 2) + (1 + xi(2)) * xf(:, 3) - (1 + xi(2)) * xf(:, 4))
+        g2 = 0.25_dp * (-(1 - xi(1)) * xf(:, 1) - (1 + xi(1)) * xf(:, 2) + (1 + xi(1)) * xf(:, 3) + (1 - xi(1)) * xf(:, 4))
+        r = p - x
+        a11 = dot_product(g1, g1)
+        a12 = dot_product(g1, g2)
+        a22 = dot_product(g2, g2)
+        b1 = dot_product(g1, r)
+        b2 = dot_product(g2, r)
+        det = a11 * a22 - a12 * a12
+        if (abs(det) <= tiny(1.0_dp)) exit
+        xi = xi + [a22 * b1 - a12 * b2, a11 * b2 - a12 * b1] / det
+      end if
+      xi = max(-2.0_dp, min(2.0_dp, xi))
+    end do
+    if (nd == 2) then
+      x = 0.5_dp * (1 - xi(1)) * xf(:, 1) + 0.5_dp * (1 + xi(1)) * xf(:, 2)
+    else
+      nf = 0.25_dp * [(1 - xi(1)) * (1 - xi(2)), (1 + xi(1)) * (1 - xi(2)), (1 + xi(1)) * (1 + xi(2)), &
+        (1 - xi(1)) * (1 + xi(2))]
+      x = matmul(xf(:, 1:4), nf)
+    end if
+    dist = norm2(p - x)
+  end subroutine project
+
+  !> Append constraint u(slave) = sum w u(mdof) (weights below 1e-12 dropped).
+  pure subroutine append(cs, slave, mdof, w)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: slave, mdof(:)
+    real(dp), intent(in) :: w(:)
+    integer :: i
+    cs%slave = [cs%slave, slave]
+    do i = 1, size(mdof)
+      if (abs(w(i)) < 1.0e-12_dp) cycle
+      cs%mdof = [cs%mdof, mdof(i)]
+      cs%w = [cs%w, w(i)]
+    end do
+    cs%ptr = [cs%ptr, size(cs%mdof) + 1]
+    cs%n = cs%n + 1
+    cs%of_dof(slave) = cs%n
+  end subroutine append
 
   !> Extended element lists for the equation numbers eq (0: prescribed, unused or slave): every element dof keeps
   !> its position (a slave's equation is 0), the masters of its slaves are appended (or found among its dofs).

@@ -1,13 +1,15 @@
-!> Constraint keywords of the deck reader: *EQUATION (model data; linear homogeneous multi-point constraints).
+!> Constraint keywords of the deck reader: *EQUATION (model data; linear homogeneous multi-point constraints) and
+!> *TIE (slave surface nodes tied to master surface faces).
 module deck_constraints
-  use deck_lines, only: deck_normalize
-  use model_types, only: cload_t, equation_t, model_find_nset
+  use ldfcz_kinds, only: dp
+  use deck_lines, only: deck_normalize, deck_param_value, deck_has_param
+  use model_types, only: cload_t, equation_t, tie_t, model_find_nset, model_find_surface
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, &
     ctx_get_int
   implicit none
   private
-  public :: read_equation
+  public :: read_equation, read_tie
 
 contains
 
@@ -96,5 +98,57 @@ contains
       i = i + 1
     end do
   end subroutine read_equation
+
+  !> *TIE, NAME=[, POSITION TOLERANCE=][, ADJUST=NO]: data lines slave surface, master surface. ADJUST=YES (the
+  !> Abaqus default) moves nothing here: a slave node farther from the master surface than the tolerance is an
+  !> error at the start of the analysis; TYPE=SURFACE TO SURFACE is tied node to surface (accepted by the issue).
+  subroutine read_tie(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(tie_t) :: t
+    type(tie_t), allocatable :: tmp(:)
+    character(len=flen), allocatable :: f(:)
+    character(len=:), allocatable :: v
+    integer :: i, n
+    call ctx_allow_params(ctx, [character(len=20) :: 'NAME', 'POSITION TOLERANCE', 'ADJUST', 'TYPE'])
+    if (ctx%stat /= 0) return
+    v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
+    if (v /= '' .and. v /= 'SURFACE TO SURFACE' .and. v /= 'NODE TO SURFACE') then
+      call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (NODE TO SURFACE, SURFACE TO SURFACE: both tie '// &
+        'the slave nodes to the master faces here)')
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'ADJUST'))
+    if (v /= '' .and. v /= 'YES' .and. v /= 'NO') then
+      call ctx_fail(ctx, ctx%ir, 'ADJUST must be YES or NO')
+      return
+    end if
+    t%name = deck_normalize(deck_param_value(ctx%params, 'NAME'))
+    if (deck_has_param(ctx%params, 'POSITION TOLERANCE')) then
+      if (.not. ctx_get_real(ctx, ctx%ir, deck_param_value(ctx%params, 'POSITION TOLERANCE'), t%tolerance)) return
+    end if
+    do i = ctx%ir + 1, ctx%ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      if (n < 2) then
+        call ctx_fail(ctx, i, 'expected: slave surface, master surface')
+        return
+      end if
+      t%slave = model_find_surface(ctx%model, deck_normalize(f(1)))
+      t%master = model_find_surface(ctx%model, deck_normalize(f(2)))
+      if (t%slave == 0 .or. t%master == 0) then
+        call ctx_fail(ctx, i, 'undefined surface '//deck_normalize(f(merge(1, 2, t%slave == 0))))
+        return
+      end if
+      t%pos = ctx_pos(ctx, i)
+      if (.not. allocated(ctx%model%ties)) allocate (ctx%model%ties(2))
+      if (ctx%model%ntie == size(ctx%model%ties)) then
+        allocate (tmp(2 * ctx%model%ntie))
+        tmp(1:ctx%model%ntie) = ctx%model%ties(1:ctx%model%ntie)
+        call move_alloc(tmp, ctx%model%ties)
+      end if
+      ctx%model%ntie = ctx%model%ntie + 1
+      ctx%model%ties(ctx%model%ntie) = t
+    end do
+    if (ctx%ir_next == ctx%ir + 1) call ctx_fail(ctx, ctx%ir, 'no data line (slave surface, master surface)')
+  end subroutine read_tie
 
 end module deck_constraints

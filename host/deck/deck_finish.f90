@@ -225,9 +225,44 @@ contains
           return
         end if
       end do
+      if (ctx%stat == 0) call resolve_surfaces(ctx)
       if (ctx%stat == 0) call resolve_dloads(ctx)
     end associate
   end subroutine finish_model
+
+  !> Element-based surfaces: element sets and ids expanded into (element index, face) pairs.
+  subroutine resolve_surfaces(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: isf, m, j, id, ie
+    integer, allocatable :: el(:), fc(:)
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      do isf = 1, model%nsurf
+        allocate (el(0), fc(0))
+        do m = 1, model%surfaces(isf)%n
+          if (model%surfaces(isf)%elsets(m) > 0) then
+            j = model%surfaces(isf)%elsets(m)
+            el = [el, model%elsets(j)%elems]
+            fc = [fc, (model%surfaces(isf)%faces(m), id = 1, size(model%elsets(j)%elems))]
+          else
+            id = -model%surfaces(isf)%elems(m)
+            ie = 0
+            if (id <= size(model%elem_index)) ie = model%elem_index(id)
+            if (ie == 0) then
+              pos = model%surfaces(isf)%pos
+              call ctx_fail_pos(ctx, pos, 'surface '//trim(model%surfaces(isf)%name)//': undefined element '// &
+                itoa(id))
+              return
+            end if
+            el = [el, ie]
+            fc = [fc, model%surfaces(isf)%faces(m)]
+          end if
+        end do
+        call move_alloc(el, model%surfaces(isf)%relems)
+        call move_alloc(fc, model%surfaces(isf)%rfaces)
+      end do
+    end associate
+  end subroutine resolve_surfaces
 
   !> Distributed loads: element sets and surfaces expanded into element lists with their faces, ids resolved;
   !> pressure, BX..BZ and GRAV only on continuum elements (GRAV with a *DENSITY), Un only on user elements.

@@ -7,7 +7,7 @@ module model_types
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
   public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
   public :: dload_bx, dload_grav, dload_pressure, dload_user, model_find_surface
-  public :: initial_condition_t, init_stress, init_solution, equation_t
+  public :: initial_condition_t, init_stress, init_solution, equation_t, tie_t
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
@@ -143,6 +143,15 @@ module model_types
     type(source_pos_t) :: pos
   end type equation_t
 
+  !> One *TIE pair: the nodes of the slave surface tied to the faces of the master surface.
+  type :: tie_t
+    character(len=name_len) :: name = ''
+    integer :: slave = 0                   !< surface index
+    integer :: master = 0                  !< surface index
+    real(dp) :: tolerance = -1.0_dp        !< POSITION TOLERANCE (< 0: default, 5 % of the master face size)
+    type(source_pos_t) :: pos
+  end type tie_t
+
   !> *SURFACE, TYPE=ELEMENT: element faces.
   type :: surface_t
     character(len=name_len) :: name = ''   !< upper-case name
@@ -150,6 +159,8 @@ module model_types
     integer, allocatable :: faces(:)       !< face 1..6 per element
     integer, allocatable :: elsets(:)      !< per data line: element set index (0: one element)
     integer :: n = 0                       !< data lines
+    integer, allocatable :: relems(:)      !< resolved element indices (finish_model), one per face
+    integer, allocatable :: rfaces(:)      !< their faces
     type(source_pos_t) :: pos
   end type surface_t
 
@@ -236,6 +247,8 @@ module model_types
     integer :: ntemp_init = 0
     type(equation_t), allocatable :: equations(:) !< *EQUATION
     integer :: nequation = 0
+    type(tie_t), allocatable :: ties(:)    !< *TIE
+    integer :: ntie = 0
     type(boundary_t), allocatable :: initial_bcs(:) !< model-data *BOUNDARY (fixed, value 0 or given)
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)
