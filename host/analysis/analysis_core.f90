@@ -13,6 +13,7 @@ module analysis_core
     sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
   use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
+  use solver_text, only: itoa
   use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
   implicit none
   private
@@ -570,7 +571,7 @@ contains
             if (nv /= an%mats(model%elem_section(ie))%nstatv) then
               write (c, '(i0)') an%mats(model%elem_section(ie))%nstatv
               stat = 2
-              errmsg = ic%pos%file//':'//itoa_line(ic%pos%line)//': *INITIAL CONDITIONS: element '//trim(b)// &
+              errmsg = ic%pos%file//':'//itoa(ic%pos%line)//': *INITIAL CONDITIONS: element '//trim(b)// &
                 ' has NSTATV = '//trim(c)//' state variables (*DEPVAR); TYPE=SOLUTION needs exactly that many '// &
                 'values on one logical data line (continue lines with a trailing comma)'
               return
@@ -583,14 +584,6 @@ contains
       end associate
     end do
   end subroutine apply_initial_conditions
-
-  pure function itoa_line(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=16) :: b
-    write (b, '(i0)') i
-    s = trim(b)
-  end function itoa_line
 
   !> Density of the material of section isec (0 without *DENSITY).
   pure real(dp) function model_density(model, isec) result(rho)

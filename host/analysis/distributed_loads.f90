@@ -8,6 +8,7 @@ module distributed_loads
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user
   use element_faces, only: element_face_nodes
+  use solver_text, only: itoa
   implicit none
   private
   public :: dload_state_t, dload_step_begin, dload_element, dload_uel_arrays, dload_has
@@ -335,13 +336,5 @@ contains
     end if
     ds%n = ds%n + 1
   end subroutine grow
-
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=16) :: b
-    write (b, '(i0)') i
-    s = trim(b)
-  end function itoa
 
 end module distributed_loads
