@@ -9,7 +9,7 @@ module deck_constraints
     ctx_get_int
   implicit none
   private
-  public :: read_equation, read_tie
+  public :: read_equation, read_tie, read_mpc
 
 contains
 
@@ -150,5 +150,83 @@ contains
     end do
     if (ctx%ir_next == ctx%ir + 1) call ctx_fail(ctx, ctx%ir, 'no data line (slave surface, master surface)')
   end subroutine read_tie
+
+  !> *MPC: data lines "TIE, dependent node or node set, independent node or node set": every displacement dof of
+  !> the first node equal to that of the second (stored as *EQUATION u_a - u_b = 0, the first eliminated). Other MPC
+  !> types (BEAM, PIN, ... need rotational dofs or are not implemented) are errors.
+  subroutine read_mpc(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(equation_t) :: eqn
+    type(equation_t), allocatable :: tmp(:)
+    character(len=flen), allocatable :: f(:)
+    character(len=:), allocatable :: typ
+    integer :: i, n, d, nd, j, id, iset
+    integer, allocatable :: nodes(:, :)
+    call ctx_allow_params(ctx, [character(len=8) ::])
+    if (ctx%stat /= 0) return
+    nd = ctx%model%ndim
+    if (nd == 0) nd = 3
+    do i = ctx%ir + 1, ctx%ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      typ = deck_normalize(f(1))
+      if (typ /= 'TIE') then
+        call ctx_fail(ctx, i, 'MPC type '//typ//' is not supported (TIE; BEAM and PIN need rotational dofs)')
+        return
+      end if
+      if (n /= 3) then
+        call ctx_fail(ctx, i, 'expected: TIE, dependent node or node set, independent node or node set')
+        return
+      end if
+      do j = 1, 2
+        if (verify(trim(f(j + 1)), '0123456789+-') == 0) then
+          if (.not. ctx_get_int(ctx, i, f(j + 1), id)) return
+          if (id < 1) then
+            call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
+            return
+          end if
+          if (j == 1) allocate (nodes(1, 2))
+          if (size(nodes, 1) /= 1) then
+            call ctx_fail(ctx, i, 'a node and a node set of different sizes')
+            return
+          end if
+          nodes(1, j) = -id
+        else
+          iset = model_find_nset(ctx%model, deck_normalize(f(j + 1)))
+          if (iset == 0) then
+            call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(j + 1)))
+            return
+          end if
+          if (j == 1) allocate (nodes(ctx%model%nsets(iset)%n, 2))
+          if (size(nodes, 1) /= ctx%model%nsets(iset)%n) then
+            call ctx_fail(ctx, i, 'the two node sets differ in size')
+            return
+          end if
+          nodes(:, j) = ctx%model%nsets(iset)%nodes(1:ctx%model%nsets(iset)%n)
+        end if
+      end do
+      do d = 1, nd
+        if (allocated(eqn%terms)) deallocate (eqn%terms)
+        allocate (eqn%terms(2))
+        eqn%pos = ctx_pos(ctx, i)
+        eqn%terms(1)%nodes = nodes(:, 1)
+        eqn%terms(1)%dof = d
+        eqn%terms(1)%value = 1.0_dp
+        eqn%terms(1)%pos = eqn%pos
+        eqn%terms(2)%nodes = nodes(:, 2)
+        eqn%terms(2)%dof = d
+        eqn%terms(2)%value = -1.0_dp
+        eqn%terms(2)%pos = eqn%pos
+        if (.not. allocated(ctx%model%equations)) allocate (ctx%model%equations(4))
+        if (ctx%model%nequation == size(ctx%model%equations)) then
+          allocate (tmp(2 * ctx%model%nequation))
+          tmp(1:ctx%model%nequation) = ctx%model%equations(1:ctx%model%nequation)
+          call move_alloc(tmp, ctx%model%equations)
+        end if
+        ctx%model%nequation = ctx%model%nequation + 1
+        ctx%model%equations(ctx%model%nequation) = eqn
+      end do
+      deallocate (nodes)
+    end do
+  end subroutine read_mpc
 
 end module deck_constraints

@@ -15,7 +15,7 @@ module deck_reader
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print
   use deck_loads, only: read_cload, read_dload, read_dsload, read_surface
   use deck_fields, only: read_initial_conditions, read_temperature
-  use deck_constraints, only: read_equation, read_tie
+  use deck_constraints, only: read_equation, read_tie, read_mpc
   use deck_finish, only: finish_model
   implicit none
   private
@@ -144,6 +144,8 @@ contains
       call read_equation(ctx)
     case ('*TIE')
       call read_tie(ctx)
+    case ('*MPC')
+      call read_mpc(ctx)
     case ('*STEP')
       call read_step(ctx)
     case ('*STATIC', '*VISCO')
@@ -180,7 +182,7 @@ contains
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
           '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
-          '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE')
+          '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

@@ -454,7 +454,7 @@ def case_thermal(exe, out, user):
     close("UMAT clamped: RF1 = (-E alpha dT + c T1) A", r["X1.RF1"], -e * alpha * dt + c * t1, 1e-9)
 
 
-def stack_deck(path, tied):
+def stack_deck(path, tied, mpc=False):
     """Two unit C3D8 cubes stacked along z, clamped at z = 0, the top moved by (0.05, 0, 0.1) under NLGEOM: one
     mesh sharing the nodes at z = 1, or (tied) two meshes with coincident nodes joined by *EQUATION u_B - u_A = 0
     (node sets of equal size, member by member)."""
@@ -469,8 +469,12 @@ def stack_deck(path, tied):
     out += ["*ELEMENT, TYPE=C3D8, ELSET=ALLE", "1, 1, 2, 3, 4, 11, 12, 13, 14"]
     if tied:
         out += ["2, 41, 42, 43, 44, 21, 22, 23, 24", "*NSET, NSET=IA", "11, 12, 13, 14", "*NSET, NSET=IB",
-                "41, 42, 43, 44", "*EQUATION", "2", "IB, 1, 1., IA, 1, -1.", "2", "IB, 2, 1., IA, 2, -1.", "2",
-                "IB, 3, 1., IA, 3, -1."]
+                "41, 42, 43, 44"]
+        if mpc:
+            out += ["*MPC", "TIE, IB, IA"]
+        else:
+            out += ["*EQUATION", "2", "IB, 1, 1., IA, 1, -1.", "2", "IB, 2, 1., IA, 2, -1.", "2",
+                    "IB, 3, 1., IA, 3, -1."]
     else:
         out += ["2, 11, 12, 13, 14, 21, 22, 23, 24"]
     out += ["*NSET, NSET=BOT", "1, 2, 3, 4", "*NSET, NSET=TOP", "21, 22, 23, 24", "*NSET, NSET=MID", "11, 12, 13, 14",
@@ -484,10 +488,12 @@ def stack_deck(path, tied):
 def case_equation(exe, out):
     one = run(exe, out, "stack_one", lambda d: stack_deck(d, False))[-1]
     two = run(exe, out, "stack_tied", lambda d: stack_deck(d, True))[-1]
+    three = run(exe, out, "stack_mpc", lambda d: stack_deck(d, True, mpc=True))[-1]
     # the same discrete problem: equal to the Newton tolerance (R_n = 5e-3 of the typical force, far smaller here
     # after the quadratic last iteration)
     for k in ("TOP.RF1", "TOP.RF3", "MID.U1", "MID.U2", "MID.U3"):
         close("tied vs one mesh " + k, two[k], one[k], 1e-6, 1e-12)
+        close("*MPC TIE vs one mesh " + k, three[k], one[k], 1e-6, 1e-12)
 
 
 def tie_deck(path, na=2, nb=3):

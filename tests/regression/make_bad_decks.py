@@ -124,6 +124,8 @@ CASES = [
      "*EQUATION\n3\n5, 1, 1., 6, 1, -1.\n*STEP, NLGEOM=YES", "*EQUATION", "5, 1, 1., 6, 1"),
     ("tie_undefined_surface", "*TIE with an undefined surface", "*STEP, NLGEOM=YES",
      "*SURFACE, NAME=S1\nCUBE, S2\n*TIE, NAME=T\nS1, NOPE\n*STEP, NLGEOM=YES", "*TIE", "S1, NOPE"),
+    ("mpc_beam", "*MPC BEAM (needs rotational dofs)", "*STEP, NLGEOM=YES", "*MPC\nBEAM, 5, 1\n*STEP, NLGEOM=YES",
+     "*MPC", "BEAM, 5, 1"),
     ("initial_field", "*INITIAL CONDITIONS, TYPE=FIELD", "*STEP, NLGEOM=YES",
      "*INITIAL CONDITIONS, TYPE=FIELD\nALL, 20.\n*STEP, NLGEOM=YES", "*INITIAL CONDITIONS",
      "*INITIAL CONDITIONS, TYPE=FIELD"),
