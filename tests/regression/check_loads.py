@@ -355,19 +355,21 @@ def case_uel_loads(exe, out, user):
     k, m1, m2 = 50.0, 2.0, 3.0
     lines = ["*HEADING", "user element reading JDLTYP/ADLMAG/DDLMAG (tests/regression/check_loads.py)",
              "*NODE, NSET=ALL", "1, 0., 0., 0.", "2, 1., 0., 0.", "*NSET, NSET=FIX", "1,", "*NSET, NSET=FREE", "2,",
-             "*USER ELEMENT, TYPE=U7, NODES=2, COORDINATES=3, PROPERTIES=1, VARIABLES=1", "1, 2, 3",
+             "*USER ELEMENT, TYPE=U7, NODES=2, COORDINATES=3, PROPERTIES=1, VARIABLES=2", "1, 2, 3",
              "*ELEMENT, TYPE=U7, ELSET=SPRING", "1, 1, 2", "*UEL PROPERTY, ELSET=SPRING", "%g" % k,
-             "*BOUNDARY", "FIX, 1, 3", "FREE, 3, 3",
+             "*BOUNDARY", "FIX, 1, 3",
              "*STEP", "*STATIC, DIRECT", "0.25, 1.", "*DLOAD", "SPRING, U1, %g" % m1, "SPRING, U2, %g" % m1,
-             "*NODE PRINT, NSET=FREE", "U1, U2", "*END STEP",
+             "*TEMPERATURE", "FREE, %g" % m1,
+             "*NODE PRINT, NSET=FREE", "U1, U2, U3", "*END STEP",
              "*STEP", "*STATIC, DIRECT", "0.25, 1.", "*DLOAD", "SPRING, U1, %g" % m2, "SPRING, U2, %g" % m2,
-             "*END STEP"]
+             "*TEMPERATURE", "FREE, %g" % m2, "*END STEP"]
     rows = run(exe, out, "uel_loads", lambda d: write(d, lines), user=user)
     for r in rows:
         s = r["step_time"]
         mag = m1 * s if r["step"] == 1 else m1 + (m2 - m1) * s
         close("step %d time %g U1 = ADLMAG / k" % (r["step"], s), r["FREE.U1"], mag / k, 1e-12)
         close("step %d time %g U2 = sum DDLMAG / k" % (r["step"], s), r["FREE.U2"], mag / k, 1e-12)
+        close("step %d time %g U3 = PREDEF temperature / k" % (r["step"], s), r["FREE.U3"], mag / k, 1e-12)
 
 
 def cube_deck(path, init, clamped, material, step_lines=()):
