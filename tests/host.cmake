@@ -145,3 +145,32 @@ set_tests_properties(deck_field_output PROPERTIES LABELS "deck" TIMEOUT 300)
 add_test(NAME deck_dcb_orientation COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_dcb.py
   --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/deck_dcb_orientation)
 set_tests_properties(deck_dcb_orientation PROPERTIES LABELS "deck" TIMEOUT 600)
+# concentrated loads, amplitudes and load propagation across steps (tests/regression/check_loads.py: decks written
+# by the script, checked against beam theory, the elastica and the linear response to the load history)
+set(LDFCZ_CHECK_LOADS "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py")
+foreach(case small large steps release visco equation tie)
+  add_test(NAME deck_cload_${case} COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/cload_${case} --case ${case})
+  set_tests_properties(deck_cload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+# distributed loads: gravity column (exact), thick cylinder under *DSLOAD/*DLOAD pressure (Lame, CPE4 and C3D8),
+# follower pressure inflating a neo-Hookean ring (quadratic Newton convergence), a UEL reading its Un loads
+foreach(case gravity lame2d lame3d)
+  add_test(NAME deck_dload_${case} COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/dload_${case} --case ${case})
+  set_tests_properties(deck_dload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+add_test(NAME deck_dload_balloon COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/dload_balloon --case balloon --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90)
+add_test(NAME deck_dload_balloon3d COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/dload_balloon3d --case balloon3d
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90)
+add_test(NAME deck_dload_uel COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/dload_uel --case uel_loads --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_dload.f90)
+add_test(NAME deck_initial_stress COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/initial_stress --case initial_stress
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
+add_test(NAME deck_thermal_expansion COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/thermal --case thermal --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
+set_tests_properties(deck_dload_balloon deck_dload_balloon3d deck_dload_uel deck_initial_stress deck_thermal_expansion PROPERTIES
+  LABELS "deck" TIMEOUT 300)

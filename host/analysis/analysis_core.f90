@@ -12,12 +12,16 @@ module analysis_core
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
     sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
+  use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
+  use solver_text, only: itoa
+  use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
   implicit none
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
   public :: analysis_restore, pnewdt_large, elem_type_name
 
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
+  integer, parameter :: mdload = 8   !< MDLOAD: distributed loads of a user element at most (Un on one element)
 
   !> State of one element (integration-point arrays of continuum elements, SVARS and ENERGY of user elements).
   type :: elem_state_t
@@ -50,6 +54,13 @@ module analysis_core
     real(dp), allocatable :: u(:)               !< current total displacement
     real(dp), allocatable :: u_conv(:)          !< converged displacement
     real(dp), allocatable :: fint(:)            !< internal force (all dofs)
+    real(dp), allocatable :: fext(:)            !< external nodal force (all dofs) at the end of the increment
+    real(dp), allocatable :: fdl(:)             !< distributed-load nodal forces (all dofs) at the current estimate
+    real(dp), allocatable :: temp_start(:)      !< (nnode) temperatures at the start of the increment
+    real(dp), allocatable :: temp_end(:)        !< (nnode) temperatures at the end of the increment
+    real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
+    type(dload_state_t) :: dl                   !< distributed loads of the current step (distributed_loads)
+    type(constraint_set_t) :: cs                !< *EQUATION constraints (linear_constraints), eliminated
     real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
     type(sparse_system_t) :: sys                !< sparse tangent
     logical :: sys_ready = .false.
@@ -168,6 +179,7 @@ contains
       associate (mt => model%materials(im), sm => an%mats(is))
         sm%thickness = model%sections(is)%thickness
         sm%cmname = mt%given_name
+        sm%alpha = mt%alpha
         if (mt%has_elastic) then
           sm%kind = SOLID_MAT_ELASTIC
           sm%e = mt%young
@@ -220,12 +232,27 @@ contains
       end if
       an%conv(ie)%energy = 0.0_dp
     end do
+    call apply_initial_conditions(an, model, stat, errmsg)
+    if (stat /= 0) return
+    call constraints_build(an%cs, model, an%used, stat, errmsg)
+    if (stat /= 0) return
+    ! initial temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 elsewhere), in deck order
+    allocate (an%temp_start(model%nnode), an%temp_end(model%nnode))
+    an%temp_start = 0.0_dp
+    do k = 1, model%ntemp_init
+      an%temp_start(model%temp_inits(k)%nodes) = model%temp_inits(k)%value
+    end do
+    an%temp_end = an%temp_start
     an%trial = an%conv
     allocate (an%u(an%ndof), an%u_conv(an%ndof), an%fint(an%ndof), an%fe(an%elem_ptr(model%nelem + 1) - 1))
     an%u = 0.0_dp
     an%u_conv = 0.0_dp
     an%fint = 0.0_dp
     an%fe = 0.0_dp
+    allocate (an%fext(an%ndof), an%fdl(an%ndof), an%fdle(size(an%fe)))
+    an%fext = 0.0_dp
+    an%fdl = 0.0_dp
+    an%fdle = 0.0_dp
     allocate (an%prescribed(an%ndof), an%eq(an%ndof))
     an%prescribed = .false.
     an%eq = 0
@@ -247,9 +274,17 @@ contains
     eq_new = 0
     n = 0
     do i = 1, an%ndof
-      if (an%used(i) .and. .not. an%prescribed(i)) then
+      if (an%used(i) .and. .not. an%prescribed(i) .and. an%cs%of_dof(i) == 0) then
         n = n + 1
         eq_new(i) = n
+      end if
+      if (an%prescribed(i) .and. an%cs%of_dof(i) /= 0) then
+        stat = 2
+        write (msg, '(a,i0,a,i0)') 'a *BOUNDARY prescribes dof ', mod(i - 1, an%ndim) + 1, ' of node ', &
+          model%node_id((i - 1) / an%ndim + 1)
+        errmsg = trim(msg)//', which an *EQUATION (its first term) or a *TIE (a slave node) eliminates: prescribe '// &
+          'another dof of the constraint, or drop it from the slave surface'
+        return
       end if
     end do
     if (an%sys_ready .and. all(eq_new == an%eq)) return
@@ -274,8 +309,18 @@ contains
       if (an%eq(i) > 0) eq_node(an%eq(i)) = (i - 1) / an%ndim + 1
     end do
     an%elem_eq = an%eq(an%elem_dof)
-    call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
-      symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+    if (an%cs%n > 0) then
+      ! eliminated dofs: extended element lists (masters appended), colours of the extended lists
+      if (allocated(an%cs%xptr)) deallocate (an%cs%xptr, an%cs%xeq, an%cs%xdof, an%cs%tptr, an%cs%trow, &
+        an%cs%tcol, an%cs%tw)
+      call constraints_extend(an%cs, an%elem_ptr, an%elem_dof, an%eq)
+      call color_elements(model%nelem, an%ndof, an%cs%xptr, an%cs%xdof, an%ncolor, an%color_ptr, an%color_elem)
+      call sparse_setup(an%sys, n, an%cs%xptr, an%cs%xeq, eq_node, an%symmetric, stat, msg, &
+        symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+    else
+      call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
+        symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+    end if
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
       stat = 2
@@ -301,8 +346,8 @@ contains
     real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
     integer, intent(out) :: stat                         !< 0 ok, 1 an element failed
     character(len=:), allocatable, intent(out) :: errmsg !< message of the first failure
-    integer :: ie, ic, c, n, k, fail_elem, st
-    real(dp), allocatable :: ke(:, :), fel(:)
+    integer :: ie, ic, c, n, k, fail_elem, st, m
+    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :)
     real(dp) :: pn
     character(len=256) :: msg, first_msg
     integer(i8) :: c0, c1, rate
@@ -314,10 +359,12 @@ contains
     fail_elem = huge(1)
     first_msg = ''
     if (want_k) call sparse_zero(an%sys)
+    an%fdle = 0.0_dp
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
-    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg)
+    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, m)
     allocate (ke(an%max_ndofel, an%max_ndofel), fel(an%max_ndofel))
+    allocate (kx(max(1, an%cs%max_x), max(1, an%cs%max_x)))
     do c = 1, an%ncolor
       !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min)
       do ic = an%color_ptr(c), an%color_ptr(c + 1) - 1
@@ -342,16 +389,24 @@ contains
         an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
         if (want_k) then
           if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
-          call sparse_add_element(an%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+          if (an%cs%n > 0) then
+            ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
+            call constraints_transform(an%cs, ie, ke(1:n, 1:n), m, kx)
+            call sparse_add_element(an%sys, ie, kx(1:m, 1:m), exclusive=.true.)
+          else
+            call sparse_add_element(an%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+          end if
         end if
       end do
       !$omp end do
     end do
-    deallocate (ke, fel)
+    deallocate (ke, fel, kx)
     !$omp end parallel
     an%fint = 0.0_dp
+    an%fdl = 0.0_dp
     do k = 1, size(an%elem_dof)
       an%fint(an%elem_dof(k)) = an%fint(an%elem_dof(k)) + an%fe(k)
+      an%fdl(an%elem_dof(k)) = an%fdl(an%elem_dof(k)) + an%fdle(k)
     end do
     if (fail_elem /= huge(1)) then
       stat = 1
@@ -376,9 +431,9 @@ contains
     character(len=*), intent(out) :: msg
     integer :: nn, a, iu, ip, mcrd, nsv
     real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 8), energy(8), svars(1)
-    real(dp) :: params(1), adlmag(1, 1), ddlmag(1, 1), e2(2)
+    real(dp) :: params(1), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
-    integer :: jdltyp(1, 1), lflags(5)
+    integer :: jdltyp(mdload, 1), lflags(5), ndload, im
     integer, allocatable :: jprops(:)
     character(len=16) :: b
 
@@ -394,7 +449,11 @@ contains
       do a = 1, nn
         xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
       end do
-      predef = 0.0_dp
+      ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment (Abaqus UEL)
+      do a = 1, nn
+        predef(1, 1, a) = an%temp_end(model%conn(model%conn_ptr(ie) + a - 1))
+        predef(2, 1, a) = predef(1, 1, a) - an%temp_start(model%conn(model%conn_ptr(ie) + a - 1))
+      end do
       ip = model%elem_uelprop(ie)
       if (ip > 0) then
         props = model%uelprops(ip)%props
@@ -414,14 +473,15 @@ contains
       v = 0.0_dp
       acc = 0.0_dp
       params = 0.0_dp
-      jdltyp = 0
-      adlmag = 0.0_dp
-      ddlmag = 0.0_dp
+      ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
+      ! DDLMAG(k,1) its increment (Abaqus UEL interface)
+      call dload_uel_arrays(an%dl, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
+        ddlmag(:, 1))
       ! LFLAGS(3) = 1: RHS and AMATRX; 5: RHS only (a reused factorization needs no tangent)
       lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, 0]
       call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
-        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, 0, jdltyp, &
-        adlmag, predef, 1, lflags, n, ddlmag, 1, pnewdt, jprops, model%utypes(iu)%njprops, period)
+        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
+        adlmag, predef, 1, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
       fel = -rhs(:, 1)
       if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
         write (b, '(i0)') model%elem_id(ie)
@@ -441,7 +501,10 @@ contains
         call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
           an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
           model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)))
+          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
+          temp_nodes=an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
+          dtemp_nodes=an%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
+          an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)))
         st%energy = 0.0_dp
         st%energy(2) = e2(1)
         st%energy(4) = e2(2)
@@ -451,8 +514,87 @@ contains
         msg = 'element '//trim(b)//': '//trim(msg)
         stat = 1
       end if
+      if (stat == 0 .and. dload_has(an%dl, ie)) then
+        ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
+        im = model%elem_section(ie)
+        rho = 0.0_dp
+        if (im > 0) rho = model_density(model, im)
+        associate (g => an%geo(an%elem_geo(ie)))
+          call dload_element(an%dl, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue, nlgeom, &
+            g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, fl, kl)
+        end associate
+        an%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
+        if (want_k) ke = ke + kl
+      end if
     end if
   end subroutine element_compute
+
+  !> *INITIAL CONDITIONS, TYPE=STRESS (every integration point of the element gets the given stress; not in
+  !> equilibrium, it is equilibrated by the first increment as in Abaqus without *GEOSTATIC) and TYPE=SOLUTION (the
+  !> UMAT's NSTATV state variables at every integration point), in deck order (a later line wins).
+  subroutine apply_initial_conditions(an, model, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: k, j, ie, nt, nv, ip
+    character(len=16) :: b, c
+    stat = 0
+    errmsg = ''
+    do k = 1, model%ninit
+      associate (ic => model%inits(k))
+        do j = 1, size(ic%elems)
+          ie = ic%elems(j)
+          write (b, '(i0)') model%elem_id(ie)
+          write (c, '(i0)') ic%pos%line
+          if (model%elem_kind(ie) == etype_user) then
+            stat = 2
+            errmsg = ic%pos%file//':'//trim(c)//': *INITIAL CONDITIONS: element '//trim(b)//' is a user element '// &
+              '(initial stress and solution only for continuum elements)'
+            return
+          end if
+          nv = size(ic%values)
+          if (ic%kind == 1) then
+            nt = size(an%conv(ie)%stress, 1)
+            if (nv > nt) then
+              if (any(ic%values(nt + 1:) /= 0.0_dp)) then
+                stat = 2
+                errmsg = ic%pos%file//':'//trim(c)//': *INITIAL CONDITIONS: element '//trim(b)//' has only '// &
+                  char(48 + nt)//' stress components'
+                return
+              end if
+            end if
+            do ip = 1, size(an%conv(ie)%stress, 2)
+              an%conv(ie)%stress(1:min(nt, nv), ip) = ic%values(1:min(nt, nv))
+            end do
+          else
+            if (nv /= an%mats(model%elem_section(ie))%nstatv) then
+              write (c, '(i0)') an%mats(model%elem_section(ie))%nstatv
+              stat = 2
+              errmsg = ic%pos%file//':'//itoa(ic%pos%line)//': *INITIAL CONDITIONS: element '//trim(b)// &
+                ' has NSTATV = '//trim(c)//' state variables (*DEPVAR); TYPE=SOLUTION needs exactly that many '// &
+                'values on one logical data line (continue lines with a trailing comma)'
+              return
+            end if
+            do ip = 1, size(an%conv(ie)%statev, 2)
+              an%conv(ie)%statev(1:nv, ip) = ic%values
+            end do
+          end if
+        end do
+      end associate
+    end do
+  end subroutine apply_initial_conditions
+
+  !> Density of the material of section isec (0 without *DENSITY).
+  pure real(dp) function model_density(model, isec) result(rho)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: isec         !< section
+    integer :: k
+    rho = 0.0_dp
+    do k = 1, model%nmat
+      if (model%materials(k)%name == model%sections(isec)%material) rho = model%materials(k)%density
+    end do
+  end function model_density
 
   !> The increment converged: the trial state becomes the converged one.
   subroutine analysis_commit(an)

@@ -25,7 +25,7 @@ contains
     real(dp), intent(in) :: ttot                   !< total time of the frame
     type(step_t), intent(in) :: step               !< the step whose field request applies
     type(output_vtu_t) :: fr
-    integer :: ie, nn, k, ncell, nip, ip, nsv, h, nt
+    integer :: ie, nn, k, ncell, nip, ip, nsv, h, nt, i
     real(dp) :: s(6), e(6), p(3)
     logical :: want_strain
     ncell = model%nelem
@@ -36,7 +36,9 @@ contains
     do k = 1, model%nnode
       fr%u(1:model%ndim, k) = an%u_conv((k - 1) * model%ndim + 1:k * model%ndim)
       do h = 1, model%ndim
-        if (an%prescribed((k - 1) * model%ndim + h)) fr%rf(h, k) = an%fint((k - 1) * model%ndim + h)
+        i = (k - 1) * model%ndim + h
+        ! reaction = internal minus applied (concentrated and distributed) force on a prescribed dof
+        if (an%prescribed(i)) fr%rf(h, k) = an%fint(i) - an%fext(i) - an%fdl(i)
       end do
     end do
     allocate (fr%cell_type(ncell), fr%cell_ptr(ncell + 1), fr%cell_conn(size(model%conn)), fr%cell_id(ncell))

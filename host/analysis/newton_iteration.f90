@@ -4,6 +4,7 @@ module newton_iteration
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
   use analysis_core, only: analysis_t, analysis_assemble
+  use linear_constraints, only: constraints_residual, constraints_apply
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
     sparse_is_factored, sparse_solve_krylov, sparse_factors_exact
@@ -145,13 +146,17 @@ contains
           exit newton_loop
         end if
         do i = 1, an%ndof
-          if (an%eq(i) > 0) r(an%eq(i)) = -an%fint(i)
+          if (an%eq(i) > 0) r(an%eq(i)) = an%fext(i) + an%fdl(i) - an%fint(i)
         end do
+        ! *EQUATION: the residual of an eliminated dof acts on its masters
+        if (an%cs%n > 0 .and. an%neq > 0) call constraints_residual(an%cs, an%eq, an%fext + an%fdl - an%fint, r)
         r_max = 0.0_dp
         if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))
         r_norm = 0.0_dp
         if (an%neq > 0) r_norm = norm2(r(1:an%neq))
-        q_now = typical_force(an%fint)
+        ! typical force: of the internal forces, or of the applied loads where they are larger (the first iteration
+        ! of a load-controlled increment starts from zero internal force; Abaqus counts the applied loads in q)
+        q_now = max(typical_force(an%fint), typical_force(an%fext + an%fdl))
         q_avg = (q_sum + q_now) / real(kinc, dp)
         du_max = maxval(abs(an%u - an%u_conv))
         ratios(iter + 1) = r_max / max(q_avg, tiny(1.0_dp))
@@ -260,6 +265,7 @@ contains
         do i = 1, an%ndof
           if (an%eq(i) > 0) an%u(i) = an%u(i) + r(an%eq(i))
         end do
+        if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
       end do newton_loop
     end associate
   end subroutine newton_solve

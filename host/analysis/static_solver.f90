@@ -2,6 +2,7 @@
 !> Newton in newton_iteration, output, restart), then the closing summary with the energy balance (run_summary).
 !> The options, exit codes and summary type are those of solver_options and run_summary, re-exported here.
 module static_solver
+  use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t
   use analysis_core, only: analysis_t, analysis_init
@@ -45,6 +46,7 @@ contains
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)
+      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if

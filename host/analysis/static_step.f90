@@ -4,7 +4,10 @@
 module static_step
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, amplitude_value
+  use model_types, only: model_t, amplitude_factor
+  use step_loads, only: load_state_t, load_state_init, load_step_begin, load_vector
+  use distributed_loads, only: dload_step_begin
+  use linear_constraints, only: constraints_apply
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
   use step_control, only: step_control_t, step_control_init, step_control_cutback, step_control_converged, &
     step_control_done, step_control_dt
@@ -49,6 +52,10 @@ contains
     integer, allocatable :: col_set(:), col_var(:), bc_amp(:)
     logical, allocatable :: bc_on(:), bc_init(:)
     real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:), du_prev(:)
+    real(dp), allocatable :: fext_old(:), fcl_old(:)
+    logical, allocatable :: bc_was_on(:)
+    type(load_state_t) :: ls, ls_temp
+    real(dp), allocatable :: zero_nodes(:)
     real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_now, t_end, next_mark, dt_prev
     real(dp) :: open_inc, plastic_inc
     integer(i8) :: c1, rate, cs0
@@ -85,6 +92,17 @@ contains
         exit_code = exit_input
         return
       end if
+    end if
+    if (restarting .and. (any(model%steps(1:model%nstep)%ncload > 0) .or. &
+        any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new) .or. &
+        any(model%steps(1:model%nstep)%ntemp > 0))) then
+      ! the load state (step_loads) is not in the restart file
+      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE or *BOUNDARY, OP=NEW is '// &
+        'not supported'
+      call output_log(out, 'ldfcz: error: '//errmsg)
+      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      exit_code = exit_input
+      return
     end if
     msg = ''
     if (an%sym_factors .and. .not. an%symmetric) msg = ' (LDL^T factors of (K+K^T)/2 precondition GMRES)'
@@ -146,7 +164,17 @@ contains
     call stop_signal_install()
 
     allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
-    allocate (rf_old(an%ndof), du_prev(an%ndof))
+    allocate (rf_old(an%ndof), du_prev(an%ndof), fext_old(an%ndof), bc_was_on(an%ndof), fcl_old(an%ndof))
+    call load_state_init(ls, an%ndof)
+    ! nodal temperatures: every node holds its initial temperature until a *TEMPERATURE changes it
+    call load_state_init(ls_temp, model%nnode)
+    ls_temp%on = .true.
+    ls_temp%base = an%temp_start
+    ls_temp%target = an%temp_start
+    allocate (zero_nodes(model%nnode))
+    zero_nodes = 0.0_dp
+    fext_old = 0.0_dp
+    fcl_old = 0.0_dp
     du_prev = 0.0_dp
     dt_prev = 0.0_dp
     bc_on = .false.
@@ -176,8 +204,25 @@ contains
             bc_val = an%u_conv
             bc_amp = 0
           end where
+          bc_was_on = bc_on
           if (st%op_new) where (.not. bc_init) bc_on = .false.
           call apply_bc_list(st%bcs, st%nbc, .false.)
+          ! loads of this step; a boundary removed by OP=NEW leaves its reaction as a force that decays over the step
+          where (bc_was_on .and. .not. bc_on)
+            bc_was_on = .true.
+          elsewhere
+            bc_was_on = .false.
+          end where
+          call load_step_begin(ls, fcl_old, merge(rf_old, 0.0_dp, bc_was_on), st%cloads, st%ncload, &
+            st%cload_op_new, model%ndim)
+          call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
+          call dload_step_begin(an%dl, model, is, t_total0, stat, errmsg)
+          if (stat /= 0) then
+            call output_log(out, 'ldfcz: error: '//errmsg)
+            if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+            exit_code = exit_input
+            exit steps
+          end if
         end if
         an%prescribed = bc_on .and. an%used
         call analysis_number_equations(an, model, stat, errmsg)
@@ -235,6 +280,9 @@ contains
             do i = 1, an%ndof
               if (an%prescribed(i)) an%u(i) = prescribed_value(i, t_end)
             end do
+            if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
+            call load_vector(ls, model, is, t_end, t_total0, an%fext)
+            call load_vector(ls_temp, model, is, t_end, t_total0, an%temp_end)
             call newton_solve(an, model, is, kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, q_sum, &
               converged, stopped, iter, q_now, pnewdt_min, outcome)
             if (stopped) then
@@ -294,18 +342,27 @@ contains
             call statev_increment(model, an, summary%plastic_statev, plastic_inc)
             summary%max_statev_inc = max(summary%max_statev_inc, plastic_inc)
           end if
+          ! work of the reactions (trapezoidal) and of the external forces on the free dofs
           do i = 1, an%ndof
-            if (an%prescribed(i)) summary%w_ext = summary%w_ext + 0.5_dp * (rf_old(i) + an%fint(i)) * &
-              (an%u(i) - an%u_conv(i))
+            if (an%prescribed(i)) then
+              summary%w_ext = summary%w_ext + 0.5_dp * (rf_old(i) + an%fint(i) - an%fext(i) - an%fdl(i)) * &
+                (an%u(i) - an%u_conv(i))
+            else
+              summary%w_ext = summary%w_ext + 0.5_dp * (fext_old(i) + an%fext(i) + an%fdl(i)) * &
+                (an%u(i) - an%u_conv(i))
+            end if
           end do
           where (an%prescribed)
-            rf_old = an%fint
+            rf_old = an%fint - an%fext - an%fdl
           elsewhere
             rf_old = 0.0_dp
           end where
+          fext_old = an%fext + an%fdl
+          fcl_old = an%fext
           du_prev = an%u - an%u_conv
           dt_prev = dt
           call analysis_commit(an)
+          an%temp_start = an%temp_end
           call step_control_converged(sc, dt, iter, pnewdt_min)
           if (open_inc > 0.0_dp .and. .not. st%direct) then
             ! next increment from the opening bound: at most x1.5 after an easy increment, PNEWDT > 1 honoured
@@ -486,7 +543,9 @@ contains
       integer, intent(in) :: dof
       real(dp), intent(in) :: t
       if (bc_amp(dof) > 0) then
-        v = amplitude_value(model%amplitudes(bc_amp(dof)), t) * bc_val(dof)
+        v = amplitude_factor(model%amplitudes(bc_amp(dof)), t, t_total0) * bc_val(dof)
+      else if (model%steps(is)%amp_step) then
+        v = bc_val(dof)
       else
         v = u_start(dof) + (t / model%steps(is)%period) * (bc_val(dof) - u_start(dof))
       end if
@@ -501,7 +560,7 @@ contains
         if (mod(ivar, 10) > model%ndim) cycle
         dof = (model%nsets(iset)%nodes(k) - 1) * model%ndim + mod(ivar, 10)
         if (ivar > 10) then
-          if (an%prescribed(dof)) v = v + an%fint(dof)
+          if (an%prescribed(dof)) v = v + an%fint(dof) - an%fext(dof) - an%fdl(dof)
         else
           v = v + an%u(dof)
         end if

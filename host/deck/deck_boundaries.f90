@@ -13,7 +13,8 @@ module deck_boundaries
 
 contains
 
-  !> *AMPLITUDE, NAME=: pairs of step time and relative amplitude, times not decreasing.
+  !> *AMPLITUDE, NAME=, DEFINITION=TABULAR|SMOOTH STEP, TIME=STEP TIME|TOTAL TIME: pairs of time and relative
+  !> amplitude, times not decreasing.
   subroutine read_amplitude(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(amplitude_t), allocatable :: tmp(:)
@@ -21,12 +22,23 @@ contains
     integer :: n, k, ia, ir, ir_next
     real(dp) :: r
     character(len=:), allocatable :: v
+    logical :: smooth, total_time
     call ctx_allow_params(ctx, [character(len=12) :: 'NAME', 'DEFINITION', 'TIME', 'VALUE'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
-    if (.not. ctx_only_value(ctx, ir, 'DEFINITION', 'TABULAR')) return
-    if (.not. ctx_only_value(ctx, ir, 'TIME', 'STEP TIME')) return
+    v = deck_normalize(deck_param_value(ctx%params, 'DEFINITION'))
+    if (v /= '' .and. v /= 'TABULAR' .and. v /= 'SMOOTH STEP') then
+      call ctx_fail(ctx, ir, 'DEFINITION='//v//' is not supported (TABULAR, SMOOTH STEP)')
+      return
+    end if
+    smooth = v == 'SMOOTH STEP'
+    v = deck_normalize(deck_param_value(ctx%params, 'TIME'))
+    if (v /= '' .and. v /= 'STEP TIME' .and. v /= 'TOTAL TIME') then
+      call ctx_fail(ctx, ir, 'TIME='//v//' is not supported (STEP TIME, TOTAL TIME)')
+      return
+    end if
+    total_time = v == 'TOTAL TIME'
     if (.not. ctx_only_value(ctx, ir, 'VALUE', 'RELATIVE')) return
     if (ctx%model%namp == size(ctx%model%amplitudes)) then
       allocate (tmp(2 * size(ctx%model%amplitudes)))
@@ -36,6 +48,8 @@ contains
     ia = ctx%model%namp + 1
     v = deck_normalize(ctx_required(ctx, 'NAME'))
     ctx%model%amplitudes(ia)%name = v
+    ctx%model%amplitudes(ia)%smooth = smooth
+    ctx%model%amplitudes(ia)%total_time = total_time
     if (ctx%stat /= 0) return
     if (model_find_amplitude(ctx%model, ctx%model%amplitudes(ia)%name) > 0) then
       call ctx_fail(ctx, ir, 'amplitude '//trim(ctx%model%amplitudes(ia)%name)//' defined twice')

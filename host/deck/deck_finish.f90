@@ -3,7 +3,8 @@
 module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where
-  use model_types, only: model_t, boundary_t, source_pos_t, etype_user, model_find_elset, model_find_material
+  use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
+    etype_user, model_find_elset, model_find_material
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -19,6 +20,7 @@ contains
     logical, allocatable :: has_section(:)
     type(source_pos_t) :: pos
     type(boundary_t) :: bc
+    type(cload_t) :: cl
     character(len=:), allocatable :: what
     associate (model => ctx%model)
       if (model%nnode == 0) then
@@ -115,11 +117,42 @@ contains
         model%initial_bcs(ib) = bc
         if (ctx%stat /= 0) return
       end do
+      do ib = 1, model%nequation
+        do k = 1, size(model%equations(ib)%terms)
+          cl = model%equations(ib)%terms(k)
+          call resolve_cload(ctx, cl)
+          model%equations(ib)%terms(k) = cl
+          if (ctx%stat /= 0) return
+          if (size(cl%nodes) /= size(model%equations(ib)%terms(1)%nodes)) then
+            pos = model%equations(ib)%pos
+            call ctx_fail_pos(ctx, pos, 'the node sets of the terms differ in size (one equation per member)')
+            return
+          end if
+        end do
+      end do
+      do ib = 1, model%ntemp_init
+        cl = model%temp_inits(ib)
+        call resolve_cload(ctx, cl)
+        model%temp_inits(ib) = cl
+        if (ctx%stat /= 0) return
+      end do
       do is = 1, model%nstep
         do ib = 1, model%steps(is)%nbc
           bc = model%steps(is)%bcs(ib)
           call resolve_bc(ctx, bc)
           model%steps(is)%bcs(ib) = bc
+          if (ctx%stat /= 0) return
+        end do
+        do ib = 1, model%steps(is)%ncload
+          cl = model%steps(is)%cloads(ib)
+          call resolve_cload(ctx, cl)
+          model%steps(is)%cloads(ib) = cl
+          if (ctx%stat /= 0) return
+        end do
+        do ib = 1, model%steps(is)%ntemp
+          cl = model%steps(is)%temps(ib)
+          call resolve_cload(ctx, cl)
+          model%steps(is)%temps(ib) = cl
           if (ctx%stat /= 0) return
         end do
         if (model%steps(is)%period < 0.0_dp) then
@@ -193,8 +226,169 @@ contains
         end if
       end do
       call carry_field_requests(model)
+      if (ctx%stat == 0) call resolve_surfaces(ctx)
+      if (ctx%stat == 0) call resolve_dloads(ctx)
     end associate
   end subroutine finish_model
+
+  !> Element-based surfaces: element sets and ids expanded into (element index, face) pairs.
+  subroutine resolve_surfaces(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: isf, m, j, id, ie
+    integer, allocatable :: el(:), fc(:)
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      do isf = 1, model%nsurf
+        allocate (el(0), fc(0))
+        do m = 1, model%surfaces(isf)%n
+          if (model%surfaces(isf)%elsets(m) > 0) then
+            j = model%surfaces(isf)%elsets(m)
+            el = [el, model%elsets(j)%elems]
+            fc = [fc, (model%surfaces(isf)%faces(m), id = 1, size(model%elsets(j)%elems))]
+          else
+            id = -model%surfaces(isf)%elems(m)
+            ie = 0
+            if (id <= size(model%elem_index)) ie = model%elem_index(id)
+            if (ie == 0) then
+              pos = model%surfaces(isf)%pos
+              call ctx_fail_pos(ctx, pos, 'surface '//trim(model%surfaces(isf)%name)//': undefined element '// &
+                itoa(id))
+              return
+            end if
+            el = [el, ie]
+            fc = [fc, model%surfaces(isf)%faces(m)]
+          end if
+        end do
+        call move_alloc(el, model%surfaces(isf)%relems)
+        call move_alloc(fc, model%surfaces(isf)%rfaces)
+      end do
+    end associate
+  end subroutine resolve_surfaces
+
+  !> Distributed loads: element sets and surfaces expanded into element lists with their faces, ids resolved;
+  !> pressure, BX..BZ and GRAV only on continuum elements (GRAV with a *DENSITY), Un only on user elements.
+  subroutine resolve_dloads(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: is, k, j, m, ie, id, im, isf
+    integer, allocatable :: el(:), fc(:)
+    type(dload_t) :: dl
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      do is = 1, model%nstep
+        do k = 1, model%steps(is)%ndload
+          dl = model%steps(is)%dloads(k)
+          pos = dl%pos
+          allocate (el(0), fc(0))
+          if (dl%elset > 0) then
+            el = model%elsets(dl%elset)%elems
+            fc = [(dl%label, j = 1, size(el))]
+          else if (dl%elset == 0) then
+            id = -dl%elems(1)
+            ie = 0
+            if (id <= size(model%elem_index)) ie = model%elem_index(id)
+            if (ie == 0) then
+              call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+              return
+            end if
+            el = [ie]
+            fc = [dl%label]
+          else
+            isf = -dl%elset
+            do m = 1, model%surfaces(isf)%n
+              if (model%surfaces(isf)%elsets(m) > 0) then
+                j = model%surfaces(isf)%elsets(m)
+                el = [el, model%elsets(j)%elems]
+                fc = [fc, (model%surfaces(isf)%faces(m), id = 1, size(model%elsets(j)%elems))]
+              else
+                id = -model%surfaces(isf)%elems(m)
+                ie = 0
+                if (id <= size(model%elem_index)) ie = model%elem_index(id)
+                if (ie == 0) then
+                  pos = model%surfaces(isf)%pos
+                  call ctx_fail_pos(ctx, pos, 'surface '//trim(model%surfaces(isf)%name)//': undefined element '// &
+                    itoa(id))
+                  return
+                end if
+                el = [el, ie]
+                fc = [fc, model%surfaces(isf)%faces(m)]
+              end if
+            end do
+          end if
+          do j = 1, size(el)
+            ie = el(j)
+            if (dl%kind == dload_user .neqv. model%elem_kind(ie) == etype_user) then
+              if (dl%kind == dload_user) then
+                call ctx_fail_pos(ctx, pos, 'load type U'//itoa(dl%label)//' on element '// &
+                  itoa(model%elem_id(ie))//', which is not a user element')
+              else
+                call ctx_fail_pos(ctx, pos, 'user element '//itoa(model%elem_id(ie))//' takes only load types Un '// &
+                  '(its UEL receives them), not BX/BY/BZ/GRAV/P')
+              end if
+              return
+            end if
+            if (dl%kind == dload_grav) then
+              im = model_find_material(model, model%sections(model%elem_section(ie))%material)
+              if (.not. model%materials(im)%has_density) then
+                call ctx_fail_pos(ctx, pos, 'GRAV on element '//itoa(model%elem_id(ie))//' whose material '// &
+                  trim(model%materials(im)%given_name)//' has no *DENSITY')
+                return
+              end if
+            end if
+          end do
+          call move_alloc(el, model%steps(is)%dloads(k)%elems)
+          call move_alloc(fc, model%steps(is)%dloads(k)%faces)
+        end do
+      end do
+      ! initial conditions: element ids and sets resolved
+      do k = 1, model%ninit
+        if (model%inits(k)%elset > 0) then
+          model%inits(k)%elems = model%elsets(model%inits(k)%elset)%elems
+        else
+          id = -model%inits(k)%elems(1)
+          ie = 0
+          if (id <= size(model%elem_index)) ie = model%elem_index(id)
+          if (ie == 0) then
+            pos = model%inits(k)%pos
+            call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+            return
+          end if
+          model%inits(k)%elems = [ie]
+        end if
+      end do
+      ! a density without gravity loads cannot change a static result: accepted with a note
+      do im = 1, model%nmat
+        if (.not. model%materials(im)%has_density) cycle
+        if (any([((model%steps(is)%dloads(k)%kind == dload_grav, k = 1, model%steps(is)%ndload), &
+            is = 1, model%nstep)])) cycle
+        pos = model%materials(im)%pos
+        call ctx_warn_pos(ctx, pos, 'material '//trim(model%materials(im)%given_name)//': *DENSITY has no effect '// &
+          'in a static analysis without GRAV loads')
+      end do
+    end associate
+  end subroutine resolve_dloads
+
+  !> Concentrated-load node ids -> indices; a dof beyond the model dimension is an error (no such force exists).
+  subroutine resolve_cload(ctx, cl)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(cload_t), intent(inout) :: cl          !< load (a copy, not a part of ctx)
+    integer :: k, id
+    do k = 1, size(cl%nodes)
+      if (cl%nodes(k) < 0) then
+        id = -cl%nodes(k)
+        if (id > size(ctx%model%node_index)) then
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          return
+        end if
+        if (ctx%model%node_index(id) == 0) then
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          return
+        end if
+        cl%nodes(k) = ctx%model%node_index(id)
+      end if
+    end do
+    if (cl%dof > ctx%model%ndim) call ctx_fail_pos(ctx, cl%pos, 'dof '//itoa(cl%dof)//' does not exist in this '// &
+      itoa(ctx%model%ndim)//'D model')
+  end subroutine resolve_cload
 
   !> Field output requests stay in effect in later steps until changed, as in Abaqus: a step without its own
   !> *OUTPUT, FIELD takes the previous step's request; a step with one adds its variables to the inherited ones

@@ -9,7 +9,7 @@ module deck_materials
     ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
-  public :: read_material, read_elastic, read_user_material, read_depvar, read_solid_section
+  public :: read_material, read_elastic, read_density, read_expansion, read_user_material, read_depvar, read_solid_section
 
 contains
 
@@ -143,6 +143,72 @@ contains
     ctx%model%materials(ctx%imat)%young = e
     ctx%model%materials(ctx%imat)%poisson = nu
   end subroutine read_elastic
+
+  !> *DENSITY: one data line, the mass density (no temperature dependence). Used by GRAV loads; no effect
+  !> otherwise in a static step.
+  subroutine read_density(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    integer :: n, ir
+    real(dp) :: rho
+    call need_material(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=8) ::])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    if (ctx%ir_next /= ir + 2) then
+      call ctx_fail(ctx, ir, 'exactly one data line (density) expected (no temperature dependence)')
+      return
+    end if
+    call ctx_split(ctx, ir + 1, f, n)
+    if (n > 1) then
+      if (any(len_trim(f(2:n)) > 0)) then
+        call ctx_fail(ctx, ir + 1, 'temperature-dependent density is not supported')
+        return
+      end if
+    end if
+    if (.not. ctx_get_real(ctx, ir + 1, f(1), rho)) return
+    if (rho < 0.0_dp) then
+      call ctx_fail(ctx, ir + 1, 'the density must not be negative')
+      return
+    end if
+    ctx%model%materials(ctx%imat)%has_density = .true.
+    ctx%model%materials(ctx%imat)%density = rho
+  end subroutine read_density
+
+  !> *EXPANSION[, TYPE=ISO][, ZERO=]: one data line, the isotropic expansion coefficient (no temperature
+  !> dependence; with a constant coefficient the thermal strain alpha (T - T_initial) does not depend on ZERO).
+  subroutine read_expansion(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    integer :: n, ir
+    real(dp) :: alpha
+    call need_material(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'ZERO'])
+    if (ctx%stat /= 0) return
+    ir = ctx%ir
+    if (deck_has_param(ctx%params, 'TYPE')) then
+      if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'ISO') then
+        call ctx_fail(ctx, ir, 'only TYPE=ISO is supported')
+        return
+      end if
+    end if
+    if (ctx%ir_next /= ir + 2) then
+      call ctx_fail(ctx, ir, 'exactly one data line (alpha) expected (no temperature dependence)')
+      return
+    end if
+    call ctx_split(ctx, ir + 1, f, n)
+    if (n > 1) then
+      if (any(len_trim(f(2:n)) > 0)) then
+        call ctx_fail(ctx, ir + 1, 'temperature-dependent expansion is not supported')
+        return
+      end if
+    end if
+    if (.not. ctx_get_real(ctx, ir + 1, f(1), alpha)) return
+    ctx%model%materials(ctx%imat)%has_expansion = .true.
+    ctx%model%materials(ctx%imat)%alpha = alpha
+  end subroutine read_expansion
 
   !> *USER MATERIAL, CONSTANTS=n: the n UMAT properties.
   subroutine read_user_material(ctx)

@@ -8,11 +8,15 @@ module deck_reader
   use model_types, only: model_t
   use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_need_step
   use deck_mesh, only: read_node, read_element, read_set
-  use deck_materials, only: read_material, read_elastic, read_user_material, read_depvar, read_solid_section
+  use deck_materials, only: read_material, read_elastic, read_density, read_expansion, read_user_material, &
+    read_depvar, read_solid_section
   use deck_user_elements, only: read_user_element, read_uel_property
   use deck_boundaries, only: read_amplitude, read_boundary
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print, &
     read_field_variables
+  use deck_loads, only: read_cload, read_dload, read_dsload, read_surface
+  use deck_fields, only: read_initial_conditions, read_temperature
+  use deck_constraints, only: read_equation, read_tie, read_mpc
   use deck_finish, only: finish_model
   implicit none
   private
@@ -121,9 +125,31 @@ contains
       call read_amplitude(ctx)
     case ('*BOUNDARY')
       call read_boundary(ctx)
+    case ('*CLOAD')
+      call read_cload(ctx)
+    case ('*DLOAD')
+      call read_dload(ctx)
+    case ('*DSLOAD')
+      call read_dsload(ctx)
+    case ('*SURFACE')
+      call read_surface(ctx)
+    case ('*DENSITY')
+      call read_density(ctx)
+    case ('*INITIAL CONDITIONS')
+      call read_initial_conditions(ctx)
+    case ('*TEMPERATURE')
+      call read_temperature(ctx)
+    case ('*EXPANSION')
+      call read_expansion(ctx)
+    case ('*EQUATION')
+      call read_equation(ctx)
+    case ('*TIE')
+      call read_tie(ctx)
+    case ('*MPC')
+      call read_mpc(ctx)
     case ('*STEP')
       call read_step(ctx)
-    case ('*STATIC')
+    case ('*STATIC', '*VISCO')
       call read_static(ctx)
     case ('*CONTROLS')
       call read_controls(ctx)
@@ -154,7 +180,8 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
-          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING')
+          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
+          '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

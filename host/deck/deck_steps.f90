@@ -11,7 +11,7 @@ module deck_steps
 
 contains
 
-  !> *STEP, NAME=, NLGEOM=, INC=, UNSYMM=, AMPLITUDE=RAMP: opens a step (NLGEOM and the restart request carry over).
+  !> *STEP, NAME=, NLGEOM=, INC=, UNSYMM=, AMPLITUDE=RAMP|STEP: opens a step (NLGEOM and the restart request carry over).
   subroutine read_step(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(step_t), allocatable :: tmp(:)
@@ -40,7 +40,8 @@ contains
     ctx%istep = istep
     ctx%model%steps(istep) = empty_step
     ctx%output_kind = 0
-    allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2))
+    allocate (ctx%model%steps(istep)%bcs(4), ctx%model%steps(istep)%prints(2), ctx%model%steps(istep)%cloads(4), &
+      ctx%model%steps(istep)%dloads(4))
     ! NLGEOM carries over from the previous step, as in Abaqus
     if (istep > 1) ctx%model%steps(istep)%nlgeom = ctx%model%steps(istep - 1)%nlgeom
     ! a *RESTART, WRITE request stays in effect until changed (Abaqus)
@@ -69,7 +70,16 @@ contains
       call ctx_fail(ctx, ir, 'INC must be positive')
       return
     end if
-    if (.not. ctx_only_value(ctx, ir, 'AMPLITUDE', 'RAMP', ' in static steps')) return
+    v = deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE'))
+    select case (v)
+    case ('', 'RAMP')
+      ctx%model%steps(istep)%amp_step = .false.
+    case ('STEP')
+      ctx%model%steps(istep)%amp_step = .true.
+    case default
+      call ctx_fail(ctx, ir, 'AMPLITUDE must be RAMP or STEP')
+      return
+    end select
     v = deck_normalize(deck_param_value(ctx%params, 'EXTRAPOLATION'))
     select case (v)
     case ('', 'LINEAR')
@@ -98,7 +108,8 @@ contains
     ctx%imat = 0
   end subroutine read_step
 
-  !> *STATIC[, DIRECT]: initial increment, period, minimum and maximum increments.
+  !> *STATIC[, DIRECT] or *VISCO[, CETOL=]: initial increment, period, minimum and maximum increments. *VISCO is the
+  !> quasi-static step of rate-dependent materials: the same equilibrium step here (the UMAT sees the real time).
   subroutine read_static(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=flen), allocatable :: f(:)
@@ -106,12 +117,28 @@ contains
     real(dp) :: v(4)
     logical :: given(4)
     integer :: k
+    real(dp) :: cetol
+    logical :: visco
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=12) :: 'DIRECT'])
+    visco = ctx%kw == '*VISCO'
+    if (visco) then
+      call ctx_allow_params(ctx, [character(len=12) :: 'CETOL'])
+    else
+      call ctx_allow_params(ctx, [character(len=12) :: 'DIRECT'])
+    end if
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
+    if (visco .and. deck_has_param(ctx%params, 'CETOL')) then
+      if (.not. ctx_get_real(ctx, ir, deck_param_value(ctx%params, 'CETOL'), cetol)) return
+      if (cetol <= 0.0_dp) then
+        call ctx_fail(ctx, ir, 'CETOL must be positive')
+        return
+      end if
+      call ctx_warn(ctx, ir, 'CETOL: the host does not see a UMAT''s creep strain; the increments are controlled '// &
+        'by the Newton iteration and the UMAT''s PNEWDT (Abaqus applies CETOL to its built-in creep laws)')
+    end if
     if (ctx%model%steps(ctx%istep)%period > 0.0_dp) then
       call ctx_fail(ctx, ir, 'a second procedure in one step')
       return
@@ -148,7 +175,9 @@ contains
       if (given(3)) s%dt_min = v(3)
       s%dt_max = s%period
       if (given(4)) s%dt_max = v(4)
+      ! *VISCO: fixed increments unless CETOL is given (Abaqus); *STATIC: DIRECT
       s%direct = deck_has_param(ctx%params, 'DIRECT')
+      if (visco) s%direct = .not. deck_has_param(ctx%params, 'CETOL')
       if (s%dt_initial > s%period * (1.0_dp + 1.0e-12_dp)) then
         call ctx_fail(ctx, ir + 1, 'initial increment larger than the step period')
       else if (s%dt_min > s%dt_initial .and. .not. s%direct) then

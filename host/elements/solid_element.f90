@@ -52,6 +52,7 @@ module solid_element
     character(len=80) :: cmname = ' '                   !< material name as passed in CMNAME (upper case in Abaqus)
     logical :: unsymm = .false.                         !< *USER MATERIAL, UNSYMM: keep the unsymmetric tangent
     real(dp) :: thickness = 1.0_dp                      !< *SOLID SECTION thickness of plane elements (CPE4)
+    real(dp) :: alpha = 0.0_dp                          !< *EXPANSION isotropic coefficient (thermal strain alpha dT)
     procedure(umat_interface), pointer, nopass :: umat => null()  !< the UMAT to call when kind = SOLID_MAT_UMAT
   end type solid_material_t
 
@@ -142,7 +143,7 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo)
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes)
     character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -171,6 +172,9 @@ contains
     real(dp), intent(out), optional :: energy_ip_new(:, :) !< (3, nip) updated SSE, SPD, SCD
     !> reference data of this element from solid_element_geometry (computed here when absent or not valid)
     type(solid_geometry_t), intent(in), optional, target :: geo
+    real(dp), intent(in), optional :: temp_nodes(:)   !< (nnode) nodal temperatures at the start of the increment
+    real(dp), intent(in), optional :: dtemp_nodes(:)  !< (nnode) their increments (TEMP, DTEMP interpolated to points)
+    real(dp) :: temp_ip, dtemp_ip
 
     integer :: nnode, ndim, nip, ntens, ndi, nshr, ndof, nsv, np
     integer :: a, b, i, k, ip, r, c, jstep(4)
@@ -361,6 +365,13 @@ contains
         spd = energy_ip_old(2, ip)
         scd = energy_ip_old(3, ip)
       end if
+      ! temperature at the point (TEMP, DTEMP of the UMAT); *EXPANSION: mechanical strain increment = total -
+      ! alpha dT on the direct components (Abaqus subtracts the thermal strain before the material is called)
+      temp_ip = 0.0_dp
+      dtemp_ip = 0.0_dp
+      if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
+      if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
+      if (mat%alpha /= 0.0_dp) dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
       ddsdde = 0.0_dp
       pn = SOLID_PNEWDT_LARGE
       select case (mat%kind)
@@ -373,7 +384,7 @@ contains
           coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + u1(i, 1:nnode))
         end do
         call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-          ntens, nsv, pr, np, coords, drot, pn, celent, fb0, fb1, noel, ip, jstep, kinc)
+          ntens, nsv, pr, np, coords, drot, pn, celent, fb0, fb1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
         statev_new(1:nsv, ip) = sv(1:nsv)
       end select
       pnewdt = min(pnewdt, pn)
@@ -499,8 +510,9 @@ contains
   !> Call the UMAT through the pointer with contiguous explicit-shape copies of every argument (a user routine
   !> may overwrite any of them; only STRESS, STATEV, DDSDDE, SSE, SPD, SCD and PNEWDT are taken back).
   subroutine call_umat(umat, stress, statev, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-      ntens, nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, jstep, kinc)
+      ntens, nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, jstep, kinc, temp, dtemp)
     procedure(umat_interface) :: umat                    !< the UMAT
+    real(dp), intent(in) :: temp, dtemp                  !< temperature at the start of the increment, its increment
     integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, kinc, jstep(4)
     real(dp), intent(inout) :: stress(6), statev(:), ddsdde(6, 6), sse, spd, scd, pnewdt
     real(dp), intent(in) :: stran(6), dstran(6), time(2), dtime, coords(3), drot(3, 3), celent
@@ -516,7 +528,7 @@ contains
     c_stress = stress(1:ntens); c_ddsdde = 0.0_dp; c_ddsddt = 0.0_dp; c_drplde = 0.0_dp
     c_stran = stran(1:ntens); c_dstran = dstran(1:ntens); c_statev = statev; c_props = props
     c_rpl = 0.0_dp; c_drpldt = 0.0_dp
-    c_time = time; c_dtime = dtime; c_temp = 0.0_dp; c_dtemp = 0.0_dp; c_predef = 0.0_dp; c_dpred = 0.0_dp
+    c_time = time; c_dtime = dtime; c_temp = temp; c_dtemp = dtemp; c_predef = 0.0_dp; c_dpred = 0.0_dp
     c_coords = coords; c_drot = drot; c_celent = celent; c_f0 = dfgrd0; c_f1 = dfgrd1
     c_ndi = ndi; c_nshr = nshr; c_ntens = ntens; c_nstatv = nstatv; c_nprops = nprops; c_noel = noel; c_npt = npt
     c_layer = 1; c_kspt = 1; c_jstep = jstep; c_kinc = kinc; c_cmname = cmname

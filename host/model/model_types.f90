@@ -5,16 +5,24 @@ module model_types
   implicit none
   private
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
-  public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t
+  public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
+  public :: dload_bx, dload_grav, dload_pressure, dload_user, model_find_surface
+  public :: initial_condition_t, init_stress, init_solution, equation_t, tie_t
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
-  public :: amplitude_value
+  public :: amplitude_value, amplitude_factor
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   integer, parameter :: etype_c3d8 = 1     !< 8-node hexahedron, F-bar
   integer, parameter :: etype_cpe4 = 2     !< 4-node plane-strain quadrilateral, F-bar
   integer, parameter :: etype_user = 3     !< user element (UEL)
   integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
+  integer, parameter :: init_stress = 1    !< *INITIAL CONDITIONS, TYPE=STRESS
+  integer, parameter :: init_solution = 2  !< *INITIAL CONDITIONS, TYPE=SOLUTION
+  integer, parameter :: dload_bx = 1       !< body force per unit reference volume along dir (BX, BY, BZ)
+  integer, parameter :: dload_grav = 2     !< gravity: density x magnitude along dir (GRAV)
+  integer, parameter :: dload_pressure = 3 !< face pressure Pn (follower under NLGEOM)
+  integer, parameter :: dload_user = 4     !< user element load type Un (passed to the UEL)
 
   !> Where an item came from in the deck (for error messages found after reading).
   type :: source_pos_t
@@ -45,6 +53,10 @@ module model_types
     real(dp), allocatable :: props(:)      !< user material constants
     logical :: unsymm = .false.            !< *USER MATERIAL, UNSYMM
     integer :: nstatv = 0                  !< *DEPVAR
+    logical :: has_expansion = .false.     !< *EXPANSION given
+    real(dp) :: alpha = 0.0_dp             !< isotropic thermal expansion coefficient [1/K]
+    logical :: has_density = .false.      !< *DENSITY given
+    real(dp) :: density = 0.0_dp           !< mass density [t/mm^3 in N, mm, s units]
     type(source_pos_t) :: pos              !< where *MATERIAL was
     type(source_pos_t) :: user_pos         !< first data line of *USER MATERIAL (messages of a UMAT's XIT)
   end type material_t
@@ -80,6 +92,8 @@ module model_types
     character(len=name_len) :: name = ''
     real(dp), allocatable :: t(:)          !< times (step time)
     real(dp), allocatable :: a(:)          !< amplitude values
+    logical :: smooth = .false.            !< DEFINITION=SMOOTH STEP (else TABULAR: piecewise linear)
+    logical :: total_time = .false.        !< TIME=TOTAL TIME (else step time)
   end type amplitude_t
 
   !> One prescribed dof range on a set of nodes.
@@ -91,6 +105,64 @@ module model_types
     integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
     type(source_pos_t) :: pos
   end type boundary_t
+
+  !> One *CLOAD data line: a fixed-direction nodal force on one dof of a set of nodes.
+  type :: cload_t
+    integer, allocatable :: nodes(:)       !< node indices
+    integer :: dof = 0                     !< dof (1..3)
+    real(dp) :: value = 0.0_dp             !< magnitude [N]
+    integer :: amplitude = 0               !< amplitude index, 0 = the step's default (RAMP or STEP)
+    type(source_pos_t) :: pos
+  end type cload_t
+
+  !> One distributed load definition (*DLOAD or *DSLOAD data line) on a list of elements.
+  type :: dload_t
+    integer, allocatable :: elems(:)       !< element indices (user ids, negative, until finish_model)
+    integer, allocatable :: faces(:)       !< per element: face 1..6 (pressure), else 0
+    integer :: kind = 0                    !< dload_bx, dload_grav, dload_pressure, dload_user
+    integer :: label = 0                   !< face number of Pn, n of Un
+    real(dp) :: value = 0.0_dp             !< magnitude
+    real(dp) :: dir(3) = 0.0_dp            !< direction of BX/BY/BZ/GRAV (unit)
+    integer :: amplitude = 0               !< amplitude index, 0 = the step's default
+    integer :: elset = 0                   !< element set of the data line (resolved in finish_model), 0: one element
+    type(source_pos_t) :: pos
+  end type dload_t
+
+  !> One data line of *INITIAL CONDITIONS (TYPE=STRESS or SOLUTION): values for a list of elements.
+  type :: initial_condition_t
+    integer :: kind = 0                    !< init_stress, init_solution
+    integer, allocatable :: elems(:)       !< element indices (a negative user id or empty until finish_model)
+    integer :: elset = 0                   !< element set of the data line, 0: one element
+    real(dp), allocatable :: values(:)     !< stress components (Abaqus order) or state variables
+    type(source_pos_t) :: pos
+  end type initial_condition_t
+
+  !> One *EQUATION: terms (node list, dof, coefficient in value); node sets expand into one equation per member.
+  type :: equation_t
+    type(cload_t), allocatable :: terms(:)
+    type(source_pos_t) :: pos
+  end type equation_t
+
+  !> One *TIE pair: the nodes of the slave surface tied to the faces of the master surface.
+  type :: tie_t
+    character(len=name_len) :: name = ''
+    integer :: slave = 0                   !< surface index
+    integer :: master = 0                  !< surface index
+    real(dp) :: tolerance = -1.0_dp        !< POSITION TOLERANCE (< 0: default, 5 % of the master face size)
+    type(source_pos_t) :: pos
+  end type tie_t
+
+  !> *SURFACE, TYPE=ELEMENT: element faces.
+  type :: surface_t
+    character(len=name_len) :: name = ''   !< upper-case name
+    integer, allocatable :: elems(:)       !< element indices (user ids, negative, or -huge for a set until finish)
+    integer, allocatable :: faces(:)       !< face 1..6 per element
+    integer, allocatable :: elsets(:)      !< per data line: element set index (0: one element)
+    integer :: n = 0                       !< data lines
+    integer, allocatable :: relems(:)      !< resolved element indices (finish_model), one per face
+    integer, allocatable :: rfaces(:)      !< their faces
+    type(source_pos_t) :: pos
+  end type surface_t
 
   !> *NODE PRINT, NSET=..., TOTALS=YES request: one CSV column per variable.
   type :: node_print_t
@@ -111,6 +183,15 @@ module model_types
     logical :: extrapolate = .true.        !< *STEP, EXTRAPOLATION=LINEAR (Abaqus' default) or NO
     logical :: unsymm = .false.            !< *STEP, UNSYMM=YES: unsymmetric solver
     logical :: op_new = .false.            !< a *BOUNDARY, OP=NEW in this step removes inherited boundaries
+    logical :: amp_step = .false.          !< *STEP, AMPLITUDE=STEP (default RAMP: loads vary linearly over the step)
+    logical :: cload_op_new = .false.      !< a *CLOAD, OP=NEW in this step removes inherited concentrated loads
+    type(cload_t), allocatable :: cloads(:)!< concentrated loads given in this step
+    integer :: ncload = 0
+    logical :: dload_op_new = .false.      !< a *DLOAD/*DSLOAD, OP=NEW in this step removes inherited distributed loads
+    type(dload_t), allocatable :: dloads(:)!< distributed loads given in this step
+    integer :: ndload = 0
+    type(cload_t), allocatable :: temps(:) !< *TEMPERATURE lines (node list, value; dof = 1)
+    integer :: ntemp = 0
     integer :: max_iter = 16               !< *CONTROLS, PARAMETERS=TIME INCREMENTATION: I_A (here the iteration cap)
     real(dp) :: r_n = 0.005_dp             !< *CONTROLS, PARAMETERS=FIELD: R_n
     real(dp) :: c_n = 0.01_dp              !< *CONTROLS, PARAMETERS=FIELD: C_n
@@ -166,6 +247,16 @@ module model_types
     integer :: n_uelprop = 0
     type(amplitude_t), allocatable :: amplitudes(:)
     integer :: namp = 0
+    type(surface_t), allocatable :: surfaces(:)
+    integer :: nsurf = 0
+    type(initial_condition_t), allocatable :: inits(:) !< *INITIAL CONDITIONS data lines, in deck order
+    integer :: ninit = 0
+    type(cload_t), allocatable :: temp_inits(:) !< *INITIAL CONDITIONS, TYPE=TEMPERATURE lines (dof = 1)
+    integer :: ntemp_init = 0
+    type(equation_t), allocatable :: equations(:) !< *EQUATION
+    integer :: nequation = 0
+    type(tie_t), allocatable :: ties(:)    !< *TIE
+    integer :: ntie = 0
     type(boundary_t), allocatable :: initial_bcs(:) !< model-data *BOUNDARY (fixed, value 0 or given)
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)
@@ -214,6 +305,16 @@ contains
     k = 0
   end function model_find_amplitude
 
+  !> Index of a surface by (upper-case) name, 0 if absent.
+  pure integer function model_find_surface(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%nsurf
+      if (model%surfaces(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_surface
+
   !> Index of a user element type by (upper-case) name, 0 if absent.
   pure integer function model_find_user_type(model, name) result(k)
     type(model_t), intent(in) :: model  !< the model
@@ -224,11 +325,27 @@ contains
     k = 0
   end function model_find_user_type
 
-  !> Piecewise-linear tabular amplitude at time t (constant beyond the ends, as Abaqus).
+  !> Amplitude at step time t_step of a step that began at total time t_total0 (TIME=TOTAL TIME reads the curve at
+  !> t_total0 + t_step).
+  pure real(dp) function amplitude_factor(amp, t_step, t_total0) result(a)
+    type(amplitude_t), intent(in) :: amp  !< amplitude
+    real(dp), intent(in) :: t_step        !< step time
+    real(dp), intent(in) :: t_total0      !< total time at the start of the step
+    if (amp%total_time) then
+      a = amplitude_value(amp, t_total0 + t_step)
+    else
+      a = amplitude_value(amp, t_step)
+    end if
+  end function amplitude_factor
+
+  !> Tabular amplitude at time t (constant beyond the ends, as Abaqus): piecewise linear, or for DEFINITION=SMOOTH
+  !> STEP the fifth-order polynomial of Abaqus between consecutive points, a_i + (a_i+1 - a_i) xi^3 (10 - 15 xi +
+  !> 6 xi^2), xi = (t - t_i) / (t_i+1 - t_i), whose first and second derivatives vanish at every data point.
   pure real(dp) function amplitude_value(amp, t) result(a)
     type(amplitude_t), intent(in) :: amp  !< tabular amplitude
-    real(dp), intent(in) :: t             !< step time
+    real(dp), intent(in) :: t             !< step time (total time for TIME=TOTAL TIME)
     integer :: i, n
+    real(dp) :: xi
     n = size(amp%t)
     if (n == 0) then
       a = 1.0_dp
@@ -241,7 +358,9 @@ contains
     do i = 2, n
       if (t <= amp%t(i)) then
         if (amp%t(i) > amp%t(i - 1)) then
-          a = amp%a(i - 1) + (amp%a(i) - amp%a(i - 1)) * (t - amp%t(i - 1)) / (amp%t(i) - amp%t(i - 1))
+          xi = (t - amp%t(i - 1)) / (amp%t(i) - amp%t(i - 1))
+          if (amp%smooth) xi = xi**3 * (10.0_dp - 15.0_dp * xi + 6.0_dp * xi**2)
+          a = amp%a(i - 1) + (amp%a(i) - amp%a(i - 1)) * xi
         else
           a = amp%a(i)
         end if

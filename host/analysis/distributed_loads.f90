@@ -1,0 +1,340 @@
+!> Distributed loads of the steps (*DLOAD, *DSLOAD): per element and load (BX/BY/BZ, GRAV, face pressure Pn, user
+!> load Un) the magnitude in force, its propagation across steps (OP=MOD modifies the load of the same element and
+!> label, OP=NEW removes every inherited one, which then decays over the step like a removed concentrated load), the
+!> nodal forces of body loads (per unit reference volume; GRAV: density x g, exact for the conserved mass) and of
+!> face pressure (on the current face under NLGEOM: a follower load, with its load stiffness), and the NDLOAD,
+!> JDLTYP, ADLMAG, DDLMAG arrays of a user element.
+module distributed_loads
+  use ldfcz_kinds, only: dp
+  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user
+  use element_faces, only: element_face_nodes
+  use solver_text, only: itoa
+  implicit none
+  private
+  public :: dload_state_t, dload_step_begin, dload_element, dload_uel_arrays, dload_has
+
+  real(dp), parameter :: gauss2 = 0.577350269189625764509148780502_dp  !< 1/sqrt(3)
+
+  !> The distributed loads in force in the current step, one record per element and label.
+  type :: dload_state_t
+    integer :: n = 0                         !< records
+    integer, allocatable :: elem(:)          !< element index
+    integer, allocatable :: kind(:)          !< dload_bx, dload_grav, dload_pressure, dload_user
+    integer, allocatable :: label(:)         !< direction (BX..BZ: 1..3), face (Pn), n (Un); 0 for GRAV
+    integer, allocatable :: amp(:)           !< amplitude (0: the step's default)
+    logical, allocatable :: removed(:)       !< removed by OP=NEW in this step (decays to zero)
+    real(dp), allocatable :: base(:, :)      !< (3, n) value at the start of the step (vector for body loads)
+    real(dp), allocatable :: target(:, :)    !< (3, n) magnitude in this step
+    integer, allocatable :: ptr(:)           !< (nelem+1) records of element ie: idx(ptr(ie):ptr(ie+1)-1)
+    integer, allocatable :: idx(:)
+    integer :: step = 0                      !< step the records belong to
+    real(dp) :: t_total0 = 0.0_dp            !< total time at the start of that step
+  end type dload_state_t
+
+contains
+
+  !> Element ie carries a distributed load in the current step.
+  pure logical function dload_has(ds, ie)
+    type(dload_state_t), intent(in) :: ds  !< load state
+    integer, intent(in) :: ie              !< element index
+    dload_has = .false.
+    if (.not. allocated(ds%ptr)) return
+    dload_has = ds%ptr(ie + 1) > ds%ptr(ie)
+  end function dload_has
+
+  !> Value (3-vector) of record k at step time t of the step of the records.
+  pure function record_value(ds, model, k, t) result(v)
+    type(dload_state_t), intent(in) :: ds  !< load state
+    type(model_t), intent(in) :: model     !< the model
+    integer, intent(in) :: k               !< record
+    real(dp), intent(in) :: t              !< step time
+    real(dp) :: v(3), s
+    associate (st => model%steps(ds%step))
+      s = min(1.0_dp, max(0.0_dp, t / st%period))
+      if (st%amp_step) s = 1.0_dp
+      if (ds%amp(k) > 0) then
+        v = amplitude_factor(model%amplitudes(ds%amp(k)), t, ds%t_total0) * ds%target(:, k)
+      else
+        v = ds%base(:, k) + s * (ds%target(:, k) - ds%base(:, k))
+      end if
+    end associate
+  end function record_value
+
+  !> Start of step is (at total time t_total0): inherited loads hold the value reached, OP=NEW removes them, the
+  !> step's *DLOAD/*DSLOAD lines modify or add records in deck order. stat /= 0 (errmsg) for a face that the
+  !> element does not have.
+  subroutine dload_step_begin(ds, model, is, t_total0, stat, errmsg)
+    type(dload_state_t), intent(inout) :: ds             !< load state
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(in) :: is                            !< step number
+    real(dp), intent(in) :: t_total0                     !< total time at the start of step is
+    integer, intent(out) :: stat                         !< 0 ok, 2 input error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: k, j, m, ie, lab, found, loc(8), nfn, keep
+    real(dp) :: vec(3)
+    character(len=16) :: b
+    stat = 0
+    errmsg = ''
+    if (.not. allocated(ds%elem)) then
+      allocate (ds%elem(0), ds%kind(0), ds%label(0), ds%amp(0), ds%removed(0), ds%base(3, 0), ds%target(3, 0))
+    end if
+    ! values reached at the end of the previous step; records that decayed to zero are dropped
+    keep = 0
+    do k = 1, ds%n
+      if (ds%removed(k)) cycle
+      vec = record_value(ds, model, k, model%steps(ds%step)%period)
+      keep = keep + 1
+      ds%elem(keep) = ds%elem(k)
+      ds%kind(keep) = ds%kind(k)
+      ds%label(keep) = ds%label(k)
+      ds%base(:, keep) = vec
+      ds%target(:, keep) = vec
+    end do
+    ds%n = keep
+    ds%amp(1:keep) = 0
+    ds%removed(1:keep) = .false.
+    ds%step = is
+    ds%t_total0 = t_total0
+    associate (st => model%steps(is))
+      if (st%dload_op_new) then
+        ds%removed(1:ds%n) = .true.
+        ds%target(:, 1:ds%n) = 0.0_dp
+      end if
+      do k = 1, st%ndload
+        associate (dl => st%dloads(k))
+          do j = 1, size(dl%elems)
+            ie = dl%elems(j)
+            select case (dl%kind)
+            case (dload_bx)
+              lab = maxloc(dl%dir, 1)
+              vec = dl%value * dl%dir
+            case (dload_grav)
+              lab = 0
+              vec = dl%value * dl%dir
+            case default
+              lab = dl%faces(j)
+              if (dl%kind == dload_user) lab = dl%label
+              vec = [dl%value, 0.0_dp, 0.0_dp]
+            end select
+            if (dl%kind == dload_pressure) then
+              call element_face_nodes(model%elem_kind(ie), lab, loc, nfn)
+              if (nfn == 0) then
+                write (b, '(i0)') model%elem_id(ie)
+                stat = 2
+                errmsg = dl%pos%file//':'//itoa(dl%pos%line)//': '//trim(dl%pos%keyword)//': element '// &
+                  trim(b)//' has no face S'//itoa(lab)
+                return
+              end if
+            end if
+            found = 0
+            do m = 1, ds%n
+              if (ds%removed(m)) cycle
+              if (ds%elem(m) == ie .and. ds%kind(m) == dl%kind .and. ds%label(m) == lab) then
+                found = m
+                exit
+              end if
+            end do
+            if (found == 0) then
+              call grow(ds)
+              found = ds%n
+              ds%elem(found) = ie
+              ds%kind(found) = dl%kind
+              ds%label(found) = lab
+              ds%base(:, found) = 0.0_dp
+              ds%removed(found) = .false.
+            end if
+            ds%target(:, found) = vec
+            ds%amp(found) = dl%amplitude
+          end do
+        end associate
+      end do
+    end associate
+    ! records by element
+    if (allocated(ds%ptr)) deallocate (ds%ptr, ds%idx)
+    allocate (ds%ptr(model%nelem + 1), ds%idx(ds%n))
+    ds%ptr = 0
+    do k = 1, ds%n
+      ds%ptr(ds%elem(k) + 1) = ds%ptr(ds%elem(k) + 1) + 1
+    end do
+    ds%ptr(1) = 1
+    do ie = 1, model%nelem
+      ds%ptr(ie + 1) = ds%ptr(ie + 1) + ds%ptr(ie)
+    end do
+    block
+      integer, allocatable :: fill(:)
+      fill = ds%ptr(1:model%nelem)
+      do k = 1, ds%n
+        ds%idx(fill(ds%elem(k))) = k
+        fill(ds%elem(k)) = fill(ds%elem(k)) + 1
+      end do
+    end block
+  end subroutine dload_step_begin
+
+  !> External nodal forces f (element dof layout, node-major) of the continuum element ie at step time t, and
+  !> when want_k the load stiffness k_l = -df/du of follower pressure under NLGEOM (unsymmetric in general).
+  !> x0 (ndim, nn) reference coordinates, u the element displacements, nfun/wdet the reference integration data,
+  !> thickness of plane elements, density of the material.
+  pure subroutine dload_element(ds, model, ie, t, x0, u, nlgeom, nfun, wdet, thickness, density, want_k, f, k_l)
+    type(dload_state_t), intent(in) :: ds   !< load state
+    type(model_t), intent(in) :: model      !< the model
+    integer, intent(in) :: ie               !< element
+    real(dp), intent(in) :: t               !< step time (end of the increment)
+    real(dp), intent(in) :: x0(:, :)        !< (ndim, nn) reference coordinates
+    real(dp), intent(in) :: u(:)            !< (ndim*nn) displacements
+    logical, intent(in) :: nlgeom           !< follower pressure on the current face
+    real(dp), intent(in) :: nfun(:, :)      !< (>= nn, nip) shape functions at the integration points
+    real(dp), intent(in) :: wdet(:)         !< (nip) weight x reference Jacobian
+    real(dp), intent(in) :: thickness       !< plane-strain thickness (2D)
+    real(dp), intent(in) :: density         !< mass density (GRAV)
+    logical, intent(in) :: want_k           !< load stiffness wanted
+    real(dp), intent(out) :: f(:)           !< external forces
+    real(dp), intent(out) :: k_l(:, :)      !< load stiffness
+    integer :: j, k, ndim, nn, a, ip
+    real(dp) :: v(3), x(size(x0, 1), size(x0, 2)), w
+    ndim = size(x0, 1)
+    nn = size(x0, 2)
+    f = 0.0_dp
+    k_l = 0.0_dp
+    x = x0
+    if (nlgeom) x = x0 + reshape(u, [ndim, nn])
+    do j = ds%ptr(ie), ds%ptr(ie + 1) - 1
+      k = ds%idx(j)
+      v = record_value(ds, model, k, t)
+      select case (ds%kind(k))
+      case (dload_bx, dload_grav)
+        w = 1.0_dp
+        if (ndim == 2) w = thickness
+        if (ds%kind(k) == dload_grav) w = w * density
+        do ip = 1, size(wdet)
+          do a = 1, nn
+            f((a - 1) * ndim + 1:a * ndim) = f((a - 1) * ndim + 1:a * ndim) + w * wdet(ip) * nfun(a, ip) * v(1:ndim)
+          end do
+        end do
+      case (dload_pressure)
+        call face_pressure(model%elem_kind(ie), ds%label(k), v(1), x, ndim, thickness, nlgeom .and. want_k, f, k_l)
+      end select
+    end do
+  end subroutine dload_element
+
+  !> Pressure p on face `face` of an element with current coordinates x: f -= p N_a n dA (n outward, element_faces),
+  !> and with follower the stiffness -df/du. Face interpolation by the number of face nodes: 2 (2D line, 2-point
+  !> Gauss) or 4 (bilinear quadrilateral, 2x2 Gauss).
+  pure subroutine face_pressure(kind, face, p, x, ndim, thickness, follower, f, k_l)
+    integer, intent(in) :: kind, face, ndim
+    real(dp), intent(in) :: p, x(:, :), thickness
+    logical, intent(in) :: follower
+    real(dp), intent(inout) :: f(:), k_l(:, :)
+    integer :: loc(8), nfn, g, h, a, b, ia, ib
+    real(dp) :: xi, eta, nf(4), dxi(4), deta(4), xs(3), xe(3), na(3), sx(3, 3), se(3, 3), c
+    call element_face_nodes(kind, face, loc, nfn)
+    if (ndim == 2 .and. nfn == 2) then
+      do g = 1, 2
+        xi = merge(-gauss2, gauss2, g == 1)
+        nf(1:2) = [0.5_dp * (1.0_dp - xi), 0.5_dp * (1.0_dp + xi)]
+        dxi(1:2) = [-0.5_dp, 0.5_dp]
+        xs(1:2) = dxi(1) * x(:, loc(1)) + dxi(2) * x(:, loc(2))
+        do a = 1, 2
+          ia = (loc(a) - 1) * 2
+          f(ia + 1) = f(ia + 1) - p * thickness * nf(a) * xs(2)
+          f(ia + 2) = f(ia + 2) + p * thickness * nf(a) * xs(1)
+          if (.not. follower) cycle
+          do b = 1, 2
+            ib = (loc(b) - 1) * 2
+            c = p * thickness * nf(a) * dxi(b)
+            k_l(ia + 1, ib + 2) = k_l(ia + 1, ib + 2) + c
+            k_l(ia + 2, ib + 1) = k_l(ia + 2, ib + 1) - c
+          end do
+        end do
+      end do
+    else if (ndim == 3 .and. nfn == 4) then
+      do g = 1, 2
+        do h = 1, 2
+          xi = merge(-gauss2, gauss2, g == 1)
+          eta = merge(-gauss2, gauss2, h == 1)
+          nf = 0.25_dp * [(1 - xi) * (1 - eta), (1 + xi) * (1 - eta), (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)]
+          dxi = 0.25_dp * [-(1 - eta), (1 - eta), (1 + eta), -(1 + eta)]
+          deta = 0.25_dp * [-(1 - xi), -(1 + xi), (1 + xi), (1 - xi)]
+          xs = 0.0_dp
+          xe = 0.0_dp
+          do a = 1, 4
+            xs = xs + dxi(a) * x(:, loc(a))
+            xe = xe + deta(a) * x(:, loc(a))
+          end do
+          na = [xs(2) * xe(3) - xs(3) * xe(2), xs(3) * xe(1) - xs(1) * xe(3), xs(1) * xe(2) - xs(2) * xe(1)]
+          sx = skew(xs)
+          se = skew(xe)
+          do a = 1, 4
+            ia = (loc(a) - 1) * 3
+            f(ia + 1:ia + 3) = f(ia + 1:ia + 3) - p * nf(a) * na
+            if (.not. follower) cycle
+            ! d(xs x xe)/du_b = deta_b [xs]x - dxi_b [xe]x
+            do b = 1, 4
+              ib = (loc(b) - 1) * 3
+              k_l(ia + 1:ia + 3, ib + 1:ib + 3) = k_l(ia + 1:ia + 3, ib + 1:ib + 3) + p * nf(a) * &
+                (deta(b) * sx - dxi(b) * se)
+            end do
+          end do
+        end do
+      end do
+    end if
+  end subroutine face_pressure
+
+  !> [v]x: the matrix of the cross product v x (.).
+  pure function skew(v) result(s)
+    real(dp), intent(in) :: v(3)
+    real(dp) :: s(3, 3)
+    s = reshape([0.0_dp, v(3), -v(2), -v(3), 0.0_dp, v(1), v(2), -v(1), 0.0_dp], [3, 3])
+  end function skew
+
+  !> The Un loads of user element ie as Abaqus passes them: ndload active loads, jdltyp(k) = n, adlmag(k) the
+  !> magnitude at the end of the increment (step time t_end), ddlmag(k) its increment over dt.
+  pure subroutine dload_uel_arrays(ds, model, ie, t_end, dt, ndload, jdltyp, adlmag, ddlmag)
+    type(dload_state_t), intent(in) :: ds  !< load state
+    type(model_t), intent(in) :: model     !< the model
+    integer, intent(in) :: ie              !< element
+    real(dp), intent(in) :: t_end, dt      !< step time at the end of the increment, increment
+    integer, intent(out) :: ndload         !< loads on the element
+    integer, intent(out) :: jdltyp(:)      !< (mdload) load type numbers
+    real(dp), intent(out) :: adlmag(:)     !< (mdload) magnitudes
+    real(dp), intent(out) :: ddlmag(:)     !< (mdload) increments
+    integer :: j, k
+    real(dp) :: v1(3), v0(3)
+    ndload = 0
+    jdltyp = 0
+    adlmag = 0.0_dp
+    ddlmag = 0.0_dp
+    if (.not. allocated(ds%ptr)) return
+    do j = ds%ptr(ie), ds%ptr(ie + 1) - 1
+      k = ds%idx(j)
+      if (ds%kind(k) /= dload_user .or. ndload >= size(jdltyp)) cycle
+      if (model%elem_kind(ie) /= etype_user) cycle
+      ndload = ndload + 1
+      v1 = record_value(ds, model, k, t_end)
+      v0 = record_value(ds, model, k, max(0.0_dp, t_end - dt))
+      jdltyp(ndload) = ds%label(k)
+      adlmag(ndload) = v1(1)
+      ddlmag(ndload) = v1(1) - v0(1)
+    end do
+  end subroutine dload_uel_arrays
+
+  pure subroutine grow(ds)
+    type(dload_state_t), intent(inout) :: ds
+    integer :: c
+    integer, allocatable :: ti(:)
+    logical, allocatable :: tl(:)
+    real(dp), allocatable :: tr(:, :)
+    c = size(ds%elem)
+    if (ds%n == c) then
+      c = max(8, 2 * c)
+      allocate (ti(c)); ti(1:ds%n) = ds%elem(1:ds%n); call move_alloc(ti, ds%elem)
+      allocate (ti(c)); ti(1:ds%n) = ds%kind(1:ds%n); call move_alloc(ti, ds%kind)
+      allocate (ti(c)); ti(1:ds%n) = ds%label(1:ds%n); call move_alloc(ti, ds%label)
+      allocate (ti(c)); ti(1:ds%n) = ds%amp(1:ds%n); call move_alloc(ti, ds%amp)
+      allocate (tl(c)); tl(1:ds%n) = ds%removed(1:ds%n); call move_alloc(tl, ds%removed)
+      allocate (tr(3, c)); tr(:, 1:ds%n) = ds%base(:, 1:ds%n); call move_alloc(tr, ds%base)
+      allocate (tr(3, c)); tr(:, 1:ds%n) = ds%target(:, 1:ds%n); call move_alloc(tr, ds%target)
+    end if
+    ds%n = ds%n + 1
+  end subroutine grow
+
+end module distributed_loads
