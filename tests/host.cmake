@@ -174,3 +174,8 @@ add_test(NAME deck_thermal_expansion COMMAND Python3::Interpreter ${LDFCZ_CHECK_
   --out ${LDFCZ_RUNS}/thermal --case thermal --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
 set_tests_properties(deck_dload_balloon deck_dload_balloon3d deck_dload_uel deck_initial_stress deck_thermal_expansion PROPERTIES
   LABELS "deck" TIMEOUT 300)
+
+# a user UMAT that returns NaN at one point: the cutback's cause (element, routine, point, reason) in JOB.log once,
+# at default verbosity
+ldfcz_add_deck_test(NAME deck_broken_umat DECK ${LDFCZ_DECKS}/single/broken_umat.inp CASE broken_umat
+  USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_broken.f90 EXIT 3)

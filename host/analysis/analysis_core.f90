@@ -13,7 +13,7 @@ module analysis_core
     sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
   use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
-  use solver_text, only: itoa
+  use solver_text, only: itoa, rtoa
   use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
   implicit none
   private
@@ -333,7 +333,8 @@ contains
   !> Element loop at the current estimate an%u (increment du = u - u_conv): every element gets a fresh copy of its
   !> converged state; internal forces into an%fint, tangents into an%sys when want_k. pnewdt_min is the smallest
   !> PNEWDT requested; stat /= 0 when an element failed (errmsg names it).
-  subroutine analysis_assemble(an, model, kstep, kinc, time, dtime, period, nlgeom, want_k, pnewdt_min, stat, errmsg)
+  subroutine analysis_assemble(an, model, kstep, kinc, time, dtime, period, nlgeom, want_k, pnewdt_min, stat, errmsg, &
+      pnewdt_who)
     type(analysis_t), intent(inout) :: an                !< analysis data
     type(model_t), intent(in) :: model                   !< the model
     integer, intent(in) :: kstep                         !< step number
@@ -346,9 +347,11 @@ contains
     real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
     integer, intent(out) :: stat                         !< 0 ok, 1 an element failed
     character(len=:), allocatable, intent(out) :: errmsg !< message of the first failure
-    integer :: ie, ic, c, n, k, fail_elem, st, m
+    !> which element asked for the smallest PNEWDT < 1 (label, routine, value), '' when none did
+    character(len=:), allocatable, intent(out), optional :: pnewdt_who
+    integer :: ie, ic, c, n, k, fail_elem, st, m, pn_elem
     real(dp), allocatable :: ke(:, :), fel(:), kx(:, :)
-    real(dp) :: pn
+    real(dp) :: pn, pn_worst
     character(len=256) :: msg, first_msg
     integer(i8) :: c0, c1, rate
 
@@ -358,6 +361,8 @@ contains
     pnewdt_min = pnewdt_large
     fail_elem = huge(1)
     first_msg = ''
+    pn_worst = 1.0_dp
+    pn_elem = 0
     if (want_k) call sparse_zero(an%sys)
     an%fdle = 0.0_dp
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
@@ -386,6 +391,14 @@ contains
           ke(1:n, 1:n) = 0.0_dp
         end if
         pnewdt_min = min(pnewdt_min, pn)
+        if (pn < 1.0_dp) then
+          !$omp critical (analysis_pnewdt)
+          if (pn < pn_worst .or. (pn == pn_worst .and. pn_elem > 0 .and. ie < pn_elem)) then
+            pn_worst = pn
+            pn_elem = ie
+          end if
+          !$omp end critical (analysis_pnewdt)
+        end if
         an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
         if (want_k) then
           if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
@@ -411,6 +424,11 @@ contains
     if (fail_elem /= huge(1)) then
       stat = 1
       errmsg = trim(first_msg)
+    end if
+    if (present(pnewdt_who)) then
+      pnewdt_who = ''
+      if (pn_elem > 0) pnewdt_who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
+        trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
     end if
     call system_clock(c1)
     an%t_assembly = an%t_assembly + real(c1 - c0, dp) / real(rate, dp)
@@ -486,7 +504,7 @@ contains
       if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
         write (b, '(i0)') model%elem_id(ie)
         stat = 1
-        msg = 'UEL returned non-finite RHS or AMATRX for element '//trim(b)
+        msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
         return
       end if
       if (nsv > 0) an%trial(ie)%svars = sv(1:nsv)
@@ -510,8 +528,11 @@ contains
         st%energy(4) = e2(2)
       end associate
       if (stat /= 0) then
+        ! the element's own message names the element already; say which routine it came from
         write (b, '(i0)') model%elem_id(ie)
-        msg = 'element '//trim(b)//': '//trim(msg)
+        if (index(msg, 'element '//trim(b)//':') == 1) msg = msg(len('element '//trim(b)//':') + 2:)
+        msg = 'element '//trim(b)//' ('//trim(merge('UMAT    ', '*ELASTIC', &
+          an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
         stat = 1
       end if
       if (stat == 0 .and. dload_has(an%dl, ie)) then

@@ -46,6 +46,8 @@ module newton_iteration
     real(dp) :: t_solve_last = 0.0_dp   !< wall time of one solve (GMRES iteration) with the factors
     integer :: tangents_skipped = 0     !< mode auto: iterations assembled without a tangent (this run)
     integer :: stale_solves = 0         !< of those, not converged: solved with the previous iterate's tangent
+    character(len=:), allocatable :: last_reason  !< the last cutback reason logged at default verbosity
+    integer :: reason_repeats = 0       !< cutbacks for that same reason since it was logged
   end type newton_state_t
 
 contains
@@ -82,7 +84,7 @@ contains
     real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
     character(len=*), intent(out) :: outcome             !< cutback reason ('' when converged)
     integer :: i, stat, kit, kbudget
-    character(len=:), allocatable :: errmsg
+    character(len=:), allocatable :: errmsg, pnewdt_who
     character(len=256) :: smsg
     real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s, r_norm, r_norm_prev, eta, eta_prev, tol
     real(dp), allocatable :: r_copy(:)
@@ -130,19 +132,20 @@ contains
           r_prev = r_max
         end if
         call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, an%neq > 0 .and. want_k, &
-          pnewdt_min, stat, errmsg)
+          pnewdt_min, stat, errmsg, pnewdt_who)
         if (abaqus_stop_requested()) then
           stopped = .true.
           exit newton_loop
         end if
         if (stat /= 0) then
           outcome = 'cutback: element failure'
-          if (verbose) call output_log(out, '  '//errmsg)
+          call log_reason(errmsg)
           pnewdt_min = min(pnewdt_min, 0.25_dp)
           exit newton_loop
         end if
         if (pnewdt_min < 1.0_dp) then
           outcome = 'cutback: PNEWDT '//rtoa(pnewdt_min)
+          call log_reason(pnewdt_who)
           exit newton_loop
         end if
         do i = 1, an%ndof
@@ -268,6 +271,30 @@ contains
         if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
       end do newton_loop
     end associate
+  contains
+    !> A cutback's cause (element, point, routine, reason) in the log at default verbosity, once: the same reason
+    !> again is only counted, and the count is logged when another reason comes.
+    subroutine log_reason(reason)
+      character(len=*), intent(in) :: reason  !< what the element or routine reported
+      character(len=:), allocatable :: where
+      if (len_trim(reason) == 0) return
+      where = '  step '//itoa(is)//' increment '//itoa(kinc)//': cutback: '
+      if (verbose) then
+        call output_log(out, where//trim(reason))
+        return
+      end if
+      if (allocated(ns%last_reason)) then
+        if (ns%last_reason == trim(reason)) then
+          ns%reason_repeats = ns%reason_repeats + 1
+          return
+        end if
+        if (ns%reason_repeats > 0) call output_log(out, '  (the cutback reason before repeated '// &
+          itoa(ns%reason_repeats)//' more times)')
+      end if
+      ns%last_reason = trim(reason)
+      ns%reason_repeats = 0
+      call output_log(out, where//trim(reason))
+    end subroutine log_reason
   end subroutine newton_solve
 
 end module newton_iteration

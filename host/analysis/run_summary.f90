@@ -81,7 +81,7 @@ contains
   subroutine run_summary_write(out, summary)
     type(output_t), intent(inout) :: out           !< output files
     type(run_summary_t), intent(in) :: summary     !< counters and measures
-    character(len=160) :: line
+    character(len=200) :: line
     real(dp) :: err
     call output_log(out, '')
     call output_log(out, '=== ldfcz summary ===')
@@ -106,9 +106,15 @@ contains
     write (line, '(a,i0,a)') 'peak memory (VmHWM) ', summary%peak_kb, ' kB'
     call output_log(out, trim(line))
     ! energy balance: external work of the reactions against stored + dissipated energy, relative difference
-    err = abs(summary%w_ext - summary%e_int) / max(abs(summary%w_ext), abs(summary%e_int), tiny(1.0_dp))
-    write (line, '(a,es12.4,a,es12.4,a,es10.2)') 'energy balance: external work ', summary%w_ext, &
-      ' N mm, stored + dissipated ', summary%e_int, ' N mm, relative difference ', err
+    if (summary%e_int == 0.0_dp .and. summary%w_ext /= 0.0_dp) then
+      ! no routine filled SSE/SPD (UMAT) or ENERGY (UEL): there is nothing to balance, not a 100 % imbalance
+      write (line, '(a,es12.4,a)') 'energy balance: external work ', summary%w_ext, &
+        ' N mm; stored + dissipated energy not available (the user routines returned no SSE/SPD or ENERGY)'
+    else
+      err = abs(summary%w_ext - summary%e_int) / max(abs(summary%w_ext), abs(summary%e_int), tiny(1.0_dp))
+      write (line, '(a,es12.4,a,es12.4,a,es10.2)') 'energy balance: external work ', summary%w_ext, &
+        ' N mm, stored + dissipated ', summary%e_int, ' N mm, relative difference ', err
+    end if
     call output_log(out, trim(line))
     if (summary%max_open_ratio > 0.0_dp) then
       write (line, '(a,es10.3,a)') 'largest cohesive opening increment / delta ', summary%max_open_ratio, &

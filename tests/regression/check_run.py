@@ -175,6 +175,21 @@ def case_nonconvergence(d, job):
         fail("no converged increment kept")
 
 
+def case_broken_umat(d, job):
+    """A user UMAT returns NaN at point 3 of element 2 (tests/regression/user_umat_broken.f90): without -v, the log
+    names the element, the routine, the point and the reason of the cutback, once (the repeats are not logged
+    again), and the run stops with exit 3 (checked by the caller)."""
+    with open(os.path.join(d, job + ".log")) as f:
+        log = f.read()
+    want = "element 2 (UMAT): material returned a non-finite stress or DDSDDE at point 3"
+    n = log.count(want)
+    print("cause of the cutback logged %d time(s): %s" % (n, want))
+    if n != 1:
+        fail("the log names the failing element/point %d times (want 1)" % n)
+    if "cutbacks 3" not in log:
+        fail("expected 3 cutbacks before the minimum increment")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
