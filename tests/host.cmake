@@ -179,3 +179,6 @@ set_tests_properties(deck_dload_balloon deck_dload_balloon3d deck_dload_uel deck
 # at default verbosity
 ldfcz_add_deck_test(NAME deck_broken_umat DECK ${LDFCZ_DECKS}/single/broken_umat.inp CASE broken_umat
   USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_broken.f90 EXIT 3)
+
+# the README's first deck: two blocks glued by one cohesive element (force = A T(opening), peak A T_max)
+ldfcz_add_deck_test(NAME deck_first_two_blocks DECK ${LDFCZ_DECKS}/first/two_blocks.inp CASE first_deck)

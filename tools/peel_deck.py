@@ -264,7 +264,7 @@ def build(p):
     w('*OUTPUT, FIELD, FREQUENCY=%d' % p.field_frequency)
     w('*NODE OUTPUT')
     w('U, RF')
-    w('*ELEMENT OUTPUT, ELSET=COATING')
+    w('*ELEMENT OUTPUT')
     w('S, SDV')
     w('*NODE PRINT, NSET=LOAD, TOTALS=YES')
     w('RF1, U1, U2')

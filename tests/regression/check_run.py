@@ -190,6 +190,22 @@ def case_broken_umat(d, job):
         fail("expected 3 cutbacks before the minimum increment")
 
 
+def case_first_deck(d, job):
+    """The README's first deck (decks/first/two_blocks.inp): two elastic blocks glued by one LDF element. The blocks
+    and the interface carry the same force, so at every increment RF3(TOP) = A T(opening) with the opening
+    GLUE_TOP.U3 - GLUE_BOTTOM.U3 and T of Eq. 20 (A = 1 mm^2; equilibrium to the Newton tolerance, rtol 1e-2 as
+    case_cohesive_block); the largest force is A T_max = 20 N (Eq. 5), reached at an opening of delta, within the
+    increment size (0.4 um of pull, about 2 % of the force near the peak's flat top: rtol 2e-3 there)."""
+    row, rows = last_row(d, job)
+    peak = 0.0
+    for r in rows:
+        rf = float(r["TOP.RF3"])
+        opening = float(r["GLUE_TOP.U3"]) - float(r["GLUE_BOTTOM.U3"])
+        close("inc %s: TOP.RF3 vs A T(opening)" % r["inc"], rf, ldf_traction(opening), 1e-2, 1e-6)
+        peak = max(peak, rf)
+    close("peak force vs A T_max", peak, PHI / (math.e * DELTA), 2e-3)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
