@@ -182,3 +182,11 @@ ldfcz_add_deck_test(NAME deck_broken_umat DECK ${LDFCZ_DECKS}/single/broken_umat
 
 # the README's first deck: two blocks glued by one cohesive element (force = A T(opening), peak A T_max)
 ldfcz_add_deck_test(NAME deck_first_two_blocks DECK ${LDFCZ_DECKS}/first/two_blocks.inp CASE first_deck)
+
+# material-point driver: stress relaxation in the Leonov model's linear viscoelastic limit (closed form)
+if(TARGET material_point)
+  add_test(NAME material_linear_relaxation COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_relaxation.py --mp $<TARGET_FILE:material_point>
+    --case ${LDFCZ_DECKS}/material/history/linear_relaxation_shear.txt --out ${LDFCZ_RUNS}/material_linear_relaxation)
+  set_tests_properties(material_linear_relaxation PROPERTIES LABELS "umat" TIMEOUT 300)
+endif()

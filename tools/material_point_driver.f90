@@ -2,7 +2,7 @@
 !> calls it under NLGEOM (Hughes-Winget DSTRAN and DROT from DFGRD0/DFGRD1, STRESS and STRAN rotated by DROT before
 !> the call, fresh copies of the converged STRESS/STATEV on every call, PNEWDT cutbacks).
 !>
-!> Usage:  material_point [case.txt] [key=value ...]     (command-line keys override the file)
+!> Usage:  material_point [case.txt] [key=value ...]     (command-line keys override the file; -h, --help)
 !> Keys (file lines "key = value", '#' starts a comment):
 !>   mode         uniaxial | shear | deformation
 !>                uniaxial: true axial strain ln(lambda_1) = rate*t, lateral Cauchy stresses zero (Newton on the
@@ -14,6 +14,13 @@
 !>   time_end     end time for mode = deformation (s)        [1.0]
 !>   f_end        9 numbers, F at time_end, row by row       [identity]
 !>   steps        number of increments (before cutbacks)     [200]
+!>   segment      KIND TARGET DURATION STEPS, repeatable: a history of segments for mode uniaxial or shear,
+!>                run in the order given (instead of rate/strain_end/steps). KIND strain: the axial true strain
+!>                ln(lambda_1) (uniaxial) or the shear (shear) goes linearly to TARGET in DURATION seconds; stress
+!>                (uniaxial only): the axial Cauchy stress goes linearly to TARGET (MPa), the axial stretch follows
+!>                (Newton with DDSDDE); hold: the quantity the previous segment controlled stays at its value
+!>                (TARGET ignored): relaxation after a strain segment, creep after a stress segment. Unloading
+!>                and cycles are segments back to a lower target.
 !>   rotation     superposed rigid rotation at the end (degrees), growing linearly in time   [0]
 !>   axis         rotation axis 1, 2 or 3                    [3]
 !>   props        10 numbers (PROPS, Table 1 order)          [Table 1, PET]
@@ -36,9 +43,15 @@ program material_point
   integer :: steps = 200, axis = 3, nstatv = 11, output_every = 1
   real(dp), allocatable :: statev(:), statev_trial(:)
   real(dp) :: stress(6), stress_trial(6), stran(6), stran_trial(6), ddsdde(6, 6)
-  real(dp) :: t, t_total, dt_target, h, f0(3, 3), f1(3, 3), lat(2), lat_trial(2), pnewdt
-  integer :: unit, inc, kinc, ncut
+  real(dp) :: t, t_total, dt_target, h, f0(3, 3), f1(3, 3), xs(3), xs_trial(3), pnewdt
+  integer :: unit, inc, kinc, ncut, iseg, nseg = 0, ctrl
   logical :: ok
+  integer, parameter :: max_seg = 200
+  integer, parameter :: ctrl_strain = 1, ctrl_stress = 2
+  character(len=8) :: seg_kind(max_seg)
+  real(dp) :: seg_target(max_seg), seg_time(max_seg), t0, x0_seg, s0_seg, x_goal
+  integer :: seg_steps(max_seg)
+  real(dp) :: s_target_now
 
   f_end = identity3()
   props = [1250.0_dp, 0.4_dp, 28.4_dp, 0.486_dp, 0.95_dp, 0.047_dp, 28.2_dp, 0.990_dp, 200.0_dp, -4.0_dp]
@@ -46,10 +59,24 @@ program material_point
   if (nstatv < 1 .or. steps < 1 .or. output_every < 1) call fail('nstatv, steps and output_every must be >= 1')
   select case (mode)
   case ('uniaxial', 'shear')
-    if (rate == 0.0_dp) call fail('rate must not be zero')
-    t_total = abs(strain_end / rate)
+    if (nseg == 0) then
+      ! the single ramp of rate and strain_end
+      if (rate == 0.0_dp) call fail('rate must not be zero')
+      nseg = 1
+      seg_kind(1) = 'strain'
+      seg_time(1) = abs(strain_end / rate)
+      seg_target(1) = rate * seg_time(1)
+      seg_steps(1) = steps
+    end if
+    t_total = sum(seg_time(1:nseg))
   case ('deformation')
+    if (nseg > 0) call fail('segments need mode = uniaxial or shear')
     t_total = time_end
+    nseg = 1
+    seg_kind(1) = 'strain'
+    seg_time(1) = time_end
+    seg_steps(1) = steps
+    seg_target(1) = 0.0_dp
   case default
     call fail('unknown mode "' // trim(mode) // '" (uniaxial, shear, deformation)')
   end select
@@ -58,38 +85,54 @@ program material_point
   statev = 0.0_dp
   stress = 0.0_dp
   stran = 0.0_dp
-  lat = 0.0_dp   ! ln of the lateral stretches (uniaxial mode)
+  xs = 0.0_dp   ! ln of the three stretches (uniaxial) or the shear (shear, xs(1))
 
   open (newunit=unit, file=trim(output), status='replace', action='write')
   call write_header()
   t = 0.0_dp
-  f0 = deformation(0.0_dp, lat)
+  f0 = deformation(0.0_dp, xs)
   call write_row(t, f0)
-  dt_target = t_total / steps
   kinc = 0
   ncut = 0
-  do inc = 1, steps
-    ! one output increment, with cutbacks on PNEWDT < 1
-    h = dt_target
-    do while (t < inc * dt_target - 1.0e-12_dp * dt_target)
-      h = min(h, inc * dt_target - t)
-      kinc = kinc + 1
-      call increment(t, h, f0, lat, ok, pnewdt, f1, lat_trial)
-      if (.not. ok) then
-        ncut = ncut + 1
-        if (ncut > 10000 .or. h < 1.0e-12_dp * dt_target) call fail('too many cutbacks')
-        h = h * min(0.5_dp, max(0.1_dp, pnewdt))
-        cycle
-      end if
-      t = t + h
-      f0 = f1
-      lat = lat_trial
-      stress = stress_trial
-      stran = stran_trial
-      statev = statev_trial
-      h = min(1.5_dp * h, dt_target)
+  ctrl = ctrl_strain
+  do iseg = 1, nseg
+    t0 = t
+    x0_seg = xs(1)
+    s0_seg = axial_stress()
+    select case (seg_kind(iseg))
+    case ('strain')
+      ctrl = ctrl_strain
+      x_goal = seg_target(iseg)
+    case ('stress')
+      ctrl = ctrl_stress
+      x_goal = seg_target(iseg)
+    case default  ! hold: the controlled quantity keeps its value
+      x_goal = merge(x0_seg, s0_seg, ctrl == ctrl_strain)
+    end select
+    dt_target = seg_time(iseg) / seg_steps(iseg)
+    do inc = 1, seg_steps(iseg)
+      ! one output increment, with cutbacks on PNEWDT < 1
+      h = dt_target
+      do while (t < t0 + inc * dt_target - 1.0e-12_dp * dt_target)
+        h = min(h, t0 + inc * dt_target - t)
+        kinc = kinc + 1
+        call increment(t, h, f0, xs, ok, pnewdt, f1, xs_trial)
+        if (.not. ok) then
+          ncut = ncut + 1
+          if (ncut > 10000 .or. h < 1.0e-12_dp * dt_target) call fail('too many cutbacks')
+          h = h * min(0.5_dp, max(0.1_dp, pnewdt))
+          cycle
+        end if
+        t = t + h
+        f0 = f1
+        xs = xs_trial
+        stress = stress_trial
+        stran = stran_trial
+        statev = statev_trial
+        h = min(1.5_dp * h, dt_target)
+      end do
+      if (mod(inc, output_every) == 0 .or. inc == seg_steps(iseg)) call write_row(t, f0)
     end do
-    if (mod(inc, output_every) == 0 .or. inc == steps) call write_row(t, f0)
   end do
   close (unit)
   write (output_unit, '(a,a,a,i0,a,i0,a)') 'material_point: wrote ', trim(output), ' (', kinc, ' increments, ', &
@@ -128,23 +171,40 @@ contains
     r(i2, i1) = s
   end function rot
 
-  !> Material-frame deformation at time tt (lateral log stretches ll for uniaxial mode), then rotated.
-  function deformation(tt, ll) result(f)
-    real(dp), intent(in) :: tt, ll(2)
+  !> Material-frame deformation for the state x (uniaxial: ln of the three stretches; shear: x(1) the shear;
+  !> deformation: F(tt) of f_end), then rotated by the superposed rotation at time tt.
+  function deformation(tt, x) result(f)
+    real(dp), intent(in) :: tt, x(3)
     real(dp) :: f(3, 3), fm(3, 3)
     fm = identity3()
     select case (mode)
     case ('uniaxial')
-      fm(1, 1) = exp(rate * tt)
-      fm(2, 2) = exp(ll(1))
-      fm(3, 3) = exp(ll(2))
+      fm(1, 1) = exp(x(1))
+      fm(2, 2) = exp(x(2))
+      fm(3, 3) = exp(x(3))
     case ('shear')
-      fm(1, 2) = rate * tt
+      fm(1, 2) = x(1)
     case default
       fm = identity3() + (tt / time_end) * (f_end - identity3())
     end select
     f = matmul(rot(tt), fm)
   end function deformation
+
+  !> Controlled quantity of the current segment at time tt: strain (ln lambda_1 or shear) or axial stress.
+  real(dp) function segment_value(tt) result(v)
+    real(dp), intent(in) :: tt
+    real(dp) :: s0
+    s0 = merge(x0_seg, s0_seg, ctrl == ctrl_strain)
+    v = s0 + (x_goal - s0) * min(1.0_dp, (tt - t0) / seg_time(iseg))
+  end function segment_value
+
+  !> Axial (uniaxial: sigma_11; shear: sigma_12) Cauchy stress of the converged state, material frame.
+  real(dp) function axial_stress() result(v)
+    real(dp) :: r(3, 3), sig_m(3, 3)
+    r = rot(t)
+    sig_m = matmul(transpose(r), matmul(to_tensor(stress, .false.), r))
+    v = merge(sig_m(1, 2), sig_m(1, 1), mode == 'shear')
+  end function axial_stress
 
   real(dp) function det3(a)
     real(dp), intent(in) :: a(3, 3)
@@ -225,48 +285,72 @@ contains
     if (abaqus_stop_requested()) call fail('UMAT stopped the analysis: ' // abaqus_stop_message())
   end subroutine call_umat
 
-  !> One increment t -> t + hh; for uniaxial mode a Newton loop on the lateral log stretches.
-  subroutine increment(tt, hh, fa, lat0, success, pnew, fb, lat1)
-    real(dp), intent(in) :: tt, hh, fa(3, 3), lat0(2)
+  !> One increment t -> t + hh from the state x0: the controlled quantity at t + hh from the segment; for uniaxial
+  !> mode a Newton loop on the free log stretches (lateral ones, and the axial one under stress control).
+  subroutine increment(tt, hh, fa, x0, success, pnew, fb, x1)
+    real(dp), intent(in) :: tt, hh, fa(3, 3), x0(3)
     logical, intent(out) :: success
-    real(dp), intent(out) :: pnew, fb(3, 3), lat1(2)
-    real(dp) :: r(3, 3), sig_m(3, 3), res(2), jac(2, 2), dl(2), dm(3, 3), col(3, 3), jdet, scale
-    integer :: it, b
+    real(dp), intent(out) :: pnew, fb(3, 3), x1(3)
+    real(dp) :: r(3, 3), sig_m(3, 3), res(3), jac(3, 3), dx(3), dm(3, 3), col(3, 3), jdet, scale, st
+    integer :: it, b, first
     success = .false.
-    lat1 = lat0
-    if (mode /= 'uniaxial') then
-      fb = deformation(tt + hh, lat1)
+    x1 = x0
+    if (mode == 'deformation') then
+      fb = deformation(tt + hh, x1)
       call call_umat(tt, hh, fa, fb, pnew)
       success = pnew >= 1.0_dp
       return
     end if
+    if (ctrl == ctrl_strain) x1(1) = segment_value(tt + hh)
+    if (mode == 'shear') then
+      fb = deformation(tt + hh, x1)
+      call call_umat(tt, hh, fa, fb, pnew)
+      success = pnew >= 1.0_dp
+      return
+    end if
+    st = 0.0_dp
+    if (ctrl == ctrl_stress) st = segment_value(tt + hh)
+    first = merge(1, 2, ctrl == ctrl_stress)
     r = rot(tt + hh)
     do it = 1, 40
-      fb = deformation(tt + hh, lat1)
+      fb = deformation(tt + hh, x1)
       call call_umat(tt, hh, fa, fb, pnew)
       if (pnew < 1.0_dp) return
       jdet = det3(fb)
       sig_m = matmul(transpose(r), matmul(to_tensor(stress_trial, .false.), r))
-      res = jdet * [sig_m(2, 2), sig_m(3, 3)]
-      scale = max(1.0_dp, abs(sig_m(1, 1)))
-      if (maxval(abs(res)) <= 1.0e-10_dp * scale) then
+      ! residuals in Kirchhoff stress: axial tau_11 - J s (stress control), lateral tau_22 = tau_33 = 0
+      res = jdet * [sig_m(1, 1) - st, sig_m(2, 2), sig_m(3, 3)]
+      scale = max(1.0_dp, abs(sig_m(1, 1)), abs(st))
+      if (maxval(abs(res(first:3))) <= 1.0e-10_dp * scale) then
         success = .true.
         return
       end if
-      ! d(J sigma')/d ln(lambda_b) = J R^T [C : (R e_b e_b^T R^T)] R  (no spin: Jaumann = material rate)
-      do b = 1, 2
+      ! d(J sigma')/d ln(lambda_b) = J R^T [C : (R e_b e_b^T R^T)] R  (no spin: Jaumann = material rate);
+      ! d(J s)/d ln(lambda_b) = J s
+      do b = 1, 3
         dm = 0.0_dp
-        dm(b + 1, b + 1) = 1.0_dp
+        dm(b, b) = 1.0_dp
         dm = matmul(r, matmul(dm, transpose(r)))
         col = to_tensor(matmul(ddsdde, to_voigt(dm, .true.)), .false.)
         col = jdet * matmul(transpose(r), matmul(col, r))
-        jac(:, b) = [col(2, 2), col(3, 3)]
+        jac(:, b) = [col(1, 1) - jdet * st, col(2, 2), col(3, 3)]
       end do
-      dl = solve2(jac, -res)
-      lat1 = lat1 + dl
+      dx = 0.0_dp
+      if (first == 1) then
+        dx = solve3(jac, -res)
+      else
+        dx(2:3) = solve2(jac(2:3, 2:3), -res(2:3))
+      end if
+      x1 = x1 + dx
     end do
     pnew = 0.5_dp
   end subroutine increment
+
+  function solve3(a, b) result(x)
+    real(dp), intent(in) :: a(3, 3), b(3)
+    real(dp) :: x(3)
+    x = matmul(inv3(a), b)
+  end function solve3
 
   function solve2(a, b) result(x)
     real(dp), intent(in) :: a(2, 2), b(2)
@@ -293,10 +377,10 @@ contains
     sig_m = matmul(transpose(r), matmul(to_tensor(stress, .false.), r))
     select case (mode)
     case ('uniaxial')
-      strain = rate * tt
+      strain = xs(1)
       s_ax = sig_m(1, 1)
     case ('shear')
-      strain = rate * tt
+      strain = xs(1)
       s_ax = sig_m(1, 2)
     case default
       strain = 0.0_dp
@@ -312,6 +396,10 @@ contains
     n = command_argument_count()
     do i = 1, n
       call get_command_argument(i, arg)
+      if (arg == '-h' .or. arg == '--help') then
+        call usage()
+        stop
+      end if
       if (index(arg, '=') == 0) then
         open (newunit=u, file=trim(arg), status='old', action='read', iostat=ios)
         if (ios /= 0) call fail('cannot open case file ' // trim(arg))
@@ -364,6 +452,21 @@ contains
       read (val, *, iostat=ios) output_every
     case ('props')
       read (val, *, iostat=ios) props
+    case ('segment')
+      if (nseg == max_seg) call fail('more than 200 segments')
+      nseg = nseg + 1
+      read (val, *, iostat=ios) seg_kind(nseg), seg_target(nseg), seg_time(nseg), seg_steps(nseg)
+      if (ios == 0) then
+        select case (seg_kind(nseg))
+        case ('strain', 'hold')
+        case ('stress')
+          if (mode /= 'uniaxial') call fail('a stress segment needs mode = uniaxial (set mode before the segments)')
+        case default
+          call fail('segment kind must be strain, stress or hold: '//trim(val))
+        end select
+        if (.not. (seg_time(nseg) > 0.0_dp) .or. seg_steps(nseg) < 1) &
+          call fail('segment needs a duration > 0 and steps >= 1: '//trim(val))
+      end if
     case ('f_end')
       read (val, *, iostat=ios) f_end
       f_end = transpose(f_end)
@@ -373,5 +476,22 @@ contains
     if (ios /= 0) call fail('cannot read the value of ' // trim(key) // ': ' // trim(val))
     if (axis < 1 .or. axis > 3) call fail('axis must be 1, 2 or 3')
   end subroutine set_key
+
+  subroutine usage()
+    write (output_unit, '(a)') 'usage: material_point [case.txt] [key=value ...]', &
+      '  Drives SUBROUTINE UMAT through a homogeneous history as Abaqus/Standard calls it under NLGEOM and writes', &
+      '  a CSV (time, F, Cauchy stress, SDV, strain, stress, J). Keys (in the case file as "key = value", or on', &
+      '  the command line, which overrides the file):', &
+      '  mode = uniaxial | shear | deformation', &
+      '  rate, strain_end, steps      a single strain ramp (uniaxial: true strain; shear: shear)', &
+      '  segment = KIND TARGET DURATION STEPS   repeatable history: KIND strain (to TARGET), stress (uniaxial,', &
+      '                               axial Cauchy stress to TARGET MPa) or hold (relaxation after strain,', &
+      '                               creep after stress); unloading and cycles are segments back down', &
+      '  time_end, f_end (9 numbers)  mode deformation: F(t) = I + t/time_end (f_end - I)', &
+      '  rotation, axis               superposed rigid rotation (degrees at the end, about axis 1..3)', &
+      '  props (10 numbers), nstatv   the UMAT constants (Table 1, PET, by default) and state size', &
+      '  output, output_every         CSV file and output interval', &
+      '  examples: decks/material/*.txt (tension, compression, shear, relaxation, creep)'
+  end subroutine usage
 
 end program material_point

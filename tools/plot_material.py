@@ -5,6 +5,9 @@
   plot_material.py --run BIN [--root DIR]         run every decks/material/*.txt with the driver BIN (from the
                                                   repository root DIR), then write reports/umat/:
                                                   pet_uniaxial.png, pet_shear.png, yield.csv, yield.md
+  plot_material.py --history BIN [--root DIR]     run the segment histories decks/material/history/pet_*.txt
+                                                  (relaxation, creep) and plot stress and strain against time:
+                                                  reports/umat/<case>.png
 
 Uses the standard library; matplotlib only for the PNG (skipped with a note if it is missing).
 Columns used: 'strain' (ln lambda_1 or shear) and 'stress' (material-frame sigma_11 or sigma_12), SDV7 (gamma_p).
@@ -102,7 +105,45 @@ def run_cases(binary, root):
     print(f"plot_material: wrote {outdir}/yield.csv and yield.md")
 
 
+def run_histories(binary, root):
+    """Run the PET segment histories and plot strain and stress against time, one PNG per case."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("plot_material: matplotlib not available, no plots")
+        return
+    outdir = os.path.join(root, "reports", "umat")
+    os.makedirs(outdir, exist_ok=True)
+    for case in sorted(glob.glob(os.path.join(root, "decks", "material", "history", "pet_*.txt"))):
+        subprocess.run([binary, case], cwd=root, check=True)
+        name = os.path.splitext(os.path.basename(case))[0]
+        with open(os.path.join(outdir, name + ".csv"), newline="") as fh:
+            rows = list(csv.DictReader(fh))
+        t = [float(r["time"]) for r in rows]
+        fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True)
+        a1.plot(t, [float(r["strain"]) for r in rows])
+        a1.set_ylabel("true strain ln(lambda_1) (-)")
+        a2.plot(t, [float(r["stress"]) for r in rows])
+        a2.set_ylabel("true stress sigma_11 (MPa)")
+        a2.set_xlabel("time (s)")
+        a1.set_title("PET (Table 1): " + name.replace("pet_", "").replace("_", " "))
+        for a in (a1, a2):
+            a.grid(True, alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(os.path.join(outdir, name + ".png"), dpi=120)
+        plt.close(fig)
+        print(f"plot_material: wrote {outdir}/{name}.png")
+
+
 def main(argv):
+    if len(argv) >= 2 and argv[0] == "--history":
+        root = os.getcwd()
+        if "--root" in argv:
+            root = argv[argv.index("--root") + 1]
+        run_histories(os.path.abspath(argv[1]), os.path.abspath(root))
+        return 0
     if len(argv) >= 2 and argv[0] == "--run":
         root = os.getcwd()
         if "--root" in argv:
