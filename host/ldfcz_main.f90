@@ -11,7 +11,7 @@ program ldfcz
   use output_files, only: output_t, output_open, output_close, output_log
   use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code, &
     newton_krylov, newton_auto
-  use abaqus_host_state, only: abaqus_set_job
+  use abaqus_host_state, only: abaqus_set_job, abaqus_flush_repeats
   use blas_threads, only: blas_threads_default
   use heap_reuse, only: heap_reuse_default
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
@@ -194,6 +194,7 @@ program ldfcz
   if (len(heap_note) > 0) call output_log(out, 'ldfcz: '//heap_note)
   call run_analysis(model, routines, out, verbose, summary, exit_code, options)
   call output_close(out)
+  call abaqus_flush_repeats(error_unit)
   call exit(exit_code)
 
 contains

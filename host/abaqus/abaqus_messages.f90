@@ -10,11 +10,14 @@ module abaqus_host_state
   private
   public :: abaqus_set_job, abaqus_job_name, abaqus_output_dir
   public :: abaqus_request_stop, abaqus_stop_requested, abaqus_clear_stop, abaqus_stop_message
+  public :: abaqus_message_is_new, abaqus_flush_repeats
 
   character(len=:), allocatable :: job_name      !< job name (the deck's base name)
   character(len=:), allocatable :: output_dir    !< directory of the job's output files
   logical :: stop_flag = .false.                 !< a user routine asked to end the analysis
   character(len=1024) :: stop_text = ''          !< the message that came with the first request
+  character(len=2048) :: last_message = ''       !< the last STDB_ABQERR message printed, numbers masked
+  integer :: message_repeats = 0                 !< times it came again since (not printed)
 
 contains
 
@@ -47,6 +50,41 @@ contains
   end function abaqus_output_dir
 
   !> Record a request to end the analysis; the first message is kept.
+  !> Whether a user routine's message should be printed: a text that differs from the last one only in its numbers
+  !> (element labels, values) is only counted (element loops call a routine on every element, and a routine that
+  !> complains about its properties does so each time); when another text comes, the count of the repeats is
+  !> printed first. Safe to call from several threads.
+  logical function abaqus_message_is_new(text, unit) result(is_new)
+    character(len=*), intent(in) :: text  !< the message as it would be printed
+    integer, intent(in) :: unit           !< where messages go
+    character(len=2048) :: key
+    integer :: k
+    key = text
+    do k = 1, len_trim(key)
+      if (index('0123456789', key(k:k)) > 0) key(k:k) = '#'
+    end do
+    !$omp critical (abaqus_message_log)
+    if (trim(key) == trim(last_message)) then
+      message_repeats = message_repeats + 1
+      is_new = .false.
+    else
+      if (message_repeats > 0) write (unit, '(a,i0,a)') '***NOTE: the message above was repeated ', &
+        message_repeats, ' more times (other elements or values)'
+      last_message = key
+      message_repeats = 0
+      is_new = .true.
+    end if
+    !$omp end critical (abaqus_message_log)
+  end function abaqus_message_is_new
+
+  !> Print the count of repeats of the last message, if any (at the end of a run).
+  subroutine abaqus_flush_repeats(unit)
+    integer, intent(in) :: unit  !< where messages go
+    if (message_repeats > 0) write (unit, '(a,i0,a)') '***NOTE: the message above was repeated ', &
+      message_repeats, ' more times (other elements or values)'
+    message_repeats = 0
+  end subroutine abaqus_flush_repeats
+
   subroutine abaqus_request_stop(text)
     character(len=*), intent(in) :: text  !< why (may be empty)
     !$omp critical (abaqus_host_state_lock)
@@ -92,7 +130,7 @@ end subroutine xit
 !> from INTV, REALV and CHARV. LOP = 1 information, -1 warning, -2 error (analysis goes on), -3 error and stop.
 subroutine stdb_abqerr(lop, string, intv, realv, charv)
   use, intrinsic :: iso_fortran_env, only: error_unit
-  use abaqus_host_state, only: abaqus_request_stop
+  use abaqus_host_state, only: abaqus_request_stop, abaqus_message_is_new
   implicit none
   integer, intent(in) :: lop                 !< message level
   character(len=*), intent(in) :: string     !< text with %I, %R, %S placeholders
@@ -134,13 +172,12 @@ subroutine stdb_abqerr(lop, string, intv, realv, charv)
   end do
   select case (lop)
   case (1)
-    write (error_unit, '(a)') '***NOTE: ' // trim(text)
+    text = '***NOTE: ' // text
   case (-1)
-    write (error_unit, '(a)') '***WARNING: ' // trim(text)
-  case (-2)
-    write (error_unit, '(a)') '***ERROR: ' // trim(text)
+    text = '***WARNING: ' // text
   case default
-    write (error_unit, '(a)') '***ERROR: ' // trim(text)
-    call abaqus_request_stop(trim(text))
+    text = '***ERROR: ' // text
   end select
+  if (abaqus_message_is_new(text, error_unit)) write (error_unit, '(a)') trim(text)
+  if (lop == -3) call abaqus_request_stop(trim(text(11:)))
 end subroutine stdb_abqerr
