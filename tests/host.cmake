@@ -190,3 +190,7 @@ if(TARGET material_point)
     --case ${LDFCZ_DECKS}/material/history/linear_relaxation_shear.txt --out ${LDFCZ_RUNS}/material_linear_relaxation)
   set_tests_properties(material_linear_relaxation PROPERTIES LABELS "umat" TIMEOUT 300)
 endif()
+
+# the arguments of every UEL call against Abaqus' documented values (LFLAGS, TIME, PERIOD, PARAMS, ...)
+ldfcz_add_deck_test(NAME deck_uel_arguments DECK ${LDFCZ_DECKS}/single/uel_arguments.inp CASE uel_arguments
+  USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_args.f)

@@ -64,6 +64,7 @@ module analysis_core
     real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
     type(sparse_system_t) :: sys                !< sparse tangent
     logical :: sys_ready = .false.
+    logical :: extrapolated = .false.           !< an%u is an extrapolated increment start (UEL LFLAGS(5) = 1)
     type(user_routines_t) :: routines           !< UEL and UMAT in use
     integer :: max_ndofel = 0
     integer :: ncolor = 0                       !< element colours (element_colors: no shared dof within one)
@@ -363,7 +364,7 @@ contains
     first_msg = ''
     pn_worst = 1.0_dp
     pn_elem = 0
-    if (want_k) call sparse_zero(an%sys)
+    if (want_k .and. an%neq > 0) call sparse_zero(an%sys)
     an%fdle = 0.0_dp
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
@@ -400,7 +401,7 @@ contains
           !$omp end critical (analysis_pnewdt)
         end if
         an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
-        if (want_k) then
+        if (want_k .and. an%neq > 0) then
           if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
           if (an%cs%n > 0) then
             ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
@@ -449,7 +450,7 @@ contains
     character(len=*), intent(out) :: msg
     integer :: nn, a, iu, ip, mcrd, nsv
     real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 8), energy(8), svars(1)
-    real(dp) :: params(1), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
+    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
     integer :: jdltyp(mdload, 1), lflags(5), ndload, im
     integer, allocatable :: jprops(:)
@@ -495,8 +496,10 @@ contains
       ! DDLMAG(k,1) its increment (Abaqus UEL interface)
       call dload_uel_arrays(an%dl, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
         ddlmag(:, 1))
-      ! LFLAGS(3) = 1: RHS and AMATRX; 5: RHS only (a reused factorization needs no tangent)
-      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, 0]
+      ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
+      ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
+      ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
+      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, an%extrapolated)]
       call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
         ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
         adlmag, predef, 1, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)

@@ -131,8 +131,9 @@ contains
           r_prev2 = r_prev
           r_prev = r_max
         end if
-        call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, an%neq > 0 .and. want_k, &
+        call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
           pnewdt_min, stat, errmsg, pnewdt_who)
+        an%extrapolated = .false.  ! only the first call of an increment sees the extrapolated start
         if (abaqus_stop_requested()) then
           stopped = .true.
           exit newton_loop

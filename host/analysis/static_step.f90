@@ -272,7 +272,8 @@ contains
             t_end = sc%t + dt
             ! prescribed displacements at the end of the increment, applied at its start
             an%u = an%u_conv
-            if (st%extrapolate .and. dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts) then
+            an%extrapolated = st%extrapolate .and. dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts
+            if (an%extrapolated) then
               ! *STEP, EXTRAPOLATION=LINEAR (Abaqus' default): the free dofs start from the last converged
               ! increment's change scaled to this increment; a failed start is retried once, then from u_conv
               where (.not. an%prescribed) an%u = an%u_conv + (dt / dt_prev) * du_prev

@@ -206,6 +206,35 @@ def case_first_deck(d, job):
     close("peak force vs A T_max", peak, PHI / (math.e * DELTA), 2e-3)
 
 
+def case_uel_arguments(d, job):
+    """Every UEL call of decks/single/uel_arguments.inp (one element, label 7, type U5, all dofs prescribed), as
+    recorded by tests/regression/user_uel_args.f, against Abaqus' documented values: LFLAGS = (1 static, 1 NLGEOM,
+    1 RHS and AMATRX in a normal iteration even without free equations, 0 general step, 1 on an increment start
+    extrapolated from the previous increment (not in the first increment of a step), else 0); TIME = step and total
+    time at the start of the increment, DTIME, PERIOD, PARAMS(1:3) = 0 in a static step, NDLOAD = 0, NRHS = 1,
+    MLVARX = NDOFEL = 24."""
+    with open(os.path.join(d, "uel_args.txt")) as f:
+        calls = [line.split() for line in f if line.strip()]
+    want = []
+    for kstep, period, dt, ninc, t0 in ((1, 1.0, 0.25, 4, 0.0), (2, 2.0, 1.0, 2, 1.0)):
+        for k in range(1, ninc + 1):
+            want.append((kstep, k, 7, 5, (1, 1, 1, 0, 0 if k == 1 else 1), (k - 1) * dt, t0 + (k - 1) * dt, dt,
+                         period))
+    if len(calls) != len(want):
+        fail("%d UEL calls recorded, expected %d (one per increment: nothing to iterate on)" % (len(calls), len(want)))
+    for c, w in zip(calls, want):
+        got_int = tuple(int(x) for x in c[:9])
+        got_real = [float(x) for x in c[9:16]]
+        tail = tuple(int(x) for x in c[16:19])
+        ok = (got_int == (w[0], w[1], w[2], w[3]) + w[4] and
+              all(abs(g - v) <= 1e-12 * max(1.0, abs(v)) for g, v in zip(got_real, (w[5], w[6], w[7], w[8], 0, 0, 0)))
+              and tail == (0, 1, 24))
+        print("step %d inc %d: LFLAGS %s TIME %s DTIME %s PERIOD %s %s" % (w[0], w[1], c[4:9], c[9:11], c[11], c[12],
+                                                                          "ok" if ok else "FAIL"))
+        if not ok:
+            fail("UEL arguments differ from Abaqus' values: %s, want %s" % (c, w))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
@@ -218,6 +247,9 @@ def main():
     ap.add_argument("--extra", nargs="*", default=[])
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
+    stale = os.path.join(a.out, "uel_args.txt")  # appended to by user_uel_args.f: start empty
+    if os.path.exists(stale):
+        os.remove(stale)
     cmd = [a.exe, "--quiet", "--threads", "2", "--out", a.out]
     if a.user:
         cmd += ["--user", a.user]
