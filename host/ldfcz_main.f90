@@ -17,7 +17,7 @@ program ldfcz
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
-  character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg
+  character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc
   integer :: i, n, stat, threads, exit_code, k
   logical :: quiet, verbose, exists, reorient, orient_error
   type(interface_check_t) :: orient
@@ -42,6 +42,7 @@ program ldfcz
   deck = ''
   outdir = '.'
   user_file = ''
+  fc = env_value('FC')
   threads = 0
   quiet = .false.
   verbose = .false.
@@ -116,7 +117,7 @@ program ldfcz
         read (arg, *, iostat=stat) options%stop_after
         if (stat /= 0 .or. options%stop_after < 1) call die('--stop-after-increments needs a positive integer')
       end if
-    case ('-o', '--out', '-t', '--threads', '-u', '--user')
+    case ('-o', '--out', '-t', '--threads', '-u', '--user', '--fc')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
       select case (arg)
@@ -127,8 +128,17 @@ program ldfcz
         arg = get_arg(i)
         read (arg, *, iostat=stat) threads
         if (stat /= 0 .or. threads < 1) call die('--threads needs a positive integer')
+      case ('--fc')
+        fc = get_arg(i)
+        if (len(fc) == 0) call die('--fc needs a compiler name')
       case default
-        user_file = get_arg(i)
+        ! several --user options or a comma-separated list: every file goes into the one user library
+        if (len(user_file) > 0) then
+          user_file = user_file//','//get_arg(i)
+        else
+          user_file = get_arg(i)
+        end if
+        if (len(get_arg(i)) == 0) call die('--user needs a file name')
       end select
     case default
       if (arg(1:1) == '-') call die('unknown option '//arg//' (ldfcz --help)')
@@ -169,7 +179,7 @@ program ldfcz
   call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
     call user_routines_load(routines, user_file, outdir, include_dir(), stat, errmsg, &
-      merge(-1, out%log, quiet))
+      merge(-1, out%log, quiet), fc)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)
       call output_close(out)
@@ -188,6 +198,12 @@ program ldfcz
     call output_close(out)
     call exit(exit_input)
   end if
+  ! as in Abaqus, a user routine's WRITE(7, ...) goes to JOB.msg (unit 6 stays standard output: the host's own)
+  if (len(restart_from) > 0) then
+    open (unit=7, file=outdir//'/'//job//'.msg', position='append', action='write', iostat=stat)
+  else
+    open (unit=7, file=outdir//'/'//job//'.msg', status='replace', action='write', iostat=stat)
+  end if
   call blas_threads_default(blas_note)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call heap_reuse_default(heap_note)
@@ -198,6 +214,20 @@ program ldfcz
   call exit(exit_code)
 
 contains
+
+  !> The value of an environment variable ('' when unset).
+  function env_value(name) result(v)
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: v
+    integer :: l, st
+    call get_environment_variable(name, length=l, status=st)
+    if (st /= 0 .or. l == 0) then
+      v = ''
+      return
+    end if
+    allocate (character(len=l) :: v)
+    call get_environment_variable(name, v)
+  end function env_value
 
   !> mkdir -p without a shell: every parent of dir, then dir (existing ones are fine; failures show in the check
   !> that follows the call).
@@ -246,8 +276,10 @@ contains
       'options:', &
       '  -o, --out DIR      write JOB.csv, JOB.sta, JOB.log, JOB.pvd/vtu into DIR (default .)', &
       '  -t, --threads N    threads of the element loop (default: OMP_NUM_THREADS or all cores)', &
-      '  -u, --user FILE    compile FILE (Fortran UEL and/or UMAT, fixed .f/.for or free .f90) and use it', &
-      '                     instead of the built-in routines, as abaqus job=... user=FILE', &
+      '  -u, --user FILE    compile FILE (Fortran UEL and/or UMAT, fixed .f/.for or free .f90, preprocessed;', &
+      '                     or objects .o/.a/.so; several: repeat --user or FILE1,FILE2) into one library and use', &
+      '                     it instead of the built-in routines, as abaqus job=... user=FILE', &
+      '  --fc COMPILER      Fortran compiler for --user (default: $FC, else gfortran; LLVM flang-new works)', &
       '  -q, --quiet        no messages on standard output (JOB.log is still written)', &
       '  -v, --verbose      residual, force and correction of every Newton iteration in JOB.log', &
       '  --reorient-interfaces  reverse the face order of interface elements whose normal points into the', &

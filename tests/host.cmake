@@ -194,3 +194,10 @@ endif()
 # the arguments of every UEL call against Abaqus' documented values (LFLAGS, TIME, PERIOD, PARAMS, ...)
 ldfcz_add_deck_test(NAME deck_uel_arguments DECK ${LDFCZ_DECKS}/single/uel_arguments.inp CASE uel_arguments
   USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_args.f)
+
+# --user as Abaqus builds user code: preprocessing, lower-case include, two files, an object file, WRITE(7) to
+# JOB.msg, lazy binding, LLVM flang through --fc
+add_test(NAME deck_user_files COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_user_files.py
+  --exe $<TARGET_FILE:ldfcz> --decks ${LDFCZ_DECKS} --fixtures ${CMAKE_CURRENT_SOURCE_DIR}/regression
+  --out ${LDFCZ_RUNS}/deck_user_files)
+set_tests_properties(deck_user_files PROPERTIES LABELS "deck" TIMEOUT 300)

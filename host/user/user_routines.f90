@@ -36,7 +36,7 @@ module user_routines
     type(c_ptr) :: handle = c_null_ptr                            !< dlopen handle of a user library
   end type user_routines_t
 
-  integer(c_int), parameter :: rtld_now = 2, rtld_global = 256
+  integer(c_int), parameter :: rtld_lazy = 1, rtld_global = 256
 
   interface
     function c_dlopen(filename, flag) bind(c, name='dlopen') result(h)
@@ -55,6 +55,12 @@ module user_routines
       import :: c_ptr
       type(c_ptr) :: p
     end function c_dlerror
+    function c_mkdir(path, mode) bind(c, name='mkdir') result(rc)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int), value :: mode
+      integer(c_int) :: rc
+    end function c_mkdir
     function c_strlen(p) bind(c, name='strlen') result(n)
       import :: c_ptr, c_size_t
       type(c_ptr), value :: p
@@ -71,41 +77,52 @@ module user_routines
 
 contains
 
-  !> The compiler command that turns a user source into a shared library.
-  function user_source_compile_command(source, library, include_dir) result(cmd)
-    character(len=*), intent(in) :: source       !< user's Fortran file (.f, .for fixed form; .f90 free form)
-    character(len=*), intent(in) :: library      !< shared library to write
-    character(len=*), intent(in) :: include_dir  !< directory of ABA_PARAM.INC
+  !> The command that compiles one user source into an object as Abaqus compiles user files on Linux: preprocessed
+  !> (-cpp, with ABQ_LNX86_64 and ABQ_FORTRAN defined), fixed form with 132 columns for .f/.for/.f77 (Abaqus'
+  !> -extend-source), free form otherwise, position-independent, locals on the stack (Abaqus' -auto: the threaded
+  !> element loop calls the routines concurrently). compiler is gfortran (default) or an LLVM flang.
+  function user_source_compile_command(compiler, source, object, include_dirs) result(cmd)
+    character(len=*), intent(in) :: compiler      !< Fortran compiler (FC, --fc)
+    character(len=*), intent(in) :: source        !< user's Fortran file
+    character(len=*), intent(in) :: object        !< object file to write
+    character(len=*), intent(in) :: include_dirs  !< -I options (quoted directories)
     character(len=:), allocatable :: cmd
-    character(len=:), allocatable :: form
+    character(len=:), allocatable :: form, extra
+    logical :: flang
     integer :: k
+    flang = index(compiler, 'flang') > 0
     k = index(source, '.', back=.true.)
-    form = ''
+    form = ' -ffree-form'
     if (k > 0) then
       select case (source(k + 1:))
       case ('f', 'F', 'for', 'FOR', 'f77', 'F77')
-        form = ' -ffixed-form -ffixed-line-length-132'  ! Abaqus compiles fixed form with -extend-source
-      case default
-        form = ' -ffree-form'
+        if (flang) then
+          form = ' -ffixed-form -ffixed-line-length=132'
+        else
+          form = ' -ffixed-form -ffixed-line-length-132'
+        end if
       end select
     end if
-    ! -Bsymbolic: the library's own routines bind inside it, never to same-named host symbols; -frecursive: local
-    ! variables on the stack, as Abaqus' -auto, since the threaded element loop calls the routines concurrently
-    cmd = 'gfortran -shared -fPIC -O2 -frecursive -Wl,-Bsymbolic'//form//' -I'''//include_dir//''' -o '''// &
-      library//''' '''//source//''''
+    extra = ' -O2 -frecursive'
+    if (flang) extra = ' -O2'
+    cmd = compiler//' -c -fPIC -cpp -DABQ_LNX86_64 -DABQ_FORTRAN'//extra//form//include_dirs// &
+      ' -o '''//object//''' '''//source//''''
   end function user_source_compile_command
 
-  !> Compile a user's Fortran source into outdir and load its UEL and/or UMAT in place of the built-in ones.
-  subroutine user_routines_load(r, source, outdir, include_dir, stat, errmsg, log_unit)
+  !> Compiles the user's files (a comma-separated list of Fortran sources and object files .o, .a, .so) into one
+  !> shared library in outdir, loads it with lazy binding (a symbol the files leave undefined is an error only when
+  !> it is called, as in Abaqus' link, and the loader names it) and takes its UEL and/or UMAT.
+  subroutine user_routines_load(r, source, outdir, include_dir, stat, errmsg, log_unit, compiler)
     type(user_routines_t), intent(inout) :: r            !< routines (built-in ones replaced where found)
-    character(len=*), intent(in) :: source               !< user source file
+    character(len=*), intent(in) :: source               !< user files, comma-separated
     character(len=*), intent(in) :: outdir               !< output directory (the library goes there)
     character(len=*), intent(in) :: include_dir          !< directory of ABA_PARAM.INC
     integer, intent(out) :: stat                         !< 0 ok, 2 error
     character(len=:), allocatable, intent(out) :: errmsg !< message
     integer, intent(in) :: log_unit                      !< where to echo the compile command (-1: nowhere)
-    character(len=:), allocatable :: lib, cmd, base
-    integer :: estat, cstat, k
+    character(len=*), intent(in), optional :: compiler   !< Fortran compiler (default gfortran)
+    character(len=:), allocatable :: lib, cmd, base, fc, incs, objs, file, obj, case_dir, rest
+    integer :: estat, cstat, k, nfile
     logical :: exists
     type(c_funptr) :: f
     procedure(uel_interface), pointer :: pu
@@ -113,11 +130,9 @@ contains
 
     stat = 0
     errmsg = ''
-    inquire (file=source, exist=exists)
-    if (.not. exists) then
-      stat = 2
-      errmsg = '--user: file not found: '//source
-      return
+    fc = 'gfortran'
+    if (present(compiler)) then
+      if (len_trim(compiler) > 0) fc = trim(compiler)
     end if
     inquire (file=include_dir//'/ABA_PARAM.INC', exist=exists)
     if (.not. exists) then
@@ -125,21 +140,81 @@ contains
       errmsg = '--user: ABA_PARAM.INC not found in '//include_dir
       return
     end if
-    k = index(source, '/', back=.true.)
-    base = source(k + 1:)
+    ! ABA_PARAM.INC also under the names user files include it by (public routines write include 'aba_param.inc';
+    ! Abaqus on Windows does not tell the cases apart)
+    case_dir = outdir//'/ldfcz_user_include'
+    call make_case_copies(include_dir//'/ABA_PARAM.INC', case_dir, stat, errmsg)
+    if (stat /= 0) return
+    incs = ' -I'''//case_dir//''' -I'''//include_dir//''''
+    objs = ''
+    nfile = 0
+    rest = source
+    do while (len(rest) > 0)
+      k = index(rest, ',')
+      if (k == 0) then
+        file = trim(adjustl(rest))
+        rest = ''
+      else
+        file = trim(adjustl(rest(1:k - 1)))
+        rest = rest(k + 1:)
+      end if
+      if (len(file) == 0) cycle
+      nfile = nfile + 1
+      inquire (file=file, exist=exists)
+      if (.not. exists) then
+        stat = 2
+        errmsg = '--user: file not found: '//file
+        return
+      end if
+      k = index(file, '.', back=.true.)
+      if (k > 0) then
+        select case (file(k + 1:))
+        case ('o', 'a', 'so')
+          objs = objs//' '''//file//''''
+          cycle
+        end select
+      end if
+      k = index(file, '/', back=.true.)
+      base = file(k + 1:)
+      k = index(base, '.', back=.true.)
+      if (k > 1) base = base(1:k - 1)
+      obj = outdir//'/ldfcz_user_'//base//'.o'
+      cmd = user_source_compile_command(fc, file, obj, incs//' -I'''//dir_of(file)//'''')
+      if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: compiling user routines: '//cmd
+      call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
+      if (cstat /= 0 .or. estat /= 0) then
+        stat = 2
+        errmsg = '--user: compilation of '//file//' failed (command: '//cmd//')'
+        return
+      end if
+      objs = objs//' '''//obj//''''
+    end do
+    if (nfile == 0) then
+      stat = 2
+      errmsg = '--user: no file given'
+      return
+    end if
+    k = index(source, ',')
+    base = source
+    if (k > 1) base = source(1:k - 1)
+    k = index(base, '/', back=.true.)
+    base = base(k + 1:)
     k = index(base, '.', back=.true.)
     if (k > 1) base = base(1:k - 1)
     lib = outdir//'/libldfcz_user_'//base//'.so'
     if (lib(1:1) /= '/') lib = './'//lib
-    cmd = user_source_compile_command(source, lib, include_dir)
-    if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: compiling user routines: '//cmd
+    ! linked by gfortran whatever compiled the files: the library runs on the host's (gfortran's) runtime. Objects
+    ! of another compiler work as long as they need no run-time library of their own (flang: no Fortran I/O; a
+    ! call into a missing runtime is reported by the loader with the symbol's name when it happens)
+    cmd = 'gfortran -shared -fPIC -Wl,-Bsymbolic -o '''//lib//''''//objs
+    if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: linking user routines: '//cmd
     call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
     if (cstat /= 0 .or. estat /= 0) then
       stat = 2
-      errmsg = '--user: compilation of '//source//' failed (command: '//cmd//')'
+      errmsg = '--user: linking the user routines failed (command: '//cmd//')'
       return
     end if
-    r%handle = c_dlopen(lib//c_null_char, ior(rtld_now, rtld_global))
+    r%handle = c_dlopen(lib//c_null_char, ior(rtld_lazy, rtld_global))
     if (.not. c_associated(r%handle)) then
       stat = 2
       errmsg = '--user: dlopen failed: '//dl_error()
@@ -162,6 +237,53 @@ contains
       errmsg = '--user: '//source//' defines neither SUBROUTINE UEL nor SUBROUTINE UMAT'
     end if
   end subroutine user_routines_load
+
+  !> Directory part of a path ('.' when none).
+  pure function dir_of(path) result(d)
+    character(len=*), intent(in) :: path  !< file path
+    character(len=:), allocatable :: d
+    integer :: k
+    k = index(path, '/', back=.true.)
+    if (k > 1) then
+      d = path(1:k - 1)
+    else if (k == 1) then
+      d = '/'
+    else
+      d = '.'
+    end if
+  end function dir_of
+
+  !> Copies of the include file under the upper-, lower- and mixed-case names, in a directory of their own.
+  subroutine make_case_copies(inc, dir, stat, errmsg)
+    character(len=*), intent(in) :: inc                  !< ABA_PARAM.INC of the installation
+    character(len=*), intent(in) :: dir                  !< directory to write the copies into
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=512) :: line
+    character(len=16), parameter :: names(3) = [character(len=16) :: 'ABA_PARAM.INC', 'aba_param.inc', &
+      'Aba_Param.inc']
+    integer :: uin, uout, ios, k
+    integer(c_int) :: rc
+    stat = 0
+    errmsg = ''
+    rc = c_mkdir(dir//c_null_char, int(o'755', c_int))
+    do k = 1, size(names)
+      open (newunit=uin, file=inc, status='old', action='read', iostat=ios)
+      if (ios == 0) open (newunit=uout, file=dir//'/'//trim(names(k)), status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+        stat = 2
+        errmsg = '--user: cannot write '//dir//'/'//trim(names(k))
+        return
+      end if
+      do
+        read (uin, '(a)', iostat=ios) line
+        if (ios /= 0) exit
+        write (uout, '(a)') trim(line)
+      end do
+      close (uin)
+      close (uout)
+    end do
+  end subroutine make_case_copies
 
   function dl_error() result(s)
     character(len=:), allocatable :: s
