@@ -201,3 +201,10 @@ add_test(NAME deck_user_files COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURC
   --exe $<TARGET_FILE:ldfcz> --decks ${LDFCZ_DECKS} --fixtures ${CMAKE_CURRENT_SOURCE_DIR}/regression
   --out ${LDFCZ_RUNS}/deck_user_files)
 set_tests_properties(deck_user_files PROPERTIES LABELS "deck" TIMEOUT 300)
+
+# one-file Abaqus drop-ins: compiled the Abaqus way (gfortran, LLVM flang), UEL + UMAT linked together, and run by
+# --user on the peel deck against the built-in routines
+add_test(NAME dropins_abaqus COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_dropins.py
+  --exe $<TARGET_FILE:ldfcz> --dropins ${PROJECT_BINARY_DIR}/dropin --include ${PROJECT_SOURCE_DIR}/host/abaqus
+  --deck ${LDFCZ_DECKS}/peel/peel_ps.inp --out ${LDFCZ_RUNS}/dropins_abaqus)
+set_tests_properties(dropins_abaqus PROPERTIES LABELS "deck" TIMEOUT 600)
