@@ -208,3 +208,8 @@ add_test(NAME dropins_abaqus COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE
   --exe $<TARGET_FILE:ldfcz> --dropins ${PROJECT_BINARY_DIR}/dropin --include ${PROJECT_SOURCE_DIR}/host/abaqus
   --deck ${LDFCZ_DECKS}/peel/peel_ps.inp --out ${LDFCZ_RUNS}/dropins_abaqus)
 set_tests_properties(dropins_abaqus PROPERTIES LABELS "deck" TIMEOUT 600)
+
+# the CMake package: install, find_package(ldfcz) from another project, call UEL and UMAT; pkg-config
+add_test(NAME package_find_ldfcz COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/package/check_package.sh ${PROJECT_BINARY_DIR}
+  ${LDFCZ_RUNS}/package_find_ldfcz ${CMAKE_Fortran_COMPILER})
+set_tests_properties(package_find_ldfcz PROPERTIES LABELS "deck" TIMEOUT 300)
