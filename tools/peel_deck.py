@@ -31,6 +31,10 @@ STEEL = (210000.0, 0.3)     # MPa, -
 UEL_NSVARS_PER_IP = 4       # docs/uel.md: 4 SVARS per Gauss point
 
 
+# the host-side declaration of the built-in UEL's SVARS layout (a comment for Abaqus; docs/uel.md)
+LDFCZ_SVARS_3D = "**LDFCZ SVARS, TYPE=U1, POINTS=4, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2"
+LDFCZ_SVARS_2D = "**LDFCZ SVARS, TYPE=U2, POINTS=2, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2"
+
 def graded_lengths(total, first, ratio, cap):
     """Element lengths summing to total: start at `first`, grow by `ratio` up to `cap` (then constant).
     The count is the smallest that reaches total; the lengths are then scaled down uniformly to fit exactly."""
@@ -187,11 +191,13 @@ def build(p):
         w('*USER ELEMENT, TYPE=U1, NODES=8, COORDINATES=3, PROPERTIES=%d, I PROPERTIES=%d, VARIABLES=%d, UNSYMM'
           % (nprops, njprops, 4 * UEL_NSVARS_PER_IP))
         w('1, 2, 3')
+        w(LDFCZ_SVARS_3D)
         w('*ELEMENT, TYPE=U1, ELSET=COHESIVE')
     else:
         w('*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=%d, I PROPERTIES=%d, VARIABLES=%d, UNSYMM'
           % (nprops, njprops, 2 * UEL_NSVARS_PER_IP))
         w('1, 2')
+        w(LDFCZ_SVARS_2D)
         w('*ELEMENT, TYPE=U2, ELSET=COHESIVE')
     for iy in range(ny_el):
         for ix in range(nbx):
@@ -240,6 +246,7 @@ def build(p):
     w(', '.join('%.9g' % v for v in pet[8:]))
     w('*DEPVAR')
     w('%d' % LEONOV_NSTATV)
+    w('**LDFCZ STATEV, MATERIAL=PET, PLASTIC STRAIN=7')
     if not p.rigid_substrate:
         w('*MATERIAL, NAME=STEEL')
         w('*ELASTIC')

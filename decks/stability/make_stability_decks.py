@@ -25,7 +25,7 @@ def write(name, expect, title, body):
 
 def material(kind, e=1000.0, nu=0.3):
     if kind == "pet":
-        return "*MATERIAL, NAME=M\n*USER MATERIAL, CONSTANTS=10, UNSYMM\n%s\n*DEPVAR\n11\n" % PET
+        return "*MATERIAL, NAME=M\n*USER MATERIAL, CONSTANTS=10, UNSYMM\n%s\n*DEPVAR\n11\n**LDFCZ STATEV, MATERIAL=M, PLASTIC STRAIN=7\n" % PET
     return "*MATERIAL, NAME=M\n*ELASTIC\n%.17g, %.17g\n" % (e, nu)
 
 
@@ -58,7 +58,7 @@ def block_on_cohesive(name, expect, title, phi, delta, u_top, kc=0.0, e=10000.0,
     body = ("*NODE\n" + nodes_block(nodes) +
             "*NSET, NSET=BOTTOM\n1, 2, 3, 4\n*NSET, NSET=IFACE\n5, 6, 7, 8\n*NSET, NSET=TOP\n9, 10, 11, 12\n"
             "*USER ELEMENT, TYPE=U1, NODES=8, COORDINATES=3, PROPERTIES=%d, I PROPERTIES=2, VARIABLES=16, UNSYMM\n"
-            "1, 2, 3\n*ELEMENT, TYPE=U1, ELSET=COHESIVE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
+            "1, 2, 3\n**LDFCZ SVARS, TYPE=U1, POINTS=4, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2\n*ELEMENT, TYPE=U1, ELSET=COHESIVE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
             "*UEL PROPERTY, ELSET=COHESIVE\n%s, 1, 1\n"
             "*ELEMENT, TYPE=C3D8, ELSET=BLOCK\n2, 5, 6, 7, 8, 9, 10, 11, 12\n"
             "*SOLID SECTION, ELSET=BLOCK, MATERIAL=M\n%s"
@@ -75,7 +75,7 @@ def cohesive_alone(name, expect, title, phi, delta, u_top, kc=0.0, n_inc=20):
     body = ("*NODE\n" + nodes_block(nodes) +
             "*NSET, NSET=BOTTOM\n1, 2, 3, 4\n*NSET, NSET=TOP\n5, 6, 7, 8\n"
             "*USER ELEMENT, TYPE=U1, NODES=8, COORDINATES=3, PROPERTIES=3, I PROPERTIES=2, VARIABLES=16, UNSYMM\n"
-            "1, 2, 3\n*ELEMENT, TYPE=U1, ELSET=COHESIVE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
+            "1, 2, 3\n**LDFCZ SVARS, TYPE=U1, POINTS=4, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2\n*ELEMENT, TYPE=U1, ELSET=COHESIVE\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"
             "*UEL PROPERTY, ELSET=COHESIVE\n%.17g, %.17g, %.17g, 1, 1\n"
             "*BOUNDARY\nBOTTOM, ENCASTRE\nTOP, 1, 2\n*STEP, NLGEOM=YES, INC=1000\n*STATIC, DIRECT\n%.17g, 1.0\n"
             "*BOUNDARY\nTOP, 3, 3, %.17g\n*NODE PRINT, NSET=TOP, TOTALS=YES\nU3, RF3\n*END STEP\n"
@@ -172,7 +172,7 @@ def peel(name, expect, title, phi, delta, eta=None, u_pull=2.0, nx=40):
     props = "%.17g, %.17g, 0" % (phi, delta) + (", 0, 0, %.17g" % eta if eta is not None else "")
     body = ("*NODE\n" + "".join("%d, %.17g, %.17g\n" % (i + 1, x, y) for i, (x, y) in enumerate(nodes)) +
             "*ELEMENT, TYPE=CPE4, ELSET=STRIP\n" + "".join(els) +
-            "*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=%d, I PROPERTIES=2, VARIABLES=8, UNSYMM\n1, 2\n"
+            "*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=%d, I PROPERTIES=2, VARIABLES=8, UNSYMM\n1, 2\n**LDFCZ SVARS, TYPE=U2, POINTS=2, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2\n"
             % nprops + "*ELEMENT, TYPE=U2, ELSET=COHESIVE\n" + "".join(coh) +
             "*UEL PROPERTY, ELSET=COHESIVE\n%s, 2, 1\n" % props +
             "*NSET, NSET=SUB, GENERATE\n1, %d, 1\n*NSET, NSET=LOAD\n%d, %d, %d\n" % (nx + 1, nid[(0, 0)], nid[(1, 0)],

@@ -7,7 +7,6 @@ module field_frame
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use output_files, only: output_t, output_vtu_frame, output_vtu_t
-  use user_routines, only: user_routines_t
   implicit none
   private
   public :: write_field_frame
@@ -17,10 +16,9 @@ module field_frame
 contains
 
   !> The frame of the converged state of an at total time ttot.
-  subroutine write_field_frame(out, model, routines, an, ttot, step)
+  subroutine write_field_frame(out, model, an, ttot, step)
     type(output_t), intent(inout) :: out           !< output files
     type(model_t), intent(in) :: model             !< the model
-    type(user_routines_t), intent(in) :: routines  !< UEL and UMAT (only the built-in UEL's SVARS are known)
     type(analysis_t), intent(in) :: an             !< converged state
     real(dp), intent(in) :: ttot                   !< total time of the frame
     type(step_t), intent(in) :: step               !< the step whose field request applies
@@ -89,14 +87,19 @@ contains
         fr%cohesive(ie) = 1
         ! opening = top - bottom (COH3D8: node k+4 over k; COH2D4: 4 over 1, 3 over 2)
         if (nn == 8 .or. nn == 4) call cell_opening(model, an, ie, nn, fr%opening(:, ie))
-        nip = merge(4, 2, nn == 8)
-        nsv = size(an%conv(ie)%svars)
-        if (nsv >= 4 * nip .and. routines%uel_origin == 'built-in ldfcz UEL') then
-          do ip = 1, nip
-            fr%delta_max(ie) = fr%delta_max(ie) + an%conv(ie)%svars(4 * (ip - 1) + 1) / nip
-            fr%traction(ie) = fr%traction(ie) + an%conv(ie)%svars(4 * (ip - 1) + 3) / nip
-          end do
-        end if
+        ! Delta_max and traction where the element type declares them ('**LDFCZ SVARS', docs/uel.md)
+        associate (ut => model%utypes(model%elem_utype(ie)))
+          nip = ut%sv_points
+          nsv = size(an%conv(ie)%svars)
+          if (nip > 0 .and. nsv >= nip * ut%sv_per_point) then
+            do ip = 1, nip
+              if (ut%sv_delta_max > 0) fr%delta_max(ie) = fr%delta_max(ie) + &
+                an%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_delta_max) / nip
+              if (ut%sv_traction > 0) fr%traction(ie) = fr%traction(ie) + &
+                an%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_traction) / nip
+            end do
+          end if
+        end associate
       else
         nip = size(an%conv(ie)%stress, 2)
         nt = size(an%conv(ie)%stress, 1)

@@ -6,7 +6,6 @@ module run_summary
   use analysis_core, only: analysis_t
   use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count
   use output_files, only: output_t, output_log
-  use user_routines, only: user_routines_t
   use solver_options, only: newton_full, newton_mode_name
   implicit none
   private
@@ -129,28 +128,30 @@ contains
     end if
   end subroutine run_summary_write
 
-  !> Largest change of the cohesive opening |Delta| (SVARS layout of the built-in UEL, docs/uel.md) over delta.
-  subroutine cohesive_ratio(model, routines, an, worst)
+  !> Largest change of the cohesive opening |Delta| over its length scale, for the user element types that declare
+  !> both in their SVARS layout ('**LDFCZ SVARS, ..., OPENING=, LENGTH PROPERTY=', docs/uel.md).
+  subroutine cohesive_ratio(model, an, worst)
     type(model_t), intent(in) :: model             !< the model
-    type(user_routines_t), intent(in) :: routines  !< UEL and UMAT (only the built-in UEL's SVARS are known)
     type(analysis_t), intent(in) :: an             !< trial and converged element states
     real(dp), intent(inout) :: worst               !< raised to the largest ratio found
-    integer :: ie, iu, nip, ip, ipr
+    integer :: ie, iu, ip, ipr, j
     real(dp) :: delta
-    if (.not. routines%uel_origin == 'built-in ldfcz UEL') return
     do ie = 1, model%nelem
       if (model%elem_kind(ie) /= etype_user) cycle
       iu = model%elem_utype(ie)
-      nip = merge(4, 2, model%utypes(iu)%nnode == 8)
-      if (size(an%trial(ie)%svars) < 4 * nip) cycle
-      ipr = model%elem_uelprop(ie)
-      if (ipr == 0) cycle
-      if (size(model%uelprops(ipr)%props) < 2) cycle
-      delta = model%uelprops(ipr)%props(2)
-      if (delta <= 0.0_dp) cycle
-      do ip = 1, nip
-        worst = max(worst, abs(an%trial(ie)%svars(4 * (ip - 1) + 2) - an%conv(ie)%svars(4 * (ip - 1) + 2)) / delta)
-      end do
+      associate (ut => model%utypes(iu))
+        if (ut%sv_points == 0 .or. ut%sv_opening == 0 .or. ut%sv_length_prop == 0) cycle
+        if (size(an%trial(ie)%svars) < ut%sv_points * ut%sv_per_point) cycle
+        ipr = model%elem_uelprop(ie)
+        if (ipr == 0) cycle
+        if (size(model%uelprops(ipr)%props) < ut%sv_length_prop) cycle
+        delta = model%uelprops(ipr)%props(ut%sv_length_prop)
+        if (delta <= 0.0_dp) cycle
+        do ip = 1, ut%sv_points
+          j = ut%sv_per_point * (ip - 1) + ut%sv_opening
+          worst = max(worst, abs(an%trial(ie)%svars(j) - an%conv(ie)%svars(j)) / delta)
+        end do
+      end associate
     end do
   end subroutine cohesive_ratio
 

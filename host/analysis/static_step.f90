@@ -112,11 +112,24 @@ contains
       '; UEL: '//routines%uel_origin//'; UMAT: '//routines%umat_origin)
     summary%newton = opt%newton
     summary%plastic_statev = opt%plastic_statev
-    if (summary%plastic_statev < 0) summary%plastic_statev = merge(7, 0, routines%umat_origin == 'built-in ldfcz UMAT')
+    if (summary%plastic_statev < 0) then
+      ! the STATEV a material declares as its equivalent plastic strain ('**LDFCZ STATEV', docs/umat.md), if any
+      summary%plastic_statev = 0
+      if (model%nmat > 0) summary%plastic_statev = maxval(model%materials(1:model%nmat)%plastic_statev)
+    end if
     if (model%nmat > 0) then
       if (all(model%materials(1:model%nmat)%has_elastic)) summary%plastic_statev = 0
     else
       summary%plastic_statev = 0
+    end if
+    if (opt%max_opening > 0.0_dp .and. .not. any(model%utypes(1:model%nutype)%sv_opening > 0 .and. &
+        model%utypes(1:model%nutype)%sv_length_prop > 0)) then
+      errmsg = '--max-opening-increment needs a user element type that declares its opening and length scale '// &
+        '(**LDFCZ SVARS, ..., OPENING=, LENGTH PROPERTY=; docs/uel.md)'
+      call output_log(out, 'ldfcz: error: '//errmsg)
+      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      exit_code = exit_input
+      return
     end if
     if (opt%max_opening > 0.0_dp) then
       call output_log(out, 'ldfcz: Newton '//trim(newton_mode_name(opt%newton))//'; increments limited to a '// &
@@ -298,7 +311,7 @@ contains
             open_inc = 0.0_dp
             if (converged .and. opt%max_opening > 0.0_dp .and. .not. st%direct) then
               ! accuracy: the cohesive opening increment bound (paper section 7); redo the increment if exceeded
-              call cohesive_ratio(model, routines, an, open_inc)
+              call cohesive_ratio(model, an, open_inc)
               if (open_inc > opt%max_opening .and. dt > st%dt_min * (1.0_dp + 1.0e-9_dp)) then
                 converged = .false.
                 q_sum = q_sum - q_now
@@ -337,7 +350,7 @@ contains
             end if
           end do attempts
           ! converged increment: energy, commit, output
-          call cohesive_ratio(model, routines, an, summary%max_open_ratio)
+          call cohesive_ratio(model, an, summary%max_open_ratio)
           plastic_inc = 0.0_dp
           if (summary%plastic_statev > 0) then
             call statev_increment(model, an, summary%plastic_statev, plastic_inc)
@@ -575,7 +588,7 @@ contains
       integer, intent(in) :: istep  !< step whose field request applies
       if (kinc_total == last_frame_inc) return
       last_frame_inc = kinc_total
-      call write_field_frame(out, model, routines, an, ttot, model%steps(istep))
+      call write_field_frame(out, model, an, ttot, model%steps(istep))
     end subroutine write_frame
 
   end subroutine run_steps

@@ -167,6 +167,11 @@ contains
       if (k > 0) line = line(1:k - 1)
       text = trim(line)
       if (len(adjustl(text)) >= 2) then
+        ! a '**LDFCZ' comment line is a declaration for this host (Abaqus reads it as a comment): kept as the
+        ! keyword line '*LDFCZ ...'; every other '**' line is a comment
+        if (len(text) >= 7) then
+          if (deck_upper(text(1:7)) == '**LDFCZ') text = text(2:)
+        end if
         if (adjustl(text) == '**' .or. text(1:min(2, len(text))) == '**') cycle
       end if
       if (len_trim(text) == 0) then

@@ -18,6 +18,7 @@ module deck_reader
   use deck_fields, only: read_initial_conditions, read_temperature
   use deck_constraints, only: read_equation, read_tie, read_mpc
   use deck_finish, only: finish_model
+  use deck_declarations, only: read_ldfcz_declaration
   implicit none
   private
   public :: read_deck
@@ -167,6 +168,8 @@ contains
       end if
     case ('*RESTART')
       call read_restart(ctx)
+    case ('*LDFCZ SVARS', '*LDFCZ STATEV')
+      call read_ldfcz_declaration(ctx)
     case ('*EL PRINT', '*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
           '*MONITOR', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
       call ctx_warn(ctx, ctx%ir, 'output/cosmetic keyword not supported by ldfcz: ignored with its data lines')

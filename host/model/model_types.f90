@@ -53,6 +53,7 @@ module model_types
     real(dp), allocatable :: props(:)      !< user material constants
     logical :: unsymm = .false.            !< *USER MATERIAL, UNSYMM
     integer :: nstatv = 0                  !< *DEPVAR
+    integer :: plastic_statev = 0          !< STATEV of an equivalent plastic strain, '**LDFCZ STATEV' (0: none)
     logical :: has_expansion = .false.     !< *EXPANSION given
     real(dp) :: alpha = 0.0_dp             !< isotropic thermal expansion coefficient [1/K]
     logical :: has_density = .false.      !< *DENSITY given
@@ -78,6 +79,13 @@ module model_types
     integer :: nsvars = 0                  !< VARIABLES
     logical :: unsymm = .false.            !< UNSYMM
     integer, allocatable :: active(:)      !< active dofs per node (1..3)
+    ! the SVARS layout declared by '**LDFCZ SVARS' (docs/uel.md, "Declaring the SVARS layout"); 0 = not declared
+    integer :: sv_points = 0               !< integration points (SVARS point-major)
+    integer :: sv_per_point = 0            !< SVARS entries per point
+    integer :: sv_delta_max = 0            !< position in a point's block: largest opening so far
+    integer :: sv_opening = 0              !< position: opening magnitude
+    integer :: sv_traction = 0             !< position: traction magnitude
+    integer :: sv_length_prop = 0          !< PROPS entry of the opening length scale (delta)
     type(source_pos_t) :: pos
   end type user_element_type_t
 

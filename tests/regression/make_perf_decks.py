@@ -63,6 +63,7 @@ C3D8 + Leonov UMAT (Table 1 PET), homogeneous uniaxial stress at true strain rat
 200., -4.
 *DEPVAR
 11
+**LDFCZ STATEV, MATERIAL=PET, PLASTIC STRAIN=7
 """ + amp + """*BOUNDARY
 X0, XSYMM
 Y0, YSYMM
