@@ -23,6 +23,7 @@ install(EXPORT ldfczTargets NAMESPACE ldfcz:: DESTINATION ${LDFCZ_INSTALL_CMAKED
 file(WRITE "${PROJECT_BINARY_DIR}/ldfczConfig.cmake.in" [=[
 @PACKAGE_INIT@
 include(CMakeFindDependencyMacro)
+find_dependency(Threads)
 if(@LDFCZ_WITH_OPENMP@)
   find_dependency(OpenMP COMPONENTS Fortran)
 endif()
@@ -44,7 +45,8 @@ Name: ldfcz
 Description: LDF cohesive element (Abaqus UEL) and compressible Leonov PET material (UMAT, HYPELA2)
 Version: @PROJECT_VERSION@
 Cflags: -I${includedir} -I${includedir}/modules
-Libs: -L${libdir} -lldfcz_uel -lldfcz_umat -lldfcz_abaqus_utils -lldfcz_kinds
+Libs: -L${libdir} -lldfcz_uel -lldfcz_umat -lldfcz_abaqus_utils -lldfcz_kinds -lpthread
 ]=])
 configure_file("${PROJECT_BINARY_DIR}/ldfcz.pc.in" "${PROJECT_BINARY_DIR}/ldfcz.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/ldfcz.pc" DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+install(FILES "${LDFCZ_ABAQUS_INCLUDE}/SMAAspUserSubroutines.hdr" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ldfcz)

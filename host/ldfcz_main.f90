@@ -7,7 +7,7 @@ program ldfcz
   use ldfcz_config, only: ldfcz_version, ldfcz_abaqus_include_dir, ldfcz_install_include_rel
   use model_types, only: model_t
   use deck_reader, only: read_deck
-  use user_routines, only: user_routines_t, user_routines_builtin, user_routines_load
+  use user_routines, only: user_routines_connect_units, user_routines_t, user_routines_builtin, user_routines_load
   use output_files, only: output_t, output_open, output_close, output_log
   use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code, &
     newton_krylov, newton_auto
@@ -17,7 +17,7 @@ program ldfcz
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
   !$ use omp_lib, only: omp_set_num_threads
   implicit none
-  character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc
+  character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc, fflags
   integer :: i, n, stat, threads, exit_code, k
   logical :: quiet, verbose, exists, reorient, orient_error
   type(interface_check_t) :: orient
@@ -43,6 +43,7 @@ program ldfcz
   outdir = '.'
   user_file = ''
   fc = env_value('FC')
+  fflags = env_value('FFLAGS')
   threads = 0
   quiet = .false.
   verbose = .false.
@@ -117,7 +118,7 @@ program ldfcz
         read (arg, *, iostat=stat) options%stop_after
         if (stat /= 0 .or. options%stop_after < 1) call die('--stop-after-increments needs a positive integer')
       end if
-    case ('-o', '--out', '-t', '--threads', '-u', '--user', '--fc')
+    case ('-o', '--out', '-t', '--threads', '-u', '--user', '--fc', '--fflags')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
       select case (arg)
@@ -131,6 +132,8 @@ program ldfcz
       case ('--fc')
         fc = get_arg(i)
         if (len(fc) == 0) call die('--fc needs a compiler name')
+      case ('--fflags')
+        fflags = get_arg(i)
       case default
         ! several --user options or a comma-separated list: every file goes into the one user library
         if (len(user_file) > 0) then
@@ -179,7 +182,7 @@ program ldfcz
   call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
     call user_routines_load(routines, user_file, outdir, include_dir(), stat, errmsg, &
-      merge(-1, out%log, quiet), fc)
+      merge(-1, out%log, quiet), fc, fflags)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)
       call output_close(out)
@@ -198,12 +201,13 @@ program ldfcz
     call output_close(out)
     call exit(exit_input)
   end if
-  ! as in Abaqus, a user routine's WRITE(7, ...) goes to JOB.msg (unit 6 stays standard output: the host's own)
+  ! as in Abaqus, a user routine's WRITE(7, ...) goes to JOB.msg (and unit 6 to JOB.dat: output_open)
   if (len(restart_from) > 0) then
     open (unit=7, file=outdir//'/'//job//'.msg', position='append', action='write', iostat=stat)
   else
     open (unit=7, file=outdir//'/'//job//'.msg', status='replace', action='write', iostat=stat)
   end if
+  call user_routines_connect_units(routines, outdir//'/'//job//'.msg')
   call blas_threads_default(blas_note)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call heap_reuse_default(heap_note)
@@ -280,6 +284,7 @@ contains
       '                     or objects .o/.a/.so; several: repeat --user or FILE1,FILE2) into one library and use', &
       '                     it instead of the built-in routines, as abaqus job=... user=FILE', &
       '  --fc COMPILER      Fortran compiler for --user (default: $FC, else gfortran; LLVM flang-new works)', &
+      '  --fflags FLAGS     extra compiler options for --user, after the Abaqus-like ones (default: $FFLAGS)', &
       '  -q, --quiet        no messages on standard output (JOB.log is still written)', &
       '  -v, --verbose      residual, force and correction of every Newton iteration in JOB.log', &
       '  --reorient-interfaces  reverse the face order of interface elements whose normal points into the', &

@@ -1,10 +1,12 @@
 !> Output files of a run: JOB.csv (history of set totals, one row per converged increment), JOB.sta (one line per
 !> increment attempt), JOB.log (messages and the closing summary), JOB.pvd + JOB_NNNN.vtu (ParaView field frames),
-!> and a live one-line progress display when standard output is a terminal.
+!> JOB.dat (standard output of the job: what user routines write to unit 6, as in Abaqus) and a live one-line
+!> progress display when the console is a terminal. Host messages go to the console (console_output).
 module output_files
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
-  use, intrinsic :: iso_fortran_env, only: output_unit, iostat_end, iostat_eor
+  use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
   use ldfcz_kinds, only: dp
+  use console_output, only: console_line, console_text, console_to_dat, console_is_terminal
   implicit none
   private
   public :: output_t, output_open, output_close, output_log, output_csv_header, output_csv_row, output_sta
@@ -47,11 +49,6 @@ module output_files
   end type output_t
 
   interface
-    function c_isatty(fd) bind(c, name='isatty') result(r)
-      import :: c_int
-      integer(c_int), value :: fd
-      integer(c_int) :: r
-    end function c_isatty
     function c_rename(from, to) bind(c, name='rename') result(r)
       import :: c_char, c_int
       character(kind=c_char), intent(in) :: from(*), to(*)
@@ -61,13 +58,13 @@ module output_files
 
 contains
 
-  !> True when standard output is a terminal (isatty(1)).
+  !> True when the console (standard output as the program was started) is a terminal.
   logical function stdout_is_terminal()
-    stdout_is_terminal = c_isatty(1_c_int) == 1
+    stdout_is_terminal = console_is_terminal()
   end function stdout_is_terminal
 
-  !> Open JOB.csv, JOB.sta and JOB.log in dir. append (a restart): JOB.sta and JOB.log are continued and JOB.csv is
-  !> left closed for output_csv_resume.
+  !> Open JOB.csv, JOB.sta and JOB.log in dir and send standard output (unit 6) to JOB.dat. append (a restart):
+  !> JOB.sta, JOB.log and JOB.dat are continued and JOB.csv is left closed for output_csv_resume.
   subroutine output_open(out, job, dir, quiet, stat, errmsg, append)
     type(output_t), intent(out) :: out                   !< output state
     character(len=*), intent(in) :: job                  !< job name
@@ -98,6 +95,12 @@ contains
     end if
     if (.not. cont) write (out%sta, '(a)') '# step  inc  attempt  iterations  step_time  increment  outcome'
     flush (out%sta)
+    call console_to_dat(path(out, '.dat'), cont, ios)
+    if (ios /= 0) then
+      stat = 2
+      errmsg = 'cannot write '//path(out, '.dat')
+      return
+    end if
     if (cont) then
       open (newunit=out%log, file=path(out, '.log'), status='unknown', position='append', action='write', iostat=ios)
       return
@@ -241,7 +244,7 @@ contains
     end if
     if (.not. out%quiet) then
       call output_progress_clear(out)
-      write (output_unit, '(a)') line
+      call console_line(line)
     end if
   end subroutine output_log
 
@@ -319,15 +322,14 @@ contains
     if (frac > 0.0_dp) eta = wall_step * (1.0_dp - frac) / frac
     write (line, '(a,i0,a,i0,a,f6.2,a,i0,a,f9.1,a)') 'step ', kstep, '/', nstep, '  ', 100.0_dp * frac, &
       '%  inc ', kinc, '  ETA ', eta, ' s'
-    write (output_unit, '(a)', advance='no') achar(13)//trim(line)//achar(27)//'[K'
-    flush (output_unit)
+    call console_text(achar(13)//trim(line)//achar(27)//'[K')
     out%progress_shown = .true.
   end subroutine output_progress
 
   subroutine output_progress_clear(out)
     type(output_t), intent(inout) :: out
     if (.not. out%progress_shown) return
-    write (output_unit, '(a)', advance='no') achar(13)//achar(27)//'[K'
+    call console_text(achar(13)//achar(27)//'[K')
     out%progress_shown = .false.
   end subroutine output_progress_clear
 
@@ -452,7 +454,8 @@ contains
     close (u)
   end subroutine write_pvd
 
-  !> Close all files.
+  !> Close all files. Standard output stays on JOB.dat until the program ends: a user library with its own Fortran
+  !> run time (LLVM flang) flushes its unit 6 only then.
   subroutine output_close(out)
     type(output_t), intent(inout) :: out  !< output state
     call output_progress_clear(out)

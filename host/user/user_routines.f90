@@ -10,7 +10,7 @@ module user_routines
   implicit none
   private
   public :: uel_interface, umat_interface, user_routines_t, user_routines_builtin, user_routines_load
-  public :: user_source_compile_command
+  public :: user_source_compile_command, user_routines_connect_units
 
   abstract interface
     !> Abaqus/Standard UEL (CONVENTIONS.md). No INTENT: Abaqus user routines are written without it.
@@ -80,12 +80,15 @@ contains
   !> The command that compiles one user source into an object as Abaqus compiles user files on Linux: preprocessed
   !> (-cpp, with ABQ_LNX86_64 and ABQ_FORTRAN defined), fixed form with 132 columns for .f/.for/.f77 (Abaqus'
   !> -extend-source), free form otherwise, position-independent, locals on the stack (Abaqus' -auto: the threaded
-  !> element loop calls the routines concurrently). compiler is gfortran (default) or an LLVM flang.
-  function user_source_compile_command(compiler, source, object, include_dirs) result(cmd)
+  !> element loop calls the routines concurrently), Cray pointers accepted (the SMA arrays of Abaqus' examples are
+  !> used through them; Intel Fortran accepts them by default). compiler is gfortran (default) or an LLVM flang;
+  !> fflags (--fflags, FFLAGS) come last, so they can override.
+  function user_source_compile_command(compiler, source, object, include_dirs, fflags) result(cmd)
     character(len=*), intent(in) :: compiler      !< Fortran compiler (FC, --fc)
     character(len=*), intent(in) :: source        !< user's Fortran file
     character(len=*), intent(in) :: object        !< object file to write
     character(len=*), intent(in) :: include_dirs  !< -I options (quoted directories)
+    character(len=*), intent(in) :: fflags        !< the user's extra options ('' for none)
     character(len=:), allocatable :: cmd
     character(len=:), allocatable :: form, extra
     logical :: flang
@@ -103,16 +106,17 @@ contains
         end if
       end select
     end if
-    extra = ' -O2 -frecursive'
+    extra = ' -O2 -frecursive -fcray-pointer'
     if (flang) extra = ' -O2'
-    cmd = compiler//' -c -fPIC -cpp -DABQ_LNX86_64 -DABQ_FORTRAN'//extra//form//include_dirs// &
-      ' -o '''//object//''' '''//source//''''
+    cmd = compiler//' -c -fPIC -cpp -DABQ_LNX86_64 -DABQ_FORTRAN'//extra//form//include_dirs
+    if (len_trim(fflags) > 0) cmd = cmd//' '//trim(fflags)
+    cmd = cmd//' -o '''//object//''' '''//source//''''
   end function user_source_compile_command
 
   !> Compiles the user's files (a comma-separated list of Fortran sources and object files .o, .a, .so) into one
   !> shared library in outdir, loads it with lazy binding (a symbol the files leave undefined is an error only when
   !> it is called, as in Abaqus' link, and the loader names it) and takes its UEL and/or UMAT.
-  subroutine user_routines_load(r, source, outdir, include_dir, stat, errmsg, log_unit, compiler)
+  subroutine user_routines_load(r, source, outdir, include_dir, stat, errmsg, log_unit, compiler, fflags)
     type(user_routines_t), intent(inout) :: r            !< routines (built-in ones replaced where found)
     character(len=*), intent(in) :: source               !< user files, comma-separated
     character(len=*), intent(in) :: outdir               !< output directory (the library goes there)
@@ -121,7 +125,8 @@ contains
     character(len=:), allocatable, intent(out) :: errmsg !< message
     integer, intent(in) :: log_unit                      !< where to echo the compile command (-1: nowhere)
     character(len=*), intent(in), optional :: compiler   !< Fortran compiler (default gfortran)
-    character(len=:), allocatable :: lib, cmd, base, fc, incs, objs, file, obj, case_dir, rest
+    character(len=*), intent(in), optional :: fflags     !< extra compiler options (default none)
+    character(len=:), allocatable :: lib, cmd, base, fc, incs, objs, file, obj, case_dir, rest, flags, runtime
     integer :: estat, cstat, k, nfile
     logical :: exists
     type(c_funptr) :: f
@@ -134,6 +139,8 @@ contains
     if (present(compiler)) then
       if (len_trim(compiler) > 0) fc = trim(compiler)
     end if
+    flags = ''
+    if (present(fflags)) flags = trim(fflags)
     inquire (file=include_dir//'/ABA_PARAM.INC', exist=exists)
     if (.not. exists) then
       stat = 2
@@ -179,7 +186,7 @@ contains
       k = index(base, '.', back=.true.)
       if (k > 1) base = base(1:k - 1)
       obj = outdir//'/ldfcz_user_'//base//'.o'
-      cmd = user_source_compile_command(fc, file, obj, incs//' -I'''//dir_of(file)//'''')
+      cmd = user_source_compile_command(fc, file, obj, incs//' -I'''//dir_of(file)//'''', flags)
       if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: compiling user routines: '//cmd
       call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
       if (cstat /= 0 .or. estat /= 0) then
@@ -194,6 +201,20 @@ contains
       errmsg = '--user: no file given'
       return
     end if
+    if (index(fc, 'flang') > 0) then
+      ! flang's run time has its own unit 7: a small routine of the same compiler connects it to JOB.msg
+      call write_flang_unit_opener(outdir//'/ldfcz_flang_units.f90', stat, errmsg)
+      if (stat /= 0) return
+      obj = outdir//'/ldfcz_flang_units.o'
+      cmd = user_source_compile_command(fc, outdir//'/ldfcz_flang_units.f90', obj, '', '')
+      call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
+      if (cstat /= 0 .or. estat /= 0) then
+        stat = 2
+        errmsg = '--user: compilation failed (command: '//cmd//')'
+        return
+      end if
+      objs = objs//' '''//obj//''''
+    end if
     k = index(source, ',')
     base = source
     if (k > 1) base = source(1:k - 1)
@@ -203,10 +224,13 @@ contains
     if (k > 1) base = base(1:k - 1)
     lib = outdir//'/libldfcz_user_'//base//'.so'
     if (lib(1:1) /= '/') lib = './'//lib
-    ! linked by gfortran whatever compiled the files: the library runs on the host's (gfortran's) runtime. Objects
-    ! of another compiler work as long as they need no run-time library of their own (flang: no Fortran I/O; a
-    ! call into a missing runtime is reported by the loader with the symbol's name when it happens)
-    cmd = 'gfortran -shared -fPIC -Wl,-Bsymbolic -o '''//lib//''''//objs
+    ! linked by gfortran, the host's compiler. Files compiled by LLVM flang also need flang's run-time library
+    ! (Fortran I/O, intrinsics): its static archives, found beside the compiler, go into the library
+    runtime = ''
+    if (index(fc, 'flang') > 0) runtime = ' "$(dirname "$(readlink -f "$(command -v '//fc//')")")/../lib/'// &
+      'libFortranRuntime.a" "$(dirname "$(readlink -f "$(command -v '//fc//')")")/../lib/libFortranDecimal.a"'// &
+      ' -lstdc++ -lm'
+    cmd = 'gfortran -shared -fPIC -Wl,-Bsymbolic -o '''//lib//''''//objs//runtime
     if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: linking user routines: '//cmd
     call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
     if (cstat /= 0 .or. estat /= 0) then
@@ -237,6 +261,58 @@ contains
       errmsg = '--user: '//source//' defines neither SUBROUTINE UEL nor SUBROUTINE UMAT'
     end if
   end subroutine user_routines_load
+
+  !> Connects unit 7 of the user library's own Fortran run time (a library compiled by LLVM flang) to msg_path
+  !> (JOB.msg, which the host has created); nothing for the built-in routines or a gfortran-compiled library, whose
+  !> unit 7 is the host's.
+  subroutine user_routines_connect_units(r, msg_path)
+    type(user_routines_t), intent(in) :: r    !< routines
+    character(len=*), intent(in) :: msg_path  !< JOB.msg
+    abstract interface
+      subroutine opener(path, n) bind(c)
+        import :: c_char, c_int
+        integer(c_int), value :: n
+        character(kind=c_char), intent(in) :: path(n)
+      end subroutine opener
+    end interface
+    procedure(opener), pointer :: open_units
+    type(c_funptr) :: f
+    if (.not. c_associated(r%handle)) return
+    f = c_dlsym(r%handle, 'ldfcz_flang_units'//c_null_char)
+    if (.not. c_associated(f)) return
+    call c_f_procpointer(f, open_units)
+    call open_units(msg_path, len(msg_path, kind=c_int))
+  end subroutine user_routines_connect_units
+
+  !> Source of the routine that connects flang's unit 7 to a file (appending: the host created it).
+  subroutine write_flang_unit_opener(file, stat, errmsg)
+    character(len=*), intent(in) :: file                 !< Fortran file to write
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: u, ios
+    stat = 0
+    errmsg = ''
+    open (newunit=u, file=file, status='replace', action='write', iostat=ios)
+    if (ios /= 0) then
+      stat = 2
+      errmsg = '--user: cannot write '//file
+      return
+    end if
+    write (u, '(a)') '! written by ldfcz: unit 7 of this run time to JOB.msg', &
+      'subroutine ldfcz_flang_units(path, n) bind(c, name=''ldfcz_flang_units'')', &
+      '  use, intrinsic :: iso_c_binding, only: c_char, c_int', &
+      '  implicit none', &
+      '  integer(c_int), value :: n', &
+      '  character(kind=c_char), intent(in) :: path(n)', &
+      '  character(len=n) :: p', &
+      '  integer :: i', &
+      '  do i = 1, n', &
+      '    p(i:i) = path(i)', &
+      '  end do', &
+      '  open (unit=7, file=p, position=''append'', action=''write'')', &
+      'end subroutine ldfcz_flang_units'
+    close (u)
+  end subroutine write_flang_unit_opener
 
   !> Directory part of a path ('.' when none).
   pure function dir_of(path) result(d)

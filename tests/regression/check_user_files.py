@@ -9,7 +9,15 @@
    decks/single/user_umat_files.inp stretches two elastic bricks by 1e-3 with free lateral faces, so
    RF3(TOP) = E 1e-3 A = 1 N (small strain, linear: exact to round-off, rtol 1e-9).
 2. The same with the helper given as an object file (compiled here with gfortran -c -fPIC), comma-separated.
-3. --fc flang-new-16 (LLVM flang) compiling the fixed-form spring-bed UEL of decks/single/user_uel.inp: RF3 = k w A = 1 N.
+3. --fc flang-new-16 (LLVM flang) compiling the fixed-form spring-bed UEL of decks/single/user_uel.inp: RF3 = k w A = 1 N;
+   and the UMAT of case 1: flang's own units 6 and 7 reach JOB.dat and JOB.msg.
+4. Abaqus' thread utilities (user_files/umat_threads.f, 2 threads): under mutex 7 each call numbers itself in a global
+   SMA integer array and adds 1 to a global float array created with 1.0, and counts itself in a thread-local array.
+   The global numbers in JOB.dat must be exactly 1..N, the float value N + 1, each thread's own counts 1..n_t with
+   sum n_t = N, every call sees 2 threads and its thread number below 2, and GETNUMCPUS/GETRANK/GETCOMMUNICATOR
+   give 1/0/0 (one process without MPI). The same file compiled with --fflags -DLDFCZ_TEST_BAD_MUTEX locks mutex
+   101: the run must stop with an error naming MutexLock(101).
+5. Unit 6 of a user routine lands in JOB.dat, not on the console.
 """
 import argparse
 import csv
@@ -24,16 +32,53 @@ def fail(msg):
     sys.exit(1)
 
 
-def run(exe, out, args, deck):
+def run(exe, out, args, deck, quiet=True, console=None):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    p = subprocess.run([exe, "-q", "-o", out] + args + [deck], capture_output=True, text=True)
+    p = subprocess.run([exe, "-o", out] + (["-q"] if quiet else []) + args + [deck], capture_output=True, text=True)
     if p.returncode != 0:
         fail("exit %d: %s" % (p.returncode, p.stderr[-3000:]))
+    if console is not None:
+        console.append(p.stdout)
     job = os.path.splitext(os.path.basename(deck))[0]
     with open(os.path.join(out, job + ".csv")) as f:
         rows = list(csv.DictReader(f))
     return rows[-1], job
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def check_threads(out, job):
+    """The SMA_CALL lines of umat_threads.f in JOB.dat (see the module docstring, case 4)."""
+    text = read(os.path.join(out, job + ".dat"))
+    calls = [line.split() for line in text.splitlines() if line.startswith("SMA_CALL")]
+    info = [line.split() for line in text.splitlines() if line.startswith("SMA_INFO")]
+    n = len(calls)
+    if n == 0 or n % 16:
+        fail("SMA_CALL lines: %d (want a positive multiple of 16: 2 bricks x 8 points per assembly)" % n)
+    numbers = sorted(int(c[1]) for c in calls)
+    if numbers != list(range(1, n + 1)):
+        fail("global call numbers are not exactly 1..%d: the mutex or the global array failed" % n)
+    per_thread = {}
+    for c in calls:
+        thread, local, nthreads, value = int(c[3]), int(c[5]), int(c[7]), float(c[9])
+        if nthreads != 2 or not 0 <= thread < 2:
+            fail("GETNUMTHREADS %d / GET_THREAD_ID %d with -t 2" % (nthreads, thread))
+        if value != int(c[1]) + 1:
+            fail("global float array: %g after call %s (created with 1.0, +1 per call)" % (value, c[1]))
+        per_thread.setdefault(thread, []).append(local)
+    for thread, counts in per_thread.items():
+        if sorted(counts) != list(range(1, len(counts) + 1)):
+            fail("thread %d: local counts are not 1..%d (thread-local array shared?)" % (thread, len(counts)))
+    if sum(len(c) for c in per_thread.values()) != n:
+        fail("thread-local counts do not add up to the calls")
+    if len(info) != 1 or info[0][2:] != ["1", "RANK", "0", "COMM", "0", "SIZE", "1"]:
+        fail("GETNUMCPUS/GETRANK/GETCOMMUNICATOR/SMAIntArraySize line: %s" % info)
+    print("thread utilities: %d calls numbered 1..%d under the mutex, threads %s with private counts: ok"
+          % (n, n, sorted(per_thread)))
 
 
 def check_rf(name, row, col, want):
@@ -55,9 +100,15 @@ def main():
     deck = os.path.join(a.decks, "single", "user_umat_files.inp")
 
     out = os.path.join(a.out, "two_files")
+    console = []
     row, job = run(a.exe, out, ["--user", os.path.join(fx, "umat_fixed.f"), "--user",
-                                os.path.join(fx, "elastic_helper.f90")], deck)
+                                os.path.join(fx, "elastic_helper.f90")], deck, quiet=False, console=console)
     check_rf("two --user files", row, "TOP.RF3", 1.0)
+    if "UMAT_FIXED: unit 6" not in read(os.path.join(out, job + ".dat")):
+        fail("WRITE(6) of the user routine is not in JOB.dat")
+    if "UMAT_FIXED" in console[0] or "ldfcz" not in console[0]:
+        fail("the console should carry the host's messages and not the user's unit 6:\n" + console[0][-2000:])
+    print("WRITE(6) in JOB.dat, host messages on the console: ok")
     with open(os.path.join(out, job + ".msg")) as f:
         if "UMAT_FIXED: compiled for Linux" not in f.read():
             fail("WRITE(7) of the #ifdef block did not reach JOB.msg")
@@ -74,6 +125,31 @@ def main():
     row, _ = run(a.exe, out, ["--fc", "flang-new-16", "--user", os.path.join(a.fixtures, "user_uel_elastic.f")],
                  os.path.join(a.decks, "single", "user_uel.inp"))
     check_rf("UEL compiled by LLVM flang", row, "TOP.RF3", 1.0)
+
+    out = os.path.join(a.out, "flang_units")
+    row, job = run(a.exe, out, ["--fc", "flang-new-16", "--user", os.path.join(fx, "umat_fixed.f") + "," +
+                                os.path.join(fx, "elastic_helper.f90")], deck)
+    check_rf("UMAT compiled by LLVM flang", row, "TOP.RF3", 1.0)
+    if "UMAT_FIXED: unit 6" not in read(os.path.join(out, job + ".dat")):
+        fail("flang: WRITE(6) not in JOB.dat")
+    if "UMAT_FIXED: compiled for Linux" not in read(os.path.join(out, job + ".msg")):
+        fail("flang: WRITE(7) not in JOB.msg")
+    print("flang's units 6 and 7 in JOB.dat and JOB.msg: ok")
+
+    out = os.path.join(a.out, "threads")
+    threads_files = os.path.join(fx, "umat_threads.f") + "," + os.path.join(fx, "elastic_helper.f90")
+    row, job = run(a.exe, out, ["-t", "2", "--user", threads_files], deck)
+    check_rf("thread utilities", row, "TOP.RF3", 1.0)
+    check_threads(out, job)
+
+    out = os.path.join(a.out, "bad_mutex")
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    p = subprocess.run([a.exe, "-q", "-o", out, "--fflags", "-DLDFCZ_TEST_BAD_MUTEX", "--user", threads_files, deck],
+                       capture_output=True, text=True)
+    if p.returncode == 0 or "MutexLock(101)" not in p.stderr:
+        fail("MutexLock(101): want a non-zero exit naming it, got %d: %s" % (p.returncode, p.stderr[-1000:]))
+    print("MutexLock(101) stops the run with: " + p.stderr.strip().splitlines()[-1])
     print("user files: ok")
 
 

@@ -1,5 +1,5 @@
 C     A user UMAT in the classic style (test deck_user_files): fixed form, implicit typing, the include file
-C     named in lower case, a preprocessor block and a message to unit 7 (Abaqus: JOB.msg), and its elasticity
+C     named in lower case, a preprocessor block and messages to units 7 and 6 (Abaqus: JOB.msg, JOB.dat), its elasticity
 C     matrix built by a helper in another file (elastic_helper.f90, or its object file). Small-strain isotropic
 C     elasticity: PROPS(1) = E, PROPS(2) = nu. A branch never taken calls a routine no file defines: as in
 C     Abaqus' link, that is an error only if it is ever called (lazy binding).
@@ -28,6 +28,7 @@ C     Abaqus' link, that is an error only if it is ever called (lazy binding).
 #ifdef ABQ_LNX86_64
       IF (NOEL.EQ.1 .AND. NPT.EQ.1 .AND. KINC.EQ.1) THEN
         WRITE(7,*) 'UMAT_FIXED: compiled for Linux, first call'
+        WRITE(6,*) 'UMAT_FIXED: unit 6 of the first call'
       END IF
 #else
       THIS LINE IS NOT FORTRAN: THE PREPROCESSOR MUST REMOVE IT
