@@ -1,5 +1,6 @@
-# One-file Abaqus drop-ins (tools/make_dropin.py): the modules a routine needs and its adapter in one fixed-form
-# file, as Abaqus compiles one user file per job. Generated from the sources at build time into
+# One-file drop-ins (tools/make_dropin.py): the modules a routine needs and its adapter in one file, as Abaqus
+# compiles one user file per job: fixed form (.f, as Abaqus compiles user files) and free form (.f90), and the Marc
+# HYPELA2 with its modules (ldfcz_marc_hypela2.f). Generated from the sources at build time into
 # <build>/dropin/, installed into <prefix>/share/ldfcz/. Shared modules are renamed per file (_uel, _umat, _all), so
 # the UEL and UMAT drop-ins link together without a symbol defined twice.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
@@ -11,22 +12,40 @@ set(_umat "${PROJECT_SOURCE_DIR}/umat/leonov_parameters.f90" "${PROJECT_SOURCE_D
   "${PROJECT_SOURCE_DIR}/umat/umat.f")
 set(_make "${PROJECT_SOURCE_DIR}/tools/make_dropin.py")
 set(LDFCZ_DROPINS "")
-foreach(kind uel umat all)
+set(_marc "${PROJECT_SOURCE_DIR}/umat/leonov_parameters.f90" "${PROJECT_SOURCE_DIR}/umat/leonov.f90"
+  "${PROJECT_SOURCE_DIR}/umat/leonov_marc.f90" "${PROJECT_SOURCE_DIR}/umat/hypela2.f")
+foreach(kind uel umat all marc)
+  set(_host abaqus)
   if(kind STREQUAL "uel")
     set(_src ${_common} ${_uel})
-    set(_name ldfcz_abaqus_uel.f)
+    set(_name ldfcz_abaqus_uel)
   elseif(kind STREQUAL "umat")
     set(_src ${_common} ${_umat})
-    set(_name ldfcz_abaqus_umat.f)
-  else()
+    set(_name ldfcz_abaqus_umat)
+  elseif(kind STREQUAL "all")
     set(_src ${_common} ${_uel} ${_umat})
-    set(_name ldfcz_abaqus.f)
+    set(_name ldfcz_abaqus)
+  else()
+    set(_src ${_common} ${_marc})
+    set(_name ldfcz_marc_hypela2)
+    set(_host marc)
   endif()
-  add_custom_command(OUTPUT "${LDFCZ_DROPIN_DIR}/${_name}"
-    COMMAND ${CMAKE_COMMAND} -E make_directory "${LDFCZ_DROPIN_DIR}"
-    COMMAND Python3::Interpreter "${_make}" --out "${LDFCZ_DROPIN_DIR}/${_name}" --tag ${kind} ${_src}
-    DEPENDS ${_src} "${_make}" COMMENT "one-file drop-in ${_name}" VERBATIM)
-  list(APPEND LDFCZ_DROPINS "${LDFCZ_DROPIN_DIR}/${_name}")
+  set(_forms fixed free)
+  if(_host STREQUAL "marc")
+    set(_forms fixed)
+  endif()
+  foreach(_form IN LISTS _forms)
+    set(_file "${_name}.f")
+    if(_form STREQUAL "free")
+      set(_file "${_name}.f90")
+    endif()
+    add_custom_command(OUTPUT "${LDFCZ_DROPIN_DIR}/${_file}"
+      COMMAND ${CMAKE_COMMAND} -E make_directory "${LDFCZ_DROPIN_DIR}"
+      COMMAND Python3::Interpreter "${_make}" --out "${LDFCZ_DROPIN_DIR}/${_file}" --tag ${kind} --form ${_form}
+        --host ${_host} ${_src}
+      DEPENDS ${_src} "${_make}" COMMENT "one-file drop-in ${_file}" VERBATIM)
+    list(APPEND LDFCZ_DROPINS "${LDFCZ_DROPIN_DIR}/${_file}")
+  endforeach()
 endforeach()
 add_custom_target(dropins ALL DEPENDS ${LDFCZ_DROPINS})
 include(GNUInstallDirs)

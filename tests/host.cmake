@@ -204,9 +204,19 @@ set_tests_properties(deck_user_files PROPERTIES LABELS "deck" TIMEOUT 300)
 
 # one-file Abaqus drop-ins: compiled the Abaqus way (gfortran, LLVM flang), UEL + UMAT linked together, and run by
 # --user on the peel deck against the built-in routines
+# In the Debug configuration every source has the same flags: the drop-in compiled with them (--fflags) must give
+# the built-in result bit for bit.
+string(TOUPPER "${CMAKE_BUILD_TYPE}" _ldfcz_cfg)
+set(_dropin_exact "")
+set(_dropin_fflags "")
+if(_ldfcz_cfg STREQUAL "DEBUG" AND CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
+  set(_dropin_exact --exact)
+  string(STRIP "${CMAKE_Fortran_FLAGS} ${CMAKE_Fortran_FLAGS_DEBUG}" _dropin_fflags)
+endif()
 add_test(NAME dropins_abaqus COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_dropins.py
   --exe $<TARGET_FILE:ldfcz> --dropins ${PROJECT_BINARY_DIR}/dropin --include ${PROJECT_SOURCE_DIR}/host/abaqus
-  --deck ${LDFCZ_DECKS}/peel/peel_ps.inp --out ${LDFCZ_RUNS}/dropins_abaqus)
+  --marc-include ${CMAKE_CURRENT_SOURCE_DIR}/support/marc --marc-stubs ${CMAKE_CURRENT_SOURCE_DIR}/support/marc/marc_test_stubs.f
+  --deck ${LDFCZ_DECKS}/peel/peel_ps.inp --out ${LDFCZ_RUNS}/dropins_abaqus "--fflags=${_dropin_fflags}" ${_dropin_exact})
 set_tests_properties(dropins_abaqus PROPERTIES LABELS "deck" TIMEOUT 600)
 
 # the CMake package: install, find_package(ldfcz) from another project, call UEL and UMAT; pkg-config
