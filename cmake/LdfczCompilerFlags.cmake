@@ -33,3 +33,22 @@ endif()
 function(ldfcz_warnings target)
   target_compile_options(${target} PRIVATE $<$<COMPILE_LANGUAGE:Fortran>:${LDFCZ_FORTRAN_WARNINGS}>)
 endfunction()
+
+#[[ ldfcz_add_shared_twin(<static target> [LINK <shared targets>...])
+    A shared library <target>_shared (lib<name>.so beside lib<name>.a) built from the same sources with the same
+    per-file flags, its module files kept apart (modules_shared) so the two builds never write the same .mod.
+    Call it in the directory that defines the static target (source-file properties are per directory). ]]
+function(ldfcz_add_shared_twin target)
+  cmake_parse_arguments(T "" "" "LINK" ${ARGN})
+  get_target_property(srcs ${target} SOURCES)
+  add_library(${target}_shared SHARED ${srcs})
+  set_target_properties(${target}_shared PROPERTIES OUTPUT_NAME ${target} INSTALL_RPATH "$ORIGIN"
+    Fortran_MODULE_DIRECTORY "${PROJECT_BINARY_DIR}/modules_shared/${target}")
+  get_target_property(incs ${target} INCLUDE_DIRECTORIES)
+  if(incs)
+    target_include_directories(${target}_shared PRIVATE ${incs})
+  endif()
+  target_link_libraries(${target}_shared PUBLIC ${T_LINK})
+  target_include_directories(${target}_shared PUBLIC $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/modules_shared/${target}>)
+  ldfcz_warnings(${target}_shared)
+endfunction()

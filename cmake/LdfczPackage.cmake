@@ -1,6 +1,7 @@
 # The CMake package of the user routines: `cmake --install` puts the static libraries of the cores and their Abaqus
 # adapters, the Fortran module files, ABA_PARAM.INC, the one-file drop-ins and ldfczConfig.cmake (imported targets
-# ldfcz::kinds, ldfcz::uel, ldfcz::umat, ldfcz::abaqus_utils) plus ldfcz.pc for pkg-config into the prefix.
+# ldfcz::kinds, ldfcz::uel, ldfcz::umat, ldfcz::abaqus_utils and their shared twins ldfcz::*_shared) plus ldfcz.pc
+# for pkg-config into the prefix.
 # Another project: find_package(ldfcz REQUIRED) and target_link_libraries(app PRIVATE ldfcz::uel ldfcz::umat
 # ldfcz::abaqus_utils) (the last provides XIT, STDB_ABQERR, ... outside Abaqus; inside Abaqus leave it out).
 include(GNUInstallDirs)
@@ -13,7 +14,14 @@ set_target_properties(ldfcz_umat PROPERTIES EXPORT_NAME umat)
 set_target_properties(ldfcz_abaqus_utils PROPERTIES EXPORT_NAME abaqus_utils)
 target_include_directories(ldfcz_kinds PUBLIC $<INSTALL_INTERFACE:${LDFCZ_INSTALL_MODDIR}>
   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/ldfcz>)
-install(TARGETS ldfcz_kinds ldfcz_uel ldfcz_umat ldfcz_abaqus_utils EXPORT ldfczTargets
+# shared twins (ldfcz::uel_shared, ...): the same code as lib*.so, for codes that load user routines at run time
+foreach(t kinds uel umat abaqus_utils)
+  set_target_properties(ldfcz_${t}_shared PROPERTIES EXPORT_NAME ${t}_shared)
+  target_include_directories(ldfcz_${t}_shared PUBLIC $<INSTALL_INTERFACE:${LDFCZ_INSTALL_MODDIR}>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/ldfcz>)
+endforeach()
+install(TARGETS ldfcz_kinds ldfcz_uel ldfcz_umat ldfcz_abaqus_utils ldfcz_kinds_shared ldfcz_uel_shared
+  ldfcz_umat_shared ldfcz_abaqus_utils_shared EXPORT ldfczTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(mod ldfcz_kinds ldfcz_finite cohesive_law cohesive_element leonov_parameters leonov leonov_marc
             abaqus_host_state abaqus_tensor_utils)
@@ -23,7 +31,6 @@ install(EXPORT ldfczTargets NAMESPACE ldfcz:: DESTINATION ${LDFCZ_INSTALL_CMAKED
 file(WRITE "${PROJECT_BINARY_DIR}/ldfczConfig.cmake.in" [=[
 @PACKAGE_INIT@
 include(CMakeFindDependencyMacro)
-find_dependency(Threads)
 if(@LDFCZ_WITH_OPENMP@)
   find_dependency(OpenMP COMPONENTS Fortran)
 endif()
@@ -37,8 +44,10 @@ write_basic_package_version_file("${PROJECT_BINARY_DIR}/ldfczConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES "${PROJECT_BINARY_DIR}/ldfczConfig.cmake" "${PROJECT_BINARY_DIR}/ldfczConfigVersion.cmake"
   DESTINATION ${LDFCZ_INSTALL_CMAKEDIR})
+# relocatable: the prefix is found from where the .pc file lies (pkg-config's pcfiledir)
+file(RELATIVE_PATH LDFCZ_PC_TO_PREFIX "/prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/prefix")
 file(WRITE "${PROJECT_BINARY_DIR}/ldfcz.pc.in" [=[
-prefix=@CMAKE_INSTALL_PREFIX@
+prefix=${pcfiledir}/@LDFCZ_PC_TO_PREFIX@
 libdir=${prefix}/@CMAKE_INSTALL_LIBDIR@
 includedir=${prefix}/@CMAKE_INSTALL_INCLUDEDIR@/ldfcz
 Name: ldfcz
