@@ -194,6 +194,11 @@ endif()
 # the arguments of every UEL call against Abaqus' documented values (LFLAGS, TIME, PERIOD, PARAMS, ...)
 ldfcz_add_deck_test(NAME deck_uel_arguments DECK ${LDFCZ_DECKS}/single/uel_arguments.inp CASE uel_arguments
   USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_args.f)
+# every argument of the UMAT calls against Abaqus' documented values, with and without NLGEOM
+ldfcz_add_deck_test(NAME deck_umat_arguments DECK ${LDFCZ_DECKS}/single/umat_arguments.inp CASE umat_arguments
+  USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_args.f)
+ldfcz_add_deck_test(NAME deck_umat_arguments_small DECK ${LDFCZ_DECKS}/single/umat_arguments_small.inp
+  CASE umat_arguments_small USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_args.f)
 
 # --user as Abaqus builds user code: preprocessing, lower-case include, two files, an object file, WRITE(7) to
 # JOB.msg, lazy binding, LLVM flang through --fc

@@ -179,7 +179,8 @@ contains
       end do
       associate (mt => model%materials(im), sm => an%mats(is))
         sm%thickness = model%sections(is)%thickness
-        sm%cmname = mt%given_name
+        ! CMNAME: Abaqus reads names case-insensitively and passes them in upper case
+        sm%cmname = upper_case(mt%given_name)
         sm%alpha = mt%alpha
         if (mt%has_elastic) then
           sm%kind = SOLID_MAT_ELASTIC
@@ -646,5 +647,16 @@ contains
     if (allocated(from%svars)) to%svars = from%svars
     to%energy = from%energy
   end subroutine copy_state
+
+  !> s in upper case (ASCII letters).
+  pure function upper_case(s) result(u)
+    character(len=*), intent(in) :: s  !< text
+    character(len=len(s)) :: u
+    integer :: i
+    u = s
+    do i = 1, len(u)
+      if (u(i:i) >= 'a' .and. u(i:i) <= 'z') u(i:i) = achar(iachar(u(i:i)) - 32)
+    end do
+  end function upper_case
 
 end module analysis_core

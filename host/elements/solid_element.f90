@@ -381,7 +381,8 @@ contains
         sv = 0.0_dp
         if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
         do i = 1, 3
-          coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + u1(i, 1:nnode))
+          ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
+          coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
         end do
         call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
           ntens, nsv, pr, np, coords, drot, pn, celent, fb0, fb1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)

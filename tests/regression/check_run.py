@@ -235,6 +235,66 @@ def case_uel_arguments(d, job):
             fail("UEL arguments differ from Abaqus' values: %s, want %s" % (c, w))
 
 
+def case_umat_arguments(d, job, nlgeom=True):
+    """Every UMAT call of decks/single/umat_arguments.inp (NLGEOM=YES) or umat_arguments_small.inp (NLGEOM=NO), as
+    recorded by tests/regression/user_umat_args.f, against Abaqus' documented values. One C3D8 unit cube (label 3)
+    with every dof prescribed: F = diag(1, 1, lambda), lambda = 1 + 0.1 t, 4 increments of 0.25, temperature
+    ramped from 20 to 50. Per call: NOEL 3, NPT 1..8 (Abaqus' point order: xi fastest, then eta, then zeta),
+    LAYER = KSPT = 1 (a homogeneous solid section: inferred), JSTEP = (step, 1 general static, NLGEOM flag, 0 no
+    perturbation), KINC, NDI = NSHR = 3, NTENS = 6, NSTATV = 2 (*DEPVAR), NPROPS = 2, TIME = (step, total) time at
+    the start of the increment, DTIME, TEMP at the start and DTEMP over the increment, CELENT = cube root of the
+    element volume (current under NLGEOM), COORDS of the point (current under NLGEOM, original otherwise), STRAN at
+    the start and DSTRAN (NLGEOM: the sum of and the midpoint (Hughes-Winget) increment 2 (l1 - l0) / (l0 + l1) of
+    the logarithmic strain; otherwise the small strain l0 - 1 and l1 - l0), DFGRD0/DFGRD1 = diag(1, 1, l0/l1),
+    DROT = I, CMNAME in upper case. Tolerance 1e-12: all values are O(1) and computed in double precision."""
+    with open(os.path.join(d, "umat_args.txt")) as f:
+        calls = [line.split() for line in f if line.strip()]
+    if len(calls) != 32:
+        fail("%d UMAT calls recorded, expected 32 (8 points x 4 increments: nothing to iterate on)" % len(calls))
+    g = 1.0 / math.sqrt(3.0)
+    dt = 0.25
+    stran = 0.0
+    for k in range(1, 5):
+        t0 = (k - 1) * dt
+        l0, l1 = 1.0 + 0.1 * t0, 1.0 + 0.1 * (t0 + dt)
+        dstran = 2.0 * (l1 - l0) / (l0 + l1) if nlgeom else l1 - l0
+        s0 = stran if nlgeom else l0 - 1.0
+        rows = [c for c in calls if int(c[8]) == k]
+        if sorted(int(c[1]) for c in rows) != list(range(1, 9)):
+            fail("increment %d: points %s, want 1..8" % (k, [c[1] for c in rows]))
+        for c in rows:
+            npt = int(c[1])
+            ints = tuple(int(x) for x in c[:14])
+            want_ints = (3, npt, 1, 1, 1, 1, 1 if nlgeom else 0, 0, k, 3, 3, 6, 2, 2)
+            r = [float(x) for x in c[14:62]]
+            i, j, m = (npt - 1) % 2, ((npt - 1) // 2) % 2, (npt - 1) // 4
+            x0 = [0.5 + 0.5 * g * (2 * q - 1) for q in (i, j, m)]
+            coords = [x0[0], x0[1], x0[2] * (l1 if nlgeom else 1.0)]
+            ident = [1.0, 0, 0, 0, 1.0, 0, 0, 0, 1.0]
+            want = ([t0, t0, dt, 20.0 + 30.0 * t0, 30.0 * dt, l1 ** (1.0 / 3.0) if nlgeom else 1.0] + coords +
+                    [0, 0, s0, 0, 0, 0] + [0, 0, dstran, 0, 0, 0] +
+                    [1.0, 0, 0, 0, 1.0, 0, 0, 0, l0] + [1.0, 0, 0, 0, 1.0, 0, 0, 0, l1] + ident)
+            names = (["TIME(1)", "TIME(2)", "DTIME", "TEMP", "DTEMP", "CELENT"] + ["COORDS(%d)" % q for q in (1, 2, 3)] +
+                     ["STRAN(%d)" % q for q in range(1, 7)] + ["DSTRAN(%d)" % q for q in range(1, 7)] +
+                     ["DFGRD0(%d)" % q for q in range(1, 10)] + ["DFGRD1(%d)" % q for q in range(1, 10)] +
+                     ["DROT(%d)" % q for q in range(1, 10)])
+            bad = [(n, got, w) for n, got, w in zip(names, r, want) if abs(got - w) > 1e-12]
+            if ints != want_ints:
+                fail("inc %d point %d: NOEL..NPROPS %s, want %s" % (k, npt, ints, want_ints))
+            if bad:
+                fail("inc %d point %d: %s" % (k, npt, ", ".join("%s = %.15g (want %.15g)" % b for b in bad)))
+            if c[62] != "ARGSMAT":
+                fail("CMNAME %r, want 'ARGSMAT' (the deck's ArgsMat in upper case)" % c[62])
+        print("increment %d: 8 points, JSTEP %s, STRAN(3) %.12f DSTRAN(3) %.12f CELENT %.12f: ok"
+              % (k, c[4:8], s0, dstran, want[5]))
+        stran += dstran
+
+
+def case_umat_arguments_small(d, job):
+    """The NLGEOM=NO twin of case_umat_arguments."""
+    case_umat_arguments(d, job, nlgeom=False)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
@@ -247,9 +307,10 @@ def main():
     ap.add_argument("--extra", nargs="*", default=[])
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
-    stale = os.path.join(a.out, "uel_args.txt")  # appended to by user_uel_args.f: start empty
-    if os.path.exists(stale):
-        os.remove(stale)
+    for name in ("uel_args.txt", "umat_args.txt"):  # appended to by user_uel_args.f / user_umat_args.f: start empty
+        stale = os.path.join(a.out, name)
+        if os.path.exists(stale):
+            os.remove(stale)
     cmd = [a.exe, "--quiet", "--threads", "2", "--out", a.out]
     if a.user:
         cmd += ["--user", a.user]
