@@ -297,9 +297,10 @@ contains
       '                     of (K+K^T)/2), single (single precision) or symmetric-single: factors that only', &
       '                     precondition GMRES (half the factor work or memory traffic; needs krylov/auto)', &
       '  --max-opening-increment F  limit increments so that the cohesive opening changes by at most F*delta', &
-      '                     per increment (built-in UEL SVARS; paper section 7: F <= 1/3 -> >= 99% of phi)', &
-      '  --plastic-statev N report the largest increment of STATEV(N) (default 7 = gamma_p of the built-in', &
-      '                     UMAT; 0: none)', &
+      '                     per increment (element types that declare **LDFCZ SVARS OPENING=, LENGTH', &
+      '                     PROPERTY=; paper section 7: F <= 1/3 -> >= 99% of phi)', &
+      '  --plastic-statev N report the largest increment of STATEV(N) (default: the STATEV a material', &
+      '                     declares by **LDFCZ STATEV, PLASTIC STRAIN=n; 0: none)', &
       '  --max-plastic-increment X  choose the next increment so that STATEV(N) changes by about 0.8 X', &
       '  --restart-write [N]  write JOB.rst (restart data) after every N-th increment (default 1) and at the', &
       '                     end of each step; overrides *RESTART, WRITE, FREQUENCY=n of the deck; 0: never', &

@@ -24,7 +24,7 @@ set(LDFCZ_RUNS "${CMAKE_CURRENT_BINARY_DIR}/regression")
 #[[ ldfcz_add_deck_test(NAME <test> DECK <path> [CASE <check>] [BAD] [USER <file>] [EXIT <status>])
     Runs bin/ldfcz on the deck and checks the result with tests/regression/check_run.py. ]]
 function(ldfcz_add_deck_test)
-  cmake_parse_arguments(D "BAD" "NAME;DECK;CASE;USER;EXIT" "" ${ARGN})
+  cmake_parse_arguments(D "BAD" "NAME;DECK;CASE;USER;EXIT;OPTIONS" "" ${ARGN})
   set(args --exe $<TARGET_FILE:ldfcz> --deck ${D_DECK} --out ${LDFCZ_RUNS}/${D_NAME})
   if(D_BAD)
     list(APPEND args --bad)
@@ -37,6 +37,9 @@ function(ldfcz_add_deck_test)
   endif()
   if(D_EXIT)
     list(APPEND args --expect-exit ${D_EXIT})
+  endif()
+  if(D_OPTIONS)
+    list(APPEND args "--extra-args=${D_OPTIONS}")
   endif()
   add_test(NAME ${D_NAME} COMMAND Python3::Interpreter ${LDFCZ_CHECK} ${args})
   set_tests_properties(${D_NAME} PROPERTIES LABELS "deck" TIMEOUT 300)
@@ -194,6 +197,11 @@ endif()
 # the arguments of every UEL call against Abaqus' documented values (LFLAGS, TIME, PERIOD, PARAMS, ...)
 ldfcz_add_deck_test(NAME deck_uel_arguments DECK ${LDFCZ_DECKS}/single/uel_arguments.inp CASE uel_arguments
   USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_args.f)
+# the plastic-increment control needs a declared plastic strain: without one the option is refused (exit 2), not
+# silently ineffective
+ldfcz_add_deck_test(NAME robust_options_plastic_undeclared DECK ${LDFCZ_DECKS}/single/user_umat_files.inp EXIT 2
+  USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_files/umat_fixed.f,${CMAKE_CURRENT_SOURCE_DIR}/regression/user_files/elastic_helper.f90
+  OPTIONS "--max-plastic-increment 0.01")
 # every argument of the UMAT calls against Abaqus' documented values, with and without NLGEOM
 ldfcz_add_deck_test(NAME deck_umat_arguments DECK ${LDFCZ_DECKS}/single/umat_arguments.inp CASE umat_arguments
   USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_args.f)

@@ -122,6 +122,14 @@ contains
     else
       summary%plastic_statev = 0
     end if
+    if (opt%max_plastic > 0.0_dp .and. summary%plastic_statev == 0) then
+      errmsg = '--max-plastic-increment needs a UMAT material that declares its equivalent plastic strain '// &
+        '(**LDFCZ STATEV, PLASTIC STRAIN=n; docs/umat.md) or --plastic-statev N'
+      call output_log(out, 'ldfcz: error: '//errmsg)
+      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      exit_code = exit_input
+      return
+    end if
     if (opt%max_opening > 0.0_dp .and. .not. any(model%utypes(1:model%nutype)%sv_opening > 0 .and. &
         model%utypes(1:model%nutype)%sv_length_prop > 0)) then
       errmsg = '--max-opening-increment needs a user element type that declares its opening and length scale '// &

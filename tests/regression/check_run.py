@@ -305,6 +305,7 @@ def main():
     ap.add_argument("--user")
     ap.add_argument("--expect-exit", type=int, default=0)
     ap.add_argument("--extra", nargs="*", default=[])
+    ap.add_argument("--extra-args", default="", help="more ldfcz options, blank-separated (may start with --)")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     for name in ("uel_args.txt", "umat_args.txt"):  # appended to by user_uel_args.f / user_umat_args.f: start empty
@@ -314,7 +315,7 @@ def main():
     cmd = [a.exe, "--quiet", "--threads", "2", "--out", a.out]
     if a.user:
         cmd += ["--user", a.user]
-    cmd += a.extra + [a.deck]
+    cmd += a.extra + a.extra_args.split() + [a.deck]
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     print(" ".join(cmd))
     print("exit status", p.returncode)
