@@ -62,6 +62,8 @@ contains
     type(step_control_t) :: sc
     type(newton_state_t) :: ns
     logical :: converged, ok, stopped
+    integer :: lrestart       !< UEXTERNALDB's LRESTART: 1 when restart data were written after the increment
+    real(dp) :: t_reached(2)  !< step and total time of the last converged increment (UEXTERNALDB)
     character(len=64) :: outcome
     type(restart_state_t) :: rs, fp
     logical :: restarting, resumed, fresh_csv
@@ -207,9 +209,14 @@ contains
     kinc_total = 0
     last_frame_inc = -1
     call apply_bc_list(model%initial_bcs, model%n_initial_bc, .true.)
+    t_reached = 0.0_dp
+    kinc = 0
     is_first = 1
+    ! a user library's UEXTERNALDB: start of the analysis (LOP 0) or of a restarted one (4, below)
+    if (.not. restarting) call external_db(0, 0, [0.0_dp, 0.0_dp], 0.0_dp, 0, 0)
     if (restarting) then
       call resume_state()
+      call external_db(4, 0, [rs%sc%t, rs%t_total0 + rs%sc%t], 0.0_dp, rs%step, rs%kinc)
     else if (any(model%steps(1:model%nstep)%field_output)) then
       call write_frame(0.0_dp, findloc(model%steps(1:model%nstep)%field_output, .true., 1))
     end if
@@ -291,6 +298,7 @@ contains
             dt = step_control_dt(sc)
             time = [sc%t, t_total0 + sc%t]
             t_end = sc%t + dt
+            call external_db(1, 0, time, dt, is, kinc)
             ! prescribed displacements at the end of the increment, applied at its start
             an%u = an%u_conv
             an%extrapolated = st%extrapolate .and. dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts
@@ -422,9 +430,15 @@ contains
           ! restart data after every n-th increment and at the end of the step (Abaqus *RESTART, WRITE, FREQUENCY=n)
           k = st%restart_frequency
           if (opt%restart_write >= 0) k = opt%restart_write
+          lrestart = 0
           if (k > 0) then
-            if (mod(kinc, k) == 0 .or. step_control_done(sc)) call save_restart()
+            if (mod(kinc, k) == 0 .or. step_control_done(sc)) then
+              call save_restart()
+              lrestart = 1
+            end if
           end if
+          t_reached = [sc%t, t_total0 + sc%t]
+          call external_db(2, lrestart, t_reached, dt, is, kinc)
           if (opt%stop_after > 0 .and. run_increments >= opt%stop_after) then
             call output_log(out, 'ldfcz: stopped after '//itoa(run_increments)//' increments as asked '// &
               '(--stop-after-increments), at step '//itoa(is)//' time '//rtoa(sc%t)//' of '//rtoa(st%period))
@@ -452,6 +466,7 @@ contains
         call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(kinc)//' increments')
       end associate
     end do steps
+    call external_db(3, 0, t_reached, 0.0_dp, min(is, model%nstep), kinc)
     if (ns%tangents_skipped > 0) call output_log(out, 'ldfcz: Newton auto: '//itoa(ns%tangents_skipped)// &
       ' iterations expected to converge assembled without a tangent, '//itoa(ns%stale_solves)// &
       ' of them not converged and solved with the previous iterate''s tangent (this run)')
@@ -589,6 +604,23 @@ contains
       end do
       if (ivar < 10 .and. nn > 0) v = v / real(nn, dp)
     end function column_value
+
+    !> Calls the user library's UEXTERNALDB, if it has one, with copies of the arguments (a routine may write to
+    !> them).
+    subroutine external_db(lop, lrestart_, tm, dtm, kstep, kinc_)
+      integer, intent(in) :: lop, lrestart_, kstep, kinc_  !< Abaqus' LOP, LRESTART, KSTEP, KINC
+      real(dp), intent(in) :: tm(2), dtm                    !< TIME (step, total), DTIME
+      integer :: c_lop, c_lrestart, c_kstep, c_kinc
+      real(dp) :: c_time(2), c_dtime
+      if (.not. associated(routines%uexternaldb)) return
+      c_lop = lop
+      c_lrestart = lrestart_
+      c_kstep = kstep
+      c_kinc = kinc_
+      c_time = tm
+      c_dtime = dtm
+      call routines%uexternaldb(c_lop, c_lrestart, c_time, c_dtime, c_kstep, c_kinc)
+    end subroutine external_db
 
     !> A VTU frame of the converged state, once per converged increment.
     subroutine write_frame(ttot, istep)

@@ -9,7 +9,8 @@ module user_routines
   use solid_umat_interface, only: umat_interface
   implicit none
   private
-  public :: uel_interface, umat_interface, user_routines_t, user_routines_builtin, user_routines_load
+  public :: uel_interface, umat_interface, uexternaldb_interface, user_routines_t, user_routines_builtin
+  public :: user_routines_load
   public :: user_source_compile_command, user_routines_connect_units
 
   abstract interface
@@ -25,12 +26,22 @@ module user_routines
       real(dp) :: u(ndofel), du(mlvarx, *), v(ndofel), a(ndofel), time(2), dtime, params(*)
       real(dp) :: adlmag(mdload, *), predef(2, npredf, nnode), ddlmag(mdload, *), pnewdt, period
     end subroutine uel_interface
+
+    !> Abaqus/Standard UEXTERNALDB(LOP, LRESTART, TIME, DTIME, KSTEP, KINC): called at the start of the analysis
+    !> (LOP 0, or 4 on a restart), at the start of every increment attempt (1), at the end of every converged
+    !> increment (2) and at the end of the analysis (3).
+    subroutine uexternaldb_interface(lop, lrestart, time, dtime, kstep, kinc)
+      import :: dp
+      integer :: lop, lrestart, kstep, kinc
+      real(dp) :: time(2), dtime
+    end subroutine uexternaldb_interface
   end interface
 
   !> The routines in use.
   type :: user_routines_t
     procedure(uel_interface), pointer, nopass :: uel => null()    !< UEL (null: none available)
     procedure(umat_interface), pointer, nopass :: umat => null()  !< UMAT (null: none available)
+    procedure(uexternaldb_interface), pointer, nopass :: uexternaldb => null() !< UEXTERNALDB of a user library
     character(len=:), allocatable :: uel_origin                   !< 'built-in', the user file, or 'none'
     character(len=:), allocatable :: umat_origin
     type(c_ptr) :: handle = c_null_ptr                            !< dlopen handle of a user library
@@ -132,6 +143,7 @@ contains
     type(c_funptr) :: f
     procedure(uel_interface), pointer :: pu
     procedure(umat_interface), pointer :: pm
+    procedure(uexternaldb_interface), pointer :: px
 
     stat = 0
     errmsg = ''
@@ -255,6 +267,11 @@ contains
       call c_f_procpointer(f, pm)
       r%umat => pm
       r%umat_origin = source
+    end if
+    f = c_dlsym(r%handle, 'uexternaldb_'//c_null_char)
+    if (c_associated(f)) then
+      call c_f_procpointer(f, px)
+      r%uexternaldb => px
     end if
     if (r%uel_origin /= source .and. r%umat_origin /= source) then
       stat = 2

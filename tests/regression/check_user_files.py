@@ -18,10 +18,14 @@
    give 1/0/0 (one process without MPI). The same file compiled with --fflags -DLDFCZ_TEST_BAD_MUTEX locks mutex
    101: the run must stop with an error naming MutexLock(101).
 5. Unit 6 of a user routine lands in JOB.dat, not on the console.
+6. UEXTERNALDB (in umat_threads.f) is called as Abaqus documents: LOP 0 once at the start, 1 at the start of
+   every increment attempt (TIME at its start, DTIME its size), 2 at the end of every converged increment (TIME
+   at its end: the CSV row's times), 3 once at the end; KSTEP/KINC of the increment.
 """
 import argparse
 import csv
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -79,6 +83,31 @@ def check_threads(out, job):
         fail("GETNUMCPUS/GETRANK/GETCOMMUNICATOR/SMAIntArraySize line: %s" % info)
     print("thread utilities: %d calls numbered 1..%d under the mutex, threads %s with private counts: ok"
           % (n, n, sorted(per_thread)))
+
+
+def check_uexternaldb(out, job):
+    """The UEXT lines of umat_threads.f in JOB.dat against the CSV history (module docstring, case 6)."""
+    text = read(os.path.join(out, job + ".dat"))
+    calls = [line.split()[1:] for line in text.splitlines() if line.startswith("UEXT")]
+    lops = "".join(c[0] for c in calls)
+    with open(os.path.join(out, job + ".csv")) as f:
+        hist = list(csv.DictReader(f))
+    if not re.fullmatch(r"0(1+2)+3", lops):
+        fail("UEXTERNALDB LOP sequence %s (want 0, then 1..1 2 per increment, then 3)" % lops)
+    ends = [c for c in calls if c[0] == "2"]
+    if len(ends) != len(hist):
+        fail("%d LOP=2 calls for %d converged increments" % (len(ends), len(hist)))
+    for c, row in zip(ends, hist):
+        kstep, kinc, t1, t2 = int(c[2]), int(c[3]), float(c[4]), float(c[5])
+        if (kstep, kinc) != (int(row["step"]), int(row["inc"])) or abs(t1 - float(row["step_time"])) > 1e-12 or \
+                abs(t2 - float(row["total_time"])) > 1e-12:
+            fail("LOP=2 call %s does not match the CSV row %s" % (c, row))
+    for i, c in enumerate(calls):
+        if c[0] == "2":
+            start = calls[i - 1]  # the attempt that converged
+            if abs(float(start[4]) + float(start[6]) - float(c[4])) > 1e-12 or start[3] != c[3]:
+                fail("LOP=1 %s and LOP=2 %s: start time + DTIME is not the end time" % (start, c))
+    print("UEXTERNALDB: LOP sequence %s, %d converged increments matching the history: ok" % (lops, len(ends)))
 
 
 def check_rf(name, row, col, want):
@@ -141,6 +170,7 @@ def main():
     row, job = run(a.exe, out, ["-t", "2", "--user", threads_files], deck)
     check_rf("thread utilities", row, "TOP.RF3", 1.0)
     check_threads(out, job)
+    check_uexternaldb(out, job)
 
     out = os.path.join(a.out, "bad_mutex")
     shutil.rmtree(out, ignore_errors=True)

@@ -5,6 +5,7 @@ C     (Abaqus: JOB.dat) with the calling thread and that thread's own call count
 C     array without a lock. The test reads JOB.dat: the global numbers must be exactly 1..N (the lock
 C     works), each thread's counts 1..n_t with sum n_t = N (the thread-local arrays are private).
 C     The stress is small-strain isotropic elasticity (ELASTIC_MATRIX, elastic_helper.f90).
+C     UEXTERNALDB (below) records its calls.
       SUBROUTINE UMAT(STRESS,STATEV,DDSDDE,SSE,SPD,SCD,
      1 RPL,DDSDDT,DRPLDE,DRPLDT,
      2 STRAN,DSTRAN,TIME,DTIME,TEMP,DTEMP,PREDEF,DPRED,CMNAME,
@@ -63,5 +64,15 @@ C     thread-local: created on a thread's first call (initial value 0), no lock
           STRESS(I) = STRESS(I) + DDSDDE(I,J)*DSTRAN(J)
         END DO
       END DO
+      RETURN
+      END
+C     UEXTERNALDB: initialises mutex 7 at the start of the analysis (as Abaqus' guide recommends) and records
+C     every call in JOB.dat: LOP, LRESTART, KSTEP, KINC, TIME(1:2), DTIME.
+      SUBROUTINE UEXTERNALDB(LOP,LRESTART,TIME,DTIME,KSTEP,KINC)
+      INCLUDE 'ABA_PARAM.INC'
+      DIMENSION TIME(2)
+      IF (LOP .EQ. 0) CALL MUTEXINIT(7)
+      WRITE(6,'(A,4(I6,1X),3(ES23.15,1X))') 'UEXT ', LOP, LRESTART,
+     1 KSTEP, KINC, TIME(1), TIME(2), DTIME
       RETURN
       END
