@@ -213,3 +213,12 @@ set_tests_properties(dropins_abaqus PROPERTIES LABELS "deck" TIMEOUT 600)
 add_test(NAME package_find_ldfcz COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/package/check_package.sh ${PROJECT_BINARY_DIR}
   ${LDFCZ_RUNS}/package_find_ldfcz ${CMAKE_Fortran_COMPILER})
 set_tests_properties(package_find_ldfcz PROPERTIES LABELS "deck" TIMEOUT 300)
+
+# model structure and syntax (tests/regression/check_assembly.py): two instances of a part, one translated and
+# rotated, tied in the assembly, against closed form and the deck flattened by hand; decks in Abaqus/CAE's style
+# (decks/cae) against closed forms
+foreach(case assembly cae)
+  add_test(NAME deck_structure_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_assembly.py
+    --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/structure_${case} --decks ${LDFCZ_DECKS} --case ${case})
+  set_tests_properties(deck_structure_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()

@@ -7,7 +7,8 @@ module deck_fields
   use model_types, only: initial_condition_t, init_stress, init_solution, model_find_elset, cload_t, &
     model_find_nset, model_find_amplitude
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, &
+  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, ctx_find_surface, &
+   ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_need_step
   implicit none
   private
@@ -56,15 +57,15 @@ contains
         call ctx_fail(ctx, i, 'at most 6 stress components (S11, S22, S33, S12, S13, S23)')
         return
       end if
-      if (verify(trim(f(1)), '0123456789+-') == 0) then
-        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+      if (ctx_is_label(ctx, f(1))) then
+        if (.not. ctx_get_label(ctx, i, f(1), .false., id)) return
         if (id < 1) then
           call ctx_fail(ctx, i, 'element ids must be positive, got '//itoa(id))
           return
         end if
         ic%elems = [-id]
       else
-        ic%elset = model_find_elset(ctx%model, deck_normalize(f(1)))
+        ic%elset = ctx_find_elset(ctx, f(1))
         if (ic%elset == 0) then
           call ctx_fail(ctx, i, 'undefined element set '//deck_normalize(f(1)))
           return
@@ -139,15 +140,15 @@ contains
           return
         end if
       end if
-      if (verify(trim(f(1)), '0123456789+-') == 0) then
-        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+      if (ctx_is_label(ctx, f(1))) then
+        if (.not. ctx_get_label(ctx, i, f(1), .true., id)) return
         if (id < 1) then
           call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
           return
         end if
         cl%nodes = [-id]
       else
-        iset = model_find_nset(ctx%model, deck_normalize(f(1)))
+        iset = ctx_find_nset(ctx, f(1))
         if (iset == 0) then
           call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(1)))
           return

@@ -55,7 +55,7 @@ contains
   end function deck_upper
 
   !> Upper case, trimmed, inner runs of blanks collapsed to one ("SOLID   section" -> "SOLID SECTION").
-  pure function deck_normalize(s) result(u)
+  pure recursive function deck_normalize(s) result(u)
     character(len=*), intent(in) :: s  !< input
     character(len=:), allocatable :: u
     character(len=len(s)) :: t
@@ -73,6 +73,10 @@ contains
         blank = .false.
       end if
     end do
+    ! a name in double quotes (which may hold blanks): the quotes are not part of it
+    if (len(u) >= 2) then
+      if (u(1:1) == '"' .and. u(len(u):len(u)) == '"') u = deck_normalize(u(2:len(u) - 1))
+    end if
   end function deck_normalize
 
   !> "file:line" of a record, for messages.

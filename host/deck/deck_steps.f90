@@ -3,7 +3,7 @@ module deck_steps
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: step_t, node_print_t, model_find_nset
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_warn, ctx_pos, ctx_allow_params, ctx_need_step, &
+  use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_fail, ctx_warn, ctx_pos, ctx_allow_params, ctx_need_step, &
     ctx_required, ctx_param_int, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
   implicit none
   private
@@ -453,7 +453,7 @@ contains
     ir_next = ctx%ir_next
     np%nset = deck_normalize(ctx_required(ctx, 'NSET'))
     if (ctx%stat /= 0) return
-    np%set_index = model_find_nset(ctx%model, np%nset)
+    np%set_index = ctx_find_nset(ctx, np%nset)
     if (np%set_index == 0) then
       call ctx_fail(ctx, ir, 'undefined node set '//trim(np%nset))
       return

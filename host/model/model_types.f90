@@ -11,6 +11,7 @@ module model_types
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
+  public :: instance_t, model_label_text
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   integer, parameter :: etype_c3d8 = 1     !< 8-node hexahedron, F-bar
@@ -222,6 +223,16 @@ module model_types
     type(source_pos_t) :: pos
   end type step_t
 
+  !> A part instance flattened into the model (*ASSEMBLY/*INSTANCE): model label = part label + offset.
+  type :: instance_t
+    character(len=name_len) :: name = ''   !< upper-case instance name
+    character(len=name_len) :: part = ''   !< upper-case part name
+    integer :: node_offset = 0             !< model node label = part node label + node_offset
+    integer :: elem_offset = 0             !< model element label = part element label + elem_offset
+    integer :: node_last = 0               !< largest model node label of the instance
+    integer :: elem_last = 0               !< largest model element label of the instance
+  end type instance_t
+
   type :: model_t
     character(len=:), allocatable :: heading
     integer :: ndim = 0                    !< 2 or 3 (from the element types)
@@ -269,9 +280,37 @@ module model_types
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)
     integer :: nstep = 0
+    type(instance_t), allocatable :: instances(:) !< part instances flattened into the model (label map)
+    integer :: ninstance = 0
   end type model_t
 
 contains
+
+  !> A model node (is_node) or element label as the deck wrote it: 'INSTANCE.label' for a label of a part
+  !> instance, the label itself otherwise.
+  pure function model_label_text(model, id, is_node) result(t)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: id           !< model label
+    logical, intent(in) :: is_node      !< node (true) or element label
+    character(len=:), allocatable :: t
+    character(len=16) :: b
+    integer :: k
+    write (b, '(i0)') id
+    t = trim(b)
+    do k = 1, model%ninstance
+      associate (in => model%instances(k))
+        if (is_node) then
+          if (id <= in%node_offset .or. id > in%node_last) cycle
+          write (b, '(i0)') id - in%node_offset
+        else
+          if (id <= in%elem_offset .or. id > in%elem_last) cycle
+          write (b, '(i0)') id - in%elem_offset
+        end if
+        t = trim(in%name)//'.'//trim(b)//' (model label '//t//')'
+        return
+      end associate
+    end do
+  end function model_label_text
 
   !> Index of a node set by (upper-case) name, 0 if absent.
   pure integer function model_find_nset(model, name) result(k)
