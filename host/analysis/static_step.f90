@@ -110,6 +110,14 @@ contains
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
       itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver'//msg// &
       '; UEL: '//routines%uel_origin//'; UMAT: '//routines%umat_origin)
+    ! the label map of flattened part instances (output and messages use the model labels)
+    do k = 1, model%ninstance
+      associate (in => model%instances(k))
+        call output_log(out, 'ldfcz: instance '//trim(in%name)//' of part '//trim(in%part)//': model label = '// &
+          'part label + '//itoa(in%node_offset)//' (nodes, up to '//itoa(in%node_last)//'), + '// &
+          itoa(in%elem_offset)//' (elements, up to '//itoa(in%elem_last)//')')
+      end associate
+    end do
     summary%newton = opt%newton
     summary%plastic_statev = opt%plastic_statev
     if (summary%plastic_statev < 0) then

@@ -15,7 +15,8 @@ module deck_context
   public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
   public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   public :: part_def_t, scope_model, scope_part, scope_assembly
-  public :: ctx_enter_instance, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_find_surface, ctx_is_label, ctx_get_label
+  public :: ctx_enter_instance, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_find_surface, ctx_is_label, &
+    ctx_get_label
 
   integer, parameter :: flen = 256  !< longest data field
   integer, parameter :: scope_model = 0     !< model level (a deck without parts, or outside *ASSEMBLY)

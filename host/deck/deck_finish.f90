@@ -4,7 +4,7 @@ module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where
   use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
-    etype_user, model_find_elset, model_find_material
+    etype_user, model_find_elset, model_find_material, model_label_text
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -42,7 +42,8 @@ contains
       do i = 1, model%nnode
         id = model%node_id(i)
         if (model%node_index(id) /= 0) then
-          call ctx_fail_kw(ctx, ctx%node_rec(i), '*NODE', 'node '//itoa(id)//' defined twice (first at '// &
+          call ctx_fail_kw(ctx, ctx%node_rec(i), '*NODE', 'node '//model_label_text(model, id, .true.)// &
+            ' defined twice (first at '// &
             deck_where(ctx%src, ctx%node_rec(model%node_index(id)))//')')
           return
         end if
@@ -57,7 +58,8 @@ contains
       do ie = 1, model%nelem
         id = model%elem_id(ie)
         if (model%elem_index(id) /= 0) then
-          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//itoa(id)//' defined twice (first at '// &
+          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//model_label_text(model, id, .false.)// &
+            ' defined twice (first at '// &
             deck_where(ctx%src, ctx%elem_rec(model%elem_index(id)))//')')
           return
         end if
@@ -65,11 +67,13 @@ contains
         do k = model%conn_ptr(ie), model%conn_ptr(ie + 1) - 1
           id = ctx%conn_raw(k)
           if (id <= 0 .or. id > size(model%node_index)) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//itoa(id))
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//model_label_text(ctx%model, id, &
+              .true.))
             return
           end if
           if (model%node_index(id) == 0) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//itoa(id))
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//model_label_text(ctx%model, id, &
+              .true.))
             return
           end if
           ctx%conn_raw(k) = model%node_index(id)
@@ -199,11 +203,13 @@ contains
           do k = 1, size(model%elsets(iset)%elems)
             ie = model%elsets(iset)%elems(k)
             if (model%elem_kind(ie) == etype_user) then
-              call ctx_fail_pos(ctx, pos, 'element '//itoa(model%elem_id(ie))//' is a user element (use *UEL PROPERTY)')
+              call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                ' is a user element (use *UEL PROPERTY)')
               return
             end if
             if (has_section(ie)) then
-              call ctx_fail_pos(ctx, pos, 'element '//itoa(model%elem_id(ie))//' has two sections')
+              call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                ' has two sections')
               return
             end if
             has_section(ie) = .true.
@@ -215,12 +221,14 @@ contains
         if (model%elem_kind(ie) == etype_user) then
           iu = model%elem_utype(ie)
           if (model%elem_uelprop(ie) == 0 .and. model%utypes(iu)%nprops + model%utypes(iu)%njprops > 0) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'user element '//itoa(model%elem_id(ie))// &
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'user element '//model_label_text(model, &
+              model%elem_id(ie), .false.)// &
               ' of type '//trim(model%utypes(iu)%name)//' has no *UEL PROPERTY (missing properties)')
             return
           end if
         else if (.not. has_section(ie)) then
-          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//itoa(model%elem_id(ie))// &
+          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//model_label_text(model, &
+            model%elem_id(ie), .false.)// &
             ' has no *SOLID SECTION')
           return
         end if
@@ -287,7 +295,7 @@ contains
             ie = 0
             if (id <= size(model%elem_index)) ie = model%elem_index(id)
             if (ie == 0) then
-              call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+              call ctx_fail_pos(ctx, pos, 'undefined element '//model_label_text(ctx%model, id, .false.))
               return
             end if
             el = [ie]
@@ -319,9 +327,10 @@ contains
             if (dl%kind == dload_user .neqv. model%elem_kind(ie) == etype_user) then
               if (dl%kind == dload_user) then
                 call ctx_fail_pos(ctx, pos, 'load type U'//itoa(dl%label)//' on element '// &
-                  itoa(model%elem_id(ie))//', which is not a user element')
+                  model_label_text(model, model%elem_id(ie), .false.)//', which is not a user element')
               else
-                call ctx_fail_pos(ctx, pos, 'user element '//itoa(model%elem_id(ie))//' takes only load types Un '// &
+                call ctx_fail_pos(ctx, pos, 'user element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                  ' takes only load types Un '// &
                   '(its UEL receives them), not BX/BY/BZ/GRAV/P')
               end if
               return
@@ -329,7 +338,8 @@ contains
             if (dl%kind == dload_grav) then
               im = model_find_material(model, model%sections(model%elem_section(ie))%material)
               if (.not. model%materials(im)%has_density) then
-                call ctx_fail_pos(ctx, pos, 'GRAV on element '//itoa(model%elem_id(ie))//' whose material '// &
+                call ctx_fail_pos(ctx, pos, 'GRAV on element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                  ' whose material '// &
                   trim(model%materials(im)%given_name)//' has no *DENSITY')
                 return
               end if
@@ -349,7 +359,7 @@ contains
           if (id <= size(model%elem_index)) ie = model%elem_index(id)
           if (ie == 0) then
             pos = model%inits(k)%pos
-            call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+            call ctx_fail_pos(ctx, pos, 'undefined element '//model_label_text(ctx%model, id, .false.))
             return
           end if
           model%inits(k)%elems = [ie]
@@ -376,11 +386,11 @@ contains
       if (cl%nodes(k) < 0) then
         id = -cl%nodes(k)
         if (id > size(ctx%model%node_index)) then
-          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         if (ctx%model%node_index(id) == 0) then
-          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         cl%nodes(k) = ctx%model%node_index(id)
@@ -427,11 +437,11 @@ contains
       if (bc%nodes(k) < 0) then
         id = -bc%nodes(k)
         if (id > size(ctx%model%node_index)) then
-          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         if (ctx%model%node_index(id) == 0) then
-          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         bc%nodes(k) = ctx%model%node_index(id)

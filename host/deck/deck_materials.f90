@@ -5,7 +5,8 @@ module deck_materials
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: material_t, section_t, model_find_material
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, ctx_param_int, &
+  use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
+    ctx_param_int, &
     ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
