@@ -96,8 +96,9 @@ contains
         if (kw == '*PART' .or. kw == '*ASSEMBLY' .or. kw == '*STEP') then
           call ctx_fail(ctx, ctx%ir, 'part '//name//' has no *END PART before '//kw)
         else
-          call ctx_fail_kw(ctx, i, kw, 'not supported inside *PART (ldfcz reads *NODE, *ELEMENT, *NSET, *ELSET, '// &
-            '*SURFACE, *SOLID SECTION, *UEL PROPERTY, *NGEN, *NFILL, *NCOPY, *ELGEN in a part)')
+          call ctx_fail_kw(ctx, i, kw, 'not supported inside *PART '//trim(name)//' (ldfcz reads *NODE, *ELEMENT, '// &
+            '*NSET, *ELSET, *SURFACE, *SOLID SECTION, *UEL PROPERTY, *NGEN, *NFILL, *NCOPY, *ELGEN in a part), '// &
+            'or *END PART missing before it')
         end if
         return
       end if

@@ -336,6 +336,14 @@ contains
       return
     end if
     id = id + off
+    if (k > 0) then
+      ! the instance is complete when it is referenced: a label beyond its part's is an error here
+      if (id > merge(ctx%model%instances(k)%node_last, ctx%model%instances(k)%elem_last, is_node)) then
+        call ctx_fail(ctx, irec, 'instance '//trim(ctx%model%instances(k)%name)//' has no '// &
+          trim(merge('node   ', 'element', is_node))//' '//t)
+        ok = .false.
+      end if
+    end if
   end function ctx_get_label
 
   !> INSTANCE= on a set or surface definition (assembly level only): labels and names of the data lines refer to
