@@ -147,12 +147,26 @@ contains
 
   ! ------------------------------------------------------------------ parameters
 
-  !> Error when a parameter outside the list is present.
+  !> Error when a parameter outside the list is present. A parameter name that begins exactly one of the allowed
+  !> names is taken for it (Abaqus reads parameters abbreviated as far as they stay unique: FREQ for FREQUENCY).
   subroutine ctx_allow_params(ctx, names)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=*), intent(in) :: names(:)    !< allowed parameter names
-    integer :: i
+    integer :: i, j, nmatch, jmatch, n
     do i = 1, size(ctx%params)
+      if (all(ctx%params(i)%name /= names)) then
+        n = len(ctx%params(i)%name)
+        nmatch = 0
+        jmatch = 0
+        do j = 1, size(names)
+          if (n == 0 .or. n > len_trim(names(j))) cycle
+          if (names(j)(1:n) == ctx%params(i)%name) then
+            nmatch = nmatch + 1
+            jmatch = j
+          end if
+        end do
+        if (nmatch == 1) ctx%params(i)%name = trim(names(jmatch))
+      end if
       if (all(ctx%params(i)%name /= names)) then
         call ctx_fail(ctx, ctx%ir, 'unsupported parameter '//ctx%params(i)%name)
         return

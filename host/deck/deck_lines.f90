@@ -115,7 +115,7 @@ contains
     character(len=:), allocatable, intent(out) :: errmsg
     integer :: unit, ios, iline, fid, k, irec_cont
     character(len=:), allocatable :: line, text, incname, dir
-    logical :: exists, cont_keyword, cont_data
+    logical :: exists, cont_keyword
     type(deck_param_t), allocatable :: params(:)
     character(len=:), allocatable :: kw
     character(len=16) :: num
@@ -149,7 +149,6 @@ contains
 
     iline = 0
     cont_keyword = .false.
-    cont_data = .false.
     irec_cont = 0
     do
       call read_line(unit, line, ios)
@@ -169,7 +168,12 @@ contains
       ! strip CR (files from Windows) and trailing blanks
       k = index(line, achar(13))
       if (k > 0) line = line(1:k - 1)
-      text = trim(line)
+      ! tabs separate fields like blanks
+      do k = 1, len(line)
+        if (line(k:k) == achar(9)) line(k:k) = ' '
+      end do
+      ! leading blanks are allowed before keywords, comments and data
+      text = trim(adjustl(line))
       if (len(adjustl(text)) >= 2) then
         ! a '**LDFCZ' comment line is a declaration for this host (Abaqus reads it as a comment): kept as the
         ! keyword line '*LDFCZ ...'; every other '**' line is a comment
@@ -182,21 +186,16 @@ contains
         ! a blank line ends a continuation; Abaqus ignores blank lines in data
         cycle
       end if
-      if (cont_keyword .or. cont_data) then
-        if (text(1:1) == '*' .and. cont_data) then
-          cont_data = .false.  ! a keyword ends a data continuation
-        else
-          src%rec(irec_cont)%text = src%rec(irec_cont)%text//' '//trim(adjustl(text))
-          cont_keyword = cont_keyword .and. ends_with_comma(text)
-          cont_data = cont_data .and. ends_with_comma(text)
-          if (.not. (cont_keyword .or. cont_data)) then
-            if (src%rec(irec_cont)%keyword) then
-              call handle_include(irec_cont)
-              if (stat /= 0) exit
-            end if
-          end if
-          cycle
+      if (cont_keyword) then
+        ! only keyword lines are continued here; a data line that ends with a comma is complete unless its
+        ! keyword's reader needs more fields (an *ELEMENT with more nodes than one line holds)
+        src%rec(irec_cont)%text = src%rec(irec_cont)%text//' '//trim(adjustl(text))
+        cont_keyword = ends_with_comma(text)
+        if (.not. cont_keyword) then
+          call handle_include(irec_cont)
+          if (stat /= 0) exit
         end if
+        cycle
       end if
       if (src%nrec == size(src%rec)) call grow_records(src)
       src%nrec = src%nrec + 1
@@ -211,8 +210,6 @@ contains
           call handle_include(src%nrec)
           if (stat /= 0) exit
         end if
-      else
-        cont_data = ends_with_comma(text)
       end if
     end do
     close (unit)

@@ -77,8 +77,8 @@ contains
   subroutine read_element(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=:), allocatable :: tname, setname
-    integer :: kind, nn, iu, i, n, k, id, iset, node
-    character(len=flen), allocatable :: f(:)
+    integer :: kind, nn, iu, i, n, k, id, iset, node, m
+    character(len=flen), allocatable :: f(:), g(:)
     call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'ELSET'])
     if (ctx%stat /= 0) return
     tname = deck_normalize(ctx_required(ctx, 'TYPE'))
@@ -114,8 +114,17 @@ contains
       iset = get_elset(ctx, setname)
     end if
     associate (model => ctx%model)
-      do i = ctx%ir + 1, ctx%ir_next - 1
+      i = ctx%ir
+      do while (i < ctx%ir_next - 1)
+        i = i + 1
         call ctx_split(ctx, i, f, n)
+        ! a line ending with a comma before the element's nodes are complete continues on the next line
+        do while (n < nn + 1 .and. ends_with_comma(ctx%src%rec(i)%text) .and. i < ctx%ir_next - 1)
+          i = i + 1
+          call ctx_split(ctx, i, g, m)
+          f = [f(1:n), g(1:m)]
+          n = n + m
+        end do
         if (n /= nn + 1) then
           call ctx_fail(ctx, i, 'element type '//tname//' needs '//itoa(nn)//' nodes, '//itoa(n - 1)//' given')
           return
@@ -149,6 +158,13 @@ contains
       end do
     end associate
   end subroutine read_element
+
+  !> True when a record's text ends with a comma.
+  pure logical function ends_with_comma(text)
+    character(len=*), intent(in) :: text  !< record text (trimmed)
+    ends_with_comma = .false.
+    if (len_trim(text) > 0) ends_with_comma = text(len_trim(text):len_trim(text)) == ','
+  end function ends_with_comma
 
   !> Model dimension from an element type: 2 (plane strain) or 3, the same for all elements.
   subroutine set_dim(ctx, nd)
