@@ -217,7 +217,7 @@ set_tests_properties(package_find_ldfcz PROPERTIES LABELS "deck" TIMEOUT 300)
 # model structure and syntax (tests/regression/check_assembly.py): two instances of a part, one translated and
 # rotated, tied in the assembly, against closed form and the deck flattened by hand; decks in Abaqus/CAE's style
 # (decks/cae) against closed forms
-foreach(case assembly cae)
+foreach(case assembly cae generate)
   add_test(NAME deck_structure_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_assembly.py
     --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/structure_${case} --decks ${LDFCZ_DECKS} --case ${case})
   set_tests_properties(deck_structure_${case} PROPERTIES LABELS "deck" TIMEOUT 300)

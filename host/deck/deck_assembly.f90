@@ -13,7 +13,7 @@ module deck_assembly
   implicit none
   private
   public :: prescan_assembly, read_part_def, begin_assembly, end_assembly, begin_instance, end_instance
-  public :: allowed_in_part, allowed_in_assembly, mesh_keyword
+  public :: allowed_in_part, allowed_in_assembly, mesh_keyword, read_shift
 
 contains
 
@@ -22,7 +22,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', '*SOLID SECTION', '*UEL PROPERTY', '*NGEN', &
-          '*NFILL', '*NCOPY', '*ELGEN')
+          '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER')
       allowed_in_part = .true.
     case default
       allowed_in_part = .false.
@@ -34,7 +34,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*INSTANCE', '*END INSTANCE', '*END ASSEMBLY', '*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', &
-          '*EQUATION', '*TIE', '*MPC', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN')
+          '*EQUATION', '*TIE', '*MPC', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER')
       allowed_in_assembly = .true.
     case default
       allowed_in_assembly = .false.
@@ -271,13 +271,31 @@ contains
     ctx%placed = .false.
   end subroutine end_instance
 
-  !> Data lines of *INSTANCE: translation (tx, ty, tz), then rotation (point a, point b, angle in degrees about
-  !> the axis a->b, right-handed). Translation is applied first: x = a + R (x_part + t - a).
+  !> Data lines of *INSTANCE: the placement of the part's nodes.
   subroutine read_placement(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: nline
+    nline = ctx%ir_next - ctx%ir - 1
+    if (nline > 2) then
+      call ctx_fail(ctx, ctx%ir + 3, 'at most two data lines (translation; rotation axis points and angle)')
+      return
+    end if
+    call read_shift(ctx, ctx%ir + 1, nline, ctx%place_r, ctx%place_c)
+    ctx%placed = nline > 0
+  end subroutine read_placement
+
+  !> Translation line (tx, ty, tz) and optional rotation line (point a, point b, angle in degrees about the axis
+  !> a->b, right-handed) at records ir1, ir1 + 1 (nline of them, 0..2), as *INSTANCE and *NCOPY, SHIFT write
+  !> them. Translation is applied first: x_new = a + R (x + t - a) = r x + c.
+  subroutine read_shift(ctx, ir1, nline, r, c)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: ir1                  !< record of the translation line
+    integer, intent(in) :: nline                !< data lines present (0, 1 or 2)
+    real(dp), intent(out) :: r(3, 3)            !< rotation
+    real(dp), intent(out) :: c(3)               !< shift
     character(len=flen), allocatable :: f(:)
-    real(dp) :: t(3), a(3), b(3), v(7), axis(3), th, c, s, r(3, 3)
-    integer :: n, k, nline
+    real(dp) :: t(3), a(3), b(3), v(7), axis(3), th, co, si
+    integer :: n, k
     real(dp), parameter :: pi = acos(-1.0_dp)
     t = 0.0_dp
     r = 0.0_dp
@@ -285,60 +303,54 @@ contains
     r(2, 2) = 1.0_dp
     r(3, 3) = 1.0_dp
     a = 0.0_dp
-    nline = ctx%ir_next - ctx%ir - 1
-    if (nline > 2) then
-      call ctx_fail(ctx, ctx%ir + 3, 'at most two data lines (translation; rotation axis points and angle)')
-      return
-    end if
+    c = 0.0_dp
     if (nline >= 1) then
-      call ctx_split(ctx, ctx%ir + 1, f, n)
+      call ctx_split(ctx, ir1, f, n)
       if (n > 3) then
-        call ctx_fail(ctx, ctx%ir + 1, 'translation line: tx, ty, tz')
+        call ctx_fail(ctx, ir1, 'translation line: tx, ty, tz')
         return
       end if
       do k = 1, n
         if (len_trim(f(k)) == 0) cycle
-        if (.not. ctx_get_real(ctx, ctx%ir + 1, f(k), t(k))) return
+        if (.not. ctx_get_real(ctx, ir1, f(k), t(k))) return
       end do
     end if
-    if (nline == 2) then
-      call ctx_split(ctx, ctx%ir + 2, f, n)
+    if (nline >= 2) then
+      call ctx_split(ctx, ir1 + 1, f, n)
       if (n /= 7) then
-        call ctx_fail(ctx, ctx%ir + 2, 'rotation line: ax, ay, az, bx, by, bz, angle (degrees)')
+        call ctx_fail(ctx, ir1 + 1, 'rotation line: ax, ay, az, bx, by, bz, angle (degrees)')
         return
       end if
       v = 0.0_dp
       do k = 1, 7
         if (len_trim(f(k)) == 0) cycle
-        if (.not. ctx_get_real(ctx, ctx%ir + 2, f(k), v(k))) return
+        if (.not. ctx_get_real(ctx, ir1 + 1, f(k), v(k))) return
       end do
       a = v(1:3)
       b = v(4:6)
       axis = b - a
       if (norm2(axis) <= 1.0e-12_dp * max(1.0_dp, norm2(a), norm2(b))) then
-        call ctx_fail(ctx, ctx%ir + 2, 'rotation axis: points a and b coincide')
+        call ctx_fail(ctx, ir1 + 1, 'rotation axis: points a and b coincide')
         return
       end if
       axis = axis / norm2(axis)
       th = v(7) * pi / 180.0_dp
-      c = cos(th)
-      s = sin(th)
-      ! Rodrigues: R = c I + s [axis]x + (1 - c) axis axis^T
+      co = cos(th)
+      si = sin(th)
+      ! Rodrigues: R = cos I + sin [axis]x + (1 - cos) axis axis^T
       do k = 1, 3
-        r(:, k) = (1.0_dp - c) * axis * axis(k)
-        r(k, k) = r(k, k) + c
+        r(:, k) = (1.0_dp - co) * axis * axis(k)
+        r(k, k) = r(k, k) + co
       end do
-      r(1, 2) = r(1, 2) - s * axis(3)
-      r(2, 1) = r(2, 1) + s * axis(3)
-      r(1, 3) = r(1, 3) + s * axis(2)
-      r(3, 1) = r(3, 1) - s * axis(2)
-      r(2, 3) = r(2, 3) - s * axis(1)
-      r(3, 2) = r(3, 2) + s * axis(1)
+      r(1, 2) = r(1, 2) - si * axis(3)
+      r(2, 1) = r(2, 1) + si * axis(3)
+      r(1, 3) = r(1, 3) + si * axis(2)
+      r(3, 1) = r(3, 1) - si * axis(2)
+      r(2, 3) = r(2, 3) - si * axis(1)
+      r(3, 2) = r(3, 2) + si * axis(1)
     end if
-    ctx%placed = nline > 0
-    ctx%place_r = r
-    ctx%place_c = a + matmul(r, t - a)
-  end subroutine read_placement
+    c = a + matmul(r, t - a)
+  end subroutine read_shift
 
   !> Integer of a field without messages (pre-scan).
   pure subroutine parse_quiet(field, v, ok)

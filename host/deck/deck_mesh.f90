@@ -11,6 +11,7 @@ module deck_mesh
   implicit none
   private
   public :: read_node, read_element, read_set
+  public :: get_nset, get_elset, grow_nodes, grow_elems
 
 contains
 

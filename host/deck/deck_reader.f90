@@ -21,6 +21,8 @@ module deck_reader
   use deck_fields, only: read_initial_conditions, read_temperature
   use deck_constraints, only: read_equation, read_tie, read_mpc
   use deck_finish, only: finish_model
+  use deck_parameters, only: apply_parameters
+  use deck_generate, only: read_ngen, read_nfill, read_ncopy, read_elgen
   use deck_declarations, only: read_ldfcz_declaration
   implicit none
   private
@@ -39,6 +41,8 @@ contains
 
     if (present(warn_unit)) ctx%wu = warn_unit
     call deck_load(path, ctx%src, stat, errmsg)
+    if (stat /= 0) return
+    call apply_parameters(ctx%src, stat, errmsg)
     if (stat /= 0) return
     ctx%stat = stat
     call move_alloc(errmsg, ctx%errmsg)
@@ -153,6 +157,16 @@ contains
       call read_instance(ctx)
     case ('*END INSTANCE')
       call ctx_fail(ctx, ctx%ir, '*END INSTANCE without *INSTANCE')
+    case ('*NGEN')
+      call read_ngen(ctx)
+    case ('*NFILL')
+      call read_nfill(ctx)
+    case ('*NCOPY')
+      call read_ncopy(ctx)
+    case ('*ELGEN')
+      call read_elgen(ctx)
+    case ('*PARAMETER')
+      ! defined and substituted before the blocks are read (deck_parameters)
     case ('*HEADING')
       if (ctx%ir_next > ctx%ir + 1) ctx%model%heading = ctx%src%rec(ctx%ir + 1)%text
     case ('*NODE')
@@ -240,7 +254,7 @@ contains
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
           '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
           '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
-          '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE')
+          '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

@@ -15,6 +15,10 @@ Cases:
   cae       decks in Abaqus/CAE's exact style (decks/cae): a block under *DSLOAD pressure (symmetry planes, 3D:
             top displacement -p H / E, reaction p A) and a plane-strain bar pulled by *CLOAD through an assembly
             set (end displacement (1 - nu^2) F L / (E A)); both read with the expected warnings and notes only.
+  generate  a 4 x 1 x 2 C3D8 bar meshed by *NGEN, *NCOPY (SHIFT), *NFILL and *ELGEN with sizes, material and
+            load from *PARAMETER (expressions, text values, <name> in keyword and data lines), at model level and
+            inside a part whose instance is translated: both equal the mesh written node by node (to round-off)
+            and the uniaxial closed form E eps A.
 """
 import argparse
 import csv
@@ -157,12 +161,79 @@ def case_cae(exe, out, decks):
     close("CAE plane bar: root RF1 = -F", r["ROOT.RF1"], -f, 1e-9)
 
 
+GEN_PARAMS = ["*Parameter", "length = 4.", "n = 4", "nlast = n + 1", "E_mod = 2.0e5 / 2", "nu = 0.25",
+              "strain = 0.001", "u = length * strain", "far = 'Far'", "zc = 200", "zinc = 100", "dt = 1 / 2"]
+
+
+def gen_mesh():
+    """Mesh lines: bottom line by *NGEN, its copy at y = 1 by *NCOPY, the layer at z = 1 by *NCOPY, the middle
+    layer z = 0.5 by *NFILL; elements by *ELGEN (4 along x, 2 along z)."""
+    return ["*Node", "1, 0., 0., 0.", "<nlast>, <length>, 0., 0.", "*Ngen, nset=Line0", "1, <nlast>, 1",
+            "*Ncopy, old set=Line0, change number=10, shift, new set=Line1", "0., 1., 0.",
+            "*Nset, nset=Layer0", "Line0, Line1",
+            "*Ncopy, old set=Layer0, change number=<zc>, shift, new set=Layer2", "0., 0., 1.",
+            "*Nfill, nset=All", "Layer0, Layer2, 2, <zinc>",
+            "*Element, type=C3D8, elset=Bar", "1, 1, 2, 12, 11, 101, 102, 112, 111",
+            "*Elgen, elset=Bar", "1, <n>, 1, 1, 2, <zinc>, 10",
+            "*Nset, nset=X0, generate", "1, 201, 100", "11, 211, 100", "*Nset, nset=<far>, generate", "5, 205, 100",
+            "15, 215, 100", "*Nset, nset=Pin", "1,", "*Nset, nset=PinZ", "11,", "*Nset, nset=PinY", "101,"]
+
+
+def flat_mesh():
+    out = ["*Node"]
+    for k in range(3):
+        for j in range(2):
+            for i in range(5):
+                out.append("%d, %.17g, %.17g, %.17g" % (1 + i + 10 * j + 100 * k, float(i), float(j), 0.5 * k))
+    out.append("*Element, type=C3D8, elset=Bar")
+    for k in range(2):
+        for i in range(4):
+            b = 1 + i + 100 * k
+            out.append("%d, %s" % (1 + i + 10 * k, ", ".join(str(x) for x in
+                                                             (b, b + 1, b + 11, b + 10, b + 100, b + 101, b + 111,
+                                                              b + 110))))
+    out += ["*Nset, nset=X0", "1, 11, 101, 111, 201, 211", "*Nset, nset=FAR", "5, 15, 105, 115, 205, 215",
+            "*Nset, nset=Pin", "1,", "*Nset, nset=PinZ", "11,", "*Nset, nset=PinY", "101,"]
+    return out
+
+
+def gen_step(prefix, mat="*Material, name=Steel\n*Elastic\n<E_mod>, <nu>"):
+    return mat.split("\n") + [
+        "*Step, name=Pull", "*Static", "<dt>, 1.", "*Boundary", prefix + "X0, 1, 1", prefix + "Pin, 2, 3",
+        prefix + "PinZ, 3, 3", prefix + "PinY, 2, 2", "*Boundary", prefix + "<far>, 1, 1, <u>",
+        "*Node Print, nset=%s<far>, totals=YES" % prefix, "RF1, U2", "*End Step"]
+
+
+def case_generate(exe, out, decks):
+    flat = ["*Heading", "bar written node by node"] + flat_mesh() + [
+        "*Solid Section, elset=Bar, material=Steel", "*Material, name=Steel", "*Elastic", "100000., 0.25",
+        "*Step, name=Pull", "*Static", "0.5, 1.", "*Boundary", "X0, 1, 1", "Pin, 2, 3", "PinZ, 3, 3", "PinY, 2, 2",
+        "*Boundary", "FAR, 1, 1, 0.004", "*Node Print, nset=FAR, totals=YES", "RF1, U2", "*End Step"]
+    gen = ["*Heading", "bar generated"] + GEN_PARAMS + gen_mesh() + ["*Solid Section, elset=Bar, material=Steel"] + \
+        gen_step("")
+    part = ["*Heading", "bar generated in a part, instance translated"] + GEN_PARAMS + ["*Part, name=Bar"] + \
+        gen_mesh() + ["*Solid Section, elset=Bar, material=Steel", "*End Part", "*Assembly, name=A",
+                      "*Instance, name=B-1, part=Bar", "10., -3., 2.", "*End Instance", "*End Assembly"] + \
+        gen_step("B-1.")
+    rf, _ = run(exe, out, "bar_flat", lines=flat)
+    rg, _ = run(exe, out, "bar_generated", lines=gen)
+    rp, _ = run(exe, out, "bar_part", lines=part)
+    rf, rg, rp = rf[-1], rg[-1], rp[-1]
+    close("flat bar: RF1 = E eps A", rf["FAR.RF1"], 100000.0 * 0.001 * 1.0, 1e-9)
+    close("flat bar: U2 at x = L (mean of y = 0, 1) = -nu eps / 2", rf["FAR.U2"], -0.25 * 0.001 / 2, 1e-9)
+    for k in ("RF1", "U2"):
+        close("generated = flat: " + k, rg["FAR." + k], rf["FAR." + k], 1e-12, 1e-15)
+        close("generated in a placed part = flat: " + k, rp["B-1.FAR." + k], rf["FAR." + k], 1e-12, 1e-15)
+    if len(rg) != len(rf):
+        fail("different columns")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--decks", default=os.path.join(os.path.dirname(__file__), "..", "..", "decks"))
-    ap.add_argument("--case", required=True, choices=["assembly", "cae"])
+    ap.add_argument("--case", required=True, choices=["assembly", "cae", "generate"])
     a = ap.parse_args()
     globals()["case_" + a.case](os.path.abspath(a.exe), os.path.abspath(a.out), os.path.abspath(a.decks))
     print("PASS")
