@@ -222,3 +222,7 @@ foreach(case assembly cae generate)
     --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/structure_${case} --decks ${LDFCZ_DECKS} --case ${case})
   set_tests_properties(deck_structure_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
+# *NODE PRINT / *EL PRINT tables in JOB.dat (per printed increment, FREQUENCY, TOTALS, SUMMARY, all nodes)
+add_test(NAME deck_print_tables COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_print.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/print_tables)
+set_tests_properties(deck_print_tables PROPERTIES LABELS "deck" TIMEOUT 300)

@@ -20,6 +20,7 @@ module static_step
   use run_summary, only: run_summary_t, run_summary_continue, cohesive_ratio, statev_increment
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
   use field_frame, only: write_field_frame
+  use print_tables, only: print_tables_any, print_tables_write
   use stop_report, only: stop_message
   use solver_text, only: itoa, rtoa
   use stop_signal, only: stop_signal_install, stop_signal_received, stop_signal_name
@@ -66,6 +67,7 @@ contains
     type(restart_state_t) :: rs, fp
     logical :: restarting, resumed, fresh_csv
     integer :: is_first, csv_rows, run_increments, sig
+    integer :: dat                      !< JOB.dat unit (-1: no printed output requested)
 
     call system_clock(count_rate=rate)
     summarize = .false.
@@ -157,6 +159,7 @@ contains
     allocate (colnames(k), col_set(k), col_var(k))
     do is = 1, model%nstep
       do i = 1, model%steps(is)%nprint
+        if (model%steps(is)%prints(i)%set_index == 0) cycle  ! every node: the JOB.dat table only
         do j = 1, size(model%steps(is)%prints(i)%vars)
           msg = trim(model%steps(is)%prints(i)%nset)//'.'//trim(model%steps(is)%prints(i)%vars(j))
           if (any(colnames(1:ncol) == msg)) cycle
@@ -180,6 +183,23 @@ contains
         'holds the increments after the restart point only')
     else
       call output_csv_header(out, colnames(1:ncol))
+    end if
+    ! JOB.dat: the *NODE PRINT / *EL PRINT tables (continued after a restart)
+    dat = -1
+    if (print_tables_any(model)) then
+      if (restarting) then
+        open (newunit=dat, file=out%dir//'/'//out%job//'.dat', status='unknown', position='append', &
+          action='write', iostat=stat)
+      else
+        open (newunit=dat, file=out%dir//'/'//out%job//'.dat', status='replace', action='write', iostat=stat)
+      end if
+      if (stat /= 0) then
+        errmsg = 'cannot write '//out%dir//'/'//out%job//'.dat'
+        call output_log(out, 'ldfcz: error: '//errmsg)
+        if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+        exit_code = exit_input
+        return
+      end if
     end if
     summarize = .true.
     call stop_signal_install()
@@ -405,6 +425,8 @@ contains
           end do
           call output_csv_row(out, is, kinc, sc%t, t_total0 + sc%t, colv)
           csv_rows = csv_rows + 1
+          if (dat /= -1) call print_tables_write(dat, model, an, st, is, kinc, sc%t, t_total0 + sc%t, dt, &
+            step_control_done(sc))
           if (st%field_output) then
             if (st%field_intervals > 0) then
               if (sc%t >= next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(sc)) then
@@ -452,6 +474,7 @@ contains
         call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(kinc)//' increments')
       end associate
     end do steps
+    if (dat /= -1) close (dat)
     if (ns%tangents_skipped > 0) call output_log(out, 'ldfcz: Newton auto: '//itoa(ns%tangents_skipped)// &
       ' iterations expected to converge assembled without a tangent, '//itoa(ns%stale_solves)// &
       ' of them not converged and solved with the previous iterate''s tangent (this run)')

@@ -11,7 +11,7 @@ module model_types
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
-  public :: instance_t, model_label_text
+  public :: instance_t, model_label_text, el_print_t
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   integer, parameter :: etype_c3d8 = 1     !< 8-node hexahedron, F-bar
@@ -173,12 +173,25 @@ module model_types
     type(source_pos_t) :: pos
   end type surface_t
 
-  !> *NODE PRINT, NSET=..., TOTALS=YES request: one CSV column per variable.
+  !> *NODE PRINT request: one CSV column per variable (set totals) and a table in JOB.dat.
   type :: node_print_t
     character(len=name_len) :: nset = ''   !< set name
-    integer :: set_index = 0               !< index into model%nsets
+    integer :: set_index = 0               !< index into model%nsets (0: every node, JOB.dat only)
     character(len=8), allocatable :: vars(:) !< RF1..RF3, U1..U3
+    integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
+    logical :: totals = .false.            !< TOTALS=YES: a TOTAL line under the table
+    logical :: summary = .true.            !< SUMMARY=YES (default): MAXIMUM/MINIMUM lines
   end type node_print_t
+
+  !> *EL PRINT request: a table of integration-point values in JOB.dat.
+  type :: el_print_t
+    character(len=name_len) :: elset = ''  !< set name ('' : every continuum element)
+    integer :: set_index = 0               !< index into model%elsets (0: every element)
+    character(len=8), allocatable :: vars(:) !< S11..S23, MISES, LE11..LE23 / E11..E23, SDVn
+    integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
+    logical :: totals = .false.            !< TOTALS=YES
+    logical :: summary = .true.            !< SUMMARY=YES (default)
+  end type el_print_t
 
   type :: step_t
     character(len=name_len) :: name = ''
@@ -219,6 +232,8 @@ module model_types
     integer, allocatable :: out_sdv(:)     !< SDVn requested one by one
     type(node_print_t), allocatable :: prints(:)
     integer :: nprint = 0
+    type(el_print_t), allocatable :: elprints(:) !< *EL PRINT requests
+    integer :: nelprint = 0
     integer :: restart_frequency = 0       !< *RESTART, WRITE, FREQUENCY=n in effect (0: no restart file)
     type(source_pos_t) :: pos
   end type step_t
