@@ -22,7 +22,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', '*SOLID SECTION', '*UEL PROPERTY', '*NGEN', &
-          '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER')
+          '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*ORIENTATION')
       allowed_in_part = .true.
     case default
       allowed_in_part = .false.
@@ -46,7 +46,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', '*SOLID SECTION', '*NGEN', '*NFILL', '*NCOPY', &
-          '*ELGEN', '*UEL PROPERTY')
+          '*ELGEN', '*UEL PROPERTY', '*ORIENTATION')
       mesh_keyword = .true.
     case default
       mesh_keyword = .false.
@@ -97,7 +97,8 @@ contains
           call ctx_fail(ctx, ctx%ir, 'part '//name//' has no *END PART before '//kw)
         else
           call ctx_fail_kw(ctx, i, kw, 'not supported inside *PART '//trim(name)//' (ldfcz reads *NODE, *ELEMENT, '// &
-            '*NSET, *ELSET, *SURFACE, *SOLID SECTION, *UEL PROPERTY, *NGEN, *NFILL, *NCOPY, *ELGEN in a part), '// &
+            '*NSET, *ELSET, *SURFACE, *SOLID SECTION, *ORIENTATION, *UEL PROPERTY, *NGEN, *NFILL, *NCOPY, *ELGEN '// &
+            'in a part), '// &
             'or *END PART missing before it')
         end if
         return

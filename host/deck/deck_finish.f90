@@ -166,6 +166,8 @@ contains
           return
         end if
       end do
+      call resolve_orientations(ctx)
+      if (ctx%stat /= 0) return
       ! sections
       allocate (model%elem_section(model%nelem), has_section(model%nelem))
       model%elem_section = 0
@@ -184,6 +186,15 @@ contains
           if (iset == 0) then
             call ctx_fail_pos(ctx, pos, 'undefined element set '//trim(sec%elset))
             return
+          end if
+          if (len_trim(sec%orientation) > 0) then
+            do k = 1, model%norient
+              if (model%orientations(k)%name == sec%orientation) sec%iorient = k
+            end do
+            if (sec%iorient == 0) then
+              call ctx_fail_pos(ctx, pos, 'undefined orientation '//trim(sec%orientation))
+              return
+            end if
           end if
           im = model_find_material(model, sec%material)
           if (im == 0) then
@@ -238,6 +249,40 @@ contains
       if (ctx%stat == 0) call resolve_dloads(ctx)
     end associate
   end subroutine finish_model
+
+  !> *ORIENTATION, DEFINITION=NODES: the nodes' (reference) coordinates become the points a, b[, c].
+  subroutine resolve_orientations(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: k, j, id
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      do k = 1, model%norient
+        if (.not. model%orientations(k)%by_nodes) cycle
+        do j = 1, 3
+          id = model%orientations(k)%nodes(j)
+          if (id == 0) cycle
+          if (id > size(model%node_index)) then
+            pos = model%orientations(k)%pos
+            call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
+            return
+          end if
+          if (model%node_index(id) == 0) then
+            pos = model%orientations(k)%pos
+            call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
+            return
+          end if
+          select case (j)
+          case (1)
+            model%orientations(k)%a = model%x(:, model%node_index(id))
+          case (2)
+            model%orientations(k)%b = model%x(:, model%node_index(id))
+          case (3)
+            model%orientations(k)%c = model%x(:, model%node_index(id))
+          end select
+        end do
+      end do
+    end associate
+  end subroutine resolve_orientations
 
   !> Element-based surfaces: element sets and ids expanded into (element index, face) pairs.
   subroutine resolve_surfaces(ctx)

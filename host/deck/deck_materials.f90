@@ -22,7 +22,7 @@ contains
     character(len=:), allocatable :: v
     integer :: n, k, ir, ir_next
     real(dp) :: t
-    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL'])
+    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
@@ -39,6 +39,12 @@ contains
     ctx%model%sections(k)%material = v
     if (ctx%stat /= 0) return
     ctx%model%sections(k)%pos = ctx_pos(ctx, ir)
+    ctx%model%sections(k)%orientation = ''
+    ctx%model%sections(k)%iorient = 0
+    if (deck_has_param(ctx%params, 'ORIENTATION')) then
+      ctx%model%sections(k)%orientation = ctx_def_name(ctx, ctx_required(ctx, 'ORIENTATION'))
+      if (ctx%stat /= 0) return
+    end if
     ctx%model%sections(k)%thickness = 1.0_dp
     if (ir_next > ir + 2) then
       call ctx_fail(ctx, ir + 2, 'more than one data line (only the thickness line is read)')

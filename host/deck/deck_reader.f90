@@ -23,6 +23,7 @@ module deck_reader
   use deck_finish, only: finish_model
   use deck_parameters, only: apply_parameters
   use deck_generate, only: read_ngen, read_nfill, read_ncopy, read_elgen
+  use deck_orientation, only: read_orientation
   use deck_declarations, only: read_ldfcz_declaration
   implicit none
   private
@@ -157,6 +158,8 @@ contains
       call read_instance(ctx)
     case ('*END INSTANCE')
       call ctx_fail(ctx, ctx%ir, '*END INSTANCE without *INSTANCE')
+    case ('*ORIENTATION')
+      call read_orientation(ctx)
     case ('*NGEN')
       call read_ngen(ctx)
     case ('*NFILL')
@@ -256,7 +259,7 @@ contains
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
           '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
           '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
-          '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN')
+          '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

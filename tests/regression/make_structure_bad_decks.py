@@ -75,3 +75,18 @@ deck("bad_ncopy_reflect", "*NCOPY with REFLECT",
      "*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=LINE")
 deck("bad_elgen_master", "*ELGEN of an undefined master element",
      flat + ["*ELGEN, ELSET=ALL", "7, 2, 4, 1"] + mat + fstep, "*ELGEN", "7, 2, 4, 1")
+ori_flat = flat[:-1]
+deck("bad_orientation_undefined", "a section naming an undefined orientation",
+     ori_flat + ["*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL, ORIENTATION=ORI"] + mat + fstep, "*SOLID SECTION",
+     "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL, ORIENTATION=ORI")
+deck("bad_orientation_system", "an orientation system that is not supported",
+     ori_flat + ["*ORIENTATION, NAME=ORI, SYSTEM=SPHERICAL", "0., 0., 0., 0., 0., 1.",
+                 "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL, ORIENTATION=ORI"] + mat + fstep, "*ORIENTATION",
+     "*ORIENTATION, NAME=ORI, SYSTEM=SPHERICAL")
+deck("bad_orientation_points", "orientation points a and b on one line through the origin",
+     ori_flat + ["*ORIENTATION, NAME=ORI", "1., 0., 0., 2., 0., 0.",
+                 "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL, ORIENTATION=ORI"] + mat + fstep, "*ORIENTATION",
+     "*ORIENTATION, NAME=ORI")
+deck("bad_orientation_axis", "an additional rotation about axis 4",
+     ori_flat + ["*ORIENTATION, NAME=ORI", "1., 0., 0., 0., 1., 0.", "4, 30.",
+                 "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL, ORIENTATION=ORI"] + mat + fstep, "*ORIENTATION", "4, 30.")

@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""*ORIENTATION on *SOLID SECTION: a rotated orthotropic UMAT against the unrotated one.
+
+  check_orientation.py --exe BIN --out DIR --user user_umat_ortho.f90
+
+A unit C3D8 cube of an orthotropic material (tests/regression/user_umat_ortho.f90) with every node prescribed,
+u = t H X (a homogeneous deformation F = I + t H, four fixed increments). For a homogeneous state the nodal
+reactions give the first Piola-Kirchhoff stress exactly: P_ij = sum_a RF_a,i X_a,j = the total RFi of the face
+X_j = 1 (unit reference volume). Cases:
+  small     NLGEOM=NO. (a) without *ORIENTATION, P = C eps (the closed form of the material, eps = sym H);
+            (b) an identity *ORIENTATION gives the same; (c) axes turned by Q (DEFINITION=COORDINATES with an
+            additional rotation line) under H_Q = Q H Q^T: P_Q = Q P Q^T (the material turned with its loading);
+            (d) the same axes from DEFINITION=NODES. Round-off tolerance.
+  nlgeom    NLGEOM=YES, |H| ~ 0.3 (stretch, shear and a rigid rotation): identity axes vs turned axes, P_Q = Q P Q^T
+            (the local axes follow the material rotation R of F = R U, so the turned problem is the same problem).
+  rigid     NLGEOM=YES, turned axes: step 1 stretches (F1 = diag(1.05, 0.98, 1)), step 2 turns the stretched cube
+            rigidly by 90 degrees about z in one increment (the Hughes-Winget strain increment of a rigid rotation
+            is zero: the Cayley transform is skew). The local axes turn with the material, the local stress stays,
+            so P2 = R P1 (axes that stayed fixed would leave the stress unturned and fail this check).
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+
+PROPS = [1000.0, 400.0, 250.0, 0.25, 0.15, 0.3, 150.0, 120.0, 90.0]
+X = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def matmul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+
+
+def tr(a):
+    return [[a[j][i] for j in range(3)] for i in range(3)]
+
+
+def rot(axis, deg):
+    """Right-handed rotation by deg about a unit axis (Rodrigues)."""
+    n = math.sqrt(sum(c * c for c in axis))
+    k = [c / n for c in axis]
+    th = math.radians(deg)
+    c, s = math.cos(th), math.sin(th)
+    kx = [[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]]
+    return [[(c if i == j else 0.0) + s * kx[i][j] + (1 - c) * k[i] * k[j] for j in range(3)] for i in range(3)]
+
+
+def ortho_c():
+    e1, e2, e3, n12, n13, n23, g12, g13, g23 = PROPS
+    s = [[1 / e1, -n12 / e1, -n13 / e1], [-n12 / e1, 1 / e2, -n23 / e2], [-n13 / e1, -n23 / e2, 1 / e3]]
+    det = (s[0][0] * (s[1][1] * s[2][2] - s[1][2] * s[2][1]) - s[0][1] * (s[1][0] * s[2][2] - s[1][2] * s[2][0])
+           + s[0][2] * (s[1][0] * s[2][1] - s[1][1] * s[2][0]))
+    cof = [[(s[(i + 1) % 3][(j + 1) % 3] * s[(i + 2) % 3][(j + 2) % 3] - s[(i + 1) % 3][(j + 2) % 3] *
+             s[(i + 2) % 3][(j + 1) % 3]) / det for j in range(3)] for i in range(3)]
+    return cof, (g12, g13, g23)
+
+
+def deck(path, h, nlgeom, orient, h2=None):
+    """orient: None, or (lines of *ORIENTATION, with NAME=ORI); node sets FX, FY, FZ: faces X_j = 1."""
+    out = ["*Heading", "orthotropic cube (tests/regression/check_orientation.py)", "*Node"]
+    out += ["%d, %g, %g, %g" % ((a + 1,) + x) for a, x in enumerate(X)]
+    out += ["*Element, type=C3D8, elset=CUBE", "1, 1, 2, 3, 4, 5, 6, 7, 8",
+            "*Nset, nset=FX", "2, 3, 6, 7", "*Nset, nset=FY", "3, 4, 7, 8", "*Nset, nset=FZ", "5, 6, 7, 8"]
+    if orient:
+        out += orient
+        out += ["*Solid Section, elset=CUBE, material=ORTHO, orientation=ORI"]
+    else:
+        out += ["*Solid Section, elset=CUBE, material=ORTHO"]
+    out += ["*Material, name=ORTHO", "*User Material, constants=9", ", ".join("%.17g" % p for p in PROPS[:8]),
+            "%.17g" % PROPS[8], "*Step, nlgeom=%s" % ("YES" if nlgeom else "NO"), "*Static, direct", "0.25, 1.",
+            "*Boundary"]
+    for a, x in enumerate(X):
+        for i in range(3):
+            out.append("%d, %d, %d, %.17g" % (a + 1, i + 1, i + 1, sum(h[i][j] * x[j] for j in range(3))))
+    prints = ["*Node Print, nset=FX, totals=YES", "RF", "*Node Print, nset=FY, totals=YES", "RF",
+              "*Node Print, nset=FZ, totals=YES", "RF", "*End Step"]
+    out += prints
+    if h2 is not None:
+        out += ["*Step, nlgeom=YES", "*Static, direct", "1., 1.", "*Boundary"]
+        for a, x in enumerate(X):
+            for i in range(3):
+                out.append("%d, %d, %d, %.17g" % (a + 1, i + 1, i + 1, sum(h2[i][j] * x[j] for j in range(3))))
+        out += prints
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def run(exe, out, user, job, h, nlgeom, orient, h2=None, step=None):
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, job + ".inp")
+    deck(path, h, nlgeom, orient, h2)
+    res = subprocess.run([exe, "-q", "--user", user, path], cwd=out, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    if res.returncode != 0:
+        print(res.stdout)
+        fail("ldfcz exited with %d on %s" % (res.returncode, path))
+    with open(os.path.join(out, job + ".csv")) as f:
+        rows = list(csv.DictReader(f))
+    if step is not None:
+        rows = [r for r in rows if int(r["step"]) == step]
+    r = rows[-1]
+    return [[float(r["F%s.RF%d" % ("XYZ"[j], i + 1)]) for j in range(3)] for i in range(3)]
+
+
+def compare(name, got, want, rtol):
+    scale = max(abs(v) for row in want for v in row)
+    err = max(abs(got[i][j] - want[i][j]) for i in range(3) for j in range(3))
+    print("%-58s max |diff| / max |P| = %.3g (tolerance %g)" % (name, err / scale, rtol))
+    if not err <= rtol * scale:
+        for row_g, row_w in zip(got, want):
+            print("  got", ["%.10g" % v for v in row_g], "want", ["%.10g" % v for v in row_w])
+        fail(name)
+
+
+def orientation_lines(q, extra=None, nodes=False):
+    if nodes:
+        # nodes 9, 10 placed at q e1 and q e2 (not attached to elements): DEFINITION=NODES
+        return ["*Node", "9, %.17g, %.17g, %.17g" % tuple(q[i][0] for i in range(3)),
+                "10, %.17g, %.17g, %.17g" % tuple(q[i][1] for i in range(3)),
+                "*Orientation, name=ORI, definition=NODES", "9, 10"]
+    lines = ["*Orientation, name=ORI, system=RECTANGULAR",
+             "%.17g, %.17g, %.17g, %.17g, %.17g, %.17g" % (tuple(q[i][0] for i in range(3)) +
+                                                            tuple(q[i][1] for i in range(3)))]
+    if extra:
+        lines.append("%d, %.17g" % extra)
+    return lines
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--user", required=True)
+    ap.add_argument("--case", required=True, choices=["small", "nlgeom", "rigid"])
+    a = ap.parse_args()
+    exe, out, user = os.path.abspath(a.exe), os.path.abspath(a.out), os.path.abspath(a.user)
+    # axes turned by Q = Q2 Q1: the points a, b of Q1, then an additional 25 degree rotation about local axis 3
+    q1 = matmul(rot((1, 2, 2), 40.0), rot((0, 0, 1), 0.0))
+    q = matmul(q1, rot((0, 0, 1), 25.0))
+    identity = [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+    ident_lines = ["*Orientation, name=ORI", "1., 0., 0., 0., 1., 0."]
+    if a.case == "small":
+        h = [[2e-3, 5e-4, -3e-4], [1e-4, -1e-3, 6e-4], [7e-4, -2e-4, 1.5e-3]]
+        hq = matmul(matmul(q, h), tr(q))
+        p0 = run(exe, out, user, "plain", h, False, None)
+        c, (g12, g13, g23) = ortho_c()
+        eps = [[0.5 * (h[i][j] + h[j][i]) for j in range(3)] for i in range(3)]
+        d = [eps[0][0], eps[1][1], eps[2][2]]
+        want = [[0.0] * 3 for _ in range(3)]
+        for i in range(3):
+            want[i][i] = sum(c[i][k] * d[k] for k in range(3))
+        for (i, j), g in (((0, 1), g12), ((0, 2), g13), ((1, 2), g23)):
+            want[i][j] = want[j][i] = g * 2 * eps[i][j]
+        compare("no orientation: P = C eps (closed form)", p0, want, 1e-9)
+        pi = run(exe, out, user, "identity", h, False, ident_lines)
+        compare("identity orientation = none", pi, p0, 1e-12)
+        pq = run(exe, out, user, "turned", hq, False, orientation_lines(q1, (3, 25.0)))
+        compare("turned axes under turned loading: P_Q = Q P Q^T", pq, matmul(matmul(q, p0), tr(q)), 1e-10)
+        pn = run(exe, out, user, "nodes", hq, False, orientation_lines(q, nodes=True))
+        compare("DEFINITION=NODES: P_Q = Q P Q^T", pn, matmul(matmul(q, p0), tr(q)), 1e-10)
+    elif a.case == "rigid":
+        f1 = [[1.05, 0, 0], [0, 0.98, 0], [0, 0, 1.0]]
+        r90 = rot((0, 0, 1), 90.0)
+        h1 = [[f1[i][j] - (1.0 if i == j else 0.0) for j in range(3)] for i in range(3)]
+        f2 = matmul(r90, f1)
+        h2 = [[f2[i][j] - (1.0 if i == j else 0.0) for j in range(3)] for i in range(3)]
+        lines = orientation_lines(q1, (3, 25.0))
+        p1 = run(exe, out, user, "rigid", h1, True, lines, h2=h2, step=1)
+        p2 = run(exe, out, user, "rigid", h1, True, lines, h2=h2, step=2)
+        compare("rigid 90 degree turn after a stretch: P2 = R P1", p2, matmul(r90, p1), 1e-10)
+    else:
+        # stretch, shear and a 20 degree rigid rotation: F = R0 (I + S), H = F - I
+        s = [[0.25, 0.1, 0.0], [0.05, -0.1, 0.08], [0.0, 0.03, 0.15]]
+        r0 = rot((0.2, 0.3, 1.0), 20.0)
+        f = matmul(r0, [[(1.0 if i == j else 0.0) + s[i][j] for j in range(3)] for i in range(3)])
+        h = [[f[i][j] - (1.0 if i == j else 0.0) for j in range(3)] for i in range(3)]
+        hq = matmul(matmul(q, h), tr(q))
+        pi = run(exe, out, user, "nl_identity", h, True, ident_lines)
+        pq = run(exe, out, user, "nl_turned", hq, True, orientation_lines(q1, (3, 25.0)))
+        compare("NLGEOM, turned axes under turned loading: P_Q = Q P Q^T", pq, matmul(matmul(q, pi), tr(q)), 1e-10)
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
