@@ -13,9 +13,9 @@ Cases:
             and every printed value equals the deck flattened by hand (coordinates (4 - x, 1 - y, z) written out)
             to round-off.
   cae       decks in Abaqus/CAE's exact style (decks/cae): a block (isotropic, with a part *Orientation) under
-            *DSLOAD pressure (symmetry planes, 3D:
-            top displacement -p H / E, reaction p A) and a plane-strain bar pulled by *CLOAD through an assembly
-            set (end displacement (1 - nu^2) F L / (E A)); both read with the expected warnings and notes only.
+            *DSLOAD pressure on symmetry planes (top displacement -p H / E, reaction p A) and a plane-strain bar
+            pulled by *CLOAD through an assembly set (end displacement (1 - nu^2) F L / (E A)); both read with the
+            expected warnings and notes only.
   generate  a 4 x 1 x 2 C3D8 bar meshed by *NGEN, *NCOPY (SHIFT), *NFILL and *ELGEN with sizes, material and
             load from *PARAMETER (expressions, text values, <name> in keyword and data lines), at model level and
             inside a part whose instance is translated: both equal the mesh written node by node (to round-off)
