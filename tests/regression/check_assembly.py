@@ -14,8 +14,10 @@ Cases:
             to round-off.
   cae       decks in Abaqus/CAE's exact style (decks/cae): a block (isotropic, with a part *Orientation) under
             *DSLOAD pressure on symmetry planes (top displacement -p H / E, reaction p A) and a plane-strain bar
-            pulled by *CLOAD through an assembly set (end displacement (1 - nu^2) F L / (E A)); both read with the
-            expected warnings and notes only.
+            pulled by *CLOAD through an assembly set (end displacement (1 - nu^2) F L / (E A)); two unit cubes as
+            two instances of one part, the second translated on top, joined by an assembly *Tie, sets spanning both
+            instances (one *Nset per instance), *Cload with a tabular amplitude (top displacement 2 F a(t) / E in
+            every increment); read with the expected warnings and notes only.
   generate  a 4 x 1 x 2 C3D8 bar meshed by *NGEN, *NCOPY (SHIFT), *NFILL and *ELGEN with sizes, material and
             load from *PARAMETER (expressions, text values, <name> in keyword and data lines), at model level and
             inside a part whose instance is translated: both equal the mesh written node by node (to round-off)
@@ -160,6 +162,14 @@ def case_cae(exe, out, decks):
     close("CAE plane bar: end U1 = (1 - nu^2) F L / (E A)", r["TIP.U1"], (1 - nu ** 2) * f * length / (e * area),
           1e-12)
     close("CAE plane bar: root RF1 = -F", r["ROOT.RF1"], -f, 1e-9)
+    rows, warn = run(exe, out, "cae_two_blocks_tie", deck=os.path.join(decks, "cae", "cae_two_blocks_tie.inp"))
+    for r in rows:
+        # two unit cubes, instance 2 translated on top, tied by an assembly *Tie; *Cload 4 x 2.5 times the
+        # tabular amplitude 2 t: uniaxial stress 10 a(t) over two unit lengths
+        a = 2.0 * r["step_time"]
+        close("CAE tied blocks: top U3 = 2 F a(t) / E (t = %.3g)" % r["step_time"], r["TOP.U3"], 2 * 10.0 * a / 2e5,
+              1e-12)
+        close("CAE tied blocks: bottom RF3 = -F a(t)", r["SET-1.RF3"], -10.0 * a, 1e-9)
 
 
 GEN_PARAMS = ["*Parameter", "length = 4.", "n = 4", "nlast = n + 1", "E_mod = 2.0e5 / 2", "nu = 0.25",
