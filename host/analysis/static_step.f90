@@ -349,7 +349,14 @@ contains
               end if
             end if
             if (converged) then
-              call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
+              if (model%monitor_node > 0) then
+                ! *MONITOR: the dof's displacement at the end of the increment, on the converged line
+                call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged  monitor U'// &
+                  itoa(model%monitor_dof)//' '//rtoa(an%u((model%monitor_node - 1) * model%ndim + model%monitor_dof)), &
+                  ratios(1:iter + 1))
+              else
+                call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
+              end if
               exit attempts
             end if
             call newton_forget_factors(ns)

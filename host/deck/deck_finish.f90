@@ -168,6 +168,22 @@ contains
       end do
       call resolve_orientations(ctx)
       if (ctx%stat /= 0) return
+      if (model%monitor_node > 0) then
+        id = model%monitor_node
+        k = 0
+        if (id <= size(model%node_index)) k = model%node_index(id)
+        pos = model%monitor_pos
+        if (k == 0) then
+          call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
+          return
+        end if
+        if (model%monitor_dof > model%ndim) then
+          call ctx_fail_pos(ctx, pos, 'dof '//itoa(model%monitor_dof)//' does not exist in this '// &
+            itoa(model%ndim)//'D model')
+          return
+        end if
+        model%monitor_node = k
+      end if
       ! sections
       allocate (model%elem_section(model%nelem), has_section(model%nelem))
       model%elem_section = 0

@@ -16,7 +16,7 @@ module deck_reader
   use deck_user_elements, only: read_user_element, read_uel_property
   use deck_boundaries, only: read_amplitude, read_boundary
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print, &
-    read_field_variables, read_el_print
+    read_field_variables, read_el_print, read_monitor
   use deck_loads, only: read_cload, read_dload, read_dsload, read_surface
   use deck_fields, only: read_initial_conditions, read_temperature
   use deck_constraints, only: read_equation, read_tie, read_mpc
@@ -234,6 +234,8 @@ contains
       call read_node_print(ctx)
     case ('*EL PRINT')
       call read_el_print(ctx)
+    case ('*MONITOR')
+      call read_monitor(ctx)
     case ('*END STEP')
       if (.not. ctx%in_step) then
         call ctx_fail(ctx, ctx%ir, '*END STEP without *STEP')
@@ -245,7 +247,7 @@ contains
     case ('*LDFCZ SVARS', '*LDFCZ STATEV')
       call read_ldfcz_declaration(ctx)
     case ('*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
-          '*MONITOR', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
+          '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
       call ctx_warn(ctx, ctx%ir, 'output/cosmetic keyword not supported by ldfcz: ignored with its data lines')
     case default
       call ctx_fail(ctx, ctx%ir, 'unsupported keyword (ldfcz never ignores a keyword that may change the analysis)')

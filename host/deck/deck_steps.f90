@@ -4,10 +4,12 @@ module deck_steps
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: step_t, node_print_t, model_find_nset, el_print_t
   use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_find_elset, ctx_fail, ctx_warn, ctx_pos, &
-    ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
+    ctx_allow_params, ctx_need_step, ctx_required, ctx_get_label, ctx_param_int, ctx_split, ctx_get_real, &
+    ctx_get_int, ctx_only_value
   implicit none
   private
-  public :: read_field_variables, read_step, read_static, read_controls, read_restart, read_output, read_node_print, read_el_print
+  public :: read_field_variables, read_step, read_static, read_controls, read_restart, read_output, read_node_print
+  public :: read_el_print, read_monitor
 
 contains
 
@@ -502,6 +504,29 @@ contains
       s%prints(s%nprint) = np
     end associate
   end subroutine read_node_print
+
+  !> *MONITOR, NODE=, DOF=[, FREQUENCY=]: the displacement of one dof written on each converged increment's line of
+  !> JOB.sta (as the MONITOR column of an Abaqus .sta file); the last *MONITOR of the deck is in effect.
+  subroutine read_monitor(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: id, dof
+    call ctx_allow_params(ctx, [character(len=12) :: 'NODE', 'DOF', 'FREQUENCY'])
+    if (ctx%stat /= 0) return
+    if (.not. ctx_get_label(ctx, ctx%ir, ctx_required(ctx, 'NODE'), .true., id)) return
+    if (ctx%stat /= 0) return
+    if (.not. ctx_get_int(ctx, ctx%ir, ctx_required(ctx, 'DOF'), dof)) return
+    if (dof < 1 .or. dof > 3) then
+      call ctx_fail(ctx, ctx%ir, 'DOF must be 1, 2 or 3 (displacements)')
+      return
+    end if
+    if (ctx%ir_next > ctx%ir + 1) then
+      call ctx_fail(ctx, ctx%ir + 1, 'no data lines expected')
+      return
+    end if
+    ctx%model%monitor_node = id
+    ctx%model%monitor_dof = dof
+    ctx%model%monitor_pos = ctx_pos(ctx, ctx%ir)
+  end subroutine read_monitor
 
   !> FREQUENCY, TOTALS and SUMMARY of a print request.
   subroutine print_options(ctx, frequency, totals, summary)

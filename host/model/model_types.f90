@@ -315,6 +315,9 @@ module model_types
     integer :: ninstance = 0
     type(orientation_t), allocatable :: orientations(:) !< *ORIENTATION definitions
     integer :: norient = 0
+    integer :: monitor_node = 0            !< *MONITOR, NODE= (model label while reading, node index after; 0: none)
+    integer :: monitor_dof = 0             !< *MONITOR, DOF=
+    type(source_pos_t) :: monitor_pos      !< where *MONITOR is
   end type model_t
 
 contains

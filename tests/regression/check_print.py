@@ -8,6 +8,7 @@ A unit cube (E = 1000, nu = 0.25) on rollers at z = 0, its top moved to w = 0.01
 RF3 totals E w t (a quarter per node), U3 = w t on the top. Requests: the top set (TOTALS=YES, every increment),
 every node (no NSET, FREQ=3: increments 3 and 4, the step's last always printed), the element (SUMMARY=NO,
 TOTALS=YES, FREQUENCY=2). The tables must hold exactly these rows and values, in the increments asked.
+*MONITOR, NODE=7, DOF=3: each converged line of JOB.sta carries 'monitor U3 <w t>'.
 """
 import argparse
 import os
@@ -47,6 +48,7 @@ bot, 3, 3
 0.25, 1.
 *Boundary
 top, 3, 3, 0.01
+*Monitor, node=7, dof=3
 *Node Print, nset=top, totals=yes
 U3, RF3
 *Node Print, freq=3
@@ -145,7 +147,18 @@ def main():
                     close("MISES", float(r[3]), E * W * time, 1e-4)
                     close("E11", float(r[4]), -NU * W * time, 1e-4)
                 close("element TOTAL S33 (8 points)", extra["TOTAL"][0], 8 * E * W * time, 1e-4)
+    mon = []
+    with open(os.path.join(a.out, "print_cube.sta")) as f:
+        for line in f:
+            w = line.split()
+            if len(w) > 9 and w[6] == "converged" and w[7] == "monitor" and w[8] == "U3":
+                mon.append((float(w[4]), float(w[9])))
+    if len(mon) != 4:
+        fail("%d converged JOB.sta lines with the monitor, expected 4" % len(mon))
+    for t, v in mon:
+        close("monitor U3 of node 7 at t = %g" % t, v, W * t, 1e-6)
     print("printed tables: increments 1..4 with the requested tables and values (4-digit print, rtol 1e-4)")
+    print("monitor: U3 of node 7 = w t on the 4 converged lines of JOB.sta")
     print("PASS")
 
 

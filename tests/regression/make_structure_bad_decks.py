@@ -90,3 +90,6 @@ deck("bad_orientation_points", "orientation points a and b on one line through t
 deck("bad_orientation_axis", "an additional rotation about axis 4",
      ori_flat + ["*ORIENTATION, NAME=ORI", "1., 0., 0., 0., 1., 0.", "4, 30.",
                  "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL, ORIENTATION=ORI"] + mat + fstep, "*ORIENTATION", "4, 30.")
+deck("bad_monitor_node", "*MONITOR of an undefined node",
+     flat + mat + ["*STEP", "*STATIC", "1., 1.", "*MONITOR, NODE=99, DOF=1", "*BOUNDARY", "BOTTOM, ENCASTRE", "*END STEP"],
+     "*MONITOR", "*MONITOR, NODE=99, DOF=1")
