@@ -65,14 +65,14 @@ contains
       xa = ctx%model%x(:, ia)
       xb = ctx%model%x(:, ib)
       do k = 1, nstep - 1
-        call add_node(ctx, i, a + k * inc, xa + real(k, dp) / real(nstep, dp) * (xb - xa))
+        call add_node(ctx, i, a + k * inc, xa + real(k, dp) / real(nstep, dp) * (xb - xa), map)
+        if (ctx%stat /= 0) return
       end do
       if (iset > 0) then
         do k = 0, nstep
           call add_member(ctx%model%nsets(iset)%nodes, ctx%model%nsets(iset)%n, -(a + k * inc + ctx%node_off))
         end do
       end if
-      call node_map(ctx, map)
     end do
   end subroutine read_ngen
 
@@ -93,8 +93,8 @@ contains
     iset = 0
     if (deck_has_param(ctx%params, 'NSET')) iset = get_nset(ctx, ctx_def_name(ctx, ctx_required(ctx, 'NSET')))
     if (ctx%stat /= 0) return
+    call node_map(ctx, map)
     do i = ctx%ir + 1, ctx%ir_next - 1
-      call node_map(ctx, map)
       call ctx_split(ctx, i, f, n)
       if (n < 3 .or. n > 4) then
         call ctx_fail(ctx, i, 'expected: first node set, second node set, intervals[, increment]')
@@ -135,7 +135,7 @@ contains
         end if
         do k = 1, nintv - 1
           call add_node(ctx, i, s1(j) - ctx%node_off + k * inc, ctx%model%x(:, ia) + real(k, dp) / real(nintv, dp) * &
-            (ctx%model%x(:, ib) - ctx%model%x(:, ia)))
+            (ctx%model%x(:, ib) - ctx%model%x(:, ia)), map)
           if (ctx%stat /= 0) return
           if (iset > 0) call add_member(ctx%model%nsets(iset)%nodes, ctx%model%nsets(iset)%n, -(s1(j) + k * inc))
         end do
@@ -199,7 +199,7 @@ contains
       if (ctx%placed) x = matmul(transpose(ctx%place_r), x - ctx%place_c)
       x = matmul(r, x) + c
       if (ctx%placed) x = matmul(ctx%place_r, x) + ctx%place_c
-      call add_node(ctx, ctx%ir, old(j) - ctx%node_off + dn, x)
+      call add_node(ctx, ctx%ir, old(j) - ctx%node_off + dn, x, map)
       if (ctx%stat /= 0) return
       if (inew > 0) call add_member(ctx%model%nsets(inew)%nodes, ctx%model%nsets(inew)%n, -(old(j) + dn))
     end do
@@ -283,12 +283,14 @@ contains
     end associate
   end subroutine read_elgen
 
-  !> Add a node of scope label id (offset added here) at model coordinates x (already placed).
-  subroutine add_node(ctx, irec, id, x)
+  !> Add a node of scope label id (offset added here) at model coordinates x (already placed); the label map is
+  !> kept current (a label defined twice is reported by finish_model with both places).
+  subroutine add_node(ctx, irec, id, x, map)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     integer, intent(in) :: irec                 !< record that generates it
     integer, intent(in) :: id                   !< label in the scope
     real(dp), intent(in) :: x(3)                !< coordinates
+    integer, allocatable, intent(inout) :: map(:) !< model label -> node index (node_map)
     if (id < 1) then
       call ctx_fail(ctx, irec, 'generated node label '//itoa(id)//' is not positive')
       return
@@ -300,6 +302,8 @@ contains
       ctx%node_rec(model%nnode) = irec
       model%x(:, model%nnode) = x
       ctx%top_node = max(ctx%top_node, id + ctx%node_off)
+      if (id + ctx%node_off > size(map)) call grow_int(map, max(2 * size(map), id + ctx%node_off))
+      if (map(id + ctx%node_off) == 0) map(id + ctx%node_off) = model%nnode
     end associate
   end subroutine add_node
 
