@@ -228,7 +228,7 @@ add_test(NAME deck_print_tables COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOU
 set_tests_properties(deck_print_tables PROPERTIES LABELS "deck" TIMEOUT 300)
 # *ORIENTATION: an orthotropic UMAT with turned axes under turned loading against the unturned one (small strain
 # with the closed form, NLGEOM, a rigid rotation after a stretch) (tests/regression/check_orientation.py)
-foreach(case small nlgeom rigid)
+foreach(case small nlgeom rigid instance)
   add_test(NAME deck_orientation_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_orientation.py
     --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/orientation_${case} --case ${case}
     --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_ortho.f90)

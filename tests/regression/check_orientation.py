@@ -17,6 +17,10 @@ X_j = 1 (unit reference volume). Cases:
             rigidly by 90 degrees about z in one increment (the Hughes-Winget strain increment of a rigid rotation
             is zero: the Cayley transform is skew). The local axes turn with the material, the local stress stays,
             so P2 = R P1 (axes that stayed fixed would leave the stress unturned and fail this check).
+  instance  NLGEOM=NO, the cube as a *PART with its *ORIENTATION (turned axes) and section, instanced twice: as it
+            is, and turned by 90 degrees about an axis through (0.3, 0.2, 0) along (1, 1, 1) and translated; the
+            placed instance under the placed loading R H R^T must give R P R^T (the orientation's points are placed
+            with the instance). P from every node's reaction: P_ij = sum_a RF_a,i X_a,j (reference coordinates).
 """
 import argparse
 import csv
@@ -133,12 +137,70 @@ def orientation_lines(q, extra=None, nodes=False):
     return lines
 
 
+def part_deck(path, h, place, q1, extra):
+    """The cube as a part with its orientation; one instance placed by place = (translation, rotation line) or
+    None; every node a set N1..N8 (per-node reactions). Returns the placed reference coordinates."""
+    r, c = placement(place)
+    xs = [tuple(sum(r[i][k] * x[k] for k in range(3)) + c[i] for i in range(3)) for x in X]
+    out = ["*Heading", "orthotropic cube in a part (tests/regression/check_orientation.py)", "*Part, name=CUBE",
+           "*Node"]
+    out += ["%d, %g, %g, %g" % ((a + 1,) + x) for a, x in enumerate(X)]
+    out += ["*Element, type=C3D8, elset=CUBE", "1, 1, 2, 3, 4, 5, 6, 7, 8"]
+    out += orientation_lines(q1, extra)
+    out += ["*Solid Section, elset=CUBE, material=ORTHO, orientation=ORI", "*End Part", "*Assembly, name=A",
+            "*Instance, name=C-1, part=CUBE"]
+    if place:
+        out += ["%.17g, %.17g, %.17g" % place[0], ", ".join("%.17g" % v for v in place[1])]
+    out += ["*End Instance"]
+    for a in range(8):
+        out += ["*Nset, nset=N%d, instance=C-1" % (a + 1), "%d," % (a + 1)]
+    out += ["*End Assembly", "*Material, name=ORTHO", "*User Material, constants=9",
+            ", ".join("%.17g" % p for p in PROPS[:8]), "%.17g" % PROPS[8], "*Step, nlgeom=NO", "*Static, direct",
+            "0.5, 1.", "*Boundary"]
+    for a, x in enumerate(xs):
+        for i in range(3):
+            out.append("C-1.%d, %d, %d, %.17g" % (a + 1, i + 1, i + 1, sum(h[i][j] * x[j] for j in range(3))))
+    for a in range(8):
+        out += ["*Node Print, nset=N%d, totals=YES" % (a + 1), "RF"]
+    out += ["*End Step"]
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+    return xs
+
+
+def placement(place):
+    """x = R (x_part + t - a) + a, as *INSTANCE (translation, then rotation about a -> b)."""
+    if not place:
+        return [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]], [0.0, 0.0, 0.0]
+    t, rl = place
+    a, b, ang = rl[0:3], rl[3:6], rl[6]
+    r = rot([b[i] - a[i] for i in range(3)], ang)
+    c = [a[i] + sum(r[i][k] * (t[k] - a[k]) for k in range(3)) for i in range(3)]
+    return r, c
+
+
+def run_part(exe, out, user, job, h, place, q1, extra):
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, job + ".inp")
+    xs = part_deck(path, h, place, q1, extra)
+    res = subprocess.run([exe, "-q", "--user", user, path], cwd=out, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    if res.returncode != 0:
+        print(res.stdout)
+        fail("ldfcz exited with %d on %s" % (res.returncode, path))
+    with open(os.path.join(out, job + ".csv")) as f:
+        r = list(csv.DictReader(f))[-1]
+    # P_ij = sum_a RF_a,i X_a,j over the unit reference volume (homogeneous state)
+    return [[sum(float(r["N%d.RF%d" % (a + 1, i + 1)]) * xs[a][j] for a in range(8)) for j in range(3)]
+            for i in range(3)]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--user", required=True)
-    ap.add_argument("--case", required=True, choices=["small", "nlgeom", "rigid"])
+    ap.add_argument("--case", required=True, choices=["small", "nlgeom", "rigid", "instance"])
     a = ap.parse_args()
     exe, out, user = os.path.abspath(a.exe), os.path.abspath(a.out), os.path.abspath(a.user)
     # axes turned by Q = Q2 Q1: the points a, b of Q1, then an additional 25 degree rotation about local axis 3
@@ -165,6 +227,16 @@ def main():
         compare("turned axes under turned loading: P_Q = Q P Q^T", pq, matmul(matmul(q, p0), tr(q)), 1e-10)
         pn = run(exe, out, user, "nodes", hq, False, orientation_lines(q, nodes=True))
         compare("DEFINITION=NODES: P_Q = Q P Q^T", pn, matmul(matmul(q, p0), tr(q)), 1e-10)
+    elif a.case == "instance":
+        h = [[2e-3, 5e-4, -3e-4], [1e-4, -1e-3, 6e-4], [7e-4, -2e-4, 1.5e-3]]
+        place = ((0.5, -1.0, 2.0), (0.3, 0.2, 0.0, 1.3, 1.2, 1.0, 90.0))
+        r, _ = placement(place)
+        hr = matmul(matmul(r, h), tr(r))
+        p0 = run_part(exe, out, user, "part_plain", h, None, q1, (3, 25.0))
+        pq = run(exe, out, user, "part_flat", h, False, orientation_lines(q1, (3, 25.0)))
+        compare("part instance = the same cube written flat", p0, pq, 1e-10)
+        pr = run_part(exe, out, user, "part_placed", hr, place, q1, (3, 25.0))
+        compare("placed instance under placed loading: P_R = R P R^T", pr, matmul(matmul(r, p0), tr(r)), 1e-10)
     elif a.case == "rigid":
         f1 = [[1.05, 0, 0], [0, 0.98, 0], [0, 0, 1.0]]
         r90 = rot((0, 0, 1), 90.0)
