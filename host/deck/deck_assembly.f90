@@ -260,6 +260,13 @@ contains
   !> After a part was read for the current instance: its label range recorded, the assembly scope restored.
   subroutine end_instance(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
+    if (ctx%placed .and. ctx%model%ndim == 2) then
+      if (abs(ctx%place_r(3, 3) - 1.0_dp) > 1.0e-12_dp .or. abs(ctx%place_c(3)) > 0.0_dp) then
+        call ctx_fail(ctx, ctx%ir, 'instance '//trim(ctx%model%instances(ctx%model%ninstance)%name)// &
+          ' of a plane model is moved out of the x-y plane (translate in x, y; rotate about an axis along z)')
+        return
+      end if
+    end if
     associate (in => ctx%model%instances(ctx%model%ninstance))
       in%node_last = max(in%node_offset, ctx%top_node)
       in%elem_last = max(in%elem_offset, ctx%top_elem)

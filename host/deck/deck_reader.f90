@@ -129,7 +129,8 @@ contains
   !> *INSTANCE ... *END INSTANCE: the part's blocks read with the instance's labels, names and placement.
   recursive subroutine read_instance(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    integer :: ip, ir_end
+    integer :: ip, ir_end, ir_inst
+    ir_inst = ctx%ir
     call begin_instance(ctx, ip, ir_end)
     if (ctx%stat /= 0) return
     call read_range(ctx, ctx%parts(ip)%ir1, ctx%parts(ip)%ir2 - 1)
@@ -138,7 +139,11 @@ contains
         trim(ctx%model%instances(ctx%model%ninstance)%name)//')'
       return
     end if
+    ! messages of end_instance name the *INSTANCE line
+    ctx%ir = ir_inst
+    ctx%kw = '*INSTANCE'
     call end_instance(ctx)
+    if (ctx%stat /= 0) return
     ctx%ir_next = ir_end + 1
   end subroutine read_instance
 

@@ -93,3 +93,9 @@ deck("bad_orientation_axis", "an additional rotation about axis 4",
 deck("bad_monitor_node", "*MONITOR of an undefined node",
      flat + mat + ["*STEP", "*STATIC", "1., 1.", "*MONITOR, NODE=99, DOF=1", "*BOUNDARY", "BOTTOM, ENCASTRE", "*END STEP"],
      "*MONITOR", "*MONITOR, NODE=99, DOF=1")
+part2d = ["*PART, NAME=SQ", "*NODE", "1, 0., 0.", "2, 1., 0.", "3, 1., 1.", "4, 0., 1.",
+          "*ELEMENT, TYPE=CPE4, ELSET=ALL", "1, 1, 2, 3, 4", "*NSET, NSET=BOTTOM", "1, 2",
+          "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL", "*END PART"]
+deck("bad_instance_plane_tilt", "an instance of a plane model turned out of the x-y plane",
+     part2d + mat + ["*ASSEMBLY, NAME=A", "*INSTANCE, NAME=C-1, PART=SQ", "0., 0., 0.", "0., 0., 0., 1., 0., 0., 30.",
+                     "*END INSTANCE", "*END ASSEMBLY"] + step, "*INSTANCE", "*INSTANCE, NAME=C-1, PART=SQ")
