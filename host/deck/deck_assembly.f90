@@ -5,11 +5,10 @@
 !> it defines. The offsets are kept in model%instances (model_label_text writes 'INSTANCE.label' for messages).
 module deck_assembly
   use ldfcz_kinds, only: dp
-  use deck_lines, only: deck_keyword_parse, deck_normalize, deck_param_t, deck_param_value, deck_has_param
+  use deck_lines, only: deck_keyword_parse, deck_normalize, deck_param_t
   use model_types, only: instance_t
-  use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, part_def_t, ctx_fail, ctx_fail_kw, ctx_allow_params, ctx_required, &
-    ctx_split, ctx_get_real, ctx_get_int, ctx_warn, scope_model, scope_part, scope_assembly
+    ctx_split, ctx_get_real, scope_model, scope_part, scope_assembly
   implicit none
   private
   public :: prescan_assembly, read_part_def, begin_assembly, end_assembly, begin_instance, end_instance

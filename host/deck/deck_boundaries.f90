@@ -3,12 +3,10 @@
 module deck_boundaries
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: amplitude_t, boundary_t, model_find_nset, model_find_amplitude
+  use model_types, only: amplitude_t, boundary_t, model_find_amplitude
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
-    ctx_find_surface, &
-   ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
-    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
+  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_fail, ctx_pos, &
+    ctx_allow_params, ctx_required, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
   implicit none
   private
   public :: read_amplitude, read_boundary

@@ -3,12 +3,10 @@
 module deck_constraints
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_normalize, deck_param_value, deck_has_param
-  use model_types, only: cload_t, equation_t, tie_t, model_find_nset, model_find_surface
+  use model_types, only: cload_t, equation_t, tie_t
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
-    ctx_find_surface, &
-   ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, &
-    ctx_get_int
+  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_surface, &
+    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
   public :: read_equation, read_tie, read_mpc

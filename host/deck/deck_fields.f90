@@ -4,13 +4,11 @@
 module deck_fields
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_normalize, deck_has_param
-  use model_types, only: initial_condition_t, init_stress, init_solution, model_find_elset, cload_t, &
-    model_find_nset, model_find_amplitude
+  use model_types, only: initial_condition_t, init_stress, init_solution, cload_t, &
+    model_find_amplitude
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
-    ctx_find_surface, &
-   ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, &
-    ctx_get_int, ctx_need_step
+    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_need_step
   implicit none
   private
   public :: read_initial_conditions, read_temperature

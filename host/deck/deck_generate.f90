@@ -6,10 +6,9 @@
 module deck_generate
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_has_param, deck_param_value, deck_normalize
-  use model_types, only: model_find_nset
   use deck_lists, only: itoa, add_member, grow_int, unique
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_int, &
-    ctx_param_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_get_real
+    ctx_param_int, ctx_def_name, ctx_find_nset
   use deck_mesh, only: get_nset, get_elset, grow_nodes, grow_elems
   use deck_assembly, only: read_shift
   implicit none

@@ -4,13 +4,12 @@
 module deck_loads
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: cload_t, dload_t, surface_t, model_find_nset, model_find_amplitude, model_find_elset, &
+  use model_types, only: cload_t, dload_t, surface_t, model_find_amplitude, &
     model_find_surface, dload_bx, dload_grav, dload_pressure, dload_user
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
-    ctx_find_surface, ctx_def_name, ctx_enter_instance, &
-   ctx_fail, ctx_pos, ctx_allow_params, ctx_need_step, ctx_split, &
-    ctx_get_real, ctx_get_int, ctx_required
+    ctx_find_surface, ctx_def_name, ctx_enter_instance, ctx_fail, ctx_pos, ctx_allow_params, ctx_need_step, &
+    ctx_split, ctx_get_real, ctx_get_int, ctx_required
   implicit none
   private
   public :: read_cload, read_dload, read_dsload, read_surface

@@ -6,8 +6,7 @@ module deck_materials
   use model_types, only: material_t, section_t, model_find_material
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
-    ctx_param_int, &
-    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+    ctx_param_int, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
   public :: read_material, read_elastic, read_density, read_expansion, read_user_material, read_depvar, read_solid_section

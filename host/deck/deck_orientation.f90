@@ -4,10 +4,10 @@
 !> angle about it in degrees. Inside a part read for an instance the points are placed with the instance.
 module deck_orientation
   use ldfcz_kinds, only: dp
-  use deck_lines, only: deck_has_param, deck_param_value, deck_normalize
+  use deck_lines, only: deck_param_value, deck_normalize
   use model_types, only: orientation_t
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
-    ctx_get_int, ctx_get_label, ctx_def_name, ctx_pos, ctx_only_value
+    ctx_get_int, ctx_get_label, ctx_def_name, ctx_pos
   implicit none
   private
   public :: read_orientation

@@ -2,7 +2,7 @@
 module deck_steps
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: step_t, node_print_t, model_find_nset, el_print_t
+  use model_types, only: step_t, node_print_t, el_print_t
   use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_find_elset, ctx_fail, ctx_warn, ctx_pos, &
     ctx_allow_params, ctx_need_step, ctx_required, ctx_get_label, ctx_param_int, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_only_value
