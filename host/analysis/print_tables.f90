@@ -8,6 +8,7 @@ module print_tables
   use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user, etype_c3d8, etype_cpe4
   use analysis_core, only: analysis_t
   use stress_measures, only: mises_stress
+  use solid_element, only: polar_rotation
   implicit none
   private
   public :: print_tables_any, print_tables_write
@@ -49,7 +50,7 @@ contains
     do k = 1, st%nelprint
       if (.not. due(st%elprints(k)%frequency)) cycle
       call write_header()
-      call element_tables(u, model, an, st%elprints(k))
+      call element_tables(u, model, an, st%elprints(k), st%nlgeom)
     end do
     if (header) flush (u)
   contains
@@ -118,11 +119,12 @@ contains
   end subroutine node_table
 
   !> The tables of one *EL PRINT request: one per continuum element type in the set.
-  subroutine element_tables(u, model, an, ep)
+  subroutine element_tables(u, model, an, ep, nlgeom)
     integer, intent(in) :: u                !< JOB.dat unit
     type(model_t), intent(in) :: model      !< the model
     type(analysis_t), intent(in) :: an      !< converged state
     type(el_print_t), intent(in) :: ep      !< the request
+    logical, intent(in) :: nlgeom           !< the step's NLGEOM (local axes turn with the material)
     integer, allocatable :: elems(:), kinds(:)
     integer :: k, ik
     if (ep%set_index > 0) then
@@ -136,23 +138,24 @@ contains
       if (.not. any(kinds == model%elem_kind(elems(k)))) kinds = [kinds, model%elem_kind(elems(k))]
     end do
     do ik = 1, size(kinds)
-      call element_table(u, model, an, ep, pack(elems, model%elem_kind(elems) == kinds(ik)), kinds(ik))
+      call element_table(u, model, an, ep, pack(elems, model%elem_kind(elems) == kinds(ik)), kinds(ik), nlgeom)
     end do
   end subroutine element_tables
 
   !> One table of integration-point values of elements of one type.
-  subroutine element_table(u, model, an, ep, elems, kind)
+  subroutine element_table(u, model, an, ep, elems, kind, nlgeom)
     integer, intent(in) :: u                !< JOB.dat unit
     type(model_t), intent(in) :: model      !< the model
     type(analysis_t), intent(in) :: an      !< converged state
     type(el_print_t), intent(in) :: ep      !< the request
     integer, intent(in) :: elems(:)         !< element indices, one type
     integer, intent(in) :: kind             !< their type
+    logical, intent(in) :: nlgeom           !< local axes turn with the material
     character(len=8), allocatable :: cols(:)
     real(dp), allocatable :: val(:, :)
     integer, allocatable :: lab(:), pt(:)
     integer :: k, j, ie, ip, nrow, row, nsv_max, nsv, nt, c
-    real(dp) :: s6(6)
+    real(dp) :: s6(6), sl(6), el(6), t(3, 3)
     ! columns: the request's variables, SDV expanded to every state variable of these elements
     nsv_max = 0
     do k = 1, size(elems)
@@ -185,6 +188,16 @@ contains
         pt(row) = ip
         s6 = 0.0_dp
         s6(1:nt) = an%conv(ie)%stress(:, ip)
+        sl = s6
+        el = 0.0_dp
+        el(1:nt) = an%conv(ie)%stran(:, ip)
+        if (allocated(an%axes(ie)%t)) then
+          ! an *ORIENTATION: components in its local axes, as Abaqus prints them
+          t = an%axes(ie)%t(:, :, ip)
+          if (nlgeom) t = matmul(polar_rotation(point_f(model, an, ie, ip)), t)
+          sl = turned(s6, t, 1.0_dp)
+          el = turned(el, t, 0.5_dp)
+        end if
         do j = 1, size(cols)
           select case (cols(j)(1:1))
           case ('M')
@@ -195,11 +208,11 @@ contains
               if (c <= nsv) val(j, row) = an%conv(ie)%statev(c, ip)
             else
               c = component(cols(j)(2:3))
-              if (c <= nt) val(j, row) = an%conv(ie)%stress(c, ip)
+              if (c <= nt) val(j, row) = sl(c)
             end if
           case ('E', 'L')
             c = component(cols(j)(len_trim(cols(j)) - 1:len_trim(cols(j))))
-            if (c <= nt) val(j, row) = an%conv(ie)%stran(c, ip)
+            if (c <= nt) val(j, row) = el(c)
           end select
         end do
       end do
@@ -220,6 +233,43 @@ contains
     end do
     call summary_lines(u, model, val, lab, pt, ep%summary, ep%totals, .false., 28)
   end subroutine element_table
+
+  !> Components (Abaqus order, shears times shear_factor^-1 in the tensor) of a symmetric tensor in the axes t:
+  !> t^T A t. shear_factor 1 for stress, 0.5 for engineering strain.
+  pure function turned(v, t, shear_factor) result(w)
+    real(dp), intent(in) :: v(6)            !< global components 11, 22, 33, 12, 13, 23
+    real(dp), intent(in) :: t(3, 3)         !< axes as columns
+    real(dp), intent(in) :: shear_factor    !< tensor shear = shear_factor x component
+    real(dp) :: w(6), a(3, 3)
+    a = reshape([v(1), shear_factor * v(4), shear_factor * v(5), shear_factor * v(4), v(2), shear_factor * v(6), &
+      shear_factor * v(5), shear_factor * v(6), v(3)], [3, 3])
+    a = matmul(matmul(transpose(t), a), t)
+    w = [a(1, 1), a(2, 2), a(3, 3), a(1, 2) / shear_factor, a(1, 3) / shear_factor, a(2, 3) / shear_factor]
+  end function turned
+
+  !> Deformation gradient at integration point ip of continuum element ie in the converged state.
+  function point_f(model, an, ie, ip) result(f)
+    type(model_t), intent(in) :: model      !< the model
+    type(analysis_t), intent(in) :: an      !< converged state
+    integer, intent(in) :: ie               !< element
+    integer, intent(in) :: ip               !< integration point
+    real(dp) :: f(3, 3)
+    integer :: a, i, j, node
+    f = 0.0_dp
+    do i = 1, 3
+      f(i, i) = 1.0_dp
+    end do
+    associate (g => an%geo(an%elem_geo(ie)))
+      do a = 1, model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+        node = model%conn(model%conn_ptr(ie) + a - 1)
+        do j = 1, model%ndim
+          do i = 1, model%ndim
+            f(i, j) = f(i, j) + an%u_conv((node - 1) * model%ndim + i) * g%dndx_ref(a, j, ip)
+          end do
+        end do
+      end do
+    end associate
+  end function point_f
 
   !> MAXIMUM / AT NODE|ELEMENT / MINIMUM / AT ... (summary) and TOTAL (totals) lines of a table.
   subroutine summary_lines(u, model, val, lab, pt, summary, totals, is_node, w)

@@ -41,6 +41,7 @@ module solid_element
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
   public :: solid_geometry_t, solid_element_geometry
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
+  public :: polar_rotation
 
   integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
   integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer

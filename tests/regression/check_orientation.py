@@ -13,6 +13,8 @@ X_j = 1 (unit reference volume). Cases:
             (d) the same axes from DEFINITION=NODES. Round-off tolerance.
   nlgeom    NLGEOM=YES, |H| ~ 0.3 (stretch, shear and a rigid rotation): identity axes vs turned axes, P_Q = Q P Q^T
             (the local axes follow the material rotation R of F = R U, so the turned problem is the same problem).
+            In both, the JOB.dat *EL PRINT stresses are in the local axes, as Abaqus prints them: the turned run
+            prints what the unturned one prints (to the 5 printed digits).
   rigid     NLGEOM=YES, turned axes: step 1 stretches (F1 = diag(1.05, 0.98, 1)), step 2 turns the stretched cube
             rigidly by 90 degrees about z in one increment (the Hughes-Winget strain increment of a rigid rotation
             is zero: the Cayley transform is skew). The local axes turn with the material, the local stress stays,
@@ -84,7 +86,7 @@ def deck(path, h, nlgeom, orient, h2=None):
         for i in range(3):
             out.append("%d, %d, %d, %.17g" % (a + 1, i + 1, i + 1, sum(h[i][j] * x[j] for j in range(3))))
     prints = ["*Node Print, nset=FX, totals=YES", "RF", "*Node Print, nset=FY, totals=YES", "RF",
-              "*Node Print, nset=FZ, totals=YES", "RF", "*End Step"]
+              "*Node Print, nset=FZ, totals=YES", "RF", "*El Print, elset=CUBE, summary=NO", "S", "*End Step"]
     out += prints
     if h2 is not None:
         out += ["*Step, nlgeom=YES", "*Static, direct", "1., 1.", "*Boundary"]
@@ -111,6 +113,30 @@ def run(exe, out, user, job, h, nlgeom, orient, h2=None, step=None):
         rows = [r for r in rows if int(r["step"]) == step]
     r = rows[-1]
     return [[float(r["F%s.RF%d" % ("XYZ"[j], i + 1)]) for j in range(3)] for i in range(3)]
+
+
+def printed_stress(out, job):
+    """The S11..S23 rows (8 points) of the last *EL PRINT table in JOB.dat."""
+    with open(os.path.join(out, job + ".dat")) as f:
+        text = f.read()
+    table = text.split("ELEMENT  PT FOOT-")[-1].split("\n")
+    rows = []
+    for line in table[1:]:
+        w = line.split()
+        if len(w) == 8 and w[0] == "1":
+            rows.append([float(v) for v in w[2:]])
+    if len(rows) != 8:
+        fail("%s.dat: %d stress rows in the last table, expected 8" % (job, len(rows)))
+    return rows
+
+
+def compare_printed(name, a, b):
+    """The same printed stress (es15.4: 5 significant digits) at every point."""
+    scale = max(abs(v) for r in a for v in r)
+    err = max(abs(x - y) for ra, rb in zip(a, b) for x, y in zip(ra, rb))
+    print("%-58s max |diff| / max |S| = %.3g (print precision 1e-4)" % (name, err / scale))
+    if not err <= 1e-4 * scale:
+        fail(name)
 
 
 def compare(name, got, want, rtol):
@@ -225,6 +251,8 @@ def main():
         compare("identity orientation = none", pi, p0, 1e-12)
         pq = run(exe, out, user, "turned", hq, False, orientation_lines(q1, (3, 25.0)))
         compare("turned axes under turned loading: P_Q = Q P Q^T", pq, matmul(matmul(q, p0), tr(q)), 1e-10)
+        compare_printed("JOB.dat S in the local axes: turned = plain", printed_stress(out, "turned"),
+                        printed_stress(out, "plain"))
         pn = run(exe, out, user, "nodes", hq, False, orientation_lines(q, nodes=True))
         compare("DEFINITION=NODES: P_Q = Q P Q^T", pn, matmul(matmul(q, p0), tr(q)), 1e-10)
     elif a.case == "instance":
@@ -257,6 +285,8 @@ def main():
         pi = run(exe, out, user, "nl_identity", h, True, ident_lines)
         pq = run(exe, out, user, "nl_turned", hq, True, orientation_lines(q1, (3, 25.0)))
         compare("NLGEOM, turned axes under turned loading: P_Q = Q P Q^T", pq, matmul(matmul(q, pi), tr(q)), 1e-10)
+        compare_printed("NLGEOM: JOB.dat S in the turning local axes: turned = identity",
+                        printed_stress(out, "nl_turned"), printed_stress(out, "nl_identity"))
     print("PASS")
 
 
