@@ -78,7 +78,7 @@ contains
   end subroutine apply_parameters
 
   !> One data line 'name = expression'.
-  subroutine define(line, pars, np, stat, errmsg)
+  recursive subroutine define(line, pars, np, stat, errmsg)
     character(len=*), intent(in) :: line                 !< the data line
     type(param_value_t), intent(inout) :: pars(:)        !< parameters so far
     integer, intent(inout) :: np                         !< their number
@@ -91,6 +91,12 @@ contains
     character(len=32) :: b
     stat = 2
     errmsg = ''
+    ! a Python comment (a '#' outside quotes) ends the definition (the Abaqus parameter lines are Python statements)
+    k = comment_start(line)
+    if (k > 0) then
+      call define(line(1:k - 1), pars, np, stat, errmsg)
+      return
+    end if
     k = index(line, '=')
     if (k == 0) then
       errmsg = 'expected: name = expression'
@@ -149,6 +155,25 @@ contains
     pars(np) = pv
     stat = 0
   end subroutine define
+
+  !> Position of a '#' outside quotes (0: none).
+  pure integer function comment_start(line) result(k)
+    character(len=*), intent(in) :: line  !< definition line
+    character(len=1) :: q
+    integer :: i
+    q = ' '
+    k = 0
+    do i = 1, len(line)
+      if (q /= ' ') then
+        if (line(i:i) == q) q = ' '
+      else if (line(i:i) == '"' .or. line(i:i) == "'") then
+        q = line(i:i)
+      else if (line(i:i) == '#') then
+        k = i
+        return
+      end if
+    end do
+  end function comment_start
 
   !> Replace every <name> in text by the parameter's value.
   subroutine substitute(text, pars, stat, errmsg)

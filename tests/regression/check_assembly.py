@@ -173,7 +173,7 @@ def case_cae(exe, out, decks):
 
 
 GEN_PARAMS = ["*Parameter", "length = 4.", "n = 4", "nlast = n + 1", "E_mod = 2.0e5 / 2", "nu = 0.25",
-              "strain = 0.001", "u = length * strain", "far = 'Far'", "zc = 200", "zinc = 100", "dt = 1 / 2"]
+              "strain = 0.001  # a Python comment", "u = length * strain", "far = 'Far'", "zc = 200", "zinc = 100", "dt = 1 / 2"]
 
 
 def gen_mesh():
