@@ -13,7 +13,7 @@ module deck_context
   public :: deck_context_t, flen
   public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos
   public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
-  public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+  public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_continued
   public :: part_def_t, scope_model, scope_part, scope_assembly
   public :: ctx_enter_instance, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_find_surface, ctx_is_label, &
     ctx_get_label
@@ -246,6 +246,19 @@ contains
       f(i) = g(i)
     end do
   end subroutine ctx_split
+
+  !> True when data record irec ends with a comma and a data record of the block follows: the readers whose
+  !> logical data line may span several lines (*ELEMENT with more nodes than a line holds, *INITIAL CONDITIONS,
+  !> TYPE=SOLUTION) continue on it; for every other keyword a line ending with a comma is complete.
+  logical function ctx_continued(ctx, irec)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    integer, intent(in) :: irec              !< record index
+    integer :: n
+    ctx_continued = .false.
+    if (irec >= ctx%ir_next - 1) return
+    n = len_trim(ctx%src%rec(irec)%text)
+    if (n > 0) ctx_continued = ctx%src%rec(irec)%text(n:n) == ','
+  end function ctx_continued
 
   !> Real data field (error at record irec when not a number).
   logical function ctx_get_real(ctx, irec, field, v)

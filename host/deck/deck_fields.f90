@@ -7,7 +7,7 @@ module deck_fields
   use model_types, only: initial_condition_t, init_stress, init_solution, cload_t, &
     model_find_amplitude
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
+  use deck_context, only: deck_context_t, flen, ctx_continued, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
     ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_need_step
   implicit none
   private
@@ -22,7 +22,8 @@ contains
     type(initial_condition_t), allocatable :: tmp(:)
     character(len=flen), allocatable :: f(:)
     character(len=:), allocatable :: v
-    integer :: i, n, k, kind, id, last
+    integer :: i, n, k, kind, id, last, m
+    character(len=flen), allocatable :: g(:)
     call ctx_allow_params(ctx, [character(len=8) :: 'TYPE'])
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
@@ -38,11 +39,22 @@ contains
       call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (TEMPERATURE, STRESS, SOLUTION)')
       return
     end select
-    do i = ctx%ir + 1, ctx%ir_next - 1
+    i = ctx%ir
+    do while (i < ctx%ir_next - 1)
+      i = i + 1
       call ctx_split(ctx, i, f, n)
       ic = empty
       ic%kind = kind
       ic%pos = ctx_pos(ctx, i)
+      if (kind == init_solution) then
+        ! one logical line per element or set: a line ending with a comma continues on the next
+        do while (ctx_continued(ctx, i))
+          i = i + 1
+          call ctx_split(ctx, i, g, m)
+          f = [f(1:n), g(1:m)]
+          n = n + m
+        end do
+      end if
       last = n
       do while (last > 1)
         if (len_trim(f(last)) > 0) exit

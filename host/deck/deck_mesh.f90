@@ -7,7 +7,7 @@ module deck_mesh
     model_find_elset, model_find_user_type
   use deck_lists, only: itoa, add_member, grow_int
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
-    ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance
+    ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued
   implicit none
   private
   public :: read_node, read_element, read_set
@@ -120,7 +120,7 @@ contains
         i = i + 1
         call ctx_split(ctx, i, f, n)
         ! a line ending with a comma before the element's nodes are complete continues on the next line
-        do while (n < nn + 1 .and. ends_with_comma(ctx%src%rec(i)%text) .and. i < ctx%ir_next - 1)
+        do while (n < nn + 1 .and. ctx_continued(ctx, i))
           i = i + 1
           call ctx_split(ctx, i, g, m)
           f = [f(1:n), g(1:m)]
@@ -159,13 +159,6 @@ contains
       end do
     end associate
   end subroutine read_element
-
-  !> True when a record's text ends with a comma.
-  pure logical function ends_with_comma(text)
-    character(len=*), intent(in) :: text  !< record text (trimmed)
-    ends_with_comma = .false.
-    if (len_trim(text) > 0) ends_with_comma = text(len_trim(text):len_trim(text)) == ','
-  end function ends_with_comma
 
   !> Model dimension from an element type: 2 (plane strain) or 3, the same for all elements.
   subroutine set_dim(ctx, nd)
