@@ -236,3 +236,24 @@ set_tests_properties(dropins_abaqus PROPERTIES LABELS "deck" TIMEOUT 600)
 add_test(NAME package_find_ldfcz COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/package/check_package.sh ${PROJECT_BINARY_DIR}
   ${LDFCZ_RUNS}/package_find_ldfcz ${CMAKE_Fortran_COMPILER})
 set_tests_properties(package_find_ldfcz PROPERTIES LABELS "deck" TIMEOUT 300)
+
+# model structure and syntax (tests/regression/check_assembly.py): two instances of a part, one translated and
+# rotated, tied in the assembly, against closed form and the deck flattened by hand; decks in Abaqus/CAE's style
+# (decks/cae) against closed forms
+foreach(case assembly cae generate)
+  add_test(NAME deck_structure_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_assembly.py
+    --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/structure_${case} --decks ${LDFCZ_DECKS} --case ${case})
+  set_tests_properties(deck_structure_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+# *NODE PRINT / *EL PRINT tables in JOB.dat (per printed increment, FREQUENCY, TOTALS, SUMMARY, all nodes)
+add_test(NAME deck_print_tables COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_print.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/print_tables)
+set_tests_properties(deck_print_tables PROPERTIES LABELS "deck" TIMEOUT 300)
+# *ORIENTATION: an orthotropic UMAT with turned axes under turned loading against the unturned one (small strain
+# with the closed form, NLGEOM, a rigid rotation after a stretch) (tests/regression/check_orientation.py)
+foreach(case small nlgeom rigid instance)
+  add_test(NAME deck_orientation_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_orientation.py
+    --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/orientation_${case} --case ${case}
+    --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_ortho.f90)
+  set_tests_properties(deck_orientation_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()

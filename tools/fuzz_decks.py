@@ -3,7 +3,7 @@
 
   python3 tools/fuzz_decks.py [--exe BIN] [--count N] [--time SECONDS] [--seed S] [--timeout T] [--report FILE]
 
-Takes the valid decks of decks/single and decks/patch, applies 1-3 random edits to one of them (delete, duplicate or
+Takes the valid decks of decks/single, decks/patch and decks/cae, applies 1-3 random edits to one of them (delete, duplicate or
 swap lines; replace a number by NaN, Inf, 1e999, -0, a huge integer, text or nothing; drop or add commas; misspell or
 inject keywords and parameters; truncate; inject control/non-ASCII bytes, very long lines, a trailing comma), and
 runs bin/ldfcz on the result with a short timeout. A crash is a signal, an exit status other than 0, 2 or 3, or a
@@ -35,7 +35,9 @@ KEYWORDS = ["*NODE", "*ELEMENT, TYPE=C3D8", "*NSET, NSET=A, GENERATE", "*ELSET, 
             "*ELASTIC", "*STEP", "*STATIC", "*END STEP", "*BOUNDARY", "*INCLUDE, INPUT=", "*USER ELEMENT, TYPE=U1",
             "*UEL PROPERTY", "*AMPLITUDE, NAME=A", "*CONTROLS, PARAMETERS=FIELD", "*DEPVAR", "*USER MATERIAL",
             "*SOLID SECTION", "*OUTPUT, FIELD", "*NODE PRINT", "*HEADING", "**", "*", "*,", "*STEP, INC=",
-            "*INCLUDE, INPUT=/dev/zero", "*INCLUDE, INPUT=/"]
+            "*INCLUDE, INPUT=/dev/zero", "*INCLUDE, INPUT=/", "*PART, NAME=P", "*END PART", "*ASSEMBLY",
+            "*END ASSEMBLY", "*INSTANCE, NAME=I, PART=P", "*END INSTANCE", "*PARAMETER", "<x>", "*NGEN", "*NFILL",
+            "*NCOPY, OLD SET=A, CHANGE NUMBER=5, SHIFT", "*ELGEN", "*ORIENTATION, NAME=O", "*EL PRINT", "*MONITOR"]
 
 
 def mutate(lines, rng):
@@ -118,7 +120,8 @@ def main():
     a = ap.parse_args()
     rng = random.Random(a.seed)
     seeds = sorted(glob.glob(os.path.join(ROOT, "decks", "single", "*.inp")) +
-                   glob.glob(os.path.join(ROOT, "decks", "patch", "*.inp")))
+                   glob.glob(os.path.join(ROOT, "decks", "patch", "*.inp")) +
+                   glob.glob(os.path.join(ROOT, "decks", "cae", "*.inp")))
     texts = {s: open(s).read().split("\n") for s in seeds}
     tmp = tempfile.mkdtemp(prefix="ldfcz_fuzz_")
     for inc in glob.glob(os.path.join(ROOT, "decks", "single", "*.inc")):

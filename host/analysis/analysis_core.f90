@@ -4,7 +4,7 @@
 module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, etype_c3d8, etype_cpe4, etype_user
+  use model_types, only: model_t, etype_c3d8, etype_cpe4, etype_user, orientation_axes
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
@@ -33,6 +33,11 @@ module analysis_core
     real(dp) :: energy(8) = 0.0_dp         !< user element ENERGY; continuum: (2) SSE and (4) SPD integrals
   end type elem_state_t
 
+  !> Local material axes of a continuum element with an *ORIENTATION (unallocated: none).
+  type :: elem_axes_t
+    real(dp), allocatable :: t(:, :, :)    !< (3, 3, nip) axes as columns at each integration point, reference
+  end type elem_axes_t
+
   type :: analysis_t
     integer :: ndim = 3                         !< 2 or 3
     integer :: ndof = 0                         !< ndim * nnode
@@ -51,6 +56,7 @@ module analysis_core
     type(solid_material_t), allocatable :: mats(:)  !< per section
     type(elem_state_t), allocatable :: conv(:)  !< converged state
     type(elem_state_t), allocatable :: trial(:) !< state of the last element loop
+    type(elem_axes_t), allocatable :: axes(:)   !< (nelem) local material axes (*ORIENTATION)
     real(dp), allocatable :: u(:)               !< current total displacement
     real(dp), allocatable :: u_conv(:)          !< converged displacement
     real(dp), allocatable :: fint(:)            !< internal force (all dofs)
@@ -234,6 +240,8 @@ contains
       end if
       an%conv(ie)%energy = 0.0_dp
     end do
+    call element_axes(an, model, stat, errmsg)
+    if (stat /= 0) return
     call apply_initial_conditions(an, model, stat, errmsg)
     if (stat /= 0) return
     call constraints_build(an%cs, model, an%used, stat, errmsg)
@@ -526,7 +534,7 @@ contains
           energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
           temp_nodes=an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
           dtemp_nodes=an%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
-          an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)))
+          an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t)
         st%energy = 0.0_dp
         st%energy(2) = e2(1)
         st%energy(4) = e2(2)
@@ -553,6 +561,44 @@ contains
       end if
     end if
   end subroutine element_compute
+
+  !> Local material axes at the integration points of the elements whose section has an *ORIENTATION (the points'
+  !> reference coordinates for CYLINDRICAL). A plane element's axes must keep local 3 along z.
+  subroutine element_axes(an, model, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok, 2 undefined axes
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: ie, ip, nn, io, a
+    real(dp) :: x(3)
+    logical :: ok
+    stat = 0
+    errmsg = ''
+    allocate (an%axes(model%nelem))
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) == etype_user) cycle
+      io = model%sections(model%elem_section(ie))%iorient
+      if (io == 0) cycle
+      nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+      allocate (an%axes(ie)%t(3, 3, an%elem_nip(ie)))
+      do ip = 1, an%elem_nip(ie)
+        x = 0.0_dp
+        do a = 1, nn
+          x = x + an%geo(an%elem_geo(ie))%nfun(a, ip) * model%x(:, model%conn(model%conn_ptr(ie) + a - 1))
+        end do
+        call orientation_axes(model%orientations(io), x, an%axes(ie)%t(:, :, ip), ok)
+        if (ok .and. model%ndim == 2) ok = abs(abs(an%axes(ie)%t(3, 3, ip)) - 1.0_dp) <= 1.0e-9_dp
+        if (.not. ok) then
+          stat = 2
+          errmsg = model%orientations(io)%pos%file//':'//itoa(model%orientations(io)%pos%line)// &
+            ': *ORIENTATION: orientation '//trim(model%orientations(io)%name)//' has no axes at point '// &
+            itoa(ip)//' of element '//itoa(model%elem_id(ie))//' (coinciding points, a point on the cylinder '// &
+            'axis, or, in a plane model, local 3 not along z)'
+          return
+        end if
+      end do
+    end do
+  end subroutine element_axes
 
   !> *INITIAL CONDITIONS, TYPE=STRESS (every integration point of the element gets the given stress; not in
   !> equilibrium, it is equilibrated by the first increment as in Abaqus without *GEOSTATIC) and TYPE=SOLUTION (the

@@ -2,7 +2,7 @@
 !> an accuracy bound on the cohesive opening increment (paper section 7), commit on convergence, output per
 !> increment (CSV, VTU frames, status) and the restart hooks (continue from a restart file, write one).
 module static_step
-  use, intrinsic :: iso_fortran_env, only: error_unit
+  use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, amplitude_factor
   use step_loads, only: load_state_t, load_state_init, load_step_begin, load_vector
@@ -20,6 +20,7 @@ module static_step
   use run_summary, only: run_summary_t, run_summary_continue, cohesive_ratio, statev_increment
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
   use field_frame, only: write_field_frame
+  use print_tables, only: print_tables_any, print_tables_write
   use stop_report, only: stop_message
   use solver_text, only: itoa, rtoa
   use stop_signal, only: stop_signal_install, stop_signal_received, stop_signal_name
@@ -68,6 +69,7 @@ contains
     type(restart_state_t) :: rs, fp
     logical :: restarting, resumed, fresh_csv
     integer :: is_first, csv_rows, run_increments, sig
+    integer :: dat                      !< JOB.dat unit (-1: no printed output requested)
 
     call system_clock(count_rate=rate)
     summarize = .false.
@@ -112,6 +114,14 @@ contains
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
       itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver'//msg// &
       '; UEL: '//routines%uel_origin//'; UMAT: '//routines%umat_origin)
+    ! the label map of flattened part instances (output and messages use the model labels)
+    do k = 1, model%ninstance
+      associate (in => model%instances(k))
+        call output_log(out, 'ldfcz: instance '//trim(in%name)//' of part '//trim(in%part)//': model label = '// &
+          'part label + '//itoa(in%node_offset)//' (nodes, up to '//itoa(in%node_last)//'), + '// &
+          itoa(in%elem_offset)//' (elements, up to '//itoa(in%elem_last)//')')
+      end associate
+    end do
     summary%newton = opt%newton
     summary%plastic_statev = opt%plastic_statev
     if (summary%plastic_statev < 0) then
@@ -159,6 +169,7 @@ contains
     allocate (colnames(k), col_set(k), col_var(k))
     do is = 1, model%nstep
       do i = 1, model%steps(is)%nprint
+        if (model%steps(is)%prints(i)%set_index == 0) cycle  ! every node: the JOB.dat table only
         do j = 1, size(model%steps(is)%prints(i)%vars)
           msg = trim(model%steps(is)%prints(i)%nset)//'.'//trim(model%steps(is)%prints(i)%vars(j))
           if (any(colnames(1:ncol) == msg)) cycle
@@ -183,6 +194,10 @@ contains
     else
       call output_csv_header(out, colnames(1:ncol))
     end if
+    ! JOB.dat: the *NODE PRINT / *EL PRINT tables, on unit 6, which output_open has pointed at JOB.dat (continued
+    ! after a restart): what user routines write there interleaves with the tables as in Abaqus
+    dat = -1
+    if (print_tables_any(model)) dat = output_unit
     summarize = .true.
     call stop_signal_install()
 
@@ -337,7 +352,14 @@ contains
               end if
             end if
             if (converged) then
-              call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
+              if (model%monitor_node > 0) then
+                ! *MONITOR: the dof's displacement at the end of the increment, on the converged line
+                call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged  monitor U'// &
+                  itoa(model%monitor_dof)//' '//rtoa(an%u((model%monitor_node - 1) * model%ndim + model%monitor_dof)), &
+                  ratios(1:iter + 1))
+              else
+                call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
+              end if
               exit attempts
             end if
             call newton_forget_factors(ns)
@@ -413,6 +435,8 @@ contains
           end do
           call output_csv_row(out, is, kinc, sc%t, t_total0 + sc%t, colv)
           csv_rows = csv_rows + 1
+          if (dat /= -1) call print_tables_write(dat, model, an, st, is, kinc, sc%t, t_total0 + sc%t, dt, &
+            step_control_done(sc))
           if (st%field_output) then
             if (st%field_intervals > 0) then
               if (sc%t >= next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(sc)) then
@@ -467,6 +491,7 @@ contains
       end associate
     end do steps
     call external_db(3, 0, t_reached, 0.0_dp, min(is, model%nstep), kinc)
+    if (dat /= -1) flush (dat)
     if (ns%tangents_skipped > 0) call output_log(out, 'ldfcz: Newton auto: '//itoa(ns%tangents_skipped)// &
       ' iterations expected to converge assembled without a tangent, '//itoa(ns%stale_solves)// &
       ' of them not converged and solved with the previous iterate''s tangent (this run)')

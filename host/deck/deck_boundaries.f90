@@ -3,10 +3,10 @@
 module deck_boundaries
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: amplitude_t, boundary_t, model_find_nset, model_find_amplitude
+  use model_types, only: amplitude_t, boundary_t, model_find_amplitude
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
-    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
+  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_fail, ctx_pos, &
+    ctx_allow_params, ctx_required, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
   implicit none
   private
   public :: read_amplitude, read_boundary
@@ -122,8 +122,8 @@ contains
         call ctx_fail(ctx, i, 'expected: node or node set, first dof[, last dof[, value]] or a type (XSYMM, ...)')
         return
       end if
-      if (verify(trim(f(1)), '0123456789+-') == 0) then
-        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+      if (ctx_is_label(ctx, f(1))) then
+        if (.not. ctx_get_label(ctx, i, f(1), .true., id)) return
         if (id < 1) then
           call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
           return
@@ -131,7 +131,7 @@ contains
         allocate (bc%nodes(1))
         bc%nodes(1) = -id  ! resolved in finish_model
       else
-        iset = model_find_nset(ctx%model, deck_normalize(f(1)))
+        iset = ctx_find_nset(ctx, f(1))
         if (iset == 0) then
           call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(1)))
           return

@@ -3,10 +3,10 @@
 module deck_constraints
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_normalize, deck_param_value, deck_has_param
-  use model_types, only: cload_t, equation_t, tie_t, model_find_nset, model_find_surface
+  use model_types, only: cload_t, equation_t, tie_t
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, &
-    ctx_get_int
+  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_surface, &
+    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
   public :: read_equation, read_tie, read_mpc
@@ -63,15 +63,15 @@ contains
           end if
           associate (t => eqn%terms(k))
             t%pos = ctx_pos(ctx, i)
-            if (verify(trim(f(3 * j - 2)), '0123456789+-') == 0) then
-              if (.not. ctx_get_int(ctx, i, f(3 * j - 2), id)) return
+            if (ctx_is_label(ctx, f(3 * j - 2))) then
+              if (.not. ctx_get_label(ctx, i, f(3 * j - 2), .true., id)) return
               if (id < 1) then
                 call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
                 return
               end if
               t%nodes = [-id]
             else
-              iset = model_find_nset(ctx%model, deck_normalize(f(3 * j - 2)))
+              iset = ctx_find_nset(ctx, f(3 * j - 2))
               if (iset == 0) then
                 call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(3 * j - 2)))
                 return
@@ -132,8 +132,8 @@ contains
         call ctx_fail(ctx, i, 'expected: slave surface, master surface')
         return
       end if
-      t%slave = model_find_surface(ctx%model, deck_normalize(f(1)))
-      t%master = model_find_surface(ctx%model, deck_normalize(f(2)))
+      t%slave = ctx_find_surface(ctx, f(1))
+      t%master = ctx_find_surface(ctx, f(2))
       if (t%slave == 0 .or. t%master == 0) then
         call ctx_fail(ctx, i, 'undefined surface '//deck_normalize(f(merge(1, 2, t%slave == 0))))
         return
@@ -178,8 +178,8 @@ contains
         return
       end if
       do j = 1, 2
-        if (verify(trim(f(j + 1)), '0123456789+-') == 0) then
-          if (.not. ctx_get_int(ctx, i, f(j + 1), id)) return
+        if (ctx_is_label(ctx, f(j + 1))) then
+          if (.not. ctx_get_label(ctx, i, f(j + 1), .true., id)) return
           if (id < 1) then
             call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
             return
@@ -191,7 +191,7 @@ contains
           end if
           nodes(1, j) = -id
         else
-          iset = model_find_nset(ctx%model, deck_normalize(f(j + 1)))
+          iset = ctx_find_nset(ctx, f(j + 1))
           if (iset == 0) then
             call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(j + 1)))
             return

@@ -6,16 +6,30 @@ module deck_context
   use, intrinsic :: iso_fortran_env, only: error_unit
   use deck_lines, only: deck_source_t, deck_param_t, deck_split_fields, deck_parse_real, deck_parse_int, deck_where, &
     deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: model_t, source_pos_t
+  use model_types, only: model_t, source_pos_t, model_find_nset, model_find_elset, model_find_surface
   use deck_lists, only: itoa
   implicit none
   private
   public :: deck_context_t, flen
   public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos
   public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
-  public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+  public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_continued
+  public :: part_def_t, scope_model, scope_part, scope_assembly
+  public :: ctx_enter_instance, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_find_surface, ctx_is_label, &
+    ctx_get_label
 
   integer, parameter :: flen = 256  !< longest data field
+  integer, parameter :: scope_model = 0     !< model level (a deck without parts, or outside *ASSEMBLY)
+  integer, parameter :: scope_part = 1      !< a part's blocks, read for one of its instances
+  integer, parameter :: scope_assembly = 2  !< between *ASSEMBLY and *END ASSEMBLY
+
+  !> A *PART ... *END PART definition: its blocks are read once per *INSTANCE of it.
+  type :: part_def_t
+    character(len=80) :: name = ''  !< upper-case part name
+    integer :: ir1 = 0              !< first record after *PART
+    integer :: ir2 = 0              !< the *END PART record
+    integer :: ninst = 0            !< instances of it
+  end type part_def_t
 
   !> Reader state. The keyword block being read is records ir (the keyword line) .. ir_next-1.
   type :: deck_context_t
@@ -36,6 +50,20 @@ module deck_context
     integer, allocatable :: node_rec(:)               !< record of each node (duplicate-id messages)
     integer, allocatable :: elem_rec(:)               !< record of each element
     integer, allocatable :: conn_raw(:)               !< connectivity as user node ids until finish
+    ! model structure: the scope of the labels and names of the block being read (docs/host.md, parts)
+    integer :: scope = scope_model                    !< scope_model, scope_part or scope_assembly
+    logical :: has_assembly = .false.                 !< the deck has an *ASSEMBLY
+    character(len=96) :: def_prefix = ''              !< prefix of names defined ('INSTANCE.' in a part)
+    character(len=96) :: ref_prefix = ''              !< prefix tried first for names referenced
+    integer :: node_off = 0                           !< added to the node labels of the scope
+    integer :: elem_off = 0                           !< added to the element labels of the scope
+    logical :: placed = .false.                       !< coordinates are placed: x = place_r x + place_c
+    real(dp) :: place_r(3, 3) = 0.0_dp                !< instance rotation
+    real(dp) :: place_c(3) = 0.0_dp                   !< instance shift
+    integer :: top_node = 0                           !< largest model node label so far (instance offsets)
+    integer :: top_elem = 0                           !< largest model element label so far
+    type(part_def_t), allocatable :: parts(:)         !< *PART definitions
+    integer :: npart = 0
   end type deck_context_t
 
 contains
@@ -119,12 +147,26 @@ contains
 
   ! ------------------------------------------------------------------ parameters
 
-  !> Error when a parameter outside the list is present.
+  !> Error when a parameter outside the list is present. A parameter name that begins exactly one of the allowed
+  !> names is taken for it (Abaqus reads parameters abbreviated as far as they stay unique: FREQ for FREQUENCY).
   subroutine ctx_allow_params(ctx, names)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=*), intent(in) :: names(:)    !< allowed parameter names
-    integer :: i
+    integer :: i, j, nmatch, jmatch, n
     do i = 1, size(ctx%params)
+      if (all(ctx%params(i)%name /= names)) then
+        n = len(ctx%params(i)%name)
+        nmatch = 0
+        jmatch = 0
+        do j = 1, size(names)
+          if (n == 0 .or. n > len_trim(names(j))) cycle
+          if (names(j)(1:n) == ctx%params(i)%name) then
+            nmatch = nmatch + 1
+            jmatch = j
+          end if
+        end do
+        if (nmatch == 1) ctx%params(i)%name = trim(names(jmatch))
+      end if
       if (all(ctx%params(i)%name /= names)) then
         call ctx_fail(ctx, ctx%ir, 'unsupported parameter '//ctx%params(i)%name)
         return
@@ -205,6 +247,19 @@ contains
     end do
   end subroutine ctx_split
 
+  !> True when data record irec ends with a comma and a data record of the block follows: the readers whose
+  !> logical data line may span several lines (*ELEMENT with more nodes than a line holds, *INITIAL CONDITIONS,
+  !> TYPE=SOLUTION) continue on it; for every other keyword a line ending with a comma is complete.
+  logical function ctx_continued(ctx, irec)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    integer, intent(in) :: irec              !< record index
+    integer :: n
+    ctx_continued = .false.
+    if (irec >= ctx%ir_next - 1) return
+    n = len_trim(ctx%src%rec(irec)%text)
+    if (n > 0) ctx_continued = ctx%src%rec(irec)%text(n:n) == ','
+  end function ctx_continued
+
   !> Real data field (error at record irec when not a number).
   logical function ctx_get_real(ctx, irec, field, v)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
@@ -230,5 +285,134 @@ contains
     if (.not. ok) call ctx_fail(ctx, irec, why)
     ctx_get_int = ok
   end function ctx_get_int
+
+  ! ------------------------------------------------------------------ scoped names and labels
+
+  !> Name of a set or surface defined by the current block (prefixed by 'INSTANCE.' inside a part).
+  function ctx_def_name(ctx, field) result(name)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    character(len=*), intent(in) :: field    !< name as written
+    character(len=:), allocatable :: name
+    name = trim(ctx%def_prefix)//deck_normalize(field)
+  end function ctx_def_name
+
+  !> Node set referenced by name: the scope's own first ('INSTANCE.name' in a part or with INSTANCE=), then the
+  !> name as written (an assembly set, or a qualified 'INSTANCE.SET'). 0 when undefined.
+  integer function ctx_find_nset(ctx, field) result(k)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    character(len=*), intent(in) :: field    !< name as written
+    k = 0
+    if (len_trim(ctx%ref_prefix) > 0) k = model_find_nset(ctx%model, trim(ctx%ref_prefix)//deck_normalize(field))
+    if (k == 0 .and. ctx%scope /= scope_part) k = model_find_nset(ctx%model, deck_normalize(field))
+  end function ctx_find_nset
+
+  !> Element set referenced by name (scoped as ctx_find_nset).
+  integer function ctx_find_elset(ctx, field) result(k)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    character(len=*), intent(in) :: field    !< name as written
+    k = 0
+    if (len_trim(ctx%ref_prefix) > 0) k = model_find_elset(ctx%model, trim(ctx%ref_prefix)//deck_normalize(field))
+    if (k == 0 .and. ctx%scope /= scope_part) k = model_find_elset(ctx%model, deck_normalize(field))
+  end function ctx_find_elset
+
+  !> Surface referenced by name (scoped as ctx_find_nset).
+  integer function ctx_find_surface(ctx, field) result(k)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    character(len=*), intent(in) :: field    !< name as written
+    k = 0
+    if (len_trim(ctx%ref_prefix) > 0) k = model_find_surface(ctx%model, trim(ctx%ref_prefix)//deck_normalize(field))
+    if (k == 0 .and. ctx%scope /= scope_part) k = model_find_surface(ctx%model, deck_normalize(field))
+  end function ctx_find_surface
+
+  !> True when a data field is a node or element label: digits, or 'INSTANCE.label' of a defined instance.
+  logical function ctx_is_label(ctx, field)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    character(len=*), intent(in) :: field    !< field text
+    ctx_is_label = verify(trim(field), '0123456789+-') == 0
+    if (.not. ctx_is_label) ctx_is_label = instance_of(ctx, field) > 0
+  end function ctx_is_label
+
+  !> Model label of a node (is_node) or element label field: plain labels belong to the current scope (offset
+  !> added), 'INSTANCE.label' to that instance. False (and an error at record irec) when not a positive label.
+  logical function ctx_get_label(ctx, irec, field, is_node, id) result(ok)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record of the field
+    character(len=*), intent(in) :: field       !< field text
+    logical, intent(in) :: is_node              !< node (true) or element label
+    integer, intent(out) :: id                  !< model label (not a part of ctx)
+    integer :: k, off
+    character(len=:), allocatable :: t
+    t = trim(adjustl(field))
+    k = instance_of(ctx, t)
+    if (k > 0) then
+      off = merge(ctx%model%instances(k)%node_offset, ctx%model%instances(k)%elem_offset, is_node)
+      t = t(index(t, '.', back=.true.) + 1:)
+    else
+      off = merge(ctx%node_off, ctx%elem_off, is_node)
+    end if
+    ok = ctx_get_int(ctx, irec, t, id)
+    if (.not. ok) return
+    if (id < 1) then
+      call ctx_fail(ctx, irec, trim(merge('node   ', 'element', is_node))//' labels must be positive, got '//t)
+      ok = .false.
+      return
+    end if
+    if (id > huge(id) - off) then
+      call ctx_fail(ctx, irec, 'label too large: '//t)
+      ok = .false.
+      return
+    end if
+    id = id + off
+    if (k > 0) then
+      ! the instance is complete when it is referenced: a label beyond its part's is an error here
+      if (id > merge(ctx%model%instances(k)%node_last, ctx%model%instances(k)%elem_last, is_node)) then
+        call ctx_fail(ctx, irec, 'instance '//trim(ctx%model%instances(k)%name)//' has no '// &
+          trim(merge('node   ', 'element', is_node))//' '//t)
+        ok = .false.
+      end if
+    end if
+  end function ctx_get_label
+
+  !> INSTANCE= on a set or surface definition (assembly level only): labels and names of the data lines refer to
+  !> that instance (the caller restores the scope).
+  subroutine ctx_enter_instance(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=:), allocatable :: v
+    integer :: k
+    if (.not. deck_has_param(ctx%params, 'INSTANCE')) return
+    if (ctx%scope /= scope_assembly) then
+      call ctx_fail(ctx, ctx%ir, 'INSTANCE= only inside *ASSEMBLY')
+      return
+    end if
+    v = deck_normalize(ctx_required(ctx, 'INSTANCE'))
+    if (ctx%stat /= 0) return
+    do k = 1, ctx%model%ninstance
+      if (ctx%model%instances(k)%name == v) then
+        ctx%ref_prefix = v//'.'
+        ctx%node_off = ctx%model%instances(k)%node_offset
+        ctx%elem_off = ctx%model%instances(k)%elem_offset
+        return
+      end if
+    end do
+    call ctx_fail(ctx, ctx%ir, 'undefined instance '//v//' (an *INSTANCE defined before in this *ASSEMBLY)')
+  end subroutine ctx_enter_instance
+
+  !> Instance of a field 'INSTANCE.label' (0 when the field is not of that form or names no instance).
+  integer function instance_of(ctx, field) result(k)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    character(len=*), intent(in) :: field    !< field text
+    integer :: j
+    character(len=:), allocatable :: head
+    k = 0
+    if (ctx%scope == scope_part .or. ctx%model%ninstance == 0) return
+    j = index(field, '.', back=.true.)
+    if (j <= 1 .or. j >= len_trim(field)) return
+    if (verify(trim(field(j + 1:)), '0123456789') /= 0) return
+    head = deck_normalize(field(1:j - 1))
+    do k = 1, ctx%model%ninstance
+      if (ctx%model%instances(k)%name == head) return
+    end do
+    k = 0
+  end function instance_of
 
 end module deck_context

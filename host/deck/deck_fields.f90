@@ -4,11 +4,11 @@
 module deck_fields
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_normalize, deck_has_param
-  use model_types, only: initial_condition_t, init_stress, init_solution, model_find_elset, cload_t, &
-    model_find_nset, model_find_amplitude
+  use model_types, only: initial_condition_t, init_stress, init_solution, cload_t, &
+    model_find_amplitude
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, &
-    ctx_get_int, ctx_need_step
+  use deck_context, only: deck_context_t, flen, ctx_continued, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
+    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_need_step
   implicit none
   private
   public :: read_initial_conditions, read_temperature
@@ -22,7 +22,8 @@ contains
     type(initial_condition_t), allocatable :: tmp(:)
     character(len=flen), allocatable :: f(:)
     character(len=:), allocatable :: v
-    integer :: i, n, k, kind, id, last
+    integer :: i, n, k, kind, id, last, m
+    character(len=flen), allocatable :: g(:)
     call ctx_allow_params(ctx, [character(len=8) :: 'TYPE'])
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
@@ -38,11 +39,22 @@ contains
       call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (TEMPERATURE, STRESS, SOLUTION)')
       return
     end select
-    do i = ctx%ir + 1, ctx%ir_next - 1
+    i = ctx%ir
+    do while (i < ctx%ir_next - 1)
+      i = i + 1
       call ctx_split(ctx, i, f, n)
       ic = empty
       ic%kind = kind
       ic%pos = ctx_pos(ctx, i)
+      if (kind == init_solution) then
+        ! one logical line per element or set: a line ending with a comma continues on the next
+        do while (ctx_continued(ctx, i))
+          i = i + 1
+          call ctx_split(ctx, i, g, m)
+          f = [f(1:n), g(1:m)]
+          n = n + m
+        end do
+      end if
       last = n
       do while (last > 1)
         if (len_trim(f(last)) > 0) exit
@@ -56,15 +68,15 @@ contains
         call ctx_fail(ctx, i, 'at most 6 stress components (S11, S22, S33, S12, S13, S23)')
         return
       end if
-      if (verify(trim(f(1)), '0123456789+-') == 0) then
-        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+      if (ctx_is_label(ctx, f(1))) then
+        if (.not. ctx_get_label(ctx, i, f(1), .false., id)) return
         if (id < 1) then
           call ctx_fail(ctx, i, 'element ids must be positive, got '//itoa(id))
           return
         end if
         ic%elems = [-id]
       else
-        ic%elset = model_find_elset(ctx%model, deck_normalize(f(1)))
+        ic%elset = ctx_find_elset(ctx, f(1))
         if (ic%elset == 0) then
           call ctx_fail(ctx, i, 'undefined element set '//deck_normalize(f(1)))
           return
@@ -139,15 +151,15 @@ contains
           return
         end if
       end if
-      if (verify(trim(f(1)), '0123456789+-') == 0) then
-        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+      if (ctx_is_label(ctx, f(1))) then
+        if (.not. ctx_get_label(ctx, i, f(1), .true., id)) return
         if (id < 1) then
           call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
           return
         end if
         cl%nodes = [-id]
       else
-        iset = model_find_nset(ctx%model, deck_normalize(f(1)))
+        iset = ctx_find_nset(ctx, f(1))
         if (iset == 0) then
           call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(1)))
           return

@@ -4,7 +4,7 @@ module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where
   use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
-    etype_user, model_find_elset, model_find_material
+    etype_user, model_find_elset, model_find_material, model_label_text
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -42,7 +42,8 @@ contains
       do i = 1, model%nnode
         id = model%node_id(i)
         if (model%node_index(id) /= 0) then
-          call ctx_fail_kw(ctx, ctx%node_rec(i), '*NODE', 'node '//itoa(id)//' defined twice (first at '// &
+          call ctx_fail_kw(ctx, ctx%node_rec(i), '*NODE', 'node '//model_label_text(model, id, .true.)// &
+            ' defined twice (first at '// &
             deck_where(ctx%src, ctx%node_rec(model%node_index(id)))//')')
           return
         end if
@@ -57,7 +58,8 @@ contains
       do ie = 1, model%nelem
         id = model%elem_id(ie)
         if (model%elem_index(id) /= 0) then
-          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//itoa(id)//' defined twice (first at '// &
+          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//model_label_text(model, id, .false.)// &
+            ' defined twice (first at '// &
             deck_where(ctx%src, ctx%elem_rec(model%elem_index(id)))//')')
           return
         end if
@@ -65,11 +67,13 @@ contains
         do k = model%conn_ptr(ie), model%conn_ptr(ie + 1) - 1
           id = ctx%conn_raw(k)
           if (id <= 0 .or. id > size(model%node_index)) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//itoa(id))
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//model_label_text(ctx%model, id, &
+              .true.))
             return
           end if
           if (model%node_index(id) == 0) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//itoa(id))
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//model_label_text(ctx%model, id, &
+              .true.))
             return
           end if
           ctx%conn_raw(k) = model%node_index(id)
@@ -162,6 +166,24 @@ contains
           return
         end if
       end do
+      call resolve_orientations(ctx)
+      if (ctx%stat /= 0) return
+      if (model%monitor_node > 0) then
+        id = model%monitor_node
+        k = 0
+        if (id <= size(model%node_index)) k = model%node_index(id)
+        pos = model%monitor_pos
+        if (k == 0) then
+          call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
+          return
+        end if
+        if (model%monitor_dof > model%ndim) then
+          call ctx_fail_pos(ctx, pos, 'dof '//itoa(model%monitor_dof)//' does not exist in this '// &
+            itoa(model%ndim)//'D model')
+          return
+        end if
+        model%monitor_node = k
+      end if
       ! sections
       allocate (model%elem_section(model%nelem), has_section(model%nelem))
       model%elem_section = 0
@@ -181,6 +203,15 @@ contains
             call ctx_fail_pos(ctx, pos, 'undefined element set '//trim(sec%elset))
             return
           end if
+          if (len_trim(sec%orientation) > 0) then
+            do k = 1, model%norient
+              if (model%orientations(k)%name == sec%orientation) sec%iorient = k
+            end do
+            if (sec%iorient == 0) then
+              call ctx_fail_pos(ctx, pos, 'undefined orientation '//trim(sec%orientation))
+              return
+            end if
+          end if
           im = model_find_material(model, sec%material)
           if (im == 0) then
             call ctx_fail_pos(ctx, pos, 'undefined material '//trim(sec%material))
@@ -199,11 +230,13 @@ contains
           do k = 1, size(model%elsets(iset)%elems)
             ie = model%elsets(iset)%elems(k)
             if (model%elem_kind(ie) == etype_user) then
-              call ctx_fail_pos(ctx, pos, 'element '//itoa(model%elem_id(ie))//' is a user element (use *UEL PROPERTY)')
+              call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                ' is a user element (use *UEL PROPERTY)')
               return
             end if
             if (has_section(ie)) then
-              call ctx_fail_pos(ctx, pos, 'element '//itoa(model%elem_id(ie))//' has two sections')
+              call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                ' has two sections')
               return
             end if
             has_section(ie) = .true.
@@ -215,12 +248,14 @@ contains
         if (model%elem_kind(ie) == etype_user) then
           iu = model%elem_utype(ie)
           if (model%elem_uelprop(ie) == 0 .and. model%utypes(iu)%nprops + model%utypes(iu)%njprops > 0) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'user element '//itoa(model%elem_id(ie))// &
+            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'user element '//model_label_text(model, &
+              model%elem_id(ie), .false.)// &
               ' of type '//trim(model%utypes(iu)%name)//' has no *UEL PROPERTY (missing properties)')
             return
           end if
         else if (.not. has_section(ie)) then
-          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//itoa(model%elem_id(ie))// &
+          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'element '//model_label_text(model, &
+            model%elem_id(ie), .false.)// &
             ' has no *SOLID SECTION')
           return
         end if
@@ -230,6 +265,40 @@ contains
       if (ctx%stat == 0) call resolve_dloads(ctx)
     end associate
   end subroutine finish_model
+
+  !> *ORIENTATION, DEFINITION=NODES: the nodes' (reference) coordinates become the points a, b[, c].
+  subroutine resolve_orientations(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: k, j, id
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      do k = 1, model%norient
+        if (.not. model%orientations(k)%by_nodes) cycle
+        do j = 1, 3
+          id = model%orientations(k)%nodes(j)
+          if (id == 0) cycle
+          if (id > size(model%node_index)) then
+            pos = model%orientations(k)%pos
+            call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
+            return
+          end if
+          if (model%node_index(id) == 0) then
+            pos = model%orientations(k)%pos
+            call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
+            return
+          end if
+          select case (j)
+          case (1)
+            model%orientations(k)%a = model%x(:, model%node_index(id))
+          case (2)
+            model%orientations(k)%b = model%x(:, model%node_index(id))
+          case (3)
+            model%orientations(k)%c = model%x(:, model%node_index(id))
+          end select
+        end do
+      end do
+    end associate
+  end subroutine resolve_orientations
 
   !> Element-based surfaces: element sets and ids expanded into (element index, face) pairs.
   subroutine resolve_surfaces(ctx)
@@ -287,7 +356,7 @@ contains
             ie = 0
             if (id <= size(model%elem_index)) ie = model%elem_index(id)
             if (ie == 0) then
-              call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+              call ctx_fail_pos(ctx, pos, 'undefined element '//model_label_text(ctx%model, id, .false.))
               return
             end if
             el = [ie]
@@ -319,9 +388,10 @@ contains
             if (dl%kind == dload_user .neqv. model%elem_kind(ie) == etype_user) then
               if (dl%kind == dload_user) then
                 call ctx_fail_pos(ctx, pos, 'load type U'//itoa(dl%label)//' on element '// &
-                  itoa(model%elem_id(ie))//', which is not a user element')
+                  model_label_text(model, model%elem_id(ie), .false.)//', which is not a user element')
               else
-                call ctx_fail_pos(ctx, pos, 'user element '//itoa(model%elem_id(ie))//' takes only load types Un '// &
+                call ctx_fail_pos(ctx, pos, 'user element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                  ' takes only load types Un '// &
                   '(its UEL receives them), not BX/BY/BZ/GRAV/P')
               end if
               return
@@ -329,7 +399,8 @@ contains
             if (dl%kind == dload_grav) then
               im = model_find_material(model, model%sections(model%elem_section(ie))%material)
               if (.not. model%materials(im)%has_density) then
-                call ctx_fail_pos(ctx, pos, 'GRAV on element '//itoa(model%elem_id(ie))//' whose material '// &
+                call ctx_fail_pos(ctx, pos, 'GRAV on element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                  ' whose material '// &
                   trim(model%materials(im)%given_name)//' has no *DENSITY')
                 return
               end if
@@ -349,7 +420,7 @@ contains
           if (id <= size(model%elem_index)) ie = model%elem_index(id)
           if (ie == 0) then
             pos = model%inits(k)%pos
-            call ctx_fail_pos(ctx, pos, 'undefined element '//itoa(id))
+            call ctx_fail_pos(ctx, pos, 'undefined element '//model_label_text(ctx%model, id, .false.))
             return
           end if
           model%inits(k)%elems = [ie]
@@ -376,11 +447,11 @@ contains
       if (cl%nodes(k) < 0) then
         id = -cl%nodes(k)
         if (id > size(ctx%model%node_index)) then
-          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         if (ctx%model%node_index(id) == 0) then
-          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, cl%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         cl%nodes(k) = ctx%model%node_index(id)
@@ -427,11 +498,11 @@ contains
       if (bc%nodes(k) < 0) then
         id = -bc%nodes(k)
         if (id > size(ctx%model%node_index)) then
-          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         if (ctx%model%node_index(id) == 0) then
-          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//itoa(id))
+          call ctx_fail_pos(ctx, bc%pos, 'undefined node '//model_label_text(ctx%model, id, .true.))
           return
         end if
         bc%nodes(k) = ctx%model%node_index(id)

@@ -55,7 +55,7 @@ contains
   end function deck_upper
 
   !> Upper case, trimmed, inner runs of blanks collapsed to one ("SOLID   section" -> "SOLID SECTION").
-  pure function deck_normalize(s) result(u)
+  pure recursive function deck_normalize(s) result(u)
     character(len=*), intent(in) :: s  !< input
     character(len=:), allocatable :: u
     character(len=len(s)) :: t
@@ -73,6 +73,10 @@ contains
         blank = .false.
       end if
     end do
+    ! a name in double quotes (which may hold blanks): the quotes are not part of it
+    if (len(u) >= 2) then
+      if (u(1:1) == '"' .and. u(len(u):len(u)) == '"') u = deck_normalize(u(2:len(u) - 1))
+    end if
   end function deck_normalize
 
   !> "file:line" of a record, for messages.
@@ -111,7 +115,7 @@ contains
     character(len=:), allocatable, intent(out) :: errmsg
     integer :: unit, ios, iline, fid, k, irec_cont
     character(len=:), allocatable :: line, text, incname, dir
-    logical :: exists, cont_keyword, cont_data
+    logical :: exists, cont_keyword
     type(deck_param_t), allocatable :: params(:)
     character(len=:), allocatable :: kw
     character(len=16) :: num
@@ -145,7 +149,6 @@ contains
 
     iline = 0
     cont_keyword = .false.
-    cont_data = .false.
     irec_cont = 0
     do
       call read_line(unit, line, ios)
@@ -165,7 +168,12 @@ contains
       ! strip CR (files from Windows) and trailing blanks
       k = index(line, achar(13))
       if (k > 0) line = line(1:k - 1)
-      text = trim(line)
+      ! tabs separate fields like blanks
+      do k = 1, len(line)
+        if (line(k:k) == achar(9)) line(k:k) = ' '
+      end do
+      ! leading blanks are allowed before keywords, comments and data
+      text = trim(adjustl(line))
       if (len(adjustl(text)) >= 2) then
         ! a '**LDFCZ' comment line is a declaration for this host (Abaqus reads it as a comment): kept as the
         ! keyword line '*LDFCZ ...'; every other '**' line is a comment
@@ -178,21 +186,16 @@ contains
         ! a blank line ends a continuation; Abaqus ignores blank lines in data
         cycle
       end if
-      if (cont_keyword .or. cont_data) then
-        if (text(1:1) == '*' .and. cont_data) then
-          cont_data = .false.  ! a keyword ends a data continuation
-        else
-          src%rec(irec_cont)%text = src%rec(irec_cont)%text//' '//trim(adjustl(text))
-          cont_keyword = cont_keyword .and. ends_with_comma(text)
-          cont_data = cont_data .and. ends_with_comma(text)
-          if (.not. (cont_keyword .or. cont_data)) then
-            if (src%rec(irec_cont)%keyword) then
-              call handle_include(irec_cont)
-              if (stat /= 0) exit
-            end if
-          end if
-          cycle
+      if (cont_keyword) then
+        ! only keyword lines are continued here; a data line that ends with a comma is complete unless its
+        ! keyword's reader needs more fields (an *ELEMENT with more nodes than one line holds)
+        src%rec(irec_cont)%text = src%rec(irec_cont)%text//' '//trim(adjustl(text))
+        cont_keyword = ends_with_comma(text)
+        if (.not. cont_keyword) then
+          call handle_include(irec_cont)
+          if (stat /= 0) exit
         end if
+        cycle
       end if
       if (src%nrec == size(src%rec)) call grow_records(src)
       src%nrec = src%nrec + 1
@@ -207,8 +210,6 @@ contains
           call handle_include(src%nrec)
           if (stat /= 0) exit
         end if
-      else
-        cont_data = ends_with_comma(text)
       end if
     end do
     close (unit)

@@ -4,11 +4,12 @@
 module deck_loads
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: cload_t, dload_t, surface_t, model_find_nset, model_find_amplitude, model_find_elset, &
+  use model_types, only: cload_t, dload_t, surface_t, model_find_amplitude, &
     model_find_surface, dload_bx, dload_grav, dload_pressure, dload_user
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_need_step, ctx_split, &
-    ctx_get_real, ctx_get_int, ctx_required
+  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
+    ctx_find_surface, ctx_def_name, ctx_enter_instance, ctx_fail, ctx_pos, ctx_allow_params, ctx_need_step, &
+    ctx_split, ctx_get_real, ctx_get_int, ctx_required
   implicit none
   private
   public :: read_cload, read_dload, read_dsload, read_surface
@@ -58,8 +59,8 @@ contains
           return
         end if
       end if
-      if (verify(trim(f(1)), '0123456789+-') == 0) then
-        if (.not. ctx_get_int(ctx, i, f(1), id)) return
+      if (ctx_is_label(ctx, f(1))) then
+        if (.not. ctx_get_label(ctx, i, f(1), .true., id)) return
         if (id < 1) then
           call ctx_fail(ctx, i, 'node ids must be positive, got '//itoa(id))
           return
@@ -67,7 +68,7 @@ contains
         allocate (cl%nodes(1))
         cl%nodes(1) = -id  ! resolved in finish_model
       else
-        iset = model_find_nset(ctx%model, deck_normalize(f(1)))
+        iset = ctx_find_nset(ctx, f(1))
         if (iset == 0) then
           call ctx_fail(ctx, i, 'undefined node set '//deck_normalize(f(1)))
           return
@@ -122,8 +123,8 @@ contains
     type(dload_t), intent(inout) :: dl          !< load being read
     integer :: id
     ok = .false.
-    if (verify(trim(f), '0123456789+-') == 0) then
-      if (.not. ctx_get_int(ctx, i, f, id)) return
+    if (ctx_is_label(ctx, f)) then
+      if (.not. ctx_get_label(ctx, i, f, .false., id)) return
       if (id < 1) then
         call ctx_fail(ctx, i, 'element ids must be positive, got '//itoa(id))
         return
@@ -131,7 +132,7 @@ contains
       dl%elems = [-id]
       dl%elset = 0
     else
-      dl%elset = model_find_elset(ctx%model, deck_normalize(f))
+      dl%elset = ctx_find_elset(ctx, f)
       if (dl%elset == 0) then
         call ctx_fail(ctx, i, 'undefined element set '//deck_normalize(f))
         return
@@ -234,7 +235,7 @@ contains
           return
         end if
       end if
-      isurf = model_find_surface(ctx%model, deck_normalize(f(1)))
+      isurf = ctx_find_surface(ctx, f(1))
       if (isurf == 0) then
         call ctx_fail(ctx, i, 'undefined surface '//deck_normalize(f(1)))
         return
@@ -262,7 +263,9 @@ contains
     character(len=flen), allocatable :: f(:)
     character(len=:), allocatable :: v, lab
     integer :: i, n, k, is
-    call ctx_allow_params(ctx, [character(len=12) :: 'NAME', 'TYPE'])
+    character(len=96) :: ref_prefix
+    integer :: node_off, elem_off
+    call ctx_allow_params(ctx, [character(len=12) :: 'NAME', 'TYPE', 'INTERNAL', 'INSTANCE'])
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
     if (v /= '' .and. v /= 'ELEMENT') then
@@ -275,13 +278,19 @@ contains
       tmp(1:ctx%model%nsurf) = ctx%model%surfaces(1:ctx%model%nsurf)
       call move_alloc(tmp, ctx%model%surfaces)
     end if
-    v = deck_normalize(ctx_required(ctx, 'NAME'))
+    v = ctx_def_name(ctx, ctx_required(ctx, 'NAME'))
     if (ctx%stat /= 0) return
     if (model_find_surface(ctx%model, v) > 0) then
       call ctx_fail(ctx, ctx%ir, 'surface '//v//' defined twice')
       return
     end if
     is = ctx%model%nsurf + 1
+    ! INSTANCE= (assembly level): the element labels and sets of the data lines are the instance's
+    ref_prefix = ctx%ref_prefix
+    node_off = ctx%node_off
+    elem_off = ctx%elem_off
+    call ctx_enter_instance(ctx)
+    if (ctx%stat /= 0) return
     associate (sf => ctx%model%surfaces(is))
       sf%name = v
       sf%pos = ctx_pos(ctx, ctx%ir)
@@ -321,6 +330,9 @@ contains
       end if
     end associate
     ctx%model%nsurf = is
+    ctx%ref_prefix = ref_prefix
+    ctx%node_off = node_off
+    ctx%elem_off = elem_off
   end subroutine read_surface
 
   !> Append a distributed load to a list with n entries, doubling the capacity when full.

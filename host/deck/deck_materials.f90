@@ -5,8 +5,8 @@ module deck_materials
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: material_t, section_t, model_find_material
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, ctx_param_int, &
-    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+  use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
+    ctx_param_int, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
   public :: read_material, read_elastic, read_density, read_expansion, read_user_material, read_depvar, read_solid_section
@@ -21,7 +21,7 @@ contains
     character(len=:), allocatable :: v
     integer :: n, k, ir, ir_next
     real(dp) :: t
-    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL'])
+    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
@@ -31,13 +31,19 @@ contains
       call move_alloc(tmp, ctx%model%sections)
     end if
     k = ctx%model%nsection + 1
-    v = deck_normalize(ctx_required(ctx, 'ELSET'))
+    v = ctx_def_name(ctx, ctx_required(ctx, 'ELSET'))
     ctx%model%sections(k)%elset = v
     if (ctx%stat /= 0) return
     v = deck_normalize(ctx_required(ctx, 'MATERIAL'))
     ctx%model%sections(k)%material = v
     if (ctx%stat /= 0) return
     ctx%model%sections(k)%pos = ctx_pos(ctx, ir)
+    ctx%model%sections(k)%orientation = ''
+    ctx%model%sections(k)%iorient = 0
+    if (deck_has_param(ctx%params, 'ORIENTATION')) then
+      ctx%model%sections(k)%orientation = ctx_def_name(ctx, ctx_required(ctx, 'ORIENTATION'))
+      if (ctx%stat /= 0) return
+    end if
     ctx%model%sections(k)%thickness = 1.0_dp
     if (ir_next > ir + 2) then
       call ctx_fail(ctx, ir + 2, 'more than one data line (only the thickness line is read)')

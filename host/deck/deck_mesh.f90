@@ -7,10 +7,11 @@ module deck_mesh
     model_find_elset, model_find_user_type
   use deck_lists, only: itoa, add_member, grow_int
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
-    ctx_get_int
+    ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued
   implicit none
   private
   public :: read_node, read_element, read_set
+  public :: get_nset, get_elset, grow_nodes, grow_elems
 
 contains
 
@@ -35,7 +36,7 @@ contains
     end if
     iset = 0
     if (deck_has_param(ctx%params, 'NSET')) then
-      setname = deck_normalize(ctx_required(ctx, 'NSET'))
+      setname = ctx_def_name(ctx, ctx_required(ctx, 'NSET'))
       iset = get_nset(ctx, setname)
     end if
     associate (model => ctx%model)
@@ -50,6 +51,12 @@ contains
           call ctx_fail(ctx, i, 'node numbers must be positive')
           return
         end if
+        if (id > huge(id) - ctx%node_off) then
+          call ctx_fail(ctx, i, 'node number too large')
+          return
+        end if
+        id = id + ctx%node_off
+        ctx%top_node = max(ctx%top_node, id)
         if (model%nnode == size(model%node_id)) call grow_nodes(ctx)
         model%nnode = model%nnode + 1
         model%node_id(model%nnode) = id
@@ -60,6 +67,8 @@ contains
           if (.not. ctx_get_real(ctx, i, f(k), c)) return
           model%x(k - 1, model%nnode) = c
         end do
+        ! a part's node placed by its instance (translation, then rotation)
+        if (ctx%placed) model%x(:, model%nnode) = matmul(ctx%place_r, model%x(:, model%nnode)) + ctx%place_c
         if (iset > 0) call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -id)
       end do
     end associate
@@ -69,8 +78,8 @@ contains
   subroutine read_element(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=:), allocatable :: tname, setname
-    integer :: kind, nn, iu, i, n, k, id, iset, node
-    character(len=flen), allocatable :: f(:)
+    integer :: kind, nn, iu, i, n, k, id, iset, node, m
+    character(len=flen), allocatable :: f(:), g(:)
     call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'ELSET'])
     if (ctx%stat /= 0) return
     tname = deck_normalize(ctx_required(ctx, 'TYPE'))
@@ -102,12 +111,21 @@ contains
     if (ctx%stat /= 0) return
     iset = 0
     if (deck_has_param(ctx%params, 'ELSET')) then
-      setname = deck_normalize(ctx_required(ctx, 'ELSET'))
+      setname = ctx_def_name(ctx, ctx_required(ctx, 'ELSET'))
       iset = get_elset(ctx, setname)
     end if
     associate (model => ctx%model)
-      do i = ctx%ir + 1, ctx%ir_next - 1
+      i = ctx%ir
+      do while (i < ctx%ir_next - 1)
+        i = i + 1
         call ctx_split(ctx, i, f, n)
+        ! a line ending with a comma before the element's nodes are complete continues on the next line
+        do while (n < nn + 1 .and. ctx_continued(ctx, i))
+          i = i + 1
+          call ctx_split(ctx, i, g, m)
+          f = [f(1:n), g(1:m)]
+          n = n + m
+        end do
         if (n /= nn + 1) then
           call ctx_fail(ctx, i, 'element type '//tname//' needs '//itoa(nn)//' nodes, '//itoa(n - 1)//' given')
           return
@@ -117,6 +135,12 @@ contains
           call ctx_fail(ctx, i, 'element numbers must be positive')
           return
         end if
+        if (id > huge(id) - ctx%elem_off) then
+          call ctx_fail(ctx, i, 'element number too large')
+          return
+        end if
+        id = id + ctx%elem_off
+        ctx%top_elem = max(ctx%top_elem, id)
         if (model%nelem == size(model%elem_id)) call grow_elems(ctx)
         model%nelem = model%nelem + 1
         model%elem_id(model%nelem) = id
@@ -127,7 +151,7 @@ contains
           call grow_int(ctx%conn_raw)
         end do
         do k = 1, nn
-          if (.not. ctx_get_int(ctx, i, f(k + 1), node)) return
+          if (.not. ctx_get_label(ctx, i, f(k + 1), .true., node)) return
           ctx%conn_raw(model%conn_ptr(model%nelem) + k - 1) = node
         end do
         model%conn_ptr(model%nelem + 1) = model%conn_ptr(model%nelem) + nn
@@ -155,19 +179,39 @@ contains
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     logical, intent(in) :: is_node              !< .true. for *NSET, .false. for *ELSET
     character(len=:), allocatable :: setname
-    integer :: iset, i, n, k, a, b, s, other, j
-    character(len=flen), allocatable :: f(:)
-    logical :: gen
+    character(len=96) :: ref_prefix
+    integer :: node_off, elem_off
     if (is_node) then
-      call ctx_allow_params(ctx, [character(len=12) :: 'NSET', 'GENERATE', 'INTERNAL', 'UNSORTED', 'ELSET'])
+      call ctx_allow_params(ctx, [character(len=12) :: 'NSET', 'GENERATE', 'INTERNAL', 'UNSORTED', 'ELSET', &
+        'INSTANCE'])
       if (ctx%stat /= 0) return
-      setname = deck_normalize(ctx_required(ctx, 'NSET'))
+      setname = ctx_def_name(ctx, ctx_required(ctx, 'NSET'))
     else
-      call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'GENERATE', 'INTERNAL', 'UNSORTED'])
+      call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'GENERATE', 'INTERNAL', 'UNSORTED', 'INSTANCE'])
       if (ctx%stat /= 0) return
-      setname = deck_normalize(ctx_required(ctx, 'ELSET'))
+      setname = ctx_def_name(ctx, ctx_required(ctx, 'ELSET'))
     end if
     if (ctx%stat /= 0) return
+    ! INSTANCE= (assembly level): the labels and set names of the data lines are the instance's
+    ref_prefix = ctx%ref_prefix
+    node_off = ctx%node_off
+    elem_off = ctx%elem_off
+    call ctx_enter_instance(ctx)
+    if (ctx%stat /= 0) return
+    call read_set_members(ctx, is_node, setname)
+    ctx%ref_prefix = ref_prefix
+    ctx%node_off = node_off
+    ctx%elem_off = elem_off
+  end subroutine read_set
+
+  !> Data lines of *NSET / *ELSET: labels, set names, or first, last[, increment] with GENERATE.
+  subroutine read_set_members(ctx, is_node, setname)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical, intent(in) :: is_node              !< .true. for *NSET, .false. for *ELSET
+    character(len=*), intent(in) :: setname     !< the set defined (scoped name)
+    integer :: iset, i, n, k, a, b, s, other, j, off
+    character(len=flen), allocatable :: f(:)
+    logical :: gen
     if (is_node .and. deck_has_param(ctx%params, 'ELSET')) then
       call ctx_fail(ctx, ctx%ir, 'NSET from ELSET= is not supported: list the nodes')
       return
@@ -202,7 +246,12 @@ contains
             call ctx_fail(ctx, i, 'ids must be positive, got '//itoa(a))
             return
           end if
-          do k = a, b, s
+          off = merge(ctx%node_off, ctx%elem_off, is_node)
+          if (b > huge(b) - off - s) then
+            call ctx_fail(ctx, i, 'ids too large')
+            return
+          end if
+          do k = a + off, b + off, s
             if (is_node) then
               call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -k)
             else
@@ -212,8 +261,8 @@ contains
         else
           do k = 1, n
             if (len_trim(f(k)) == 0) cycle
-            if (verify(trim(f(k)), '0123456789+-') == 0) then
-              if (.not. ctx_get_int(ctx, i, f(k), a)) return
+            if (ctx_is_label(ctx, f(k))) then
+              if (.not. ctx_get_label(ctx, i, f(k), is_node, a)) return
               if (a < 1) then
                 call ctx_fail(ctx, i, 'ids must be positive, got '//itoa(a))
                 return
@@ -225,9 +274,9 @@ contains
               end if
             else
               if (is_node) then
-                other = model_find_nset(model, deck_normalize(f(k)))
+                other = ctx_find_nset(ctx, f(k))
               else
-                other = model_find_elset(model, deck_normalize(f(k)))
+                other = ctx_find_elset(ctx, f(k))
               end if
               if (other == 0 .or. other == iset) then
                 call ctx_fail(ctx, i, 'undefined set '//trim(deck_normalize(f(k))))
@@ -247,7 +296,7 @@ contains
         end if
       end do
     end associate
-  end subroutine read_set
+  end subroutine read_set_members
 
   !> Index of node set name, created empty when new.
   integer function get_nset(ctx, name) result(k)

@@ -6,18 +6,24 @@
 module deck_reader
   use deck_lines, only: deck_load, deck_keyword_parse
   use model_types, only: model_t
-  use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_need_step
+  use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_need_step, &
+    scope_model, scope_assembly
+  use deck_assembly, only: prescan_assembly, read_part_def, begin_assembly, end_assembly, begin_instance, &
+    end_instance, allowed_in_assembly, mesh_keyword
   use deck_mesh, only: read_node, read_element, read_set
   use deck_materials, only: read_material, read_elastic, read_density, read_expansion, read_user_material, &
     read_depvar, read_solid_section
   use deck_user_elements, only: read_user_element, read_uel_property
   use deck_boundaries, only: read_amplitude, read_boundary
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print, &
-    read_field_variables
+    read_field_variables, read_el_print, read_monitor
   use deck_loads, only: read_cload, read_dload, read_dsload, read_surface
   use deck_fields, only: read_initial_conditions, read_temperature
   use deck_constraints, only: read_equation, read_tie, read_mpc
   use deck_finish, only: finish_model
+  use deck_parameters, only: apply_parameters
+  use deck_generate, only: read_ngen, read_nfill, read_ncopy, read_elgen
+  use deck_orientation, only: read_orientation
   use deck_declarations, only: read_ldfcz_declaration
   implicit none
   private
@@ -37,9 +43,12 @@ contains
     if (present(warn_unit)) ctx%wu = warn_unit
     call deck_load(path, ctx%src, stat, errmsg)
     if (stat /= 0) return
+    call apply_parameters(ctx%src, stat, errmsg)
+    if (stat /= 0) return
     ctx%stat = stat
     call move_alloc(errmsg, ctx%errmsg)
     call start_model(ctx)
+    call prescan_assembly(ctx)
     call read_blocks(ctx)
     if (ctx%stat == 0) call finish_model(ctx)
     model = ctx%model
@@ -68,36 +77,104 @@ contains
   !> Read the keyword blocks in order; stops at the first error.
   subroutine read_blocks(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    integer :: ir_next
-    ctx%ir = 1
-    do while (ctx%ir <= ctx%src%nrec)
-      if (.not. ctx%src%rec(ctx%ir)%keyword) then
-        call ctx_fail_kw(ctx, ctx%ir, '(data)', 'data line without a keyword before it')
+    call read_range(ctx, 1, ctx%src%nrec)
+    if (ctx%stat /= 0) return
+    if (ctx%in_step) call ctx_fail_kw(ctx, ctx%src%nrec, '*STEP', 'the deck ends inside a step: *END STEP missing')
+    if (ctx%stat == 0 .and. ctx%scope == scope_assembly) &
+      call ctx_fail_kw(ctx, ctx%src%nrec, '*ASSEMBLY', 'the deck ends inside the assembly: *END ASSEMBLY missing')
+  end subroutine read_blocks
+
+  !> Read the keyword blocks of records i1..i2 (the whole deck, or a part's blocks for one of its instances).
+  recursive subroutine read_range(ctx, i1, i2)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: i1                   !< first record
+    integer, intent(in) :: i2                   !< last record
+    integer :: ir, ir_next
+    ir = i1
+    do while (ir <= i2)
+      ctx%ir = ir
+      if (.not. ctx%src%rec(ir)%keyword) then
+        call ctx_fail_kw(ctx, ir, '(data)', 'data line without a keyword before it')
         return
       end if
-      call deck_keyword_parse(ctx%src%rec(ctx%ir)%text, ctx%kw, ctx%params)
+      call deck_keyword_parse(ctx%src%rec(ir)%text, ctx%kw, ctx%params)
       ! the records of this block: ir+1 .. ir_next-1
-      ir_next = ctx%ir + 1
-      do while (ir_next <= ctx%src%nrec)
+      ir_next = ir + 1
+      do while (ir_next <= i2)
         if (ctx%src%rec(ir_next)%keyword) exit
         ir_next = ir_next + 1
       end do
       ctx%ir_next = ir_next
       if (ctx%in_step .and. is_model_keyword(ctx%kw)) then
-        call ctx_fail(ctx, ctx%ir, 'model-data keyword inside a step (*STEP ... *END STEP)')
+        call ctx_fail(ctx, ir, 'model-data keyword inside a step (*STEP ... *END STEP)')
+        return
+      end if
+      if (ctx%scope == scope_assembly .and. .not. allowed_in_assembly(ctx%kw)) then
+        call ctx_fail(ctx, ir, 'not supported inside *ASSEMBLY (ldfcz reads *INSTANCE, *NODE, *ELEMENT, *NSET, '// &
+          '*ELSET, *SURFACE, *EQUATION, *TIE, *MPC there)')
+        return
+      end if
+      if (ctx%scope == scope_model .and. ctx%has_assembly .and. mesh_keyword(ctx%kw)) then
+        call ctx_fail(ctx, ir, 'in a deck with an *ASSEMBLY, mesh, sets and sections belong in a *PART or in '// &
+          'the *ASSEMBLY')
         return
       end if
       call read_block(ctx)
       if (ctx%stat /= 0) return
-      ctx%ir = ir_next
+      ! a *PART or *INSTANCE block reaches past its end keyword
+      ir = max(ir_next, ctx%ir_next)
     end do
-    if (ctx%in_step) call ctx_fail_kw(ctx, ctx%src%nrec, '*STEP', 'the deck ends inside a step: *END STEP missing')
-  end subroutine read_blocks
+  end subroutine read_range
+
+  !> *INSTANCE ... *END INSTANCE: the part's blocks read with the instance's labels, names and placement.
+  recursive subroutine read_instance(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: ip, ir_end, ir_inst
+    ir_inst = ctx%ir
+    call begin_instance(ctx, ip, ir_end)
+    if (ctx%stat /= 0) return
+    call read_range(ctx, ctx%parts(ip)%ir1, ctx%parts(ip)%ir2 - 1)
+    if (ctx%stat /= 0) then
+      ctx%errmsg = ctx%errmsg//' (part '//trim(ctx%parts(ip)%name)//', read for instance '// &
+        trim(ctx%model%instances(ctx%model%ninstance)%name)//')'
+      return
+    end if
+    ! messages of end_instance name the *INSTANCE line
+    ctx%ir = ir_inst
+    ctx%kw = '*INSTANCE'
+    call end_instance(ctx)
+    if (ctx%stat /= 0) return
+    ctx%ir_next = ir_end + 1
+  end subroutine read_instance
 
   !> Dispatch the block of keyword ctx%kw to its reader.
-  subroutine read_block(ctx)
+  recursive subroutine read_block(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     select case (ctx%kw)
+    case ('*PART')
+      call read_part_def(ctx)
+    case ('*END PART')
+      call ctx_fail(ctx, ctx%ir, '*END PART without *PART')
+    case ('*ASSEMBLY')
+      call begin_assembly(ctx)
+    case ('*END ASSEMBLY')
+      call end_assembly(ctx)
+    case ('*INSTANCE')
+      call read_instance(ctx)
+    case ('*END INSTANCE')
+      call ctx_fail(ctx, ctx%ir, '*END INSTANCE without *INSTANCE')
+    case ('*ORIENTATION')
+      call read_orientation(ctx)
+    case ('*NGEN')
+      call read_ngen(ctx)
+    case ('*NFILL')
+      call read_nfill(ctx)
+    case ('*NCOPY')
+      call read_ncopy(ctx)
+    case ('*ELGEN')
+      call read_elgen(ctx)
+    case ('*PARAMETER')
+      ! defined and substituted before the blocks are read (deck_parameters)
     case ('*HEADING')
       if (ctx%ir_next > ctx%ir + 1) ctx%model%heading = ctx%src%rec(ctx%ir + 1)%text
     case ('*NODE')
@@ -160,6 +237,10 @@ contains
       call read_field_variables(ctx)
     case ('*NODE PRINT')
       call read_node_print(ctx)
+    case ('*EL PRINT')
+      call read_el_print(ctx)
+    case ('*MONITOR')
+      call read_monitor(ctx)
     case ('*END STEP')
       if (.not. ctx%in_step) then
         call ctx_fail(ctx, ctx%ir, '*END STEP without *STEP')
@@ -170,8 +251,8 @@ contains
       call read_restart(ctx)
     case ('*LDFCZ SVARS', '*LDFCZ STATEV')
       call read_ldfcz_declaration(ctx)
-    case ('*EL PRINT', '*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
-          '*MONITOR', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
+    case ('*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
+          '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
       call ctx_warn(ctx, ctx%ir, 'output/cosmetic keyword not supported by ldfcz: ignored with its data lines')
     case default
       call ctx_fail(ctx, ctx%ir, 'unsupported keyword (ldfcz never ignores a keyword that may change the analysis)')
@@ -184,7 +265,8 @@ contains
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
           '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
-          '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC')
+          '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
+          '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

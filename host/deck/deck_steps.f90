@@ -2,12 +2,14 @@
 module deck_steps
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: step_t, node_print_t, model_find_nset
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_warn, ctx_pos, ctx_allow_params, ctx_need_step, &
-    ctx_required, ctx_param_int, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
+  use model_types, only: step_t, node_print_t, el_print_t
+  use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_find_elset, ctx_fail, ctx_warn, ctx_pos, &
+    ctx_allow_params, ctx_need_step, ctx_required, ctx_get_label, ctx_param_int, ctx_split, ctx_get_real, &
+    ctx_get_int, ctx_only_value
   implicit none
   private
   public :: read_field_variables, read_step, read_static, read_controls, read_restart, read_output, read_node_print
+  public :: read_el_print, read_monitor
 
 contains
 
@@ -436,7 +438,8 @@ contains
     end associate
   end subroutine field_variable
 
-  !> *NODE PRINT, NSET=: set totals of U1..U3 and RF1..RF3 written to JOB.csv.
+  !> *NODE PRINT[, NSET=][, FREQUENCY=][, TOTALS=][, SUMMARY=]: a table of U1..U3, RF1..RF3 per node in JOB.dat
+  !> and the set totals (RF sums, U means) as JOB.csv columns (with NSET only).
   subroutine read_node_print(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(node_print_t) :: np
@@ -444,22 +447,24 @@ contains
     character(len=flen), allocatable :: f(:)
     character(len=8), allocatable :: vars(:)
     integer :: i, n, k, nv, ir, ir_next
-    character(len=:), allocatable :: name, v
+    character(len=:), allocatable :: name
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=12) :: 'NSET', 'TOTALS', 'FREQUENCY', 'SUMMARY', 'GLOBAL'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
-    np%nset = deck_normalize(ctx_required(ctx, 'NSET'))
-    if (ctx%stat /= 0) return
-    np%set_index = model_find_nset(ctx%model, np%nset)
-    if (np%set_index == 0) then
-      call ctx_fail(ctx, ir, 'undefined node set '//trim(np%nset))
-      return
+    if (deck_has_param(ctx%params, 'NSET')) then
+      np%nset = deck_normalize(ctx_required(ctx, 'NSET'))
+      if (ctx%stat /= 0) return
+      np%set_index = ctx_find_nset(ctx, np%nset)
+      if (np%set_index == 0) then
+        call ctx_fail(ctx, ir, 'undefined node set '//trim(np%nset))
+        return
+      end if
     end if
-    v = deck_normalize(deck_param_value(ctx%params, 'TOTALS'))
-    if (v /= 'YES') call ctx_warn(ctx, ir, 'ldfcz writes set totals (RF sums, U means) to JOB.csv as with TOTALS=YES')
+    call print_options(ctx, np%frequency, np%totals, np%summary)
+    if (ctx%stat /= 0) return
     allocate (vars(3 * (ir_next - ir) * 8 + 6))
     nv = 0
     do i = ir + 1, ir_next - 1
@@ -479,7 +484,8 @@ contains
           call add_var(vars, nv, 'RF2')
           if (ctx%model%ndim /= 2) call add_var(vars, nv, 'RF3')
         case default
-          call ctx_warn(ctx, i, 'variable '//name//' not supported in JOB.csv (U1..U3, RF1..RF3): ignored')
+          call ctx_warn(ctx, i, 'variable '//name//' not supported by *NODE PRINT (U, RF and their components): '// &
+            'ignored')
         end select
       end do
     end do
@@ -498,6 +504,141 @@ contains
       s%prints(s%nprint) = np
     end associate
   end subroutine read_node_print
+
+  !> *MONITOR, NODE=, DOF=[, FREQUENCY=]: the displacement of one dof written on each converged increment's line of
+  !> JOB.sta (as the MONITOR column of an Abaqus .sta file); the last *MONITOR of the deck is in effect.
+  subroutine read_monitor(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: id, dof
+    call ctx_allow_params(ctx, [character(len=12) :: 'NODE', 'DOF', 'FREQUENCY'])
+    if (ctx%stat /= 0) return
+    if (.not. ctx_get_label(ctx, ctx%ir, ctx_required(ctx, 'NODE'), .true., id)) return
+    if (ctx%stat /= 0) return
+    if (.not. ctx_get_int(ctx, ctx%ir, ctx_required(ctx, 'DOF'), dof)) return
+    if (dof < 1 .or. dof > 3) then
+      call ctx_fail(ctx, ctx%ir, 'DOF must be 1, 2 or 3 (displacements)')
+      return
+    end if
+    if (ctx%ir_next > ctx%ir + 1) then
+      call ctx_fail(ctx, ctx%ir + 1, 'no data lines expected')
+      return
+    end if
+    ctx%model%monitor_node = id
+    ctx%model%monitor_dof = dof
+    ctx%model%monitor_pos = ctx_pos(ctx, ctx%ir)
+  end subroutine read_monitor
+
+  !> FREQUENCY, TOTALS and SUMMARY of a print request.
+  subroutine print_options(ctx, frequency, totals, summary)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(out) :: frequency           !< FREQUENCY (default 1)
+    logical, intent(out) :: totals              !< TOTALS=YES
+    logical, intent(out) :: summary             !< SUMMARY=YES (default)
+    character(len=:), allocatable :: v
+    totals = .false.
+    summary = .true.
+    frequency = ctx_param_int(ctx, 'FREQUENCY', 1)
+    if (ctx%stat /= 0) return
+    if (frequency < 0) then
+      call ctx_fail(ctx, ctx%ir, 'FREQUENCY must not be negative')
+      return
+    end if
+    v = deck_normalize(deck_param_value(ctx%params, 'TOTALS'))
+    if (v /= '' .and. v /= 'YES' .and. v /= 'NO') then
+      call ctx_fail(ctx, ctx%ir, 'TOTALS must be YES or NO')
+      return
+    end if
+    totals = v == 'YES'
+    v = deck_normalize(deck_param_value(ctx%params, 'SUMMARY'))
+    if (v /= '' .and. v /= 'YES' .and. v /= 'NO') then
+      call ctx_fail(ctx, ctx%ir, 'SUMMARY must be YES or NO')
+      return
+    end if
+    summary = v /= 'NO'
+  end subroutine print_options
+
+  !> *EL PRINT[, ELSET=][, FREQUENCY=][, TOTALS=][, SUMMARY=][, POSITION=INTEGRATION POINTS]: a table of the
+  !> integration-point values of continuum elements in JOB.dat: S (S11..), MISES, E/LE (E11.., engineering shear as
+  !> the UMAT's STRAN), SDV (every state variable) or SDVn.
+  subroutine read_el_print(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(el_print_t) :: ep
+    type(el_print_t), allocatable :: tmp(:)
+    character(len=flen), allocatable :: f(:)
+    character(len=8), allocatable :: vars(:)
+    character(len=4), parameter :: comp(6) = ['11', '22', '33', '12', '13', '23']
+    integer :: i, n, k, j, nv, nc, iv
+    character(len=:), allocatable :: name
+    logical :: ok
+    call ctx_need_step(ctx)
+    if (ctx%stat /= 0) return
+    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'TOTALS', 'FREQUENCY', 'SUMMARY', 'POSITION', &
+      'DIRECTIONS'])
+    if (ctx%stat /= 0) return
+    if (.not. ctx_only_value(ctx, ctx%ir, 'POSITION', 'INTEGRATION POINTS')) return
+    if (deck_has_param(ctx%params, 'ELSET')) then
+      ep%elset = deck_normalize(ctx_required(ctx, 'ELSET'))
+      if (ctx%stat /= 0) return
+      ep%set_index = ctx_find_elset(ctx, ep%elset)
+      if (ep%set_index == 0) then
+        call ctx_fail(ctx, ctx%ir, 'undefined element set '//trim(ep%elset))
+        return
+      end if
+    end if
+    call print_options(ctx, ep%frequency, ep%totals, ep%summary)
+    if (ctx%stat /= 0) return
+    nc = merge(4, 6, ctx%model%ndim == 2)
+    allocate (vars(16 * (ctx%ir_next - ctx%ir) * 8 + 16))
+    nv = 0
+    do i = ctx%ir + 1, ctx%ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      do k = 1, n
+        name = deck_normalize(f(k))
+        if (len(name) == 0) cycle
+        select case (name)
+        case ('S', 'E', 'LE')
+          do j = 1, nc
+            call add_var(vars, nv, name//trim(comp(j)))
+          end do
+        case ('MISES', 'SDV')
+          call add_var(vars, nv, name)
+        case default
+          ok = .false.
+          do j = 1, nc
+            if (name == 'S'//trim(comp(j)) .or. name == 'E'//trim(comp(j)) .or. name == 'LE'//trim(comp(j))) &
+              ok = .true.
+          end do
+          if (len(name) > 3 .and. len(name) <= 8) then
+            if (name(1:3) == 'SDV' .and. verify(name(4:), '0123456789') == 0) then
+              read (name(4:), *) iv
+              ok = iv >= 1
+            end if
+          end if
+          if (ok) then
+            call add_var(vars, nv, name)
+          else
+            call ctx_warn(ctx, i, 'variable '//name//' not supported by *EL PRINT (S, MISES, E, LE, SDV and '// &
+              'their components): ignored')
+          end if
+        end select
+      end do
+    end do
+    if (nv == 0) then
+      call ctx_warn(ctx, ctx%ir, 'no supported variable requested: no table written')
+      return
+    end if
+    ep%vars = vars(1:nv)
+    associate (s => ctx%model%steps(ctx%istep))
+      if (.not. allocated(s%elprints)) allocate (s%elprints(2))
+      if (s%nelprint == size(s%elprints)) then
+        allocate (tmp(2 * size(s%elprints)))
+        tmp(1:s%nelprint) = s%elprints(1:s%nelprint)
+        call move_alloc(tmp, s%elprints)
+      end if
+      s%nelprint = s%nelprint + 1
+      s%elprints(s%nelprint) = ep
+    end associate
+  end subroutine read_el_print
 
   !> Append a print variable once.
   pure subroutine add_var(vars, nv, v)

@@ -3,10 +3,10 @@
 module deck_user_elements
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_has_param, deck_normalize
-  use model_types, only: user_element_type_t, uel_property_t, etype_user, model_find_elset, model_find_user_type
+  use model_types, only: user_element_type_t, uel_property_t, etype_user, model_find_user_type
   use deck_lists, only: itoa, grow_int
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, ctx_param_int, &
-    ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
+  use deck_context, only: deck_context_t, flen, ctx_find_elset, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
+    ctx_param_int, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
   public :: read_user_element, read_uel_property
@@ -103,7 +103,7 @@ contains
     ir_next = ctx%ir_next
     setname = deck_normalize(ctx_required(ctx, 'ELSET'))
     if (ctx%stat /= 0) return
-    iset = model_find_elset(ctx%model, setname)
+    iset = ctx_find_elset(ctx, setname)
     if (iset == 0) then
       call ctx_fail(ctx, ir, 'undefined element set '//setname)
       return

@@ -10,6 +10,13 @@
 !>   STRESS and STRAN are rotated by DROT before the call; DFGRD0 = Fbar0, DFGRD1 = Fbar1.
 !> Without NLGEOM: DSTRAN = sym of grad(du) w.r.t. X with its trace replaced by the centre value (B-bar, the small
 !>   strain limit of F-bar), DROT = I, f_int and K on the reference configuration.
+!> Local orientation (*ORIENTATION on the section; optional argument orient = T0, local axes as columns): the
+!>   material sees STRESS, STRAN, DSTRAN, DDSDDE, DFGRD0/1 in the local axes T = R T0, R the rotation of the polar
+!>   decomposition Fbar = R U (T = T0 without NLGEOM), as Abaqus/Standard does for continuum elements (it passes
+!>   DFGRD1 = T1^T Fbar1 T0, the stretch in local components); DROT = Tn^T T1 is the rotation of the local axes
+!>   over the increment in their own components. The state is stored in global components (output, f_int):
+!>   sigma = T1 sigma_local T1^T and DDSDDE turned the same way; the dependence of T on u is left out of the
+!>   tangent (exact without NLGEOM).
 !>
 !> Internal force and tangent (current configuration, dv = J dV):
 !>   f_(a i) = int sigma_ij dN_a/dx_j dv
@@ -34,6 +41,7 @@ module solid_element
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
   public :: solid_geometry_t, solid_element_geometry
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
+  public :: polar_rotation
 
   integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
   integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer
@@ -143,7 +151,7 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes)
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, orient)
     character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -174,7 +182,10 @@ contains
     type(solid_geometry_t), intent(in), optional, target :: geo
     real(dp), intent(in), optional :: temp_nodes(:)   !< (nnode) nodal temperatures at the start of the increment
     real(dp), intent(in), optional :: dtemp_nodes(:)  !< (nnode) their increments (TEMP, DTEMP interpolated to points)
-    real(dp) :: temp_ip, dtemp_ip
+    real(dp), intent(in), optional :: orient(:, :, :) !< (3, 3, nip) local material axes T0 (columns) per point
+    real(dp) :: temp_ip, dtemp_ip, tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3)
+    real(dp) :: s_unit(6), col_g(6, 6)
+    logical :: local
 
     integer :: nnode, ndim, nip, ntens, ndi, nshr, ndof, nsv, np
     integer :: a, b, i, k, ip, r, c, jstep(4)
@@ -349,13 +360,36 @@ contains
       end if
       call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
 
-      ! rotate the converged stress and strain by DROT (identity without NLGEOM)
-      call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
-      sig = matmul(matmul(drot, sig), transpose(drot))
-      call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
-      call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
-      eps = matmul(matmul(drot, eps), transpose(drot))
-      call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
+      local = present(orient)
+      drot_m = drot
+      fl0 = fb0
+      fl1 = fb1
+      if (local) then
+        ! local axes at the start and end of the increment; the material gets every tensor in their components
+        tn = orient(:, :, ip)
+        t1 = orient(:, :, ip)
+        if (nlgeom) then
+          tn = matmul(polar_rotation(fb0), tn)
+          t1 = matmul(polar_rotation(fb1), t1)
+        end if
+        call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+        call tensor_to_voigt(matmul(matmul(transpose(tn), sig), tn), ntens, stress, 1.0_dp)
+        call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(transpose(tn), eps), tn), ntens, stran, 2.0_dp)
+        call voigt_to_tensor(dstran, ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, dstran, 2.0_dp)
+        drot_m = matmul(transpose(tn), t1)
+        fl0 = matmul(matmul(transpose(tn), fb0), orient(:, :, ip))
+        fl1 = matmul(matmul(transpose(t1), fb1), orient(:, :, ip))
+      else
+        ! rotate the converged stress and strain by DROT (identity without NLGEOM)
+        call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+        sig = matmul(matmul(drot, sig), transpose(drot))
+        call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
+        call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+        eps = matmul(matmul(drot, eps), transpose(drot))
+        call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
+      end if
 
       sse = 0.0_dp
       spd = 0.0_dp
@@ -385,7 +419,7 @@ contains
           coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
         end do
         call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-          ntens, nsv, pr, np, coords, drot, pn, celent, fb0, fb1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
+          ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
         statev_new(1:nsv, ip) = sv(1:nsv)
       end select
       pnewdt = min(pnewdt, pn)
@@ -393,6 +427,26 @@ contains
         call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
                   // itoa(ip))
         return
+      end if
+      if (local) then
+        ! back to global components: stress, strain and the tangent (column by column of unit global strains)
+        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+        call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, stress, 1.0_dp)
+        call voigt_to_tensor(stran(1:ntens), ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, stran, 2.0_dp)
+        call voigt_to_tensor(dstran(1:ntens), ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, dstran, 2.0_dp)
+        do c = 1, ntens
+          s_unit = 0.0_dp
+          s_unit(c) = 1.0_dp
+          call voigt_to_tensor(s_unit(1:ntens), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, s_unit, 2.0_dp)
+          s_unit(1:ntens) = matmul(ddsdde(1:ntens, 1:ntens), s_unit(1:ntens))
+          call voigt_to_tensor(s_unit(1:ntens), ntens, sig, 1.0_dp)
+          call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, s_unit, 1.0_dp)
+          col_g(1:ntens, c) = s_unit(1:ntens)
+        end do
+        ddsdde(1:ntens, 1:ntens) = col_g(1:ntens, 1:ntens)
       end if
       if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
       if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
@@ -640,6 +694,23 @@ contains
       shape_of = 0
     end select
   end function shape_of
+
+  !> Rotation R of the polar decomposition F = R U (det F > 0), by the Newton iteration X <- (X + X^-T)/2, which
+  !> converges quadratically to R from X = F.
+  pure function polar_rotation(f) result(r)
+    real(dp), intent(in) :: f(3, 3)  !< deformation gradient
+    real(dp) :: r(3, 3), x(3, 3)
+    integer :: it
+    r = f
+    do it = 1, 60
+      x = 0.5_dp * (r + transpose(inv3(r)))
+      if (maxval(abs(x - r)) <= 4.0_dp * epsilon(1.0_dp)) then
+        r = x
+        return
+      end if
+      r = x
+    end do
+  end function polar_rotation
 
   pure function identity() result(e)
     real(dp) :: e(3, 3)

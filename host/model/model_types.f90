@@ -11,6 +11,7 @@ module model_types
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
+  public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   integer, parameter :: etype_c3d8 = 1     !< 8-node hexahedron, F-bar
@@ -67,7 +68,23 @@ module model_types
     character(len=name_len) :: material = '' !< material name
     real(dp) :: thickness = 1.0_dp         !< plane-strain thickness [mm]
     type(source_pos_t) :: pos
+    character(len=name_len) :: orientation = '' !< ORIENTATION= ('' none)
+    integer :: iorient = 0                 !< its index in model%orientations (finish_model)
   end type section_t
+
+  !> *ORIENTATION: local material axes (docs/host.md). Points in model coordinates (an instance's placement applied).
+  type :: orientation_t
+    character(len=name_len) :: name = ''   !< upper-case name
+    integer :: system = 1                  !< 1 RECTANGULAR, 2 CYLINDRICAL
+    logical :: by_nodes = .false.          !< DEFINITION=NODES: a, b, c are nodes (nodes(:), model labels)
+    real(dp) :: a(3) = 0.0_dp              !< RECTANGULAR: point on local 1; CYLINDRICAL: first point on the axis
+    real(dp) :: b(3) = 0.0_dp              !< RECTANGULAR: point in the 1-2 plane; CYLINDRICAL: second axis point
+    real(dp) :: c(3) = 0.0_dp              !< RECTANGULAR: origin
+    integer :: nodes(3) = 0                !< DEFINITION=NODES: labels of a, b, c (0: c at the global origin)
+    integer :: extra_axis = 0              !< additional rotation about local axis 1..3 (0: none)
+    real(dp) :: extra_angle = 0.0_dp       !< its angle [degrees]
+    type(source_pos_t) :: pos
+  end type orientation_t
 
   type :: user_element_type_t
     character(len=name_len) :: name = ''   !< e.g. U1
@@ -172,12 +189,25 @@ module model_types
     type(source_pos_t) :: pos
   end type surface_t
 
-  !> *NODE PRINT, NSET=..., TOTALS=YES request: one CSV column per variable.
+  !> *NODE PRINT request: one CSV column per variable (set totals) and a table in JOB.dat.
   type :: node_print_t
     character(len=name_len) :: nset = ''   !< set name
-    integer :: set_index = 0               !< index into model%nsets
+    integer :: set_index = 0               !< index into model%nsets (0: every node, JOB.dat only)
     character(len=8), allocatable :: vars(:) !< RF1..RF3, U1..U3
+    integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
+    logical :: totals = .false.            !< TOTALS=YES: a TOTAL line under the table
+    logical :: summary = .true.            !< SUMMARY=YES (default): MAXIMUM/MINIMUM lines
   end type node_print_t
+
+  !> *EL PRINT request: a table of integration-point values in JOB.dat.
+  type :: el_print_t
+    character(len=name_len) :: elset = ''  !< set name ('' : every continuum element)
+    integer :: set_index = 0               !< index into model%elsets (0: every element)
+    character(len=8), allocatable :: vars(:) !< S11..S23, MISES, LE11..LE23 / E11..E23, SDVn
+    integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
+    logical :: totals = .false.            !< TOTALS=YES
+    logical :: summary = .true.            !< SUMMARY=YES (default)
+  end type el_print_t
 
   type :: step_t
     character(len=name_len) :: name = ''
@@ -218,9 +248,21 @@ module model_types
     integer, allocatable :: out_sdv(:)     !< SDVn requested one by one
     type(node_print_t), allocatable :: prints(:)
     integer :: nprint = 0
+    type(el_print_t), allocatable :: elprints(:) !< *EL PRINT requests
+    integer :: nelprint = 0
     integer :: restart_frequency = 0       !< *RESTART, WRITE, FREQUENCY=n in effect (0: no restart file)
     type(source_pos_t) :: pos
   end type step_t
+
+  !> A part instance flattened into the model (*ASSEMBLY/*INSTANCE): model label = part label + offset.
+  type :: instance_t
+    character(len=name_len) :: name = ''   !< upper-case instance name
+    character(len=name_len) :: part = ''   !< upper-case part name
+    integer :: node_offset = 0             !< model node label = part node label + node_offset
+    integer :: elem_offset = 0             !< model element label = part element label + elem_offset
+    integer :: node_last = 0               !< largest model node label of the instance
+    integer :: elem_last = 0               !< largest model element label of the instance
+  end type instance_t
 
   type :: model_t
     character(len=:), allocatable :: heading
@@ -269,9 +311,94 @@ module model_types
     integer :: n_initial_bc = 0
     type(step_t), allocatable :: steps(:)
     integer :: nstep = 0
+    type(instance_t), allocatable :: instances(:) !< part instances flattened into the model (label map)
+    integer :: ninstance = 0
+    type(orientation_t), allocatable :: orientations(:) !< *ORIENTATION definitions
+    integer :: norient = 0
+    integer :: monitor_node = 0            !< *MONITOR, NODE= (model label while reading, node index after; 0: none)
+    integer :: monitor_dof = 0             !< *MONITOR, DOF=
+    type(source_pos_t) :: monitor_pos      !< where *MONITOR is
   end type model_t
 
 contains
+
+  !> A model node (is_node) or element label as the deck wrote it: 'INSTANCE.label' for a label of a part
+  !> instance, the label itself otherwise.
+  pure function model_label_text(model, id, is_node) result(t)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: id           !< model label
+    logical, intent(in) :: is_node      !< node (true) or element label
+    character(len=:), allocatable :: t
+    character(len=16) :: b
+    integer :: k
+    write (b, '(i0)') id
+    t = trim(b)
+    do k = 1, model%ninstance
+      associate (in => model%instances(k))
+        if (is_node) then
+          if (id <= in%node_offset .or. id > in%node_last) cycle
+          write (b, '(i0)') id - in%node_offset
+        else
+          if (id <= in%elem_offset .or. id > in%elem_last) cycle
+          write (b, '(i0)') id - in%elem_offset
+        end if
+        t = trim(in%name)//'.'//trim(b)//' (model label '//t//')'
+        return
+      end associate
+    end do
+  end function model_label_text
+
+  !> Local axes (columns, unit, right-handed) of orientation o at point x (model coordinates); a, b, c resolved.
+  !> RECTANGULAR: 1 along a - c, 3 normal to the plane of a, b, c, 2 = 3 x 1. CYLINDRICAL: 3 along the axis a -> b,
+  !> 1 radial from the axis through x, 2 = 3 x 1. Then the additional rotation about local axis extra_axis.
+  !> ok = .false. when the axes are undefined (coinciding points, x on the cylinder axis).
+  pure subroutine orientation_axes(o, x, t, ok)
+    type(orientation_t), intent(in) :: o  !< the orientation
+    real(dp), intent(in) :: x(3)          !< the point
+    real(dp), intent(out) :: t(3, 3)      !< axes as columns
+    logical, intent(out) :: ok            !< defined
+    real(dp) :: e1(3), e2(3), e3(3), r(3), th, co, si, tt(3, 3)
+    integer :: i, j
+    real(dp), parameter :: tiny_len = 1.0e-12_dp
+    t = 0.0_dp
+    ok = .false.
+    if (o%system == 1) then
+      e1 = o%a - o%c
+      e3 = cross(e1, o%b - o%c)
+    else
+      e3 = o%b - o%a
+      if (norm2(e3) <= tiny_len * max(1.0_dp, norm2(o%a))) return
+      e3 = e3 / norm2(e3)
+      r = x - o%a
+      e1 = r - dot_product(r, e3) * e3
+    end if
+    if (norm2(e1) <= tiny_len * max(1.0_dp, norm2(x)) .or. norm2(e3) <= tiny_len**2 * max(1.0_dp, norm2(x))**2) &
+      return
+    e1 = e1 / norm2(e1)
+    e3 = e3 / norm2(e3)
+    e2 = cross(e3, e1)
+    t(:, 1) = e1
+    t(:, 2) = e2
+    t(:, 3) = e3
+    if (o%extra_axis >= 1 .and. o%extra_axis <= 3 .and. o%extra_angle /= 0.0_dp) then
+      ! rotation by the angle about local axis extra_axis (right-handed): the other two axes turn
+      th = o%extra_angle * acos(-1.0_dp) / 180.0_dp
+      co = cos(th)
+      si = sin(th)
+      i = mod(o%extra_axis, 3) + 1
+      j = mod(o%extra_axis + 1, 3) + 1
+      tt = t
+      t(:, i) = co * tt(:, i) + si * tt(:, j)
+      t(:, j) = -si * tt(:, i) + co * tt(:, j)
+    end if
+    ok = .true.
+  contains
+    pure function cross(p, q) result(w)
+      real(dp), intent(in) :: p(3), q(3)
+      real(dp) :: w(3)
+      w = [p(2) * q(3) - p(3) * q(2), p(3) * q(1) - p(1) * q(3), p(1) * q(2) - p(2) * q(1)]
+    end function cross
+  end subroutine orientation_axes
 
   !> Index of a node set by (upper-case) name, 0 if absent.
   pure integer function model_find_nset(model, name) result(k)

@@ -401,7 +401,8 @@ def case_initial_stress(exe, out, user):
     close("clamped: RF1 at x = 1 = s A", r["X1.RF1"], s, 1e-9)
     close("clamped: U2 at y = 1 = 0 (in equilibrium)", r["Y1.U2"], 0.0, 0.0, 1e-12)
     umat = ["*USER MATERIAL, CONSTANTS=2", "%g, %g" % (e, nu), "*DEPVAR", "6"]
-    init = ["*INITIAL CONDITIONS, TYPE=SOLUTION", "CUBE, %g, 0., 0., 0., 0., 0." % s]
+    # one logical data line continued over three lines by trailing commas
+    init = ["*INITIAL CONDITIONS, TYPE=SOLUTION", "CUBE, %g, 0.," % s, "0., 0.,", "0., 0."]
     r = run(exe, out, "init_solution", lambda d: cube_deck(d, init, False, umat), user=user)[-1]
     close("solution: U1 at x = 1 = -s/E", r["X1.U1"], -s / e, 1e-9)
     close("solution: U2 at y = 1 = nu s/E", r["Y1.U2"], nu * s / e, 1e-9)

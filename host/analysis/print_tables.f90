@@ -1,0 +1,393 @@
+!> Printed output in JOB.dat, laid out as Abaqus/Standard prints it: per printed increment a summary header, then
+!> one table per *NODE PRINT request (a line per node: U, RF components) and per *EL PRINT request (a line per
+!> element and integration point, one table per element type), with MAXIMUM/MINIMUM lines and their node or
+!> element (SUMMARY=YES, the default) and a TOTAL line (TOTALS=YES). A request prints every FREQUENCY-th increment
+!> of its step and at the step's last increment (FREQUENCY=0: never).
+module print_tables
+  use ldfcz_kinds, only: dp
+  use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user, etype_c3d8, etype_cpe4
+  use analysis_core, only: analysis_t
+  use stress_measures, only: mises_stress
+  use solid_element, only: polar_rotation
+  implicit none
+  private
+  public :: print_tables_any, print_tables_write
+
+  integer, parameter :: name_w = 8  !< column heading width
+
+contains
+
+  !> True when some step of the model asks for printed output.
+  pure logical function print_tables_any(model)
+    type(model_t), intent(in) :: model  !< the model
+    integer :: is
+    print_tables_any = .false.
+    do is = 1, model%nstep
+      if (model%steps(is)%nprint + model%steps(is)%nelprint > 0) print_tables_any = .true.
+    end do
+  end function print_tables_any
+
+  !> The tables of step st due at its converged increment kinc (last: the step's final increment).
+  subroutine print_tables_write(u, model, an, st, kstep, kinc, step_time, total_time, dt, last)
+    integer, intent(in) :: u                    !< JOB.dat unit
+    type(model_t), intent(in) :: model          !< the model
+    type(analysis_t), intent(in) :: an          !< converged state
+    type(step_t), intent(in) :: st              !< the step
+    integer, intent(in) :: kstep                !< step number
+    integer, intent(in) :: kinc                 !< increment number in the step
+    real(dp), intent(in) :: step_time           !< step time completed
+    real(dp), intent(in) :: total_time          !< total time completed
+    real(dp), intent(in) :: dt                  !< time increment completed
+    logical, intent(in) :: last                 !< the step's last increment
+    integer :: k
+    logical :: header
+    header = .false.
+    do k = 1, st%nprint
+      if (.not. due(st%prints(k)%frequency)) cycle
+      call write_header()
+      call node_table(u, model, an, st%prints(k))
+    end do
+    do k = 1, st%nelprint
+      if (.not. due(st%elprints(k)%frequency)) cycle
+      call write_header()
+      call element_tables(u, model, an, st%elprints(k), st%nlgeom)
+    end do
+    if (header) flush (u)
+  contains
+    logical function due(freq)
+      integer, intent(in) :: freq
+      due = .false.
+      if (freq <= 0) return
+      due = mod(kinc, freq) == 0 .or. last
+    end function due
+    subroutine write_header()
+      if (header) return
+      header = .true.
+      write (u, '(/,a,i6,a,i6,a,/)') '   STEP', kstep, '   INCREMENT', kinc, '   SUMMARY'
+      write (u, '(a,es12.5,a,es12.5)') ' TIME INCREMENT COMPLETED ', dt, ',  FRACTION OF STEP COMPLETED ', &
+        step_time / st%period
+      write (u, '(a,es12.5,a,es12.5)') ' STEP TIME COMPLETED      ', step_time, ',  TOTAL TIME COMPLETED        ', &
+        total_time
+    end subroutine write_header
+  end subroutine print_tables_write
+
+  !> One *NODE PRINT table.
+  subroutine node_table(u, model, an, np)
+    integer, intent(in) :: u                !< JOB.dat unit
+    type(model_t), intent(in) :: model      !< the model
+    type(analysis_t), intent(in) :: an      !< converged state
+    type(node_print_t), intent(in) :: np    !< the request
+    integer, allocatable :: nodes(:)
+    real(dp), allocatable :: val(:, :)
+    integer :: k, j, n, nv, comp, dof
+    if (np%set_index > 0) then
+      nodes = model%nsets(np%set_index)%nodes
+    else
+      nodes = [(k, k = 1, model%nnode)]
+    end if
+    n = size(nodes)
+    nv = size(np%vars)
+    allocate (val(nv, n))
+    do k = 1, n
+      do j = 1, nv
+        val(j, k) = 0.0_dp
+        comp = ichar(np%vars(j)(len_trim(np%vars(j)):len_trim(np%vars(j)))) - ichar('0')
+        if (comp > model%ndim) cycle
+        dof = (nodes(k) - 1) * model%ndim + comp
+        if (np%vars(j)(1:1) == 'U') then
+          val(j, k) = an%u(dof)
+        else if (an%prescribed(dof)) then
+          ! reaction = internal minus applied force on a prescribed dof (as JOB.csv and the VTU frames)
+          val(j, k) = an%fint(dof) - an%fext(dof) - an%fdl(dof)
+        end if
+      end do
+    end do
+    where (abs(val) < 1.0e-99_dp) val = 0.0_dp  ! two-digit exponents, as Abaqus prints them
+    write (u, '(//,a,//)') '                                       N O D E   O U T P U T'
+    if (np%set_index > 0) then
+      write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED FOR NODES BELONGING TO NODE SET '//trim(np%nset)
+    else
+      write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED FOR ALL NODES'
+    end if
+    write (u, '(a22,*(a15))') 'NODE FOOT-', (adjustr(np%vars(j)(1:name_w)), j = 1, nv)
+    write (u, '(a22,/)') 'NOTE    '
+    do k = 1, n
+      write (u, '(a20,2x,*(es15.4e2))') label_text(model, model%node_id(nodes(k)), .true.), val(:, k)
+    end do
+    call summary_lines(u, model, val, [(model%node_id(nodes(k)), k = 1, n)], [(0, k = 1, n)], np%summary, &
+      np%totals, .true., 22)
+  end subroutine node_table
+
+  !> The tables of one *EL PRINT request: one per continuum element type in the set.
+  subroutine element_tables(u, model, an, ep, nlgeom)
+    integer, intent(in) :: u                !< JOB.dat unit
+    type(model_t), intent(in) :: model      !< the model
+    type(analysis_t), intent(in) :: an      !< converged state
+    type(el_print_t), intent(in) :: ep      !< the request
+    logical, intent(in) :: nlgeom           !< the step's NLGEOM (local axes turn with the material)
+    integer, allocatable :: elems(:), kinds(:)
+    integer :: k, ik
+    if (ep%set_index > 0) then
+      elems = model%elsets(ep%set_index)%elems
+    else
+      elems = [(k, k = 1, model%nelem)]
+    end if
+    elems = pack(elems, model%elem_kind(elems) /= etype_user)
+    allocate (kinds(0))
+    do k = 1, size(elems)
+      if (.not. any(kinds == model%elem_kind(elems(k)))) kinds = [kinds, model%elem_kind(elems(k))]
+    end do
+    do ik = 1, size(kinds)
+      call element_table(u, model, an, ep, pack(elems, model%elem_kind(elems) == kinds(ik)), kinds(ik), nlgeom)
+    end do
+  end subroutine element_tables
+
+  !> One table of integration-point values of elements of one type.
+  subroutine element_table(u, model, an, ep, elems, kind, nlgeom)
+    integer, intent(in) :: u                !< JOB.dat unit
+    type(model_t), intent(in) :: model      !< the model
+    type(analysis_t), intent(in) :: an      !< converged state
+    type(el_print_t), intent(in) :: ep      !< the request
+    integer, intent(in) :: elems(:)         !< element indices, one type
+    integer, intent(in) :: kind             !< their type
+    logical, intent(in) :: nlgeom           !< local axes turn with the material
+    character(len=8), allocatable :: cols(:)
+    real(dp), allocatable :: val(:, :)
+    integer, allocatable :: lab(:), pt(:)
+    integer :: k, j, ie, ip, nrow, row, nsv_max, nsv, nt, c
+    real(dp) :: s6(6), sl(6), el(6), t(3, 3)
+    ! columns: the request's variables, SDV expanded to every state variable of these elements
+    nsv_max = 0
+    do k = 1, size(elems)
+      nsv_max = max(nsv_max, an%mats(model%elem_section(elems(k)))%nstatv)
+    end do
+    allocate (cols(0))
+    do j = 1, size(ep%vars)
+      if (ep%vars(j) == 'SDV') then
+        do k = 1, nsv_max
+          cols = [character(len=8) :: cols, sdv_name(k)]
+        end do
+      else
+        cols = [character(len=8) :: cols, ep%vars(j)]
+      end if
+    end do
+    nrow = 0
+    do k = 1, size(elems)
+      nrow = nrow + size(an%conv(elems(k))%stress, 2)
+    end do
+    allocate (val(size(cols), nrow), lab(nrow), pt(nrow))
+    val = 0.0_dp
+    row = 0
+    do k = 1, size(elems)
+      ie = elems(k)
+      nt = size(an%conv(ie)%stress, 1)
+      nsv = an%mats(model%elem_section(ie))%nstatv
+      do ip = 1, size(an%conv(ie)%stress, 2)
+        row = row + 1
+        lab(row) = model%elem_id(ie)
+        pt(row) = ip
+        s6 = 0.0_dp
+        s6(1:nt) = an%conv(ie)%stress(:, ip)
+        sl = s6
+        el = 0.0_dp
+        el(1:nt) = an%conv(ie)%stran(:, ip)
+        if (allocated(an%axes(ie)%t)) then
+          ! an *ORIENTATION: components in its local axes, as Abaqus prints them
+          t = an%axes(ie)%t(:, :, ip)
+          if (nlgeom) t = matmul(polar_rotation(point_f(model, an, ie, ip)), t)
+          sl = turned(s6, t, 1.0_dp)
+          el = turned(el, t, 0.5_dp)
+        end if
+        do j = 1, size(cols)
+          select case (cols(j)(1:1))
+          case ('M')
+            val(j, row) = mises_stress(s6)
+          case ('S')
+            if (cols(j)(1:3) == 'SDV') then
+              read (cols(j)(4:), *) c
+              if (c <= nsv) val(j, row) = an%conv(ie)%statev(c, ip)
+            else
+              c = component(cols(j)(2:3))
+              if (c <= nt) val(j, row) = sl(c)
+            end if
+          case ('E', 'L')
+            c = component(cols(j)(len_trim(cols(j)) - 1:len_trim(cols(j))))
+            if (c <= nt) val(j, row) = el(c)
+          end select
+        end do
+      end do
+    end do
+    where (abs(val) < 1.0e-99_dp) val = 0.0_dp  ! two-digit exponents, as Abaqus prints them
+    write (u, '(//,a,//)') '                                       E L E M E N T   O U T P U T'
+    if (ep%set_index > 0) then
+      write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR ELEMENT TYPE '// &
+        trim(type_name(kind))//' AND ELEMENT SET '//trim(ep%elset)
+    else
+      write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR ELEMENT TYPE '// &
+        trim(type_name(kind))
+    end if
+    write (u, '(a28,*(a15))') 'ELEMENT  PT FOOT-', (adjustr(cols(j)), j = 1, size(cols))
+    write (u, '(a28,/)') 'NOTE    '
+    do row = 1, nrow
+      write (u, '(a20,i4,4x,*(es15.4e2))') label_text(model, lab(row), .false.), pt(row), val(:, row)
+    end do
+    call summary_lines(u, model, val, lab, pt, ep%summary, ep%totals, .false., 28)
+  end subroutine element_table
+
+  !> Components (Abaqus order, shears times shear_factor^-1 in the tensor) of a symmetric tensor in the axes t:
+  !> t^T A t. shear_factor 1 for stress, 0.5 for engineering strain.
+  pure function turned(v, t, shear_factor) result(w)
+    real(dp), intent(in) :: v(6)            !< global components 11, 22, 33, 12, 13, 23
+    real(dp), intent(in) :: t(3, 3)         !< axes as columns
+    real(dp), intent(in) :: shear_factor    !< tensor shear = shear_factor x component
+    real(dp) :: w(6), a(3, 3)
+    a = reshape([v(1), shear_factor * v(4), shear_factor * v(5), shear_factor * v(4), v(2), shear_factor * v(6), &
+      shear_factor * v(5), shear_factor * v(6), v(3)], [3, 3])
+    a = matmul(matmul(transpose(t), a), t)
+    w = [a(1, 1), a(2, 2), a(3, 3), a(1, 2) / shear_factor, a(1, 3) / shear_factor, a(2, 3) / shear_factor]
+  end function turned
+
+  !> Deformation gradient at integration point ip of continuum element ie in the converged state.
+  function point_f(model, an, ie, ip) result(f)
+    type(model_t), intent(in) :: model      !< the model
+    type(analysis_t), intent(in) :: an      !< converged state
+    integer, intent(in) :: ie               !< element
+    integer, intent(in) :: ip               !< integration point
+    real(dp) :: f(3, 3)
+    integer :: a, i, j, node
+    f = 0.0_dp
+    do i = 1, 3
+      f(i, i) = 1.0_dp
+    end do
+    associate (g => an%geo(an%elem_geo(ie)))
+      do a = 1, model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+        node = model%conn(model%conn_ptr(ie) + a - 1)
+        do j = 1, model%ndim
+          do i = 1, model%ndim
+            f(i, j) = f(i, j) + an%u_conv((node - 1) * model%ndim + i) * g%dndx_ref(a, j, ip)
+          end do
+        end do
+      end do
+    end associate
+  end function point_f
+
+  !> MAXIMUM / AT NODE|ELEMENT / MINIMUM / AT ... (summary) and TOTAL (totals) lines of a table.
+  subroutine summary_lines(u, model, val, lab, pt, summary, totals, is_node, w)
+    integer, intent(in) :: u              !< JOB.dat unit
+    type(model_t), intent(in) :: model    !< the model
+    real(dp), intent(in) :: val(:, :)     !< (ncol, nrow)
+    integer, intent(in) :: lab(:)         !< model label of each row
+    integer, intent(in) :: pt(:)          !< integration point of each row (0 for nodes)
+    logical, intent(in) :: summary        !< SUMMARY=YES
+    logical, intent(in) :: totals         !< TOTALS=YES
+    logical, intent(in) :: is_node        !< node table
+    integer, intent(in) :: w              !< width of the label columns
+    integer :: j, imax(size(val, 1)), imin(size(val, 1))
+    character(len=24) :: at(size(val, 1))
+    character(len=w) :: head
+    if (size(val, 2) == 0) return
+    if (summary) then
+      do j = 1, size(val, 1)
+        imax(j) = maxloc(val(j, :), dim=1)
+        imin(j) = minloc(val(j, :), dim=1)
+      end do
+      head = ' MAXIMUM'
+      write (u, '(/,a,*(es15.4e2))') head, (val(j, imax(j)), j = 1, size(val, 1))
+      do j = 1, size(val, 1)
+        at(j) = where_text(imax(j))
+      end do
+      head = merge(' AT NODE   ', ' AT ELEMENT', is_node)
+      write (u, '(a,*(a15))') head, (adjustr(at(j)(1:15)), j = 1, size(val, 1))
+      head = ' MINIMUM'
+      write (u, '(/,a,*(es15.4e2))') head, (val(j, imin(j)), j = 1, size(val, 1))
+      do j = 1, size(val, 1)
+        at(j) = where_text(imin(j))
+      end do
+      head = merge(' AT NODE   ', ' AT ELEMENT', is_node)
+      write (u, '(a,*(a15))') head, (adjustr(at(j)(1:15)), j = 1, size(val, 1))
+    end if
+    head = ' TOTAL'
+    if (totals) write (u, '(/,a,*(es15.4e2))') head, merge(0.0_dp, sum(val, dim=2), abs(sum(val, dim=2)) < 1.0e-99_dp)
+  contains
+    function where_text(row) result(t)
+      integer, intent(in) :: row
+      character(len=24) :: t
+      character(len=8) :: b
+      t = adjustl(label_text(model, lab(row), is_node))
+      if (pt(row) > 0) then
+        write (b, '(i0)') pt(row)
+        t = trim(t)//'-'//trim(b)
+      end if
+      ! the tail fits the 15-character column
+      if (len_trim(t) > 14) t = t(len_trim(t) - 13:)
+    end function where_text
+  end subroutine summary_lines
+
+  !> A label as printed: 'INSTANCE.label' for a part instance's node or element, the model label otherwise.
+  function label_text(model, id, is_node) result(t)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: id           !< model label
+    logical, intent(in) :: is_node      !< node (true) or element
+    character(len=20) :: t
+    character(len=40) :: b
+    integer :: k, local
+    write (b, '(i0)') id
+    do k = 1, model%ninstance
+      associate (in => model%instances(k))
+        if (is_node) then
+          if (id <= in%node_offset .or. id > in%node_last) cycle
+          local = id - in%node_offset
+        else
+          if (id <= in%elem_offset .or. id > in%elem_last) cycle
+          local = id - in%elem_offset
+        end if
+        write (b, '(i0)') local
+        b = trim(in%name)//'.'//trim(b)
+        exit
+      end associate
+    end do
+    t = b(max(1, len_trim(b) - 19):len_trim(b))
+    t = adjustr(t)
+  end function label_text
+
+  !> Index of a tensor component '11', '22', '33', '12', '13', '23' in Abaqus' order.
+  pure integer function component(c)
+    character(len=*), intent(in) :: c  !< two digits
+    select case (c)
+    case ('11')
+      component = 1
+    case ('22')
+      component = 2
+    case ('33')
+      component = 3
+    case ('12')
+      component = 4
+    case ('13')
+      component = 5
+    case default
+      component = 6
+    end select
+  end function component
+
+  !> Column name of state variable k.
+  pure function sdv_name(k) result(t)
+    integer, intent(in) :: k  !< state variable number
+    character(len=8) :: t
+    write (t, '(a,i0)') 'SDV', k
+  end function sdv_name
+
+  !> Element type name of a continuum element kind.
+  pure function type_name(kind) result(t)
+    integer, intent(in) :: kind  !< element kind
+    character(len=8) :: t
+    select case (kind)
+    case (etype_c3d8)
+      t = 'C3D8'
+    case (etype_cpe4)
+      t = 'CPE4'
+    case default
+      t = 'SOLID'
+    end select
+  end function type_name
+
+end module print_tables
