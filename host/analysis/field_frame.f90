@@ -7,6 +7,7 @@ module field_frame
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use output_files, only: output_t, output_vtu_frame, output_vtu_t
+  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum
   implicit none
   private
   public :: write_field_frame
@@ -26,6 +27,7 @@ contains
     integer :: ie, nn, k, ncell, nip, ip, nsv, h, nt, i
     real(dp) :: s(6), e(6), p(3)
     logical :: want_strain
+    type(parallel_t) :: par
     ncell = model%nelem
     allocate (fr%x(3, model%nnode), fr%u(3, model%nnode), fr%rf(3, model%nnode))
     fr%x = model%x
@@ -83,8 +85,9 @@ contains
           fr%cell_type(ie) = 2  ! poly-vertex for other user elements
         end if
       end select
+      if (model%elem_kind(ie) == etype_user) fr%cohesive(ie) = 1
+      if (.not. an%owned(ie)) cycle   ! another process's element: its cell data come with the sum below
       if (model%elem_kind(ie) == etype_user) then
-        fr%cohesive(ie) = 1
         ! opening = top - bottom (COH3D8: node k+4 over k; COH2D4: 4 over 1, 3 over 2)
         if (nn == 8 .or. nn == 4) call cell_opening(model, an, ie, nn, fr%opening(:, ie))
         ! Delta_max and traction where the element type declares them ('**LDFCZ SVARS', docs/uel.md)
@@ -121,7 +124,28 @@ contains
         end do
       end if
     end do
+    if (parallel_distributed(an%par)) then
+      ! each process filled its own elements' cells (zero elsewhere): the sums hold every cell once
+      par = an%par
+      call sum_cells(fr%stress)
+      call sum_cells(fr%principal)
+      call sum_cells(fr%sdv)
+      call sum_cells(fr%opening)
+      if (want_strain) call sum_cells(fr%strain)
+      call parallel_sum(par, fr%mises)
+      call parallel_sum(par, fr%traction)
+      call parallel_sum(par, fr%delta_max)
+    end if
     call output_vtu_frame(out, fr, ttot)
+  contains
+    subroutine sum_cells(a)
+      real(dp), intent(inout) :: a(:, :)
+      real(dp), allocatable :: flat(:)
+      if (size(a) == 0) return
+      flat = reshape(a, [size(a)])
+      call parallel_sum(par, flat)
+      a = reshape(flat, shape(a))
+    end subroutine sum_cells
   end subroutine write_field_frame
 
   !> The state variables a frame holds: every one (SDV requested), the listed ones (SDVn), the first three when the

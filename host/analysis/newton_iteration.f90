@@ -9,7 +9,6 @@ module newton_iteration
   use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
     sparse_is_factored, sparse_solve_krylov, sparse_factors_exact
   use output_files, only: output_t, output_log
-  use abaqus_host_state, only: abaqus_stop_requested
   use solver_options, only: newton_modified, newton_krylov, newton_auto
   use run_summary, only: run_summary_t
   use solver_text, only: itoa, rtoa
@@ -134,7 +133,7 @@ contains
         call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
           pnewdt_min, stat, errmsg, pnewdt_who)
         an%extrapolated = .false.  ! only the first call of an increment sees the extrapolated start
-        if (abaqus_stop_requested()) then
+        if (an%stop_asked) then
           stopped = .true.
           exit newton_loop
         end if

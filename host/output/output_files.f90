@@ -38,6 +38,7 @@ module output_files
     character(len=:), allocatable :: job     !< job name
     character(len=:), allocatable :: dir     !< output directory
     logical :: quiet = .false.               !< no echo of the log on standard output
+    logical :: silent = .false.              !< writes nothing (a process other than rank 0 of an MPI run)
     logical :: tty = .false.                 !< standard output is a terminal
     integer :: csv = -1, sta = -1, log = -1, pvd = -1
     integer :: nframe = 0
@@ -68,7 +69,7 @@ contains
 
   !> Open JOB.csv, JOB.sta and JOB.log in dir. append (a restart): JOB.sta and JOB.log are continued and JOB.csv is
   !> left closed for output_csv_resume.
-  subroutine output_open(out, job, dir, quiet, stat, errmsg, append)
+  subroutine output_open(out, job, dir, quiet, stat, errmsg, append, silent)
     type(output_t), intent(out) :: out                   !< output state
     character(len=*), intent(in) :: job                  !< job name
     character(len=*), intent(in) :: dir                  !< directory (must exist)
@@ -76,6 +77,8 @@ contains
     integer, intent(out) :: stat                         !< 0 ok, 2 cannot write
     character(len=:), allocatable, intent(out) :: errmsg !< message
     logical, intent(in), optional :: append              !< continue the files of an earlier run (restart)
+    !> open nothing and write nothing (the processes other than rank 0 of an MPI run: output is written once)
+    logical, intent(in), optional :: silent
     integer :: ios
     logical :: cont
     cont = .false.
@@ -86,6 +89,12 @@ contains
     out%tty = stdout_is_terminal() .and. .not. quiet
     stat = 0
     errmsg = ''
+    if (present(silent)) out%silent = silent
+    if (out%silent) then
+      out%quiet = .true.
+      out%tty = .false.
+      return
+    end if
     if (cont) then
       open (newunit=out%sta, file=path(out, '.sta'), status='unknown', position='append', action='write', iostat=ios)
     else
@@ -127,6 +136,7 @@ contains
     stat = 0
     errmsg = ''
     fresh = .false.
+    if (out%silent) return
     fname = path(out, '.csv')
     header = 'step,inc,step_time,total_time'
     do i = 1, size(columns)
@@ -250,6 +260,7 @@ contains
     type(output_t), intent(inout) :: out          !< output state
     character(len=*), intent(in) :: columns(:)    !< column names after the four time columns
     integer :: i
+    if (out%silent) return
     write (out%csv, '(a)', advance='no') 'step,inc,step_time,total_time'
     do i = 1, size(columns)
       write (out%csv, '(a)', advance='no') ','//trim(columns(i))
@@ -266,6 +277,7 @@ contains
     real(dp), intent(in) :: values(:)     !< column values
     character(len=32) :: b
     integer :: i
+    if (out%silent) return
     write (out%csv, '(i0,a,i0,2(a,es23.15e3))', advance='no') kstep, ',', kinc, ',', step_time, ',', total_time
     do i = 1, size(values)
       write (b, '(es23.15e3)') values(i)
@@ -284,6 +296,7 @@ contains
     character(len=*), intent(in) :: outcome       !< converged, cutback: ..., failed: ...
     real(dp), intent(in), optional :: ratios(:)   !< r_max / q_avg per iteration
     integer :: i
+    if (out%silent) return
     write (out%sta, '(i5,i6,i5,i6,2es14.6,2x,a)', advance='no') kstep, kinc, attempt, iterations, step_time, dt, &
       trim(outcome)
     if (present(ratios)) then
@@ -302,6 +315,7 @@ contains
   subroutine output_sta_note(out, text)
     type(output_t), intent(inout) :: out  !< output state
     character(len=*), intent(in) :: text  !< the note
+    if (out%silent) return
     write (out%sta, '(a)') '# '//text
     flush (out%sta)
   end subroutine output_sta_note
@@ -346,6 +360,12 @@ contains
     name = out%job//'_'//trim(b)//'.vtu'
     np = size(frame%x, 2)
     nc = size(frame%cell_type)
+    if (out%silent) then
+      ! the frame is written by rank 0; the list of frame times is kept for the restart files
+      if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
+      out%frame_times = [out%frame_times, total_time]
+      return
+    end if
     open (newunit=u, file=out%dir//'/'//name, status='replace', action='write', iostat=ios)
     if (ios /= 0) return
     write (u, '(a)') '<?xml version="1.0"?>'
