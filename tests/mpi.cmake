@@ -1,0 +1,38 @@
+# Tests of the distributed run (LDFCZ_MPI=ON only; tools/test.sh builds that configuration in build-mpi): each deck
+# class under mpirun -np 2 and -np 3 against the same deck on one process (tests/regression/check_mpi.py: same
+# increments, attempts and Newton iterations, results within 1e-6 of each column's largest value; XIT: the same
+# message naming the element), and the partition test (tests/mpi/partition_check.f90: every element owned once,
+# the distributed force and tangent equal to the serial ones to 1e-12).
+if(NOT LDFCZ_MPI OR NOT TARGET ldfcz)
+  return()
+endif()
+find_program(LDFCZ_MPIEXEC NAMES mpirun mpiexec REQUIRED)
+set(LDFCZ_MPI_ENV OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1)
+
+add_executable(partition_check mpi/partition_check.f90)
+target_link_libraries(partition_check PRIVATE ldfcz_host "$<LINK_LIBRARY:WHOLE_ARCHIVE,ldfcz_abaqus_utils>")
+set_target_properties(partition_check PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests/bin")
+foreach(np 2 3)
+  foreach(deck patch/patch_c3d8 peel/peel_ps)
+    get_filename_component(name ${deck} NAME)
+    add_test(NAME mpi_partition_${name}_np${np}
+      COMMAND ${LDFCZ_MPIEXEC} -np ${np} --oversubscribe --bind-to none $<TARGET_FILE:partition_check>
+        ${PROJECT_SOURCE_DIR}/decks/${deck}.inp)
+    set_tests_properties(mpi_partition_${name}_np${np} PROPERTIES LABELS "mpi" TIMEOUT 120
+      ENVIRONMENT "${LDFCZ_MPI_ENV}" PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
+  endforeach()
+endforeach()
+
+set(LDFCZ_CHECK_MPI "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_mpi.py")
+function(ldfcz_add_mpi_test name deck)
+  add_test(NAME ${name} COMMAND Python3::Interpreter ${LDFCZ_CHECK_MPI} --exe $<TARGET_FILE:ldfcz>
+    --deck ${deck} --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/${name} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "mpi;deck" TIMEOUT 600 ENVIRONMENT "${LDFCZ_MPI_ENV}")
+endfunction()
+ldfcz_add_mpi_test(mpi_cohesive_block ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp)
+ldfcz_add_mpi_test(mpi_leonov_uniaxial ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp)
+ldfcz_add_mpi_test(mpi_rotation ${PROJECT_SOURCE_DIR}/decks/single/c3d8_rotation_uniaxial.inp)
+ldfcz_add_mpi_test(mpi_peel_ps ${PROJECT_SOURCE_DIR}/decks/peel/peel_ps.inp)
+ldfcz_add_mpi_test(mpi_user_uel ${PROJECT_SOURCE_DIR}/decks/single/user_uel.inp
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_elastic.f)
+ldfcz_add_mpi_test(mpi_xit ${PROJECT_SOURCE_DIR}/decks/bad/runtime/uel_phi_zero.inp --xit)
