@@ -36,3 +36,19 @@ ldfcz_add_mpi_test(mpi_peel_ps ${PROJECT_SOURCE_DIR}/decks/peel/peel_ps.inp)
 ldfcz_add_mpi_test(mpi_user_uel ${PROJECT_SOURCE_DIR}/decks/single/user_uel.inp
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_elastic.f)
 ldfcz_add_mpi_test(mpi_xit ${PROJECT_SOURCE_DIR}/decks/bad/runtime/uel_phi_zero.inp --xit)
+
+# restart from per-process restart files (JOB.rst.RofN) and SIGTERM to the launcher (tests/regression/check_restart.py
+# --np): the continuation reproduces the uninterrupted distributed run to 1e-9 (observed 1e-12: two distributed runs
+# differ in the last bits, MUMPS' parallel assembly order), every process stops after the increment under way.
+set(LDFCZ_CHECK_RESTART_MPI "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py")
+function(ldfcz_add_mpi_restart_test name deck)
+  add_test(NAME ${name} COMMAND Python3::Interpreter ${LDFCZ_CHECK_RESTART_MPI} --exe $<TARGET_FILE:ldfcz>
+    --deck ${deck} --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/${name} --rel 1e-9 ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "mpi;restart" TIMEOUT 600 ENVIRONMENT "${LDFCZ_MPI_ENV}")
+endfunction()
+ldfcz_add_mpi_restart_test(mpi_restart_cohesive_np2 ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp
+  --np 2 --stop 9 --freq 1 --other-deck ${PROJECT_SOURCE_DIR}/decks/single/cohesive_mode_I.inp)
+ldfcz_add_mpi_restart_test(mpi_restart_umat_np3 ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp
+  --np 3 --stop 45 --freq 7)
+ldfcz_add_mpi_restart_test(mpi_sigterm_peel_np2 ${PROJECT_SOURCE_DIR}/decks/peel/peel_ps.inp
+  --np 2 --stop 20 --freq 100000 --term)
