@@ -86,6 +86,7 @@ module analysis_core
     logical :: stop_asked = .false.             !< a user routine asked to end the analysis (XIT) in the last loop
     integer :: stop_elem = 0                    !< the element that asked (lowest index; 0: not known)
     character(len=:), allocatable :: stop_text  !< the routine's message
+    integer :: stop_rank = 0                    !< the process whose element asked (distributed run)
     integer :: n_assembly = 0
   end type analysis_t
 
@@ -460,7 +461,7 @@ contains
       call parallel_lowest(an%par, fail_elem, fail_text)
       if (fail_elem == 0) fail_elem = huge(1)
       an%stop_asked = parallel_any(an%par, an%stop_asked)
-      if (an%stop_asked) call parallel_lowest(an%par, an%stop_elem, an%stop_text)
+      if (an%stop_asked) call parallel_lowest(an%par, an%stop_elem, an%stop_text, an%stop_rank)
     end if
     if (fail_elem /= huge(1)) then
       stat = 1

@@ -23,7 +23,7 @@ module static_step
   use field_frame, only: write_field_frame
   use stop_report, only: stop_message
   use solver_text, only: itoa, rtoa
-  use parallel_context, only: parallel_file, parallel_max
+  use parallel_context, only: parallel_file, parallel_max, parallel_distributed
   use stop_signal, only: stop_signal_install, stop_signal_received, stop_signal_name
   implicit none
   private
@@ -290,6 +290,8 @@ contains
               msg = 'ldfcz: error: '//stop_message(model, an%stop_elem, an%stop_text, is, s%kinc)
               call output_log(out, msg)
               if (out%quiet) write (error_unit, '(a)') msg
+              if (parallel_distributed(an%par)) call output_log(out, 'ldfcz: the element is computed by process '// &
+                itoa(an%stop_rank)//' of '//itoa(an%par%nranks)//'; every process stopped')
               exit_code = exit_input
               exit steps
             end if

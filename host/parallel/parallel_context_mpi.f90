@@ -115,13 +115,15 @@ contains
 
   !> The lowest positive key over the processes (0 where none has one) and the text of the process that holds it:
   !> the element that failed or asked to stop, with its message, the same on every process.
-  subroutine parallel_lowest(par, key, text)
+  subroutine parallel_lowest(par, key, text, owner)
     type(parallel_t), intent(inout) :: par                 !< context
     integer, intent(inout) :: key                          !< this process's key in, the lowest out
     character(len=:), allocatable, intent(inout) :: text   !< its text in, the lowest key's out
+    integer, intent(out), optional :: owner                !< the process that holds it
     integer :: ierr, pair(2), best(2), n
     integer(i8) :: c0
     if (.not. allocated(text)) text = ''
+    if (present(owner)) owner = par%rank
     if (par%nranks <= 1) return
     c0 = clock()
     pair = [huge(1), par%rank]
@@ -132,6 +134,7 @@ contains
       text = ''
     else
       key = best(1)
+      if (present(owner)) owner = best(2)
       n = len(text)
       call MPI_Bcast(n, 1, MPI_INTEGER, best(2), par%comm, ierr)
       if (par%rank /= best(2)) then

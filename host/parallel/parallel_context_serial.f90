@@ -80,11 +80,13 @@ contains
 
   !> The lowest positive key over the processes (0 where none has one) and the text of the process that holds it:
   !> the element that failed or asked to stop, with its message, the same on every process.
-  subroutine parallel_lowest(par, key, text)
+  subroutine parallel_lowest(par, key, text, owner)
     type(parallel_t), intent(inout) :: par                 !< context
     integer, intent(inout) :: key                          !< this process's key in, the lowest out
     character(len=:), allocatable, intent(inout) :: text   !< its text in, the lowest key's out
+    integer, intent(out), optional :: owner                !< the process that holds it
     if (.not. allocated(text)) text = ''
+    if (present(owner)) owner = par%rank
     if (.false.) key = int(par%t_comm)
   end subroutine parallel_lowest
 

@@ -90,6 +90,8 @@ def main():
     ap.add_argument("--np", type=int, nargs="+", default=[2, 3])
     ap.add_argument("--user")
     ap.add_argument("--xit", action="store_true", help="the deck's routine calls XIT: exit 2, same message")
+    ap.add_argument("--remote-at", type=int, nargs="*", default=[],
+                    help="with --xit: for these N the element must be computed by a process other than rank 0")
     ap.add_argument("--tol", type=float, default=1e-6)
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("extra", nargs="*", help="more ldfcz options (after --)")
@@ -117,7 +119,12 @@ def main():
                 fail(f"-np {np}: XIT message differs:\n  1: {m1[-1:]}\n  {np}: {m[-1:]}")
             if "(element " not in m[-1]:
                 fail(f"-np {np}: the XIT message names no element: {m[-1]}")
-            print(f"-np {np}: exit 2 everywhere, message: {m[-1]}")
+            who = re.findall(r"the element is computed by process (\d+) of", log)
+            if not who:
+                fail(f"-np {np}: the log does not say which process computed the element")
+            if np in a.remote_at and who[-1] == "0":
+                fail(f"-np {np}: the element is rank 0's: the test needs it on another process")
+            print(f"-np {np}: exit 2 everywhere, element on process {who[-1]}, message: {m[-1]}")
             continue
         c1, c = summary_counts(log1), summary_counts(log)
         if c1 is None or c != c1:
