@@ -93,6 +93,8 @@ def main():
     ap.add_argument("--remote-at", type=int, nargs="*", default=[],
                     help="with --xit: for these N the element must be computed by a process other than rank 0")
     ap.add_argument("--tol", type=float, default=1e-6)
+    ap.add_argument("--expect-exit", type=int, default=0, help="exit status of a run that is not an XIT stop "
+                    "(3 with --stop-after-increments)")
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("extra", nargs="*", help="more ldfcz options (after --)")
     a = ap.parse_args()
@@ -100,7 +102,7 @@ def main():
         fail("mpirun not found (tools/setup.sh installs openmpi-bin for the LDFCZ_MPI build)")
     ref_out = os.path.join(a.out, "np1")
     rc1, text1 = run(a.exe, a.deck, ref_out, 1, a.user, a.extra, a.threads)
-    want = 2 if a.xit else 0
+    want = 2 if a.xit else a.expect_exit
     if rc1 != want:
         fail(f"one process: exit {rc1}, expected {want}\n{text1[-3000:]}")
     base1 = job_files(ref_out, a.deck)
