@@ -181,6 +181,7 @@ program ldfcz
   ! an MPI run writes its log, CSV, status and frames once, from rank 0
   call output_open(out, job, outdir, quiet, stat, errmsg, append=len(restart_from) > 0, &
     silent=.not. parallel_writer(par))
+  out%npieces = par%nranks   ! VTU frames: one piece per process (JOB_NNNN.pvtu)
   if (stat /= 0) call die(errmsg)
   call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
