@@ -58,3 +58,24 @@ ldfcz_add_mpi_restart_test(mpi_restart_umat_np3 ${PROJECT_SOURCE_DIR}/decks/sing
   --np 3 --stop 45 --freq 7)
 ldfcz_add_mpi_restart_test(mpi_sigterm_peel_np2 ${PROJECT_SOURCE_DIR}/decks/peel/peel_ps.inp
   --np 2 --stop 20 --freq 100000 --term)
+
+# other Newton variants and preconditioning factors distributed (GMRES products summed over the processes, LDL^T
+# factors of the symmetric part from the processes' entries): the full-Newton iterates, so the same counts
+ldfcz_add_mpi_test(mpi_cohesive_krylov_symmetric_single ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp
+  -- --newton krylov --factors symmetric-single)
+ldfcz_add_mpi_test(mpi_cohesive_modified ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp -- --newton modified)
+
+# the closed-form load tests of tests/host.cmake run distributed (ldfcz_np2: mpirun -np 2 ldfcz): *DLOAD/*DSLOAD
+# pressure on a thick cylinder (Lame), *EQUATION and *TIE constraints, load history over steps, initial stress
+file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2"
+  CONTENT "#!/bin/sh\nexec \"${CMAKE_CURRENT_SOURCE_DIR}/mpi/mpirun_ldfcz.sh\" 2 \"$<TARGET_FILE:ldfcz>\" \"$@\"\n"
+  FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+foreach(case lame2d lame3d equation tie steps)
+  add_test(NAME mpi_loads_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py
+    --exe ${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2 --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/loads_${case} --case ${case})
+  set_tests_properties(mpi_loads_${case} PROPERTIES LABELS "mpi;deck" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}")
+endforeach()
+add_test(NAME mpi_loads_initial_stress COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py
+  --exe ${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2 --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/loads_initial_stress
+  --case initial_stress --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
+set_tests_properties(mpi_loads_initial_stress PROPERTIES LABELS "mpi;deck" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}")

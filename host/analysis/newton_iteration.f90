@@ -12,6 +12,7 @@ module newton_iteration
   use solver_options, only: newton_modified, newton_krylov, newton_auto
   use run_summary, only: run_summary_t
   use solver_text, only: itoa, rtoa
+  use parallel_context, only: parallel_distributed, parallel_min
   implicit none
   private
   public :: newton_state_t, newton_solve, newton_forget_factors
@@ -213,6 +214,9 @@ contains
           kbudget = krylov_max_iter
           if (newton == newton_auto .and. ns%t_solve_last > 0.0_dp) &
             kbudget = max(2, min(krylov_max_iter, int(0.5_dp * ns%t_fact_last / ns%t_solve_last)))
+          ! the budget comes from measured times, which differ between processes: the smallest, on every process
+          ! (GMRES runs collective solves and products: all must take the same iterations)
+          if (parallel_distributed(an%par)) kbudget = nint(parallel_min(an%par, real(kbudget, dp)))
           r_copy = r(1:an%neq)
           t0s = sparse_time_solve(an%sys)
           call sparse_solve_krylov(an%sys, r(1:an%neq), tol, kbudget, kbudget, kit, stat, smsg)
