@@ -7,7 +7,10 @@ if(NOT LDFCZ_MPI OR NOT TARGET ldfcz)
   return()
 endif()
 find_program(LDFCZ_MPIEXEC NAMES mpirun mpiexec REQUIRED)
-set(LDFCZ_MPI_ENV OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1)
+# yield_when_idle: a process waiting for a message gives its core away (the test machine is shared; 3 processes on
+# 2 cores)
+set(LDFCZ_MPI_ENV OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  OMPI_MCA_mpi_yield_when_idle=1)
 
 add_executable(partition_check mpi/partition_check.f90)
 target_link_libraries(partition_check PRIVATE ldfcz_host "$<LINK_LIBRARY:WHOLE_ARCHIVE,ldfcz_abaqus_utils>")

@@ -9,7 +9,8 @@ elements over the width, 3 over the coating) run for a few increments by the LDF
 and, with --serial-exe, the default (sequential MUMPS) build with T threads. Prints per configuration the Newton
 iterations and the wall time per iteration split into element loop (assembly), communication of the host
 (reductions of forces and flags, broadcasts of solutions: rank 0's), factorization and solve (MUMPS' own
-communication is inside those two), and the peak memory of rank 0; writes the table to OUT/bench_mpi.md.
+communication is inside those two), rank 0's CPU time per iteration (less sensitive than the wall time to other
+jobs on the machine) and the peak memory of rank 0; writes the table to OUT/bench_mpi.md.
 
   cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DLDFCZ_MPI=ON && cmake --build build-mpi -j2 --target ldfcz
   tools/bench_mpi.py --exe build-mpi/bin/ldfcz --serial-exe build/bin/ldfcz --fine 0.02 0.05 --increments 3
@@ -70,18 +71,23 @@ def main():
     ap.add_argument('--du', type=float, default=0.0003)
     ap.add_argument('--increments', type=int, default=3)
     ap.add_argument('--out', default=os.path.join(ROOT, 'reports', 'bench'))
+    ap.add_argument('--yield-idle', action='store_true', help='OMPI_MCA_mpi_yield_when_idle=1: a waiting process '
+                    'gives its core away instead of polling (a machine shared with other jobs)')
     args = ap.parse_args()
     work = os.path.join(args.out, 'work_mpi')
     os.makedirs(work, exist_ok=True)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1',
                OMPI_MCA_rmaps_base_oversubscribe='1')
+    if args.yield_idle:
+        env['OMPI_MCA_mpi_yield_when_idle'] = '1'
     mpirun = ['mpirun', '--oversubscribe', '--bind-to', 'none']
     configs = [('1 rank x %d threads' % args.threads, mpirun + ['-np', '1', args.exe, '--threads', str(args.threads)]),
                ('%d ranks x 1 thread' % args.ranks, mpirun + ['-np', str(args.ranks), args.exe, '--threads', '1'])]
     if args.serial_exe:
         configs.insert(0, ('serial build, %d threads' % args.threads, [args.serial_exe, '--threads', str(args.threads)]))
     lines = ['| fine (mm) | DOFs | run | increments / iterations | t/iteration (s) | element loop | communication | '
-             'factorization | solve | peak memory rank 0 (MB) |', '|---|---|---|---|---|---|---|---|---|---|']
+             'factorization | solve | CPU/iteration rank 0 (s) | peak memory rank 0 (MB) |',
+             '|---|---|---|---|---|---|---|---|---|---|---|']
     for fine in args.fine:
         path = os.path.join(work, 'peel_%g.inp' % fine)
         deck(args, fine, path)
@@ -98,13 +104,16 @@ def main():
             asm, fact, solve = s['split'][0], s['split'][1], s['split'][2]
             comm = s['comm'][1] if s['comm'] else 0.0
             per = s['wall'][0] / its
-            row = '| %g | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.0f |' % (
+            row = '| %g | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.0f |' % (
                 fine, int(s['dofs'][0]), name, inc, its, per, asm / its, comm / its, fact / its, solve / its,
-                s['memory'][0] / 1024.0)
+                s['wall'][1] / its, s['memory'][0] / 1024.0)
             lines.append(row)
             print(row, flush=True)
+    load = open('/proc/loadavg').read().split()[:3] if os.path.exists('/proc/loadavg') else ['?']
     with open(os.path.join(args.out, 'bench_mpi.md'), 'w') as f:
-        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
+        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\nLoad average at the end: ' +
+                ' '.join(load) + ' (other jobs share the cores: wall times inflate, CPU time does not)\n\n' +
+                '\n'.join(lines) + '\n')
     print('\n'.join(lines))
 
 

@@ -40,7 +40,8 @@ def run(exe, deck, out, np, user, extra, threads):
         cmd += ["--user", user]
     cmd += extra + [deck]
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMPI_MCA_btl_vader_single_copy_mechanism="none", OMPI_MCA_rmaps_base_oversubscribe="1")
+               OMPI_MCA_btl_vader_single_copy_mechanism="none", OMPI_MCA_rmaps_base_oversubscribe="1",
+               OMPI_MCA_mpi_yield_when_idle="1")
     p = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
     return p.returncode, p.stdout + p.stderr
 
