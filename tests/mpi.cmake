@@ -73,7 +73,7 @@ ldfcz_add_mpi_test(mpi_cohesive_modified ${PROJECT_SOURCE_DIR}/decks/single/cohe
 file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2"
   CONTENT "#!/bin/sh\nexec \"${CMAKE_CURRENT_SOURCE_DIR}/mpi/mpirun_ldfcz.sh\" 2 \"$<TARGET_FILE:ldfcz>\" \"$@\"\n"
   FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
-foreach(case lame2d lame3d equation tie steps)
+foreach(case lame2d lame3d equation tie steps release)
   add_test(NAME mpi_loads_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py
     --exe ${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2 --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/loads_${case} --case ${case})
   set_tests_properties(mpi_loads_${case} PROPERTIES LABELS "mpi;deck" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}")
