@@ -30,6 +30,7 @@ module run_summary
     integer :: peak_kb = 0                      !< VmHWM
     integer :: nranks = 1                       !< processes of the run (MPI)
     real(dp) :: t_comm = 0                      !< wall seconds in the host's reductions and broadcasts (MPI)
+    integer :: peak_kb_max = 0                  !< largest VmHWM over the processes (MPI)
   end type run_summary_t
 
 contains
@@ -114,8 +115,9 @@ contains
     write (line, '(a,f10.3,a)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, ' s'
     call output_log(out, trim(line))
     if (summary%nranks > 1) then
-      write (line, '(a,i0,a,f10.3,a)') 'MPI processes ', summary%nranks, ', communication of the host ', &
-        summary%t_comm, ' s (rank 0; MUMPS'' own is in factorization and solve)'
+      write (line, '(a,i0,a,f10.3,a,i0,a)') 'MPI processes ', summary%nranks, ', communication of the host ', &
+        summary%t_comm, ' s (rank 0; MUMPS'' own is in factorization and solve), peak memory of a process ', &
+        summary%peak_kb_max, ' kB'
       call output_log(out, trim(line))
     end if
     write (line, '(a,i0,a)') 'peak memory (VmHWM) ', summary%peak_kb, ' kB'

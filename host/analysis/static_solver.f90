@@ -14,7 +14,7 @@ module static_solver
     newton_full, newton_modified, newton_krylov, newton_auto, newton_mode_code
   use run_summary, only: run_summary_t, run_summary_collect, run_summary_write, peak_memory_kb
   use static_step, only: run_steps
-  use parallel_context, only: parallel_t
+  use parallel_context, only: parallel_t, parallel_max
   implicit none
   private
   public :: run_analysis, run_summary_t, exit_ok, exit_input, exit_no_convergence
@@ -66,6 +66,7 @@ contains
     summary%wall = real(c1 - c0, dp) / real(rate, dp)
     summary%cpu = cpu1 - cpu0
     summary%peak_kb = peak_memory_kb()
+    summary%peak_kb_max = nint(parallel_max(an%par, real(summary%peak_kb, dp)))   ! every process (MPI)
     call run_summary_write(out, summary)
   end subroutine run_analysis
 
