@@ -11,8 +11,10 @@ program ldfcz
   use output_files, only: output_t, output_open, output_close, output_log
   use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code, &
     newton_krylov, newton_auto
-  use abaqus_host_state, only: abaqus_set_job, abaqus_flush_repeats
+  use abaqus_host_state, only: abaqus_set_job, abaqus_flush_repeats, abaqus_set_processes
   use blas_threads, only: blas_threads_default
+  use parallel_context, only: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed, &
+    parallel_file
   use heap_reuse, only: heap_reuse_default
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
   !$ use omp_lib, only: omp_set_num_threads
@@ -27,7 +29,8 @@ program ldfcz
   type(output_t) :: out
   type(run_summary_t) :: summary
   type(solver_options_t) :: options
-  character(len=:), allocatable :: restart_from, blas_note, heap_note
+  character(len=:), allocatable :: restart_from, blas_note, heap_note, user_dir
+  type(parallel_t) :: par
 
   interface
     !> mkdir(2); mode_t is a 32-bit unsigned integer on Linux
@@ -39,6 +42,7 @@ program ldfcz
     end function c_mkdir
   end interface
 
+  call parallel_init(par)   ! MPI_Init in the LDFCZ_MPI build (mpirun -np N ldfcz ...); nothing in a serial one
   deck = ''
   outdir = '.'
   user_file = ''
@@ -164,7 +168,7 @@ program ldfcz
   k = index(job, '.', back=.true.)
   if (k > 1) job = job(1:k - 1)
   if (len(restart_from) > 0) then
-    inquire (file=restart_from, exist=exists)
+    inquire (file=parallel_file(par, restart_from), exist=exists)
     if (.not. exists) call die('--restart-from: '//restart_from//': file not found')
     options%restart_from = restart_from
   end if
@@ -172,17 +176,27 @@ program ldfcz
   inquire (file=outdir//'/.', exist=exists)
   if (.not. exists) call die('--out: cannot create directory '//outdir)
   call abaqus_set_job(job, outdir)
+  call abaqus_set_processes(par%rank, par%nranks, par%comm)
 
   call read_deck(deck, model, stat, errmsg)
   if (stat /= 0) call die(errmsg)
 
   call user_routines_builtin(routines)
-  call output_open(out, job, outdir, quiet, stat, errmsg, append=len(restart_from) > 0)
+  ! an MPI run writes its log, CSV, status and frames once, from rank 0
+  call output_open(out, job, outdir, quiet, stat, errmsg, append=len(restart_from) > 0, &
+    silent=.not. parallel_writer(par))
+  out%npieces = par%nranks   ! VTU frames: one piece per process (JOB_NNNN.pvtu)
   if (stat /= 0) call die(errmsg)
   call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
-    call user_routines_load(routines, user_file, outdir, include_dir(), stat, errmsg, &
-      merge(-1, out%log, quiet), fc, fflags)
+    ! each process of an MPI run compiles into a directory of its own (no two compilers writing one file)
+    user_dir = outdir
+    if (parallel_distributed(par)) then
+      user_dir = outdir//'/ldfcz_rank'//itoa_local(par%rank)
+      call make_directories(user_dir//'/')
+    end if
+    call user_routines_load(routines, user_file, user_dir, include_dir(), stat, errmsg, &
+      merge(-1, out%log, quiet .or. .not. parallel_writer(par)), fc, fflags)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)
       call output_close(out)
@@ -212,12 +226,21 @@ program ldfcz
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call heap_reuse_default(heap_note)
   if (len(heap_note) > 0) call output_log(out, 'ldfcz: '//heap_note)
-  call run_analysis(model, routines, out, verbose, summary, exit_code, options)
+  call run_analysis(model, routines, out, verbose, summary, exit_code, options, par)
   call output_close(out)
   call abaqus_flush_repeats(error_unit)
+  call parallel_finalize(par)
   call exit(exit_code)
 
 contains
+
+  pure function itoa_local(i) result(s)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: s
+    character(len=16) :: b
+    write (b, '(i0)') i
+    s = trim(b)
+  end function itoa_local
 
   !> The value of an environment variable ('' when unset).
   function env_value(name) result(v)

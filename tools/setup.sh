@@ -14,6 +14,9 @@ build_dir=${LDFCZ_BUILD_DIR:-$default_dir}
 
 packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-numpy python3-vtk9
           libmumps-seq-dev libmetis-dev liblapack-dev libopenblas-dev)
+# The LDFCZ_MPI build (mpirun -np N ldfcz; its tests run in tools/test.sh): OpenMPI and the parallel MUMPS. The default
+# build does not use them; they are installed always so that the MPI tests never lack them on Debian.
+packages+=(openmpi-bin libopenmpi-dev libmumps-dev)
 # More packages for a particular use (tools/test.sh adds LLVM flang for the portability check).
 read -r -a extra <<< "${LDFCZ_EXTRA_PACKAGES:-}"
 packages+=("${extra[@]}")

@@ -8,16 +8,23 @@
 module abaqus_host_state
   implicit none
   private
-  public :: abaqus_set_job, abaqus_job_name, abaqus_output_dir
+  public :: abaqus_set_job, abaqus_job_name, abaqus_output_dir, abaqus_set_processes, abaqus_processes
   public :: abaqus_request_stop, abaqus_stop_requested, abaqus_clear_stop, abaqus_stop_message
   public :: abaqus_message_is_new, abaqus_flush_repeats
+  public :: abaqus_set_caller, abaqus_stop_element
 
   character(len=:), allocatable :: job_name      !< job name (the deck's base name)
   character(len=:), allocatable :: output_dir    !< directory of the job's output files
+  integer :: process_rank = 0                    !< MPI rank of this process (GETRANK)
+  integer :: process_count = 1                   !< processes of the analysis (GETNUMCPUS)
+  integer :: process_comm = 0                    !< MPI communicator (GETCOMMUNICATOR; 0 without MPI)
   logical :: stop_flag = .false.                 !< a user routine asked to end the analysis
   character(len=1024) :: stop_text = ''          !< the message that came with the first request
   character(len=2048) :: last_message = ''       !< the last STDB_ABQERR message printed, numbers masked
   integer :: message_repeats = 0                 !< times it came again since (not printed)
+  integer :: caller = 0                          !< element whose routine this thread is calling (0: none)
+  !$omp threadprivate(caller)
+  integer :: stop_elem = 0                       !< the lowest element that asked to stop (0: none known)
 
 contains
 
@@ -30,6 +37,24 @@ contains
   end subroutine abaqus_set_job
 
   !> The job name ('ldfcz' before abaqus_set_job).
+  !> The processes of the analysis, as GETRANK, GETNUMCPUS and GETCOMMUNICATOR report them.
+  subroutine abaqus_set_processes(rank, count, comm)
+    integer, intent(in) :: rank   !< this process
+    integer, intent(in) :: count  !< processes of the run
+    integer, intent(in) :: comm   !< MPI communicator (0 without MPI)
+    process_rank = rank
+    process_count = count
+    process_comm = comm
+  end subroutine abaqus_set_processes
+
+  !> Rank, count and communicator set by abaqus_set_processes (0, 1, 0 by default).
+  subroutine abaqus_processes(rank, count, comm)
+    integer, intent(out) :: rank, count, comm  !< as set
+    rank = process_rank
+    count = process_count
+    comm = process_comm
+  end subroutine abaqus_processes
+
   function abaqus_job_name() result(name)
     character(len=:), allocatable :: name
     if (allocated(job_name)) then
@@ -49,7 +74,6 @@ contains
     end if
   end function abaqus_output_dir
 
-  !> Record a request to end the analysis; the first message is kept.
   !> Whether a user routine's message should be printed: a text that differs from the last one only in its numbers
   !> (element labels, values) is only counted (element loops call a routine on every element, and a routine that
   !> complains about its properties does so each time); when another text comes, the count of the repeats is
@@ -85,12 +109,32 @@ contains
     message_repeats = 0
   end subroutine abaqus_flush_repeats
 
+  !> The host is about to call a user routine for element ie (0: no element) on this thread: a stop request made
+  !> during the call is recorded with the element (abaqus_stop_element).
+  subroutine abaqus_set_caller(ie)
+    integer, intent(in) :: ie  !< element index of the host (0: none)
+    caller = ie
+  end subroutine abaqus_set_caller
+
+  !> The element whose routine asked to stop (the lowest index when several did; 0: not known).
+  integer function abaqus_stop_element() result(ie)
+    !$omp critical (abaqus_host_state_lock)
+    ie = stop_elem
+    !$omp end critical (abaqus_host_state_lock)
+  end function abaqus_stop_element
+
+  !> Record a request to end the analysis with the element of the call it comes from: the message kept is that of
+  !> the lowest element that asked (so it does not depend on the thread schedule), else the first one.
   subroutine abaqus_request_stop(text)
     character(len=*), intent(in) :: text  !< why (may be empty)
     !$omp critical (abaqus_host_state_lock)
     if (.not. stop_flag) then
       stop_text = text
-    else if (len_trim(stop_text) == 0) then
+      stop_elem = caller
+    else if (caller > 0 .and. (stop_elem == 0 .or. caller < stop_elem)) then
+      stop_text = text
+      stop_elem = caller
+    else if (len_trim(stop_text) == 0 .and. caller == stop_elem) then
       stop_text = text
     end if
     stop_flag = .true.
@@ -115,6 +159,7 @@ contains
     !$omp critical (abaqus_host_state_lock)
     stop_flag = .false.
     stop_text = ''
+    stop_elem = 0
     !$omp end critical (abaqus_host_state_lock)
   end subroutine abaqus_clear_stop
 end module abaqus_host_state

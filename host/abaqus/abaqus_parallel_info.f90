@@ -1,22 +1,27 @@
 !> Abaqus/Standard parallel-execution information for user code ("Obtaining parallel processes information" in
 !> the Abaqus User Subroutines Guide): CALL GETNUMCPUS(NUMPROCESSES), CALL GETRANK(RANK), and the INTEGER functions
-!> GETNUMTHREADS(), GET_THREAD_ID() and GETCOMMUNICATOR(). The host runs the analysis as one process whose element
-!> loop is threaded with OpenMP (-t N): one process of rank 0, the loop's thread count and the calling thread's
-!> number (0 outside the loop), and communicator 0, which Abaqus documents for a run without MPI. GETVRM (material
+!> GETNUMTHREADS(), GET_THREAD_ID() and GETCOMMUNICATOR(). The processes are those the host registered with
+!> abaqus_set_processes (an MPI run: its ranks and MPI_COMM_WORLD; otherwise one process of rank 0 and communicator
+!> 0, which Abaqus documents for a run without MPI); the threads are the element loop's (OpenMP, -t N), the calling
+!> thread's number 0 outside the loop. GETVRM (material
 !> point data for USDFLD) has nothing to return here: a call stops the run with a message naming it.
 
 !> GETNUMCPUS: number of processes of the analysis.
 subroutine getnumcpus(numprocesses)
+  use abaqus_host_state, only: abaqus_processes
   implicit none
-  integer, intent(out) :: numprocesses  !< number of MPI processes (1)
-  numprocesses = 1
+  integer, intent(out) :: numprocesses  !< number of MPI processes
+  integer :: rank, comm
+  call abaqus_processes(rank, numprocesses, comm)
 end subroutine getnumcpus
 
 !> GETRANK: rank of the calling process.
 subroutine getrank(rank)
+  use abaqus_host_state, only: abaqus_processes
   implicit none
-  integer, intent(out) :: rank  !< MPI rank (0)
-  rank = 0
+  integer, intent(out) :: rank  !< MPI rank
+  integer :: count, comm
+  call abaqus_processes(rank, count, comm)
 end subroutine getrank
 
 !> GETNUMTHREADS: number of threads running the element loop.
@@ -41,8 +46,10 @@ end function get_thread_id
 
 !> GETCOMMUNICATOR: MPI communicator of the analysis; 0 in a run without MPI.
 integer function getcommunicator()
+  use abaqus_host_state, only: abaqus_processes
   implicit none
-  getcommunicator = 0
+  integer :: rank, count
+  call abaqus_processes(rank, count, getcommunicator)
 end function getcommunicator
 
 !> GETVRM is not provided: end the run with a message that names it (rather than reading memory that is not there).

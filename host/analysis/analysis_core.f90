@@ -14,6 +14,10 @@ module analysis_core
   use user_routines, only: user_routines_t
   use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
   use solver_text, only: itoa, rtoa
+  use abaqus_host_state, only: abaqus_set_caller, abaqus_stop_requested, abaqus_stop_element, abaqus_stop_message
+  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_any, &
+    parallel_lowest
+  use element_partition, only: partition_elements
   use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
   implicit none
   private
@@ -83,6 +87,12 @@ module analysis_core
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
     integer :: n_factor_done = 0                !< factorizations of earlier sparse systems
     real(dp) :: t_assembly = 0.0_dp             !< wall seconds in element loops
+    type(parallel_t) :: par                     !< processes of the run (parallel_context)
+    logical, allocatable :: owned(:)            !< (nelem) elements this process computes (all in a serial run)
+    logical :: stop_asked = .false.             !< a user routine asked to end the analysis (XIT) in the last loop
+    integer :: stop_elem = 0                    !< the element that asked (lowest index; 0: not known)
+    character(len=:), allocatable :: stop_text  !< the routine's message
+    integer :: stop_rank = 0                    !< the process whose element asked (distributed run)
     integer :: n_assembly = 0
   end type analysis_t
 
@@ -103,7 +113,7 @@ contains
 
   !> Dof maps, materials and initial (zero) states.
   subroutine analysis_init(an, model, routines, stat, errmsg)
-    type(analysis_t), intent(inout) :: an                !< analysis data (filled)
+    type(analysis_t), intent(inout) :: an                !< analysis data (filled; an%par set by the caller)
     type(model_t), intent(in) :: model                   !< the model
     type(user_routines_t), intent(in) :: routines        !< UEL and UMAT to call
     integer, intent(out) :: stat                         !< 0 ok, 2 model error
@@ -244,6 +254,8 @@ contains
     if (stat /= 0) return
     call apply_initial_conditions(an, model, stat, errmsg)
     if (stat /= 0) return
+    call partition(an, model, stat, errmsg)
+    if (stat /= 0) return
     call constraints_build(an%cs, model, an%used, stat, errmsg)
     if (stat /= 0) return
     ! initial temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 elsewhere), in deck order
@@ -326,10 +338,10 @@ contains
       call constraints_extend(an%cs, an%elem_ptr, an%elem_dof, an%eq)
       call color_elements(model%nelem, an%ndof, an%cs%xptr, an%cs%xdof, an%ncolor, an%color_ptr, an%color_elem)
       call sparse_setup(an%sys, n, an%cs%xptr, an%cs%xeq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+        symmetric_factors=an%sym_factors, single_factors=an%single_factors, par=an%par, owned=an%owned)
     else
       call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%sym_factors, single_factors=an%single_factors)
+        symmetric_factors=an%sym_factors, single_factors=an%single_factors, par=an%par, owned=an%owned)
     end if
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
@@ -361,11 +373,13 @@ contains
     character(len=:), allocatable, intent(out), optional :: pnewdt_who
     integer :: ie, ic, c, n, k, fail_elem, st, m, pn_elem
     real(dp), allocatable :: ke(:, :), fel(:), kx(:, :)
-    real(dp) :: pn, pn_worst
+    real(dp) :: pn, pn_worst, comm0
     character(len=256) :: msg, first_msg
+    character(len=:), allocatable :: who, fail_text
     integer(i8) :: c0, c1, rate
 
     call system_clock(c0, rate)
+    comm0 = an%par%t_comm
     stat = 0
     errmsg = ''
     pnewdt_min = pnewdt_large
@@ -384,10 +398,10 @@ contains
       !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min)
       do ic = an%color_ptr(c), an%color_ptr(c + 1) - 1
         ie = an%color_elem(ic)
-        ! a model truncated to its first elements (stop_report's search for the element that called XIT)
-        if (ie > model%nelem) cycle
+        if (.not. an%owned(ie)) cycle   ! another process's element (distributed run)
         n = an%elem_ptr(ie + 1) - an%elem_ptr(ie)
         pn = pnewdt_large
+        call abaqus_set_caller(ie)
         call element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel(1:n), &
           ke(1:n, 1:n), pn, st, msg)
         if (st /= 0) then
@@ -423,25 +437,49 @@ contains
       end do
       !$omp end do
     end do
+    call abaqus_set_caller(0)
     deallocate (ke, fel, kx)
     !$omp end parallel
+    ! a stop asked by a user routine, with the element recorded when it asked
+    an%stop_asked = abaqus_stop_requested()
+    an%stop_elem = 0
+    an%stop_text = ''
+    if (an%stop_asked) then
+      an%stop_elem = abaqus_stop_element()
+      an%stop_text = abaqus_stop_message()
+    end if
     an%fint = 0.0_dp
     an%fdl = 0.0_dp
     do k = 1, size(an%elem_dof)
       an%fint(an%elem_dof(k)) = an%fint(an%elem_dof(k)) + an%fe(k)
       an%fdl(an%elem_dof(k)) = an%fdl(an%elem_dof(k)) + an%fdle(k)
     end do
+    who = ''
+    if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
+      trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
+    fail_text = trim(first_msg)
+    if (parallel_distributed(an%par)) then
+      ! the processes' parts: forces summed, the smallest PNEWDT, the first failing element and the element that
+      ! asked to stop (lowest label or index over the processes), so that every process decides alike
+      call parallel_sum(an%par, an%fint)
+      call parallel_sum(an%par, an%fdl)
+      pnewdt_min = parallel_min(an%par, pnewdt_min)
+      if (parallel_min(an%par, pn_worst) < pn_worst) pn_elem = 0
+      call parallel_lowest(an%par, pn_elem, who)
+      if (fail_elem == huge(1)) fail_elem = 0
+      call parallel_lowest(an%par, fail_elem, fail_text)
+      if (fail_elem == 0) fail_elem = huge(1)
+      an%stop_asked = parallel_any(an%par, an%stop_asked)
+      if (an%stop_asked) call parallel_lowest(an%par, an%stop_elem, an%stop_text, an%stop_rank)
+    end if
     if (fail_elem /= huge(1)) then
       stat = 1
-      errmsg = trim(first_msg)
+      errmsg = fail_text
     end if
-    if (present(pnewdt_who)) then
-      pnewdt_who = ''
-      if (pn_elem > 0) pnewdt_who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
-        trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
-    end if
+    if (present(pnewdt_who)) pnewdt_who = who
     call system_clock(c1)
-    an%t_assembly = an%t_assembly + real(c1 - c0, dp) / real(rate, dp)
+    ! the reductions are communication, not assembly
+    an%t_assembly = an%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
     an%n_assembly = an%n_assembly + 1
   end subroutine analysis_assemble
 
@@ -599,6 +637,43 @@ contains
       end do
     end do
   end subroutine element_axes
+
+  !> The elements this process computes: all of them in a one-process run; with several processes the METIS
+  !> partition of the element graph (element_partition), each element weighted by an estimate of its cost in the
+  !> element loop (user elements 1, *ELASTIC continuum elements 2, UMAT continuum elements 20: the Leonov UMAT
+  !> dominates the profile of the peel scenes, docs/performance.md; an estimate, not a measurement per element).
+  subroutine partition(an, model, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data (an%par set)
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer, allocatable :: weight(:), owner(:)
+    character(len=256) :: msg
+    integer :: ie
+    stat = 0
+    errmsg = ''
+    allocate (an%owned(model%nelem))
+    an%owned = .true.
+    if (.not. parallel_distributed(an%par)) return
+    allocate (weight(model%nelem))
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) == etype_user) then
+        weight(ie) = 1
+      else if (an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT) then
+        weight(ie) = 20
+      else
+        weight(ie) = 2
+      end if
+    end do
+    call partition_elements(model%nnode, model%conn_ptr, model%conn(1:model%conn_ptr(model%nelem + 1) - 1), &
+      weight, an%par%nranks, owner, stat, msg)
+    if (stat /= 0) then
+      errmsg = trim(msg)
+      stat = 2
+      return
+    end if
+    an%owned = owner == an%par%rank
+  end subroutine partition
 
   !> *INITIAL CONDITIONS, TYPE=STRESS (every integration point of the element gets the given stress; not in
   !> equilibrium, it is equilibrated by the first increment as in Abaqus without *GEOSTATIC) and TYPE=SOLUTION (the

@@ -23,10 +23,14 @@ contains
     real(dp), intent(in) :: ttot                   !< total time of the frame
     type(step_t), intent(in) :: step               !< the step whose field request applies
     type(output_vtu_t) :: fr
-    integer :: ie, nn, k, ncell, nip, ip, nsv, h, nt, i
+    integer :: ie, nn, k, ncell, nip, ip, nsv, h, nt, i, c
+    integer, allocatable :: cells(:)
     real(dp) :: s(6), e(6), p(3)
     logical :: want_strain
-    ncell = model%nelem
+    ! the cells of this process's elements (every element in a one-process run): an MPI run writes one piece per
+    ! process and rank 0 the .pvtu listing them (output_vtu_frame)
+    cells = pack([(ie, ie = 1, model%nelem)], an%owned)
+    ncell = size(cells)
     allocate (fr%x(3, model%nnode), fr%u(3, model%nnode), fr%rf(3, model%nnode))
     fr%x = model%x
     fr%u = 0.0_dp
@@ -39,7 +43,17 @@ contains
         if (an%prescribed(i)) fr%rf(h, k) = an%fint(i) - an%fext(i) - an%fdl(i)
       end do
     end do
-    allocate (fr%cell_type(ncell), fr%cell_ptr(ncell + 1), fr%cell_conn(size(model%conn)), fr%cell_id(ncell))
+    allocate (fr%cell_type(ncell), fr%cell_ptr(ncell + 1), fr%cell_id(ncell))
+    fr%cell_ptr(1) = 1
+    do c = 1, ncell
+      fr%cell_ptr(c + 1) = fr%cell_ptr(c) + model%conn_ptr(cells(c) + 1) - model%conn_ptr(cells(c))
+    end do
+    allocate (fr%cell_conn(fr%cell_ptr(ncell + 1) - 1))
+    do c = 1, ncell
+      ie = cells(c)
+      fr%cell_conn(fr%cell_ptr(c):fr%cell_ptr(c + 1) - 1) = model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1) - 1
+      fr%cell_id(c) = model%elem_id(ie)
+    end do
     call sdv_selection(model, an, step, fr%sdv_index)
     want_strain = step%out_le .or. step%out_e
     allocate (fr%stress(6, ncell), fr%principal(3, ncell), fr%mises(ncell), fr%sdv(size(fr%sdv_index), ncell))
@@ -56,9 +70,6 @@ contains
       if (step%out_e) fr%strain_names(k + 1) = 'E'
     end if
     allocate (fr%traction(ncell), fr%delta_max(ncell), fr%cohesive(ncell))
-    fr%cell_ptr = model%conn_ptr
-    fr%cell_conn = model%conn - 1
-    fr%cell_id = model%elem_id
     fr%stress = 0.0_dp
     fr%principal = 0.0_dp
     fr%mises = 0.0_dp
@@ -67,35 +78,36 @@ contains
     fr%traction = 0.0_dp
     fr%delta_max = 0.0_dp
     fr%cohesive = 0
-    do ie = 1, ncell
+    do c = 1, ncell
+      ie = cells(c)
       nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
       select case (model%elem_kind(ie))
       case (etype_c3d8)
-        fr%cell_type(ie) = 12
+        fr%cell_type(c) = 12
       case (etype_cpe4)
-        fr%cell_type(ie) = 9
+        fr%cell_type(c) = 9
       case default
         if (nn == 8) then
-          fr%cell_type(ie) = 12
+          fr%cell_type(c) = 12
         else if (nn == 4) then
-          fr%cell_type(ie) = 9
+          fr%cell_type(c) = 9
         else
-          fr%cell_type(ie) = 2  ! poly-vertex for other user elements
+          fr%cell_type(c) = 2  ! poly-vertex for other user elements
         end if
       end select
       if (model%elem_kind(ie) == etype_user) then
-        fr%cohesive(ie) = 1
+        fr%cohesive(c) = 1
         ! opening = top - bottom (COH3D8: node k+4 over k; COH2D4: 4 over 1, 3 over 2)
-        if (nn == 8 .or. nn == 4) call cell_opening(model, an, ie, nn, fr%opening(:, ie))
+        if (nn == 8 .or. nn == 4) call cell_opening(model, an, ie, nn, fr%opening(:, c))
         ! Delta_max and traction where the element type declares them ('**LDFCZ SVARS', docs/uel.md)
         associate (ut => model%utypes(model%elem_utype(ie)))
           nip = ut%sv_points
           nsv = size(an%conv(ie)%svars)
           if (nip > 0 .and. nsv >= nip * ut%sv_per_point) then
             do ip = 1, nip
-              if (ut%sv_delta_max > 0) fr%delta_max(ie) = fr%delta_max(ie) + &
+              if (ut%sv_delta_max > 0) fr%delta_max(c) = fr%delta_max(c) + &
                 an%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_delta_max) / nip
-              if (ut%sv_traction > 0) fr%traction(ie) = fr%traction(ie) + &
+              if (ut%sv_traction > 0) fr%traction(c) = fr%traction(c) + &
                 an%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_traction) / nip
             end do
           end if
@@ -109,19 +121,19 @@ contains
           s(1:nt) = s(1:nt) + an%conv(ie)%stress(:, ip) / nip
           e(1:nt) = e(1:nt) + an%conv(ie)%stran(:, ip) / nip
         end do
-        fr%stress(:, ie) = s
+        fr%stress(:, c) = s
         call principal_stresses(s, p)
-        fr%principal(:, ie) = [p(3), p(2), p(1)]
-        fr%mises(ie) = mises_stress(s)
-        if (want_strain) fr%strain(:, ie) = [e(1:3), 0.5_dp * e(4:6)]  ! engineering -> tensor shear
+        fr%principal(:, c) = [p(3), p(2), p(1)]
+        fr%mises(c) = mises_stress(s)
+        if (want_strain) fr%strain(:, c) = [e(1:3), 0.5_dp * e(4:6)]  ! engineering -> tensor shear
         nsv = size(an%conv(ie)%statev, 1)
         do k = 1, size(fr%sdv_index)
           if (fr%sdv_index(k) > nsv) cycle
-          fr%sdv(k, ie) = sum(an%conv(ie)%statev(fr%sdv_index(k), :)) / nip
+          fr%sdv(k, c) = sum(an%conv(ie)%statev(fr%sdv_index(k), :)) / nip
         end do
       end if
     end do
-    call output_vtu_frame(out, fr, ttot)
+    call output_vtu_frame(out, fr, ttot, an%par%rank, an%par%nranks)
   end subroutine write_field_frame
 
   !> The state variables a frame holds: every one (SDV requested), the listed ones (SDVn), the first three when the

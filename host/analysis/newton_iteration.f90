@@ -9,10 +9,10 @@ module newton_iteration
   use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
     sparse_is_factored, sparse_solve_krylov, sparse_factors_exact
   use output_files, only: output_t, output_log
-  use abaqus_host_state, only: abaqus_stop_requested
   use solver_options, only: newton_modified, newton_krylov, newton_auto
   use run_summary, only: run_summary_t
   use solver_text, only: itoa, rtoa
+  use parallel_context, only: parallel_distributed, parallel_min
   implicit none
   private
   public :: newton_state_t, newton_solve, newton_forget_factors
@@ -134,7 +134,7 @@ contains
         call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
           pnewdt_min, stat, errmsg, pnewdt_who)
         an%extrapolated = .false.  ! only the first call of an increment sees the extrapolated start
-        if (abaqus_stop_requested()) then
+        if (an%stop_asked) then
           stopped = .true.
           exit newton_loop
         end if
@@ -214,6 +214,9 @@ contains
           kbudget = krylov_max_iter
           if (newton == newton_auto .and. ns%t_solve_last > 0.0_dp) &
             kbudget = max(2, min(krylov_max_iter, int(0.5_dp * ns%t_fact_last / ns%t_solve_last)))
+          ! the budget comes from measured times, which differ between processes: the smallest, on every process
+          ! (GMRES runs collective solves and products: all must take the same iterations)
+          if (parallel_distributed(an%par)) kbudget = nint(parallel_min(an%par, real(kbudget, dp)))
           r_copy = r(1:an%neq)
           t0s = sparse_time_solve(an%sys)
           call sparse_solve_krylov(an%sys, r(1:an%neq), tol, kbudget, kbudget, kit, stat, smsg)

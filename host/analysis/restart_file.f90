@@ -2,10 +2,10 @@
 !> a converged increment so that the continuation repeats the uninterrupted run's arithmetic bit for bit.
 !>
 !> Format: unformatted stream (native byte order), in this order: magic 'LDFCZRST', format version, the model
-!> fingerprint (nodes, elements, dofs, checksum of the model's numbers: restart_checksum), the position (step,
-!> increment, counters, times, increment control), the dof arrays (u_conv, u_start, fint, rf_old, the boundary
-!> tables, the last converged increment's displacement change and its size for the extrapolation), per element the converged ENERGY, SVARS, stress, strain, STATEV and energy densities (each array
-!> preceded by its shape), the summary counters, the VTU frame times, and the end marker 'LDFCZEND' (a truncated
+!> fingerprint (nodes, elements, dofs, checksum of the model's numbers: restart_checksum), the increment loop's
+!> state whole (analysis_state: position, counters, times, increment control, boundary tables, the dof vectors
+!> the next increment starts from), the converged displacement and internal forces, per element the converged
+!> ENERGY, SVARS, stress, strain, STATEV and energy densities (each array preceded by its shape), the summary counters, the VTU frame times, and the end marker 'LDFCZEND' (a truncated
 !> file is refused). Written to JOB.rst.tmp, flushed, closed and renamed over JOB.rst (rename(2) is atomic): a kill
 !> at any moment leaves the previous or the new restart file, never a partial one.
 module restart_file
@@ -13,7 +13,7 @@ module restart_file
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t
   use analysis_core, only: elem_state_t
-  use step_control, only: step_control_t
+  use analysis_state, only: analysis_state_t, analysis_state_write, analysis_state_read
   use run_summary, only: run_summary_t
   implicit none
   private
@@ -21,30 +21,16 @@ module restart_file
 
   character(len=8), parameter :: restart_magic = 'LDFCZRST'  !< first 8 bytes of a restart file
   character(len=8), parameter :: end_magic = 'LDFCZEND'      !< last 8 bytes
-  integer, parameter :: restart_version = 3                  !< format version
+  integer, parameter :: restart_version = 4                  !< format version
 
   !> The solver state at the end of a converged increment (element states are passed separately).
   type :: restart_state_t
     ! model fingerprint
     integer :: nnode = 0, nelem = 0, ndof = 0
     integer(i8) :: checksum = 0
-    ! position in the analysis
-    integer :: step = 0                  !< step of the increment
-    integer :: kinc = 0                  !< increment number in the step
-    integer :: kinc_total = 0            !< converged increments of the analysis
-    integer :: csv_rows = 0              !< data rows of JOB.csv
-    integer :: last_frame_inc = -1       !< kinc_total of the last VTU frame
-    integer :: reuse_count = 0           !< modified Newton: solves with the current factors
-    real(dp) :: t_total0 = 0.0_dp        !< total time at the start of the step
-    real(dp) :: q_sum = 0.0_dp           !< sum of the converged increments' typical forces (q_avg)
-    real(dp) :: next_mark = 0.0_dp       !< NUMBER INTERVAL: next output time
-    type(step_control_t) :: sc           !< increment control (time, next increment, growth state)
-    ! dofs
-    real(dp), allocatable :: u_conv(:), u_start(:), fint(:), rf_old(:), bc_val(:)
-    real(dp), allocatable :: du_prev(:)  !< displacement change of the last converged increment (extrapolation)
-    real(dp) :: dt_prev = 0.0_dp         !< its size (0: no extrapolation for the next increment)
-    logical, allocatable :: bc_on(:), bc_init(:)
-    integer, allocatable :: bc_amp(:)
+    type(analysis_state_t) :: state      !< the increment loop's state, whole (analysis_state)
+    real(dp), allocatable :: u_conv(:)   !< (ndof) converged displacement
+    real(dp), allocatable :: fint(:)     !< (ndof) its internal forces
     type(run_summary_t) :: summary       !< summary counters and accumulators (factorizations: the whole run's)
     ! VTU frames
     integer :: nframe = 0                !< frames written (JOB_0001.vtu ...)
@@ -220,12 +206,8 @@ contains
       return
     end if
     write (u, iostat=ios, iomsg=iom) restart_magic, restart_version, rs%nnode, rs%nelem, rs%ndof, rs%checksum
-    if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%step, rs%kinc, rs%kinc_total, rs%csv_rows, &
-      rs%last_frame_inc, rs%reuse_count, rs%t_total0, rs%q_sum, rs%next_mark
-    if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%sc%period, rs%sc%dt_min, rs%sc%dt_max, merge(1, 0, rs%sc%direct), &
-      rs%sc%easy_iterations, rs%sc%t, rs%sc%dt, rs%sc%easy_count, rs%sc%cutbacks, rs%sc%total_cutbacks
-    if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%u_conv, rs%u_start, rs%fint, rs%rf_old, rs%bc_val, &
-      merge(1, 0, rs%bc_on), merge(1, 0, rs%bc_init), rs%bc_amp, rs%du_prev, rs%dt_prev
+    if (ios == 0) call analysis_state_write(u, rs%state, ios, iom)
+    if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%u_conv, rs%fint
     do ie = 1, size(elems)
       if (ios /= 0) exit
       write (u, iostat=ios, iomsg=iom) elems(ie)%energy
@@ -285,8 +267,7 @@ contains
     type(elem_state_t), intent(inout) :: elems(:)        !< element states (allocated by the analysis)
     integer, intent(out) :: stat                         !< 0 ok, 2 error
     character(len=:), allocatable, intent(out) :: errmsg !< message
-    integer :: u, ios, ie, version, n, idirect
-    integer, allocatable :: ibuf(:)
+    integer :: u, ios, ie, version
     character(len=8) :: magic
     character(len=256) :: iom
     character(len=160) :: line
@@ -331,20 +312,9 @@ contains
       close (u)
       return
     end if
-    read (u, iostat=ios) rs%step, rs%kinc, rs%kinc_total, rs%csv_rows, rs%last_frame_inc, rs%reuse_count, &
-      rs%t_total0, rs%q_sum, rs%next_mark
-    if (ios == 0) read (u, iostat=ios) rs%sc%period, rs%sc%dt_min, rs%sc%dt_max, idirect, rs%sc%easy_iterations, &
-      rs%sc%t, rs%sc%dt, rs%sc%easy_count, rs%sc%cutbacks, rs%sc%total_cutbacks
-    rs%sc%direct = idirect == 1
-    n = rs%ndof
-    allocate (rs%u_conv(n), rs%u_start(n), rs%fint(n), rs%rf_old(n), rs%bc_val(n), rs%bc_on(n), rs%bc_init(n), &
-      rs%bc_amp(n), rs%du_prev(n), ibuf(2 * n))
-    if (ios == 0) read (u, iostat=ios) rs%u_conv, rs%u_start, rs%fint, rs%rf_old, rs%bc_val, ibuf, rs%bc_amp, &
-      rs%du_prev, rs%dt_prev
-    if (ios == 0) then
-      rs%bc_on = ibuf(1:n) == 1
-      rs%bc_init = ibuf(n + 1:2 * n) == 1
-    end if
+    call analysis_state_read(u, rs%ndof, rs%state, ios)
+    allocate (rs%u_conv(rs%ndof), rs%fint(rs%ndof))
+    if (ios == 0) read (u, iostat=ios) rs%u_conv, rs%fint
     shape_ok = .true.
     do ie = 1, size(elems)
       if (ios /= 0 .or. .not. shape_ok) exit
@@ -373,7 +343,7 @@ contains
       errmsg = path//': truncated or damaged restart file'
       return
     end if
-    if (rs%step < 1 .or. rs%kinc < 1 .or. rs%csv_rows < 0 .or. rs%kinc_total < 1) then
+    if (rs%state%step < 1 .or. rs%state%kinc < 1 .or. rs%state%csv_rows < 0 .or. rs%state%kinc_total < 1) then
       errmsg = path//': damaged restart file (step/increment counters)'
       return
     end if

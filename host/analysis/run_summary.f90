@@ -4,8 +4,10 @@ module run_summary
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, etype_user
   use analysis_core, only: analysis_t
-  use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count
+  use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count, &
+    sparse_time_comm
   use output_files, only: output_t, output_log
+  use parallel_context, only: parallel_t, parallel_max, parallel_sum
   use solver_options, only: newton_full, newton_mode_name
   implicit none
   private
@@ -26,6 +28,9 @@ module run_summary
     integer :: accuracy_cutbacks = 0            !< increments redone for the opening bound
     integer :: newton = newton_full
     integer :: peak_kb = 0                      !< VmHWM
+    integer :: nranks = 1                       !< processes of the run (MPI)
+    real(dp) :: t_comm = 0                      !< wall seconds in the host's reductions and broadcasts (MPI)
+    integer :: peak_kb_max = 0                  !< largest VmHWM over the processes (MPI)
   end type run_summary_t
 
 contains
@@ -58,10 +63,14 @@ contains
     real(dp), intent(in) :: t_output               !< wall time spent writing output
     integer, intent(in) :: fact_offset             !< factorizations of the run before the restart point
     integer :: i
+    real(dp) :: e(1)
     summary%e_int = 0.0_dp
     do i = 1, model%nelem
-      summary%e_int = summary%e_int + an%conv(i)%energy(2) + an%conv(i)%energy(4)
+      if (an%owned(i)) summary%e_int = summary%e_int + an%conv(i)%energy(2) + an%conv(i)%energy(4)
     end do
+    e(1) = summary%e_int
+    call parallel_sum(an%par, e)   ! over the processes' elements (distributed run)
+    summary%e_int = e(1)
     summary%t_factor = an%t_factor_done
     summary%t_solve = an%t_solve_done
     summary%t_analysis = an%t_setup_done
@@ -74,6 +83,9 @@ contains
     end if
     summary%t_assembly = an%t_assembly
     summary%t_output = t_output
+    summary%nranks = an%par%nranks
+    summary%t_comm = an%par%t_comm
+    if (an%sys_ready) summary%t_comm = summary%t_comm + sparse_time_comm(an%sys)
   end subroutine run_summary_collect
 
   !> The closing summary of the log: counters, times, memory, energy balance and accuracy indicators.
@@ -102,6 +114,12 @@ contains
     call output_log(out, trim(line))
     write (line, '(a,f10.3,a)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, ' s'
     call output_log(out, trim(line))
+    if (summary%nranks > 1) then
+      write (line, '(a,i0,a,f10.3,a,i0,a)') 'MPI processes ', summary%nranks, ', communication of the host ', &
+        summary%t_comm, ' s (rank 0; MUMPS'' own is in factorization and solve), peak memory of a process ', &
+        summary%peak_kb_max, ' kB'
+      call output_log(out, trim(line))
+    end if
     write (line, '(a,i0,a)') 'peak memory (VmHWM) ', summary%peak_kb, ' kB'
     call output_log(out, trim(line))
     ! energy balance: external work of the reactions against stored + dissipated energy, relative difference
@@ -136,8 +154,9 @@ contains
     real(dp), intent(inout) :: worst               !< raised to the largest ratio found
     integer :: ie, iu, ip, ipr, j
     real(dp) :: delta
+    type(parallel_t) :: par
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) /= etype_user) cycle
+      if (model%elem_kind(ie) /= etype_user .or. .not. an%owned(ie)) cycle
       iu = model%elem_utype(ie)
       associate (ut => model%utypes(iu))
         if (ut%sv_points == 0 .or. ut%sv_opening == 0 .or. ut%sv_length_prop == 0) cycle
@@ -153,6 +172,8 @@ contains
         end do
       end associate
     end do
+    par = an%par
+    worst = parallel_max(par, worst)   ! over the processes' elements (distributed run)
   end subroutine cohesive_ratio
 
   !> Largest increment of STATEV(k) over the integration points of the continuum elements (a documented
@@ -163,12 +184,15 @@ contains
     integer, intent(in) :: k                       !< the STATEV
     real(dp), intent(inout) :: worst               !< raised to the largest increment found
     integer :: ie
+    type(parallel_t) :: par
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) == etype_user) cycle
+      if (model%elem_kind(ie) == etype_user .or. .not. an%owned(ie)) cycle
       if (.not. allocated(an%trial(ie)%statev)) cycle
       if (size(an%trial(ie)%statev, 1) < k .or. size(an%conv(ie)%statev, 1) < k) cycle
       worst = max(worst, maxval(abs(an%trial(ie)%statev(k, :) - an%conv(ie)%statev(k, :))))
     end do
+    par = an%par
+    worst = parallel_max(par, worst)   ! over the processes' elements (distributed run)
   end subroutine statev_increment
 
   !> Peak resident memory (VmHWM of /proc/self/status) in kB, 0 when unknown.

@@ -14,6 +14,7 @@ module static_solver
     newton_full, newton_modified, newton_krylov, newton_auto, newton_mode_code
   use run_summary, only: run_summary_t, run_summary_collect, run_summary_write, peak_memory_kb
   use static_step, only: run_steps
+  use parallel_context, only: parallel_t, parallel_max
   implicit none
   private
   public :: run_analysis, run_summary_t, exit_ok, exit_input, exit_no_convergence
@@ -22,7 +23,7 @@ module static_solver
 contains
 
   !> Run every step of the model. exit_code: 0 all steps done, 2 input/model error, 3 no convergence.
-  subroutine run_analysis(model, routines, out, verbose, summary, exit_code, options)
+  subroutine run_analysis(model, routines, out, verbose, summary, exit_code, options, par)
     type(model_t), intent(in) :: model             !< the model
     type(user_routines_t), intent(in) :: routines  !< UEL and UMAT
     type(output_t), intent(inout) :: out           !< output files
@@ -30,6 +31,7 @@ contains
     type(run_summary_t), intent(out) :: summary    !< counters and measures
     integer, intent(out) :: exit_code              !< exit status
     type(solver_options_t), intent(in), optional :: options  !< solver choices (default: full Newton)
+    type(parallel_t), intent(in), optional :: par  !< processes of the run (default: this one alone)
     type(solver_options_t) :: opt
     type(analysis_t) :: an
     integer :: stat, fact_offset
@@ -43,6 +45,7 @@ contains
     if (present(options)) opt = options
     exit_code = exit_ok
     call abaqus_clear_stop()
+    if (present(par)) an%par = par
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)
@@ -63,6 +66,7 @@ contains
     summary%wall = real(c1 - c0, dp) / real(rate, dp)
     summary%cpu = cpu1 - cpu0
     summary%peak_kb = peak_memory_kb()
+    summary%peak_kb_max = nint(parallel_max(an%par, real(summary%peak_kb, dp)))   ! every process (MPI)
     call run_summary_write(out, summary)
   end subroutine run_analysis
 

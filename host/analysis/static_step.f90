@@ -10,7 +10,8 @@ module static_step
   use linear_constraints, only: constraints_apply
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
   use step_control, only: step_control_t, step_control_init, step_control_cutback, step_control_converged, &
-    step_control_done, step_control_dt
+    step_control_done, step_control_dt, step_control_accuracy, step_control_exhausted, max_cutbacks
+  use analysis_state, only: analysis_state_t, analysis_state_init
   use sparse_system, only: sparse_factor_count
   use output_files, only: output_t, output_log, output_csv_header, output_csv_row, output_sta, output_progress, &
     output_csv_resume, output_frames_resume, output_sta_note
@@ -23,13 +24,12 @@ module static_step
   use print_tables, only: print_tables_any, print_tables_write
   use stop_report, only: stop_message
   use solver_text, only: itoa, rtoa
+  use parallel_context, only: parallel_file, parallel_max, parallel_distributed
   use stop_signal, only: stop_signal_install, stop_signal_received, stop_signal_name
   implicit none
   private
   public :: run_steps
 
-  integer, parameter :: max_cutbacks = 5        !< Abaqus I_A: attempts per increment
-  real(dp), parameter :: opening_target = 0.8_dp        !< next increment aims at this fraction of the bound
   integer, parameter :: extrapolated_attempts = 2       !< attempts of an increment that start extrapolated
 
 contains
@@ -47,35 +47,32 @@ contains
     integer, intent(inout) :: exit_code            !< exit status (solver_options)
     integer, intent(out) :: fact_offset            !< factorizations of the run before the restart point
     logical, intent(out) :: summarize              !< the closing summary is due
-    integer :: stat, is, kinc, attempt, iter, i, j, k, ncol, ic, kinc_total, last_frame_inc
+    integer :: stat, is, attempt, iter, i, j, k, ncol, ic
     character(len=:), allocatable :: errmsg, msg
     character(len=96), allocatable :: colnames(:)
-    integer, allocatable :: col_set(:), col_var(:), bc_amp(:)
-    logical, allocatable :: bc_on(:), bc_init(:)
-    real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:), du_prev(:)
-    real(dp), allocatable :: fext_old(:), fcl_old(:)
+    integer, allocatable :: col_set(:), col_var(:)
+    real(dp), allocatable :: r(:), ratios(:), colv(:)
     logical, allocatable :: bc_was_on(:)
+    type(analysis_state_t) :: s        !< the increment loop's state (what a restart file holds)
     type(load_state_t) :: ls, ls_temp
     real(dp), allocatable :: zero_nodes(:)
-    real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_now, t_end, next_mark, dt_prev
+    real(dp) :: time(2), dt, pnewdt_min, q_now, t_end
     real(dp) :: open_inc, plastic_inc
     integer(i8) :: c1, rate, cs0
-    type(step_control_t) :: sc
     type(newton_state_t) :: ns
-    logical :: converged, ok, stopped
+    logical :: converged, ok, stopped, redo
     integer :: lrestart       !< UEXTERNALDB's LRESTART: 1 when restart data were written after the increment
     real(dp) :: t_reached(2)  !< step and total time of the last converged increment (UEXTERNALDB)
     character(len=64) :: outcome
     type(restart_state_t) :: rs, fp
     logical :: restarting, resumed, fresh_csv
-    integer :: is_first, csv_rows, run_increments, sig
+    integer :: is_first, run_increments, sig
     integer :: dat                      !< JOB.dat unit (-1: no printed output requested)
 
     call system_clock(count_rate=rate)
     summarize = .false.
     restarting = .false.
     if (allocated(opt%restart_from)) restarting = len(opt%restart_from) > 0
-    csv_rows = 0
     run_increments = 0
     fact_offset = 0
     if (restarting) then
@@ -84,10 +81,15 @@ contains
       fp%nelem = model%nelem
       fp%ndof = an%ndof
       fp%checksum = restart_checksum(model)
-      call restart_read(opt%restart_from, fp, rs, an%conv, stat, errmsg)
-      if (stat == 0 .and. rs%step > model%nstep) then
+      call restart_read(parallel_file(an%par, opt%restart_from), fp, rs, an%conv, stat, errmsg)
+      if (nint(parallel_max(an%par, real(stat, dp))) /= 0 .and. stat == 0) then
+        ! another process could not read its restart file (distributed run): all stop alike
         stat = 2
-        errmsg = opt%restart_from//': the restart file is of step '//itoa(rs%step)//' but the deck has '// &
+        errmsg = parallel_file(an%par, opt%restart_from)//': another process could not read its restart file'
+      end if
+      if (stat == 0 .and. rs%state%step > model%nstep) then
+        stat = 2
+        errmsg = opt%restart_from//': the restart file is of step '//itoa(rs%state%step)//' but the deck has '// &
           itoa(model%nstep)//' steps'
       end if
       if (stat /= 0) then
@@ -182,7 +184,7 @@ contains
     end do
     allocate (colv(ncol))
     if (restarting) then
-      call output_csv_resume(out, colnames(1:ncol), rs%csv_rows, fresh_csv, stat, errmsg)
+      call output_csv_resume(out, colnames(1:ncol), rs%state%csv_rows, fresh_csv, stat, errmsg)
       if (stat /= 0) then
         call output_log(out, 'ldfcz: error: '//errmsg)
         if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
@@ -201,8 +203,8 @@ contains
     summarize = .true.
     call stop_signal_install()
 
-    allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
-    allocate (rf_old(an%ndof), du_prev(an%ndof), fext_old(an%ndof), bc_was_on(an%ndof), fcl_old(an%ndof))
+    call analysis_state_init(s, an%ndof)
+    allocate (bc_was_on(an%ndof))
     call load_state_init(ls, an%ndof)
     ! nodal temperatures: every node holds its initial temperature until a *TEMPERATURE changes it
     call load_state_init(ls_temp, model%nnode)
@@ -211,27 +213,15 @@ contains
     ls_temp%target = an%temp_start
     allocate (zero_nodes(model%nnode))
     zero_nodes = 0.0_dp
-    fext_old = 0.0_dp
-    fcl_old = 0.0_dp
-    du_prev = 0.0_dp
-    dt_prev = 0.0_dp
-    bc_on = .false.
-    bc_init = .false.
-    bc_val = 0.0_dp
-    bc_amp = 0
-    rf_old = 0.0_dp
-    t_total0 = 0.0_dp
-    kinc_total = 0
-    last_frame_inc = -1
     call apply_bc_list(model%initial_bcs, model%n_initial_bc, .true.)
     t_reached = 0.0_dp
-    kinc = 0
     is_first = 1
     ! a user library's UEXTERNALDB: start of the analysis (LOP 0) or of a restarted one (4, below)
     if (.not. restarting) call external_db(0, 0, [0.0_dp, 0.0_dp], 0.0_dp, 0, 0)
     if (restarting) then
       call resume_state()
-      call external_db(4, 0, [rs%sc%t, rs%t_total0 + rs%sc%t], 0.0_dp, rs%step, rs%kinc)
+      call external_db(4, 0, [rs%state%sc%t, rs%state%t_total0 + rs%state%sc%t], 0.0_dp, rs%state%step, &
+        rs%state%kinc)
     else if (any(model%steps(1:model%nstep)%field_output)) then
       call write_frame(0.0_dp, findloc(model%steps(1:model%nstep)%field_output, .true., 1))
     end if
@@ -239,27 +229,27 @@ contains
     steps: do is = is_first, model%nstep
       associate (st => model%steps(is))
         resumed = .false.
-        if (restarting) resumed = is == rs%step
+        if (restarting) resumed = is == rs%state%step
         if (.not. resumed) then
           ! boundaries of this step: inherited ones keep the value reached (OP=NEW drops them)
-          u_start = an%u_conv
-          where (bc_on .and. .not. bc_init)
-            bc_val = an%u_conv
-            bc_amp = 0
+          s%u_start = an%u_conv
+          where (s%bc_on .and. .not. s%bc_init)
+            s%bc_val = an%u_conv
+            s%bc_amp = 0
           end where
-          bc_was_on = bc_on
-          if (st%op_new) where (.not. bc_init) bc_on = .false.
+          bc_was_on = s%bc_on
+          if (st%op_new) where (.not. s%bc_init) s%bc_on = .false.
           call apply_bc_list(st%bcs, st%nbc, .false.)
           ! loads of this step; a boundary removed by OP=NEW leaves its reaction as a force that decays over the step
-          where (bc_was_on .and. .not. bc_on)
+          where (bc_was_on .and. .not. s%bc_on)
             bc_was_on = .true.
           elsewhere
             bc_was_on = .false.
           end where
-          call load_step_begin(ls, fcl_old, merge(rf_old, 0.0_dp, bc_was_on), st%cloads, st%ncload, &
+          call load_step_begin(ls, s%fcl_old, merge(s%rf_old, 0.0_dp, bc_was_on), st%cloads, st%ncload, &
             st%cload_op_new, model%ndim)
           call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
-          call dload_step_begin(an%dl, model, is, t_total0, stat, errmsg)
+          call dload_step_begin(an%dl, model, is, s%t_total0, stat, errmsg)
           if (stat /= 0) then
             call output_log(out, 'ldfcz: error: '//errmsg)
             if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
@@ -267,7 +257,7 @@ contains
             exit steps
           end if
         end if
-        an%prescribed = bc_on .and. an%used
+        an%prescribed = s%bc_on .and. an%used
         call analysis_number_equations(an, model, stat, errmsg)
         if (stat /= 0) then
           call output_log(out, 'ldfcz: error: step '//itoa(is)//': '//errmsg)
@@ -278,29 +268,25 @@ contains
         if (allocated(r)) deallocate (r)
         allocate (r(max(an%neq, 1)))
         if (resumed) then
-          ! restart within this step: increment control, q_avg history and output marks as they were
-          sc = rs%sc
-          kinc = rs%kinc
-          q_sum = rs%q_sum
-          next_mark = rs%next_mark
-          last_frame_inc = rs%last_frame_inc
+          ! restart within this step: increment control, q_avg history and output marks as they were (s)
           call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': resumed from '//opt%restart_from// &
-            ' after increment '//itoa(kinc)//' at step time '//rtoa(sc%t)//' of '//rtoa(st%period)//', '// &
+            ' after increment '//itoa(s%kinc)//' at step time '//rtoa(s%sc%t)//' of '//rtoa(st%period)//', '// &
             itoa(an%neq)//' equations')
         else
           call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': period '//rtoa(st%period)// &
             ', NLGEOM '//merge('YES', 'NO ', st%nlgeom)//', '//itoa(an%neq)//' equations')
-          call step_control_init(sc, st%dt_initial, st%period, st%dt_min, st%dt_max, st%direct)
-          kinc = 0
-          dt_prev = 0.0_dp  ! Abaqus: no extrapolation into the first increment of a step
-          q_sum = 0.0_dp
-          next_mark = st%period / max(1, st%field_intervals)
-          last_frame_inc = -1
+          call step_control_init(s%sc, st%dt_initial, st%period, st%dt_min, st%dt_max, st%direct)
+          s%step = is
+          s%kinc = 0
+          s%dt_prev = 0.0_dp  ! Abaqus: no extrapolation into the first increment of a step
+          s%q_sum = 0.0_dp
+          s%next_mark = st%period / max(1, st%field_intervals)
+          s%last_frame_inc = -1
         end if
         call system_clock(cs0)
-        increments: do while (.not. step_control_done(sc))
-          kinc = kinc + 1
-          if (kinc > st%max_inc) then
+        increments: do while (.not. step_control_done(s%sc))
+          s%kinc = s%kinc + 1
+          if (s%kinc > st%max_inc) then
             call output_log(out, 'ldfcz: step '//itoa(is)//': the maximum number of increments (INC='// &
               itoa(st%max_inc)//') is reached before the end of the step')
             exit_code = exit_no_convergence
@@ -310,31 +296,33 @@ contains
           attempts: do
             attempt = attempt + 1
             summary%attempts = summary%attempts + 1
-            dt = step_control_dt(sc)
-            time = [sc%t, t_total0 + sc%t]
-            t_end = sc%t + dt
-            call external_db(1, 0, time, dt, is, kinc)
+            dt = step_control_dt(s%sc)
+            time = [s%sc%t, s%t_total0 + s%sc%t]
+            t_end = s%sc%t + dt
+            call external_db(1, 0, time, dt, is, s%kinc)
             ! prescribed displacements at the end of the increment, applied at its start
             an%u = an%u_conv
-            an%extrapolated = st%extrapolate .and. dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts
+            an%extrapolated = st%extrapolate .and. s%dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts
             if (an%extrapolated) then
               ! *STEP, EXTRAPOLATION=LINEAR (Abaqus' default): the free dofs start from the last converged
               ! increment's change scaled to this increment; a failed start is retried once, then from u_conv
-              where (.not. an%prescribed) an%u = an%u_conv + (dt / dt_prev) * du_prev
+              where (.not. an%prescribed) an%u = an%u_conv + (dt / s%dt_prev) * s%du_prev
             end if
             do i = 1, an%ndof
               if (an%prescribed(i)) an%u(i) = prescribed_value(i, t_end)
             end do
             if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
-            call load_vector(ls, model, is, t_end, t_total0, an%fext)
-            call load_vector(ls_temp, model, is, t_end, t_total0, an%temp_end)
-            call newton_solve(an, model, is, kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, q_sum, &
+            call load_vector(ls, model, is, t_end, s%t_total0, an%fext)
+            call load_vector(ls_temp, model, is, t_end, s%t_total0, an%temp_end)
+            call newton_solve(an, model, is, s%kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, s%q_sum, &
               converged, stopped, iter, q_now, pnewdt_min, outcome)
             if (stopped) then
-              call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
-              msg = 'ldfcz: error: '//stop_message(an, model, is, kinc, time, dt, st%period, st%nlgeom)
+              call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
+              msg = 'ldfcz: error: '//stop_message(model, an%stop_elem, an%stop_text, is, s%kinc)
               call output_log(out, msg)
               if (out%quiet) write (error_unit, '(a)') msg
+              if (parallel_distributed(an%par)) call output_log(out, 'ldfcz: the element is computed by process '// &
+                itoa(an%stop_rank)//' of '//itoa(an%par%nranks)//'; every process stopped')
               exit_code = exit_input
               exit steps
             end if
@@ -343,45 +331,44 @@ contains
             if (converged .and. opt%max_opening > 0.0_dp .and. .not. st%direct) then
               ! accuracy: the cohesive opening increment bound (paper section 7); redo the increment if exceeded
               call cohesive_ratio(model, an, open_inc)
-              if (open_inc > opt%max_opening .and. dt > st%dt_min * (1.0_dp + 1.0e-9_dp)) then
+              call step_control_accuracy(s%sc, dt, open_inc, opt%max_opening, redo, pnewdt_min)
+              if (redo) then
                 converged = .false.
-                q_sum = q_sum - q_now
+                s%q_sum = s%q_sum - q_now
                 outcome = 'cutback: opening increment '//rtoa(open_inc)//' delta'
-                pnewdt_min = max(0.1_dp, opening_target * opt%max_opening / open_inc)
                 summary%accuracy_cutbacks = summary%accuracy_cutbacks + 1
               end if
             end if
             if (converged) then
               if (model%monitor_node > 0) then
                 ! *MONITOR: the dof's displacement at the end of the increment, on the converged line
-                call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged  monitor U'// &
+                call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'converged  monitor U'// &
                   itoa(model%monitor_dof)//' '//rtoa(an%u((model%monitor_node - 1) * model%ndim + model%monitor_dof)), &
                   ratios(1:iter + 1))
               else
-                call output_sta(out, is, kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
+                call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
               end if
               exit attempts
             end if
             call newton_forget_factors(ns)
             ! failed attempt
-            call output_sta(out, is, kinc, attempt, iter, sc%t + dt, dt, trim(outcome), ratios(1:min(iter + 1, size(ratios))))
+            call output_sta(out, is, s%kinc, attempt, iter, s%sc%t + dt, dt, trim(outcome), ratios(1:min(iter + 1, size(ratios))))
             call analysis_restore(an)
-            if (pnewdt_min >= 1.0_dp) pnewdt_min = 0.25_dp
-            call step_control_cutback(sc, dt, pnewdt_min, ok)
+            call step_control_cutback(s%sc, dt, pnewdt_min, ok)
             summary%cutbacks = summary%cutbacks + 1
-            if (.not. ok .or. attempt >= max_cutbacks + 1) then
+            if (.not. ok .or. step_control_exhausted(s%sc)) then
               if (st%direct) then
-                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(kinc)//': no convergence '// &
+                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(s%kinc)//': no convergence '// &
                   'with DIRECT (fixed) increments ('//trim(outcome)//')')
               else if (.not. ok) then
-                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(kinc)//': no convergence; '// &
-                  'the increment '//rtoa(sc%dt)//' would be below the minimum '//rtoa(st%dt_min)//' ('// &
+                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(s%kinc)//': no convergence; '// &
+                  'the increment '//rtoa(s%sc%dt)//' would be below the minimum '//rtoa(st%dt_min)//' ('// &
                   trim(outcome)//')')
               else
-                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(kinc)//': no convergence '// &
+                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(s%kinc)//': no convergence '// &
                   'after '//itoa(max_cutbacks)//' cutbacks ('//trim(outcome)//')')
               end if
-              call output_log(out, 'ldfcz: the analysis stopped at step time '//rtoa(sc%t)//' of '// &
+              call output_log(out, 'ldfcz: the analysis stopped at step time '//rtoa(s%sc%t)//' of '// &
                 rtoa(st%period)//'; the output of the converged increments is complete')
               exit_code = exit_no_convergence
               exit steps
@@ -397,100 +384,91 @@ contains
           ! work of the reactions (trapezoidal) and of the external forces on the free dofs
           do i = 1, an%ndof
             if (an%prescribed(i)) then
-              summary%w_ext = summary%w_ext + 0.5_dp * (rf_old(i) + an%fint(i) - an%fext(i) - an%fdl(i)) * &
+              summary%w_ext = summary%w_ext + 0.5_dp * (s%rf_old(i) + an%fint(i) - an%fext(i) - an%fdl(i)) * &
                 (an%u(i) - an%u_conv(i))
             else
-              summary%w_ext = summary%w_ext + 0.5_dp * (fext_old(i) + an%fext(i) + an%fdl(i)) * &
+              summary%w_ext = summary%w_ext + 0.5_dp * (s%fext_old(i) + an%fext(i) + an%fdl(i)) * &
                 (an%u(i) - an%u_conv(i))
             end if
           end do
           where (an%prescribed)
-            rf_old = an%fint - an%fext - an%fdl
+            s%rf_old = an%fint - an%fext - an%fdl
           elsewhere
-            rf_old = 0.0_dp
+            s%rf_old = 0.0_dp
           end where
-          fext_old = an%fext + an%fdl
-          fcl_old = an%fext
-          du_prev = an%u - an%u_conv
-          dt_prev = dt
+          s%fext_old = an%fext + an%fdl
+          s%fcl_old = an%fext
+          s%du_prev = an%u - an%u_conv
+          s%dt_prev = dt
           call analysis_commit(an)
           an%temp_start = an%temp_end
-          call step_control_converged(sc, dt, iter, pnewdt_min)
-          if (open_inc > 0.0_dp .and. .not. st%direct) then
-            ! next increment from the opening bound: at most x1.5 after an easy increment, PNEWDT > 1 honoured
-            q_now = merge(1.5_dp, 1.0_dp, iter <= sc%easy_iterations)
-            if (pnewdt_min >= 1.0_dp) q_now = min(q_now, pnewdt_min)
-            sc%dt = min(st%dt_max, dt * min(q_now, opening_target * opt%max_opening / open_inc))
-          end if
-          if (opt%max_plastic > 0.0_dp .and. plastic_inc > 0.0_dp .and. .not. st%direct) then
-            ! next increment from the material's plastic strain increment (prediction only: the UMAT's own PNEWDT
-            ! rejects); keeps the automatic growth from overshooting into PNEWDT cutbacks
-            sc%dt = min(sc%dt, max(dt, sc%dt_min) * max(0.25_dp, opening_target * opt%max_plastic / plastic_inc))
-          end if
+          call step_control_converged(s%sc, dt, iter, pnewdt_min, open_inc, opt%max_opening, plastic_inc, &
+            opt%max_plastic)
           summary%increments = summary%increments + 1
-          kinc_total = kinc_total + 1
+          s%kinc_total = s%kinc_total + 1
           run_increments = run_increments + 1
           do ic = 1, ncol
             colv(ic) = column_value(col_set(ic), col_var(ic))
           end do
-          call output_csv_row(out, is, kinc, sc%t, t_total0 + sc%t, colv)
-          csv_rows = csv_rows + 1
-          if (dat /= -1) call print_tables_write(dat, model, an, st, is, kinc, sc%t, t_total0 + sc%t, dt, &
-            step_control_done(sc))
+          call output_csv_row(out, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, colv)
+          s%csv_rows = s%csv_rows + 1
+          if (dat /= -1) call print_tables_write(dat, model, an, st, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, dt, &
+            step_control_done(s%sc))
           if (st%field_output) then
             if (st%field_intervals > 0) then
-              if (sc%t >= next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(sc)) then
-                call write_frame(t_total0 + sc%t, is)
-                do while (next_mark <= sc%t * (1.0_dp + 1.0e-9_dp))
-                  next_mark = next_mark + st%period / st%field_intervals
+              if (s%sc%t >= s%next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(s%sc)) then
+                call write_frame(s%t_total0 + s%sc%t, is)
+                do while (s%next_mark <= s%sc%t * (1.0_dp + 1.0e-9_dp))
+                  s%next_mark = s%next_mark + st%period / st%field_intervals
                 end do
               end if
             else if (st%field_frequency > 0) then
-              if (mod(kinc, st%field_frequency) == 0 .or. step_control_done(sc)) call write_frame(t_total0 + sc%t, is)
+              if (mod(s%kinc, st%field_frequency) == 0 .or. step_control_done(s%sc)) call write_frame(s%t_total0 + s%sc%t, is)
             end if
           end if
           call system_clock(c1)
-          call output_progress(out, is, model%nstep, kinc, sc%t, st%period, real(c1 - cs0, dp) / real(rate, dp))
+          call output_progress(out, is, model%nstep, s%kinc, s%sc%t, st%period, real(c1 - cs0, dp) / real(rate, dp))
           ! restart data after every n-th increment and at the end of the step (Abaqus *RESTART, WRITE, FREQUENCY=n)
           k = st%restart_frequency
           if (opt%restart_write >= 0) k = opt%restart_write
           lrestart = 0
           if (k > 0) then
-            if (mod(kinc, k) == 0 .or. step_control_done(sc)) then
+            if (mod(s%kinc, k) == 0 .or. step_control_done(s%sc)) then
               call save_restart()
               lrestart = 1
             end if
           end if
-          t_reached = [sc%t, t_total0 + sc%t]
-          call external_db(2, lrestart, t_reached, dt, is, kinc)
+          t_reached = [s%sc%t, s%t_total0 + s%sc%t]
+          call external_db(2, lrestart, t_reached, dt, is, s%kinc)
           if (opt%stop_after > 0 .and. run_increments >= opt%stop_after) then
             call output_log(out, 'ldfcz: stopped after '//itoa(run_increments)//' increments as asked '// &
-              '(--stop-after-increments), at step '//itoa(is)//' time '//rtoa(sc%t)//' of '//rtoa(st%period))
+              '(--stop-after-increments), at step '//itoa(is)//' time '//rtoa(s%sc%t)//' of '//rtoa(st%period))
             exit_code = exit_no_convergence
             exit steps
           end if
-          sig = stop_signal_received()
-          if (sig /= 0 .and. .not. (is == model%nstep .and. step_control_done(sc))) then
+          ! a signal to any process stops every one after this increment
+          sig = nint(parallel_max(an%par, real(stop_signal_received(), dp)))
+          if (sig /= 0 .and. .not. (is == model%nstep .and. step_control_done(s%sc))) then
             ! SIGTERM/SIGINT (stop_signal): end here as a complete run ends; the restart data first, so that a
             ! restart from them replaces the extra frame below with the uninterrupted run's frames
             call output_log(out, 'ldfcz: '//stop_signal_name(sig)//' received: stopped after increment '// &
-              itoa(kinc)//' of step '//itoa(is)//' at step time '//rtoa(sc%t)//' of '//rtoa(st%period)// &
+              itoa(s%kinc)//' of step '//itoa(is)//' at step time '//rtoa(s%sc%t)//' of '//rtoa(st%period)// &
               '; the output of every converged increment is complete')
             call output_sta_note(out, 'stopped by '//stop_signal_name(sig)//' after step '//itoa(is)// &
-              ' increment '//itoa(kinc))
+              ' increment '//itoa(s%kinc))
             if (k > 0) then
-              if (mod(kinc, k) /= 0) call save_restart()
+              if (mod(s%kinc, k) /= 0) call save_restart()
             end if
-            if (st%field_output) call write_frame(t_total0 + sc%t, is)
+            if (st%field_output) call write_frame(s%t_total0 + s%sc%t, is)
             exit_code = 128 + sig
             exit steps
           end if
         end do increments
-        t_total0 = t_total0 + st%period
-        call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(kinc)//' increments')
+        s%t_total0 = s%t_total0 + st%period
+        call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(s%kinc)//' increments')
       end associate
     end do steps
-    call external_db(3, 0, t_reached, 0.0_dp, min(is, model%nstep), kinc)
+    call external_db(3, 0, t_reached, 0.0_dp, min(is, model%nstep), s%kinc)
     if (dat /= -1) flush (dat)
     if (ns%tangents_skipped > 0) call output_log(out, 'ldfcz: Newton auto: '//itoa(ns%tangents_skipped)// &
       ' iterations expected to converge assembled without a tangent, '//itoa(ns%stale_solves)// &
@@ -505,33 +483,22 @@ contains
       an%u = rs%u_conv
       an%fint = rs%fint
       an%trial = an%conv
-      u_start = rs%u_start
-      rf_old = rs%rf_old
-      du_prev = rs%du_prev
-      dt_prev = rs%dt_prev
-      bc_val = rs%bc_val
-      bc_on = rs%bc_on
-      bc_init = rs%bc_init
-      bc_amp = rs%bc_amp
-      t_total0 = rs%t_total0
-      kinc_total = rs%kinc_total
-      last_frame_inc = rs%last_frame_inc
-      ns%reuse_count = rs%reuse_count
-      csv_rows = rs%csv_rows
+      s = rs%state
+      ns%reuse_count = s%reuse_count
       fact_offset = rs%summary%factorizations
       call run_summary_continue(summary, rs%summary)
       call output_frames_resume(out, rs%frame_times)
-      is_first = rs%step
-      if (rs%sc%t >= rs%sc%period) then
-        ! the restart point ended step rs%step: the next step starts as in the uninterrupted run
-        is_first = rs%step + 1
-        t_total0 = t_total0 + model%steps(rs%step)%period
+      is_first = s%step
+      if (s%sc%t >= s%sc%period) then
+        ! the restart point ended step s%step: the next step starts as in the uninterrupted run
+        is_first = s%step + 1
+        s%t_total0 = s%t_total0 + model%steps(s%step)%period
         restarting = .false.
       end if
-      call output_sta_note(out, 'restart from '//opt%restart_from//' after step '//itoa(rs%step)//' increment '// &
-        itoa(rs%kinc))
-      call output_log(out, 'ldfcz: restart from '//opt%restart_from//': step '//itoa(rs%step)//', increment '// &
-        itoa(rs%kinc)//', total time '//rtoa(rs%t_total0 + rs%sc%t)//'; '//itoa(rs%csv_rows)//' CSV rows and '// &
+      call output_sta_note(out, 'restart from '//opt%restart_from//' after step '//itoa(s%step)//' increment '// &
+        itoa(s%kinc))
+      call output_log(out, 'ldfcz: restart from '//opt%restart_from//': step '//itoa(s%step)//', increment '// &
+        itoa(s%kinc)//', total time '//rtoa(rs%state%t_total0 + s%sc%t)//'; '//itoa(s%csv_rows)//' CSV rows and '// &
         itoa(size(rs%frame_times))//' VTU frames kept; summary counters continue, times are of this run only')
     end subroutine resume_state
 
@@ -547,26 +514,10 @@ contains
       w%ndof = an%ndof
       if (fp%checksum == 0) fp%checksum = restart_checksum(model)
       w%checksum = fp%checksum
-      w%step = is
-      w%kinc = kinc
-      w%kinc_total = kinc_total
-      w%csv_rows = csv_rows
-      w%last_frame_inc = last_frame_inc
-      w%reuse_count = ns%reuse_count
-      w%t_total0 = t_total0
-      w%q_sum = q_sum
-      w%next_mark = next_mark
-      w%sc = sc
+      s%reuse_count = ns%reuse_count
+      w%state = s
       w%u_conv = an%u_conv
-      w%u_start = u_start
       w%fint = an%fint
-      w%rf_old = rf_old
-      w%du_prev = du_prev
-      w%dt_prev = dt_prev
-      w%bc_val = bc_val
-      w%bc_on = bc_on
-      w%bc_init = bc_init
-      w%bc_amp = bc_amp
       w%summary = summary
       w%summary%factorizations = fact_offset + an%n_factor_done
       if (an%sys_ready) w%summary%factorizations = w%summary%factorizations + sparse_factor_count(an%sys)
@@ -575,7 +526,7 @@ contains
       else
         allocate (w%frame_times(0))
       end if
-      call restart_write(out%dir//'/'//out%job//'.rst', w, an%conv, st2, em)
+      call restart_write(parallel_file(an%par, out%dir//'/'//out%job//'.rst'), w, an%conv, st2, em)
       if (st2 /= 0) call output_log(out, 'ldfcz: warning: restart file not written: '//em)
       call system_clock(r1)
       out%t_output = out%t_output + real(r1 - r0, dp) / real(rate, dp)
@@ -591,10 +542,10 @@ contains
         do a = 1, size(list(k)%nodes)
           do d = list(k)%first_dof, min(list(k)%last_dof, model%ndim)
             dof = (list(k)%nodes(a) - 1) * model%ndim + d
-            bc_on(dof) = .true.
-            bc_val(dof) = list(k)%value
-            bc_amp(dof) = list(k)%amplitude
-            if (initial) bc_init(dof) = .true.
+            s%bc_on(dof) = .true.
+            s%bc_val(dof) = list(k)%value
+            s%bc_amp(dof) = list(k)%amplitude
+            if (initial) s%bc_init(dof) = .true.
           end do
         end do
       end do
@@ -604,12 +555,12 @@ contains
     real(dp) function prescribed_value(dof, t) result(v)
       integer, intent(in) :: dof
       real(dp), intent(in) :: t
-      if (bc_amp(dof) > 0) then
-        v = amplitude_factor(model%amplitudes(bc_amp(dof)), t, t_total0) * bc_val(dof)
+      if (s%bc_amp(dof) > 0) then
+        v = amplitude_factor(model%amplitudes(s%bc_amp(dof)), t, s%t_total0) * s%bc_val(dof)
       else if (model%steps(is)%amp_step) then
-        v = bc_val(dof)
+        v = s%bc_val(dof)
       else
-        v = u_start(dof) + (t / model%steps(is)%period) * (bc_val(dof) - u_start(dof))
+        v = s%u_start(dof) + (t / model%steps(is)%period) * (s%bc_val(dof) - s%u_start(dof))
       end if
     end function prescribed_value
 
@@ -651,8 +602,8 @@ contains
     subroutine write_frame(ttot, istep)
       real(dp), intent(in) :: ttot  !< total time of the frame
       integer, intent(in) :: istep  !< step whose field request applies
-      if (kinc_total == last_frame_inc) return
-      last_frame_inc = kinc_total
+      if (s%kinc_total == s%last_frame_inc) return
+      s%last_frame_inc = s%kinc_total
       call write_field_frame(out, model, an, ttot, model%steps(istep))
     end subroutine write_frame
 

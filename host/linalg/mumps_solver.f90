@@ -14,6 +14,13 @@
 !> the communicator is only passed through to the stub, so COMM is set to MPI_COMM_WORLD of the stub mpif.h
 !> (/usr/include/mumps_seq/mpif.h) and no MPI_INIT is called.
 !>
+!> Distributed (the LDFCZ_MPI build, several processes; mumps_analyse with comm): the parallel MUMPS on that
+!> communicator, PAR = 1 (the host works too), the matrix in distributed assembled form (ICNTL(18) = 3: each
+!> process gives IRN_loc, JCN_loc, A_loc of the entries its own elements touch; MUMPS sums the entries given on
+!> several processes), the user ordering (PERM_IN) and the dense right-hand side and solution on the host
+!> (ICNTL(20) = 0, ICNTL(21) = 0): after a solve only rank 0's rhs holds the solution (sparse_system broadcasts
+!> it). Every call is collective: all processes call the same phases in the same order.
+!>
 !> Output of MUMPS is silenced (ICNTL(1:4)) unless the environment variable LDFCZ_MUMPS_VERBOSE is set to a value
 !> other than '' or '0'.
 module mumps_solver
@@ -42,12 +49,14 @@ module mumps_solver
     logical :: analysed = .false.                    !< JOB = 1 done
     logical :: factored = .false.                    !< JOB = 2 done with the current values
     integer :: n = 0                                 !< order of the matrix
+    logical :: distributed = .false.                 !< ICNTL(18) = 3 on a communicator of several processes
+    logical :: host = .true.                         !< this process is MUMPS' host (rank 0 of the communicator)
   end type mumps_solver_t
 
 contains
 
   !> Initialise the instance and run the analysis of the pattern (irn, jcn) with the user pivot order.
-  subroutine mumps_analyse(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, single)
+  subroutine mumps_analyse(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, single, comm, rank)
     type(mumps_solver_t), intent(inout) :: ms        !< instance (must be fresh or destroyed)
     logical, intent(in) :: symmetric                 !< SYM = 2 (LDL^T, upper triangle given) or SYM = 0
     integer, intent(in) :: n                         !< order
@@ -57,6 +66,8 @@ contains
     integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFO(1)
     character(len=*), intent(out) :: errmsg          !< reason on failure
     logical, intent(in), optional :: single          !< single-precision factors (default false)
+    !> distributed: the communicator of the processes (irn, jcn: this process's entries only) and this rank
+    integer, intent(in), optional :: comm, rank
     character(len=*), parameter :: here = 'mumps_analyse'
 
     stat = 0
@@ -64,11 +75,15 @@ contains
     if (ms%initialised) call mumps_destroy(ms)
     ms%single = .false.
     if (present(single)) ms%single = single
+    ms%distributed = present(comm) .and. present(rank)
+    ms%host = .true.
+    if (ms%distributed) ms%host = rank == 0
     if (ms%single) then
-      call analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg)
+      call analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, comm)
       return
     end if
     ms%id%COMM = MPI_COMM_WORLD
+    if (present(comm)) ms%id%COMM = comm
     ms%id%PAR = 1
     ms%id%SYM = merge(2, 0, symmetric)
     ms%id%JOB = job_init
@@ -79,16 +94,29 @@ contains
       return
     end if
     ms%initialised = .true.
-    call set_controls(ms%id%ICNTL)
+    call set_controls(ms%id%ICNTL, ms%distributed)
     ms%n = n
     ms%id%N = n
-    ms%id%NNZ = int(size(irn), i8)
-    allocate(ms%id%IRN(size(irn)), ms%id%JCN(size(jcn)), ms%id%A(size(irn)), ms%id%PERM_IN(n), ms%id%RHS(n))
-    ms%id%IRN = irn
-    ms%id%JCN = jcn
-    ms%id%A = 0.0_dp
-    ms%id%PERM_IN = pivot_position
-    ms%id%RHS = 0.0_dp
+    if (ms%distributed) then
+      ms%id%NNZ_loc = int(size(irn), i8)
+      allocate(ms%id%IRN_loc(size(irn)), ms%id%JCN_loc(size(jcn)), ms%id%A_loc(size(irn)))
+      ms%id%IRN_loc = irn
+      ms%id%JCN_loc = jcn
+      ms%id%A_loc = 0.0_dp
+      if (ms%host) then
+        allocate(ms%id%PERM_IN(n), ms%id%RHS(n))
+        ms%id%PERM_IN = pivot_position
+        ms%id%RHS = 0.0_dp
+      end if
+    else
+      ms%id%NNZ = int(size(irn), i8)
+      allocate(ms%id%IRN(size(irn)), ms%id%JCN(size(jcn)), ms%id%A(size(irn)), ms%id%PERM_IN(n), ms%id%RHS(n))
+      ms%id%IRN = irn
+      ms%id%JCN = jcn
+      ms%id%A = 0.0_dp
+      ms%id%PERM_IN = pivot_position
+      ms%id%RHS = 0.0_dp
+    end if
     ms%id%JOB = job_analyse
     call dmumps(ms%id)
     if (ms%id%INFOG(1) < 0) then
@@ -122,12 +150,21 @@ contains
       call factorize_single(ms, values, stat, errmsg)
       return
     end if
-    if (size(values) /= size(ms%id%A)) then
-      stat = -1001
-      errmsg = here//': value array size differs from the analysed pattern'
-      return
+    if (ms%distributed) then
+      if (size(values) /= size(ms%id%A_loc)) then
+        stat = -1001
+        errmsg = here//': value array size differs from the analysed pattern'
+        return
+      end if
+      ms%id%A_loc = values
+    else
+      if (size(values) /= size(ms%id%A)) then
+        stat = -1001
+        errmsg = here//': value array size differs from the analysed pattern'
+        return
+      end if
+      ms%id%A = values
     end if
-    ms%id%A = values
     do attempt = 0, max_workspace_retries
       ms%id%JOB = job_factorize
       call dmumps(ms%id)
@@ -146,7 +183,7 @@ contains
     ms%factored = .true.
   end subroutine mumps_factorize
 
-  !> Solve with the last factors: rhs in, solution out.
+  !> Solve with the last factors: rhs in, solution out (distributed: rank 0's rhs only; the others' is untouched).
   subroutine mumps_solve(ms, rhs, stat, errmsg)
     type(mumps_solver_t), intent(inout) :: ms        !< factored instance
     real(dp), intent(inout) :: rhs(:)                !< right-hand side in, solution out (size n)
@@ -170,7 +207,7 @@ contains
       call solve_single(ms, rhs, stat, errmsg)
       return
     end if
-    ms%id%RHS = rhs
+    if (ms%host) ms%id%RHS = rhs
     ms%id%NRHS = 1
     ms%id%LRHS = ms%n
     ms%id%JOB = job_solve
@@ -180,7 +217,7 @@ contains
       call describe(here, ms%id%INFOG(1), ms%id%INFOG(2), errmsg)
       return
     end if
-    rhs = ms%id%RHS
+    if (ms%host) rhs = ms%id%RHS
   end subroutine mumps_solve
 
   !> Terminate the instance (JOB = -2) and free the arrays given to it.
@@ -194,6 +231,9 @@ contains
       if (associated(ms%sid%A)) deallocate(ms%sid%A)
       if (associated(ms%sid%PERM_IN)) deallocate(ms%sid%PERM_IN)
       if (associated(ms%sid%RHS)) deallocate(ms%sid%RHS)
+      if (associated(ms%sid%IRN_loc)) deallocate(ms%sid%IRN_loc)
+      if (associated(ms%sid%JCN_loc)) deallocate(ms%sid%JCN_loc)
+      if (associated(ms%sid%A_loc)) deallocate(ms%sid%A_loc)
     else if (ms%initialised) then
       ms%id%JOB = job_end
       call dmumps(ms%id)
@@ -202,6 +242,9 @@ contains
       if (associated(ms%id%A)) deallocate(ms%id%A)
       if (associated(ms%id%PERM_IN)) deallocate(ms%id%PERM_IN)
       if (associated(ms%id%RHS)) deallocate(ms%id%RHS)
+      if (associated(ms%id%IRN_loc)) deallocate(ms%id%IRN_loc)
+      if (associated(ms%id%JCN_loc)) deallocate(ms%id%JCN_loc)
+      if (associated(ms%id%A_loc)) deallocate(ms%id%A_loc)
     end if
     ms%single = .false.
     ms%initialised = .false.
@@ -256,8 +299,9 @@ contains
   end function mumps_is_factored
 
   !> Controls: streams and print level, centralized assembled input, user ordering, workspace relaxation.
-  subroutine set_controls(icntl)
+  subroutine set_controls(icntl, distributed)
     integer, intent(inout) :: icntl(:)               !< ICNTL of an instance after JOB = -1
+    logical, intent(in) :: distributed               !< distributed assembled input (ICNTL(18) = 3)
     character(len=16) :: val
     integer :: length, status
 
@@ -275,6 +319,7 @@ contains
     end if
     icntl(5) = 0        ! assembled input
     icntl(18) = 0       ! centralized on the host
+    if (distributed) icntl(18) = 3  ! distributed assembled entries, summed by MUMPS
     icntl(7) = 1        ! user ordering in PERM_IN (the host's METIS nested dissection)
     icntl(14) = icntl14_start
     icntl(20) = 0       ! dense right-hand side
@@ -282,7 +327,7 @@ contains
   end subroutine set_controls
 
   !> mumps_analyse for single-precision factors (SMUMPS): same pattern, ordering and controls.
-  subroutine analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg)
+  subroutine analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, comm)
     type(mumps_solver_t), intent(inout) :: ms        !< fresh instance
     logical, intent(in) :: symmetric                 !< SYM = 2 or 0
     integer, intent(in) :: n                         !< order
@@ -291,9 +336,11 @@ contains
     integer, intent(in) :: pivot_position(:)         !< PERM_IN
     integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1)
     character(len=*), intent(out) :: errmsg          !< reason on failure
+    integer, intent(in), optional :: comm            !< distributed: the communicator
     character(len=*), parameter :: here = 'mumps_analyse (single precision)'
 
     ms%sid%COMM = MPI_COMM_WORLD
+    if (present(comm)) ms%sid%COMM = comm
     ms%sid%PAR = 1
     ms%sid%SYM = merge(2, 0, symmetric)
     ms%sid%JOB = job_init
@@ -304,16 +351,29 @@ contains
       return
     end if
     ms%initialised = .true.
-    call set_controls(ms%sid%ICNTL)
+    call set_controls(ms%sid%ICNTL, ms%distributed)
     ms%n = n
     ms%sid%N = n
-    ms%sid%NNZ = int(size(irn), i8)
-    allocate(ms%sid%IRN(size(irn)), ms%sid%JCN(size(jcn)), ms%sid%A(size(irn)), ms%sid%PERM_IN(n), ms%sid%RHS(n))
-    ms%sid%IRN = irn
-    ms%sid%JCN = jcn
-    ms%sid%A = 0.0_sp
-    ms%sid%PERM_IN = pivot_position
-    ms%sid%RHS = 0.0_sp
+    if (ms%distributed) then
+      ms%sid%NNZ_loc = int(size(irn), i8)
+      allocate(ms%sid%IRN_loc(size(irn)), ms%sid%JCN_loc(size(jcn)), ms%sid%A_loc(size(irn)))
+      ms%sid%IRN_loc = irn
+      ms%sid%JCN_loc = jcn
+      ms%sid%A_loc = 0.0_sp
+      if (ms%host) then
+        allocate(ms%sid%PERM_IN(n), ms%sid%RHS(n))
+        ms%sid%PERM_IN = pivot_position
+        ms%sid%RHS = 0.0_sp
+      end if
+    else
+      ms%sid%NNZ = int(size(irn), i8)
+      allocate(ms%sid%IRN(size(irn)), ms%sid%JCN(size(jcn)), ms%sid%A(size(irn)), ms%sid%PERM_IN(n), ms%sid%RHS(n))
+      ms%sid%IRN = irn
+      ms%sid%JCN = jcn
+      ms%sid%A = 0.0_sp
+      ms%sid%PERM_IN = pivot_position
+      ms%sid%RHS = 0.0_sp
+    end if
     ms%sid%JOB = job_analyse
     call smumps(ms%sid)
     if (ms%sid%INFOG(1) < 0) then
@@ -333,9 +393,14 @@ contains
     integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1)
     character(len=*), intent(out) :: errmsg          !< reason on failure
     character(len=*), parameter :: here = 'mumps_factorize (single precision)'
-    integer :: attempt
+    integer :: attempt, n_given
 
-    if (size(values) /= size(ms%sid%A)) then
+    if (ms%distributed) then
+      n_given = size(ms%sid%A_loc)
+    else
+      n_given = size(ms%sid%A)
+    end if
+    if (size(values) /= n_given) then
       stat = -1001
       errmsg = here//': value array size differs from the analysed pattern'
       return
@@ -345,7 +410,11 @@ contains
       errmsg = here//': a matrix entry exceeds the single-precision range'
       return
     end if
-    ms%sid%A = real(values, sp)
+    if (ms%distributed) then
+      ms%sid%A_loc = real(values, sp)
+    else
+      ms%sid%A = real(values, sp)
+    end if
     do attempt = 0, max_workspace_retries
       ms%sid%JOB = job_factorize
       call smumps(ms%sid)
@@ -375,7 +444,7 @@ contains
 
     scale = maxval(abs(rhs))
     if (scale == 0.0_dp .or. .not. (scale < huge(1.0_dp))) scale = 1.0_dp
-    ms%sid%RHS = real(rhs / scale, sp)
+    if (ms%host) ms%sid%RHS = real(rhs / scale, sp)
     ms%sid%NRHS = 1
     ms%sid%LRHS = ms%n
     ms%sid%JOB = job_solve
@@ -385,7 +454,7 @@ contains
       call describe('mumps_solve (single precision)', ms%sid%INFOG(1), ms%sid%INFOG(2), errmsg)
       return
     end if
-    rhs = real(ms%sid%RHS, dp) * scale
+    if (ms%host) rhs = real(ms%sid%RHS, dp) * scale
   end subroutine solve_single
 
   !> Message for a MUMPS error code (MUMPS 5.5 user guide, section "Error diagnostics").

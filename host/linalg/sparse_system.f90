@@ -21,10 +21,17 @@
 !> solver: sparse_factors_exact is then false and the caller must solve with sparse_solve_krylov.
 !> Single-precision factors (sparse_setup, single_factors; alone or with symmetric_factors) are a preconditioner
 !> in the same way: half the factor storage and memory traffic of the double-precision ones.
+!>
+!> Distributed (sparse_setup with a parallel context of several processes and the elements this process owns):
+!> every process keeps the whole pattern but adds only its own elements, and hands MUMPS (distributed assembled
+!> input, mumps_solver) only the entries its elements touch; MUMPS sums what several processes give. Solutions
+!> come back on rank 0 and are broadcast, products A x sum the processes' parts (parallel_context), so every
+!> process holds the same vectors and the Newton decisions built on them agree.
 module sparse_system
   use ldfcz_kinds, only: dp, i8
   use sparse_pattern, only: build_pattern, build_slot_map, find_in_row
   use metis_ordering, only: node_graph_from_elements, metis_node_order, equation_order_from_nodes, is_permutation
+  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_bcast
   use mumps_solver, only: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy, &
                           mumps_factor_entries, mumps_pivot_order, mumps_is_factored
   implicit none
@@ -35,7 +42,7 @@ module sparse_system
   public :: sparse_nnz, sparse_neq, sparse_factor_entries, sparse_time_analysis, sparse_time_factor
   public :: sparse_time_solve, sparse_factor_count, sparse_analysis_count, sparse_solve_count
   public :: sparse_ordering, sparse_pivot_order, sparse_to_dense, sparse_is_symmetric
-  public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count, sparse_factors_exact
+  public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count, sparse_factors_exact, sparse_time_comm
 
   !> A sparse system with its pattern, values, ordering and MUMPS instance (components private).
   type :: sparse_system_t
@@ -57,6 +64,9 @@ module sparse_system
     integer, allocatable :: lo_entry(:)             !< sym_factors: entry (j, i) of each factor value
     real(dp), allocatable :: val_sym(:)             !< sym_factors: values given to MUMPS
     type(mumps_solver_t) :: solver                  !< the MUMPS instance
+    type(parallel_t) :: par                         !< processes of the run (distributed: several)
+    logical :: distributed = .false.                !< this process adds its own elements only
+    integer, allocatable :: loc_entry(:)            !< distributed: the MUMPS values this process gives
     real(dp) :: t_analysis = 0.0_dp                 !< wall seconds in setup (pattern, ordering, analysis)
     real(dp) :: t_factor = 0.0_dp                   !< wall seconds in factorizations
     real(dp) :: t_solve = 0.0_dp                    !< wall seconds in solves
@@ -70,7 +80,7 @@ contains
 
   !> Build the pattern, the element -> slot maps, the METIS ordering and the MUMPS analysis, once.
   subroutine sparse_setup(sys, neq, elem_ptr, elem_eq, eq_node, symmetric, stat, errmsg, use_metis, &
-      symmetric_factors, single_factors)
+      symmetric_factors, single_factors, par, owned)
     type(sparse_system_t), intent(inout) :: sys     !< system (any previous content is destroyed)
     integer, intent(in) :: neq                      !< number of free equations (1..neq)
     integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
@@ -82,7 +92,10 @@ contains
     logical, intent(in), optional :: use_metis      !< false: natural order (for comparisons); default true
     logical, intent(in), optional :: symmetric_factors !< unsymmetric only: LDL^T factors of (A + A^T)/2
     logical, intent(in), optional :: single_factors !< single-precision factors (a preconditioner only)
+    type(parallel_t), intent(in), optional :: par   !< processes of the run (default: this one alone)
+    logical, intent(in), optional :: owned(:)       !< (nelem) the elements this process adds (with par)
     character(len=*), parameter :: here = 'sparse_setup'
+    logical, allocatable :: touched(:)
     integer, allocatable :: xadj(:), adjncy(:), node_position(:)
     integer :: nnode, nelem, i, k, m, j
     integer(i8) :: c0
@@ -156,6 +169,22 @@ contains
     if (present(symmetric_factors)) sys%sym_factors = symmetric_factors .and. .not. symmetric
     sys%single_factors = .false.
     if (present(single_factors)) sys%single_factors = single_factors
+    sys%distributed = .false.
+    if (present(par)) then
+      sys%par = par
+      sys%distributed = parallel_distributed(par) .and. present(owned)
+    end if
+    if (sys%distributed) then
+      ! the entries this process's elements touch
+      allocate(touched(size(sys%val)))
+      touched = .false.
+      do k = 1, nelem
+        if (.not. owned(k)) cycle
+        do j = 0, sys%elem_size(k)**2 - 1
+          if (sys%slot(sys%slot_ptr(k) + j) > 0) touched(sys%slot(sys%slot_ptr(k) + j)) = .true.
+        end do
+      end do
+    end if
     if (sys%sym_factors) then
       ! the upper triangle of the (structurally symmetric: element pattern) full pattern and each entry's mirror
       m = count(sys%irn <= sys%jcn)
@@ -175,8 +204,19 @@ contains
         end if
       end do
       sys%val_sym = 0.0_dp
-      call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
-        sys%eq_position, stat, errmsg, single=sys%single_factors)
+      if (sys%distributed) then
+        sys%loc_entry = pack([(k, k = 1, m)], touched(sys%up_entry) .or. touched(sys%lo_entry))
+        call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry(sys%loc_entry)), &
+          sys%jcn(sys%up_entry(sys%loc_entry)), sys%eq_position, stat, errmsg, single=sys%single_factors, &
+          comm=sys%par%comm, rank=sys%par%rank)
+      else
+        call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
+          sys%eq_position, stat, errmsg, single=sys%single_factors)
+      end if
+    else if (sys%distributed) then
+      sys%loc_entry = pack([(k, k = 1, size(sys%val))], touched)
+      call mumps_analyse(sys%solver, symmetric, neq, sys%irn(sys%loc_entry), sys%jcn(sys%loc_entry), &
+        sys%eq_position, stat, errmsg, single=sys%single_factors, comm=sys%par%comm, rank=sys%par%rank)
     else
       call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg, &
         single=sys%single_factors)
@@ -245,7 +285,13 @@ contains
     c0 = clock_count()
     if (sys%sym_factors) then
       sys%val_sym = 0.5_dp * (sys%val(sys%up_entry) + sys%val(sys%lo_entry))
-      call mumps_factorize(sys%solver, sys%val_sym, stat, errmsg)
+      if (sys%distributed) then
+        call mumps_factorize(sys%solver, sys%val_sym(sys%loc_entry), stat, errmsg)
+      else
+        call mumps_factorize(sys%solver, sys%val_sym, stat, errmsg)
+      end if
+    else if (sys%distributed) then
+      call mumps_factorize(sys%solver, sys%val(sys%loc_entry), stat, errmsg)
     else
       call mumps_factorize(sys%solver, sys%val, stat, errmsg)
     end if
@@ -275,14 +321,25 @@ contains
       return
     end if
     c0 = clock_count()
-    call mumps_solve(sys%solver, rhs, stat, errmsg)
+    call factor_solve(sys, rhs, stat, errmsg)
     sys%t_solve = sys%t_solve + seconds_since(c0)
     if (stat == 0) sys%n_solve = sys%n_solve + 1
   end subroutine sparse_solve
 
-  !> y = A x with the current values (the stored triangle mirrored when symmetric).
+  !> Solve with the factors; distributed: rank 0's solution broadcast to every process.
+  subroutine factor_solve(sys, rhs, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< factored system
+    real(dp), intent(inout) :: rhs(:)               !< right-hand side in, solution out
+    integer, intent(out) :: stat                    !< 0 on success (the same on every process: MUMPS INFOG)
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    call mumps_solve(sys%solver, rhs, stat, errmsg)
+    if (sys%distributed .and. stat == 0) call parallel_bcast(sys%par, rhs)
+  end subroutine factor_solve
+
+  !> y = A x with the current values (the stored triangle mirrored when symmetric; distributed: the processes'
+  !> parts summed).
   subroutine sparse_matvec(sys, x, y)
-    type(sparse_system_t), intent(in) :: sys        !< system
+    type(sparse_system_t), intent(inout) :: sys     !< system
     real(dp), intent(in) :: x(:)                    !< vector (size neq)
     real(dp), intent(out) :: y(:)                   !< product (size neq)
     integer :: k, i, j
@@ -309,6 +366,7 @@ contains
       end do
       !$omp end parallel do
     end if
+    if (sys%distributed) call parallel_sum(sys%par, y)
   end subroutine sparse_matvec
 
   !> True when factors from an earlier sparse_factorize are available (possibly of older values).
@@ -372,7 +430,7 @@ contains
       k = 0
       arnoldi: do j = 1, m
         z(:, j) = v(:, j)
-        call mumps_solve(sys%solver, z(:, j), i, errmsg)
+        call factor_solve(sys, z(:, j), i, errmsg)
         if (i /= 0) then
           stat = i
           exit restarts
@@ -441,6 +499,8 @@ contains
     if (allocated(sys%up_entry)) deallocate(sys%up_entry)
     if (allocated(sys%lo_entry)) deallocate(sys%lo_entry)
     if (allocated(sys%val_sym)) deallocate(sys%val_sym)
+    if (allocated(sys%loc_entry)) deallocate(sys%loc_entry)
+    sys%distributed = .false.
     sys%sym_factors = .false.
     sys%single_factors = .false.
     sys%neq = 0
@@ -453,6 +513,12 @@ contains
     sys%n_solve = 0
     sys%n_krylov = 0
   end subroutine sparse_destroy
+
+  !> Wall seconds in the broadcasts of solutions and sums of products (distributed).
+  real(dp) function sparse_time_comm(sys)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    sparse_time_comm = sys%par%t_comm
+  end function sparse_time_comm
 
   !> Stored entries (upper triangle only when symmetric).
   integer(i8) function sparse_nnz(sys)

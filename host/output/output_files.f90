@@ -40,6 +40,8 @@ module output_files
     character(len=:), allocatable :: job     !< job name
     character(len=:), allocatable :: dir     !< output directory
     logical :: quiet = .false.               !< no echo of the log on standard output
+    logical :: silent = .false.              !< writes nothing (a process other than rank 0 of an MPI run)
+    integer :: npieces = 1                   !< pieces of a VTU frame (MPI: one per process, JOB_NNNN.pvtu)
     logical :: tty = .false.                 !< standard output is a terminal
     integer :: csv = -1, sta = -1, log = -1, pvd = -1
     integer :: nframe = 0
@@ -64,8 +66,9 @@ contains
   end function stdout_is_terminal
 
   !> Open JOB.csv, JOB.sta and JOB.log in dir and send standard output (unit 6) to JOB.dat. append (a restart):
-  !> JOB.sta, JOB.log and JOB.dat are continued and JOB.csv is left closed for output_csv_resume.
-  subroutine output_open(out, job, dir, quiet, stat, errmsg, append)
+  !> JOB.sta, JOB.log and JOB.dat are continued and JOB.csv is left closed for output_csv_resume. silent (ranks
+  !> other than 0 of an MPI run): nothing is opened and standard output stays on the console.
+  subroutine output_open(out, job, dir, quiet, stat, errmsg, append, silent)
     type(output_t), intent(out) :: out                   !< output state
     character(len=*), intent(in) :: job                  !< job name
     character(len=*), intent(in) :: dir                  !< directory (must exist)
@@ -73,6 +76,8 @@ contains
     integer, intent(out) :: stat                         !< 0 ok, 2 cannot write
     character(len=:), allocatable, intent(out) :: errmsg !< message
     logical, intent(in), optional :: append              !< continue the files of an earlier run (restart)
+    !> open nothing and write nothing (the processes other than rank 0 of an MPI run: output is written once)
+    logical, intent(in), optional :: silent
     integer :: ios
     logical :: cont
     cont = .false.
@@ -83,6 +88,12 @@ contains
     out%tty = stdout_is_terminal() .and. .not. quiet
     stat = 0
     errmsg = ''
+    if (present(silent)) out%silent = silent
+    if (out%silent) then
+      out%quiet = .true.
+      out%tty = .false.
+      return
+    end if
     if (cont) then
       open (newunit=out%sta, file=path(out, '.sta'), status='unknown', position='append', action='write', iostat=ios)
     else
@@ -130,6 +141,7 @@ contains
     stat = 0
     errmsg = ''
     fresh = .false.
+    if (out%silent) return
     fname = path(out, '.csv')
     header = 'step,inc,step_time,total_time'
     do i = 1, size(columns)
@@ -224,7 +236,7 @@ contains
     real(dp), intent(in) :: frame_times(:)    !< total time of each frame written
     out%frame_times = frame_times
     out%nframe = size(frame_times)
-    if (out%nframe > 0) call write_pvd(out)
+    if (out%nframe > 0 .and. .not. out%silent) call write_pvd(out)
   end subroutine output_frames_resume
 
   function path(out, suffix) result(p)
@@ -253,6 +265,7 @@ contains
     type(output_t), intent(inout) :: out          !< output state
     character(len=*), intent(in) :: columns(:)    !< column names after the four time columns
     integer :: i
+    if (out%silent) return
     write (out%csv, '(a)', advance='no') 'step,inc,step_time,total_time'
     do i = 1, size(columns)
       write (out%csv, '(a)', advance='no') ','//trim(columns(i))
@@ -269,6 +282,7 @@ contains
     real(dp), intent(in) :: values(:)     !< column values
     character(len=32) :: b
     integer :: i
+    if (out%silent) return
     write (out%csv, '(i0,a,i0,2(a,es23.15e3))', advance='no') kstep, ',', kinc, ',', step_time, ',', total_time
     do i = 1, size(values)
       write (b, '(es23.15e3)') values(i)
@@ -287,6 +301,7 @@ contains
     character(len=*), intent(in) :: outcome       !< converged, cutback: ..., failed: ...
     real(dp), intent(in), optional :: ratios(:)   !< r_max / q_avg per iteration
     integer :: i
+    if (out%silent) return
     write (out%sta, '(i5,i6,i5,i6,2es14.6,2x,a)', advance='no') kstep, kinc, attempt, iterations, step_time, dt, &
       trim(outcome)
     if (present(ratios)) then
@@ -305,6 +320,7 @@ contains
   subroutine output_sta_note(out, text)
     type(output_t), intent(inout) :: out  !< output state
     character(len=*), intent(in) :: text  !< the note
+    if (out%silent) return
     write (out%sta, '(a)') '# '//text
     flush (out%sta)
   end subroutine output_sta_note
@@ -334,12 +350,16 @@ contains
   end subroutine output_progress_clear
 
   !> Write one ASCII VTU frame and rewrite JOB.pvd with every frame so far (valid after each increment).
-  subroutine output_vtu_frame(out, frame, total_time)
+  !> With npieces > 1 (an MPI run) the frame is this process's piece JOB_NNNN_R.vtu (its elements' cells, every
+  !> point), and the writing process (rank 0) writes JOB_NNNN.pvtu listing the pieces, which JOB.pvd lists.
+  subroutine output_vtu_frame(out, frame, total_time, piece, npieces)
     type(output_t), intent(inout) :: out      !< output state
     type(output_vtu_t), intent(in) :: frame   !< data
     real(dp), intent(in) :: total_time        !< time stamp of the frame
+    integer, intent(in), optional :: piece    !< this process's piece (0-based)
+    integer, intent(in), optional :: npieces  !< pieces of the frame (processes)
     character(len=:), allocatable :: name
-    character(len=16) :: b
+    character(len=16) :: b, bp
     integer :: u, i, np, nc, k, ios
     integer(8) :: c0, c1, rate
     call system_clock(c0, rate)
@@ -348,6 +368,18 @@ contains
     name = out%job//'_'//trim(b)//'.vtu'
     np = size(frame%x, 2)
     nc = size(frame%cell_type)
+    if (present(npieces)) out%npieces = max(1, npieces)
+    if (out%npieces > 1) then
+      write (bp, '(i0)') piece
+      name = out%job//'_'//trim(b)//'_'//trim(bp)//'.vtu'
+      if (.not. out%silent) call write_pvtu(out%job//'_'//trim(b))
+    end if
+    if (out%silent .and. out%npieces <= 1) then
+      ! the frame is written by rank 0; the list of frame times is kept for the restart files
+      if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
+      out%frame_times = [out%frame_times, total_time]
+      return
+    end if
     open (newunit=u, file=out%dir//'/'//name, status='replace', action='write', iostat=ios)
     if (ios /= 0) return
     write (u, '(a)') '<?xml version="1.0"?>'
@@ -401,10 +433,49 @@ contains
     ! the PVD collection, rewritten so that it is complete after every frame
     if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
     out%frame_times = [out%frame_times, total_time]
-    call write_pvd(out)
+    if (.not. out%silent) call write_pvd(out)
     call system_clock(c1)
     out%t_output = out%t_output + real(c1 - c0, dp) / real(rate, dp)
   contains
+    !> JOB_NNNN.pvtu: the arrays of the pieces (names, types, components as output_vtu_frame writes them) and the
+    !> piece files of every process.
+    subroutine write_pvtu(stem)
+      character(len=*), intent(in) :: stem
+      integer :: v, j
+      character(len=16) :: bj
+      open (newunit=v, file=out%dir//'/'//stem//'.pvtu', status='replace', action='write', iostat=ios)
+      if (ios /= 0) return
+      write (v, '(a)') '<?xml version="1.0"?>'
+      write (v, '(a)') '<VTKFile type="PUnstructuredGrid" version="0.1" byte_order="LittleEndian">'
+      write (v, '(a)') '<PUnstructuredGrid GhostLevel="0">'
+      write (v, '(a)') '<PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>'
+      write (v, '(a)') '<PPointData Vectors="U"><PDataArray type="Float64" Name="U" NumberOfComponents="3"/>'// &
+        '<PDataArray type="Float64" Name="RF" NumberOfComponents="3"/></PPointData>'
+      write (v, '(a)') '<PCellData Scalars="Mises"><PDataArray type="Int32" Name="element"/>'
+      write (v, '(a)') '<PDataArray type="Float64" Name="S" NumberOfComponents="6"/>'
+      write (v, '(a)') '<PDataArray type="Float64" Name="S_principal" NumberOfComponents="3"/>'
+      write (v, '(a)') '<PDataArray type="Float64" Name="Mises"/>'
+      if (allocated(frame%strain) .and. allocated(frame%strain_names)) then
+        do j = 1, size(frame%strain_names)
+          write (v, '(a)') '<PDataArray type="Float64" Name="'//trim(frame%strain_names(j))//'" NumberOfComponents="6"/>'
+        end do
+      end if
+      do j = 1, size(frame%sdv, 1)
+        write (bj, '(i0)') frame%sdv_index(j)
+        write (v, '(a)') '<PDataArray type="Float64" Name="SDV'//trim(bj)//'"/>'
+      end do
+      write (v, '(a)') '<PDataArray type="Int32" Name="cohesive"/>'
+      write (v, '(a)') '<PDataArray type="Float64" Name="opening" NumberOfComponents="3"/>'
+      write (v, '(a)') '<PDataArray type="Float64" Name="traction"/>'
+      write (v, '(a)') '<PDataArray type="Float64" Name="Delta_max"/></PCellData>'
+      do j = 0, out%npieces - 1
+        write (bj, '(i0)') j
+        write (v, '(a)') '<Piece Source="'//stem//'_'//trim(bj)//'.vtu"/>'
+      end do
+      write (v, '(a)') '</PUnstructuredGrid></VTKFile>'
+      close (v)
+    end subroutine write_pvtu
+
     !> A symmetric tensor held in Abaqus order (11, 22, 33, 12, 13, 23), written in VTK's order (XX, YY, ZZ, XY,
     !> YZ, XZ) with component names, so that ParaView's tensor filters read it as the same tensor.
     subroutine sym_tensor(label, a)
@@ -448,7 +519,7 @@ contains
     do i = 1, out%nframe
       write (b, '(i4.4)') i
       write (u, '(a,es23.15,a)') '<DataSet timestep="', out%frame_times(i), '" group="" part="0" file="'// &
-        out%job//'_'//trim(b)//'.vtu"/>'
+        out%job//'_'//trim(b)//trim(merge('.pvtu', '.vtu ', out%npieces > 1))//'"/>'
     end do
     write (u, '(a)') '</Collection></VTKFile>'
     close (u)

@@ -1,0 +1,84 @@
+# Tests of the distributed run (LDFCZ_MPI=ON only; tools/test.sh builds that configuration in build-mpi): each deck
+# class under mpirun -np 2 and -np 3 against the same deck on one process (tests/regression/check_mpi.py: same
+# increments, attempts and Newton iterations, results within 1e-6 of each column's largest value; XIT: the same
+# message naming the element), and the partition test (tests/mpi/partition_check.f90: every element owned once,
+# the distributed force and tangent equal to the serial ones to 1e-12).
+if(NOT LDFCZ_MPI OR NOT TARGET ldfcz)
+  return()
+endif()
+find_program(LDFCZ_MPIEXEC NAMES mpirun mpiexec REQUIRED)
+# yield_when_idle: a process waiting for a message gives its core away (the test machine is shared; 3 processes on
+# 2 cores)
+set(LDFCZ_MPI_ENV OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  OMPI_MCA_mpi_yield_when_idle=1)
+
+add_executable(partition_check mpi/partition_check.f90)
+target_link_libraries(partition_check PRIVATE ldfcz_host "$<LINK_LIBRARY:WHOLE_ARCHIVE,ldfcz_abaqus_utils>")
+set_target_properties(partition_check PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests/bin")
+foreach(np 2 3)
+  foreach(deck patch/patch_c3d8 peel/peel_ps)
+    get_filename_component(name ${deck} NAME)
+    add_test(NAME mpi_partition_${name}_np${np}
+      COMMAND ${LDFCZ_MPIEXEC} -np ${np} --oversubscribe --bind-to none $<TARGET_FILE:partition_check>
+        ${PROJECT_SOURCE_DIR}/decks/${deck}.inp)
+    set_tests_properties(mpi_partition_${name}_np${np} PROPERTIES LABELS "mpi" TIMEOUT 120
+      ENVIRONMENT "${LDFCZ_MPI_ENV}" PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
+  endforeach()
+endforeach()
+
+set(LDFCZ_CHECK_MPI "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_mpi.py")
+function(ldfcz_add_mpi_test name deck)
+  add_test(NAME ${name} COMMAND Python3::Interpreter ${LDFCZ_CHECK_MPI} --exe $<TARGET_FILE:ldfcz>
+    --deck ${deck} --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/${name} ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "mpi;deck" TIMEOUT 600 ENVIRONMENT "${LDFCZ_MPI_ENV}")
+endfunction()
+ldfcz_add_mpi_test(mpi_cohesive_block ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp)
+ldfcz_add_mpi_test(mpi_leonov_uniaxial ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp)
+ldfcz_add_mpi_test(mpi_rotation ${PROJECT_SOURCE_DIR}/decks/single/c3d8_rotation_uniaxial.inp)
+ldfcz_add_mpi_test(mpi_peel_ps ${PROJECT_SOURCE_DIR}/decks/peel/peel_ps.inp)
+# the small 3D peel (Leonov C3D8 coating, cohesive layer): its first 12 increments (PNEWDT cutbacks included)
+ldfcz_add_mpi_test(mpi_peel_3d ${PROJECT_SOURCE_DIR}/decks/peel/peel_3d_quarter.inp --expect-exit 3
+  -- --stop-after-increments 12)
+ldfcz_add_mpi_test(mpi_user_uel ${PROJECT_SOURCE_DIR}/decks/single/user_uel.inp
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_elastic.f)
+ldfcz_add_mpi_test(mpi_xit ${PROJECT_SOURCE_DIR}/decks/bad/runtime/uel_phi_zero.inp --xit)
+# the first cohesive element of a row calls XIT; with 2 processes it is rank 1's (the log says whose): the stop and
+# the message come from another process than the one that writes the output
+ldfcz_add_mpi_test(mpi_xit_remote ${CMAKE_CURRENT_SOURCE_DIR}/mpi/xit_first_element.inp --xit --remote-at 2)
+
+# restart from per-process restart files (JOB.rst.RofN) and SIGTERM to the launcher (tests/regression/check_restart.py
+# --np): the continuation reproduces the uninterrupted distributed run to 1e-9 (observed 1e-12: two distributed runs
+# differ in the last bits, MUMPS' parallel assembly order), every process stops after the increment under way.
+set(LDFCZ_CHECK_RESTART_MPI "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py")
+function(ldfcz_add_mpi_restart_test name deck)
+  add_test(NAME ${name} COMMAND Python3::Interpreter ${LDFCZ_CHECK_RESTART_MPI} --exe $<TARGET_FILE:ldfcz>
+    --deck ${deck} --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/${name} --rel 1e-9 ${ARGN})
+  set_tests_properties(${name} PROPERTIES LABELS "mpi;restart" TIMEOUT 600 ENVIRONMENT "${LDFCZ_MPI_ENV}")
+endfunction()
+ldfcz_add_mpi_restart_test(mpi_restart_cohesive_np2 ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp
+  --np 2 --stop 9 --freq 1 --other-deck ${PROJECT_SOURCE_DIR}/decks/single/cohesive_mode_I.inp)
+ldfcz_add_mpi_restart_test(mpi_restart_umat_np3 ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp
+  --np 3 --stop 45 --freq 7)
+ldfcz_add_mpi_restart_test(mpi_sigterm_peel_np2 ${PROJECT_SOURCE_DIR}/decks/peel/peel_ps.inp
+  --np 2 --stop 20 --freq 100000 --term)
+
+# other Newton variants and preconditioning factors distributed (GMRES products summed over the processes, LDL^T
+# factors of the symmetric part from the processes' entries): the full-Newton iterates, so the same counts
+ldfcz_add_mpi_test(mpi_cohesive_krylov_symmetric_single ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp
+  -- --newton krylov --factors symmetric-single)
+ldfcz_add_mpi_test(mpi_cohesive_modified ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp -- --newton modified)
+
+# the closed-form load tests of tests/host.cmake run distributed (ldfcz_np2: mpirun -np 2 ldfcz): *DLOAD/*DSLOAD
+# pressure on a thick cylinder (Lame), *EQUATION and *TIE constraints, load history over steps, initial stress
+file(GENERATE OUTPUT "${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2"
+  CONTENT "#!/bin/sh\nexec \"${CMAKE_CURRENT_SOURCE_DIR}/mpi/mpirun_ldfcz.sh\" 2 \"$<TARGET_FILE:ldfcz>\" \"$@\"\n"
+  FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+foreach(case lame2d lame3d equation tie steps release)
+  add_test(NAME mpi_loads_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py
+    --exe ${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2 --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/loads_${case} --case ${case})
+  set_tests_properties(mpi_loads_${case} PROPERTIES LABELS "mpi;deck" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}")
+endforeach()
+add_test(NAME mpi_loads_initial_stress COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py
+  --exe ${CMAKE_BINARY_DIR}/tests/bin/ldfcz_np2 --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/loads_initial_stress
+  --case initial_stress --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
+set_tests_properties(mpi_loads_initial_stress PROPERTIES LABELS "mpi;deck" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}")

@@ -1,0 +1,108 @@
+!> Partition test of the distributed assembly (run under mpirun -np N; tests/mpi.cmake): the deck's elements are
+!> partitioned over the processes (analysis_core, METIS on the element graph) and
+!>   1. every element is owned by exactly one process (the ownership flags summed over the processes are all 1);
+!>   2. with N > 1 and more elements than processes, no process owns every element (the partition distributes);
+!>   3. at a non-trivial displacement (u_i = a sin(i), a = 1e-3 of the model size: finite strains in every element,
+!>      cohesive openings below the critical one) the assembled internal force of the distributed element loop
+!>      (each process its own elements, summed over the processes) and its tangent (each process's part of the
+!>      sparse matrix, summed over the processes) equal those of one process assembling every element, to
+!>      1e-12 of the largest entry: the two differ only in the order of the floating-point additions (a few ulp
+!>      per entry), while an element missing or a shared-node contribution summed twice would change entries by
+!>      their full size.
+!> Usage: partition_check DECK. Exit 0 when all hold, 1 otherwise (the failures are printed by rank 0).
+program partition_check
+  use ldfcz_kinds, only: dp
+  use model_types, only: model_t
+  use deck_reader, only: read_deck
+  use analysis_core, only: analysis_t, analysis_init, analysis_number_equations, analysis_assemble
+  use user_routines, only: user_routines_t, user_routines_builtin
+  use sparse_system, only: sparse_to_dense
+  use parallel_context, only: parallel_t, parallel_init, parallel_finalize, parallel_sum, parallel_writer
+  implicit none
+  type(parallel_t) :: par
+  type(model_t) :: model
+  type(user_routines_t) :: routines
+  type(analysis_t) :: dist, ser
+  character(len=512) :: deck
+  character(len=:), allocatable :: errmsg
+  real(dp), allocatable :: own(:), kd(:, :), ks(:, :), flat(:)
+  real(dp) :: pn, size_model, err_f, err_k, fmax, kmax
+  integer :: stat, i, nfail, nown
+  logical :: ok
+
+  call parallel_init(par)
+  nfail = 0
+  call get_command_argument(1, deck)
+  call read_deck(trim(deck), model, stat, errmsg)
+  call check(stat == 0, 'deck read: '//errmsg)
+  call user_routines_builtin(routines)
+  dist%par = par
+  call analysis_init(dist, model, routines, stat, errmsg)
+  call check(stat == 0, 'distributed analysis_init: '//errmsg)
+  call analysis_init(ser, model, routines, stat, errmsg)   ! one process's view: every element
+  call check(stat == 0, 'serial analysis_init: '//errmsg)
+
+  ! 1., 2.: ownership
+  own = merge(1.0_dp, 0.0_dp, dist%owned)
+  call parallel_sum(par, own)
+  call check(all(own == 1.0_dp), 'an element is owned by no process or by several')
+  nown = count(dist%owned)
+  if (par%nranks > 1 .and. model%nelem >= par%nranks) &
+    call check(nown < model%nelem, 'one process owns every element: nothing distributed')
+
+  ! 3.: forces and tangents at a deformed state, the dofs of the first node prescribed
+  size_model = maxval(model%x(1:model%ndim, 1:model%nnode)) - minval(model%x(1:model%ndim, 1:model%nnode))
+  call prepare(dist)
+  call prepare(ser)
+  call analysis_assemble(dist, model, 1, 1, [0.0_dp, 0.0_dp], 0.1_dp, 1.0_dp, .true., .true., pn, stat, errmsg)
+  call check(stat == 0, 'distributed assembly: '//errmsg)
+  call analysis_assemble(ser, model, 1, 1, [0.0_dp, 0.0_dp], 0.1_dp, 1.0_dp, .true., .true., pn, stat, errmsg)
+  call check(stat == 0, 'serial assembly: '//errmsg)
+  fmax = maxval(abs(ser%fint))
+  err_f = maxval(abs(dist%fint - ser%fint)) / max(fmax, tiny(1.0_dp))
+  allocate (kd(dist%neq, dist%neq), ks(ser%neq, ser%neq))
+  call sparse_to_dense(dist%sys, kd)
+  call sparse_to_dense(ser%sys, ks)
+  flat = reshape(kd, [size(kd)])
+  call parallel_sum(par, flat)          ! the processes' parts of the matrix
+  kd = reshape(flat, shape(kd))
+  kmax = maxval(abs(ks))
+  err_k = maxval(abs(kd - ks)) / max(kmax, tiny(1.0_dp))
+  call check(fmax > 0.0_dp .and. kmax > 0.0_dp, 'trivial state: zero forces or tangent')
+  call check(err_f <= 1.0e-12_dp, 'distributed internal force differs from the serial one')
+  call check(err_k <= 1.0e-12_dp, 'distributed tangent differs from the serial one')
+  if (parallel_writer(par)) then
+    print '(a,i0,a,i0,a,i0,a,i0,a)', 'partition_check: ', par%nranks, ' processes, ', model%nelem, &
+      ' elements (', nown, ' on rank 0), ', dist%neq, ' equations'
+    print '(a,es10.2,a,es10.2,a)', 'partition_check: force difference ', err_f, ', tangent difference ', err_k, &
+      ' (of the largest entry)'
+    if (nfail == 0) print '(a)', 'PASS'
+  end if
+  ok = nfail == 0
+  call parallel_finalize(par)
+  if (.not. ok) error stop 1
+
+contains
+
+  subroutine prepare(an)
+    type(analysis_t), intent(inout) :: an
+    an%prescribed = .false.
+    an%prescribed(1:model%ndim) = .true.
+    call analysis_number_equations(an, model, stat, errmsg)
+    call check(stat == 0, 'equations: '//errmsg)
+    do i = 1, an%ndof
+      an%u(i) = 1.0e-3_dp * size_model * sin(real(i, dp))
+    end do
+    an%u(1:model%ndim) = 0.0_dp
+    an%u_conv = 0.0_dp
+  end subroutine prepare
+
+  subroutine check(cond, what)
+    logical, intent(in) :: cond
+    character(len=*), intent(in) :: what
+    if (cond) return
+    nfail = nfail + 1
+    if (parallel_writer(par)) print '(a)', 'FAIL: '//what
+  end subroutine check
+
+end program partition_check

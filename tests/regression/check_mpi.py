@@ -1,0 +1,216 @@
+#!/usr/bin/env python3
+"""A deck run distributed (mpirun -np N, the LDFCZ_MPI build) against the same deck on one process.
+
+Checks, for every N given:
+  - the exit status is the one expected (0, or 2 for a deck whose user routine calls XIT);
+  - the same increments, attempts, cutbacks and Newton iterations (closing summary) and the same attempt history in
+    JOB.sta (step, increment, attempt, iterations, outcome of every line): the processes take the serial run's
+    decisions;
+  - JOB.csv: the same rows (step, increment, times to 1e-12), every value within TOL * (largest magnitude of its
+    column) of the one-process run. The runs differ only in the order in which element contributions are summed
+    (per process, then over the processes) and in MUMPS' distributed factorization, i.e. in rounding; the converged
+    solutions then differ by far less than the Newton tolerance (R_n = 5e-3 of the typical force). TOL = 1e-6
+    still catches any wrong sum: an element missing or counted twice changes the forces by O(1);
+  - the last field frame: JOB_NNNN.pvtu with one piece per process; the pieces hold every element exactly once,
+    their cell data (by element label) and point data within TOL of the one-process JOB_NNNN.vtu (read with VTK;
+    the ASCII frames hold 9 significant digits, so a difference of ~5e-9 of an array is printing, not physics);
+  - with --xit: the message names the same element and deck line on every N.
+The observed largest differences are printed.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def run(exe, deck, out, np, user, extra, threads):
+    if os.path.isdir(out):
+        shutil.rmtree(out)
+    os.makedirs(out)
+    cmd = ["mpirun", "-np", str(np), "--oversubscribe", "--bind-to", "none", exe, "-q", "--threads", str(threads),
+           "--out", out]
+    if user:
+        cmd += ["--user", user]
+    cmd += extra + [deck]
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_btl_vader_single_copy_mechanism="none", OMPI_MCA_rmaps_base_oversubscribe="1",
+               OMPI_MCA_mpi_yield_when_idle="1")
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
+    return p.returncode, p.stdout + p.stderr
+
+
+def job_files(out, deck):
+    job = os.path.splitext(os.path.basename(deck))[0]
+    return os.path.join(out, job)
+
+
+def summary_counts(log):
+    m = re.search(r"increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+)", log)
+    return m.groups() if m else None
+
+
+def sta_lines(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#"):
+                continue
+            w = line.split()
+            if len(w) < 7:
+                continue
+            outcome = " ".join(w[6:]).split("  r/q:")[0].split(" r/q:")[0]
+            outcome = re.sub(r"[-+]?\d+\.\d+(e[-+]?\d+)?", "#", outcome)  # numbers in a cutback reason
+            rows.append((w[0], w[1], w[2], w[3], outcome))
+    return rows
+
+
+def csv_rows(path):
+    with open(path) as f:
+        lines = [ln.strip() for ln in f if ln.strip()]
+    head = lines[0].split(",")
+    data = [[float(x) for x in ln.split(",")] for ln in lines[1:]]
+    return head, data
+
+
+def numbers(path):
+    with open(path) as f:
+        text = f.read()
+    return [float(x) for x in re.findall(r"(?<![\w.])[-+]?\d+\.\d+(?:[eE][-+]?\d+)?", text)]
+
+
+def read_grid(path):
+    """Cell arrays by element label and point arrays of a .vtu, or of a .pvtu (its pieces merged), with VTK."""
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLPUnstructuredGridReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    r = vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu") else vtkXMLUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    g = r.GetOutput()
+    cd, pd = g.GetCellData(), g.GetPointData()
+    ids = vtk_to_numpy(cd.GetArray("element"))
+    cells = {}
+    for k in range(cd.GetNumberOfArrays()):
+        name = cd.GetArrayName(k)
+        vals = vtk_to_numpy(cd.GetArray(k))
+        cells[name] = {int(e): vals[i] for i, e in enumerate(ids)}
+    points = {pd.GetArrayName(k): vtk_to_numpy(pd.GetArray(k)) for k in range(pd.GetNumberOfArrays())}
+    return g.GetNumberOfCells(), cells, points
+
+
+def compare_frames(vtu, pvtu, np_):
+    """Largest difference (relative to each array's largest value) between the one-process frame and the pieces
+    of the distributed one: every cell once, the same cell data by element label, the same point data (each piece
+    holds every point)."""
+    import numpy
+    n1, c1, p1 = read_grid(vtu)
+    n, c, p = read_grid(pvtu)
+    if n != n1 or sorted(c["element"]) != sorted(c1["element"]):
+        fail(f"-np {np_}: the pieces hold {n} cells, one process {n1}: not every element exactly once")
+    worst = 0.0
+    for name, by_elem in c1.items():
+        if name not in c:
+            fail(f"-np {np_}: cell array {name} missing in the pieces")
+        scale = max(max((float(numpy.max(numpy.abs(v))) for v in by_elem.values()), default=0.0), 1e-300)
+        for e, v in by_elem.items():
+            worst = max(worst, float(numpy.max(numpy.abs(numpy.asarray(c[name][e]) - v))) / scale)
+    for name, v1 in p1.items():
+        v = p[name].reshape(np_, *v1.shape)   # the pieces one after the other, every point in each
+        scale = max(float(numpy.max(numpy.abs(v1))), 1e-300)
+        worst = max(worst, float(numpy.max(numpy.abs(v - v1))) / scale)
+    return worst
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--deck", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--np", type=int, nargs="+", default=[2, 3])
+    ap.add_argument("--user")
+    ap.add_argument("--xit", action="store_true", help="the deck's routine calls XIT: exit 2, same message")
+    ap.add_argument("--remote-at", type=int, nargs="*", default=[],
+                    help="with --xit: for these N the element must be computed by a process other than rank 0")
+    ap.add_argument("--tol", type=float, default=1e-6)
+    ap.add_argument("--expect-exit", type=int, default=0, help="exit status of a run that is not an XIT stop "
+                    "(3 with --stop-after-increments)")
+    ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("extra", nargs="*", help="more ldfcz options (after --)")
+    a = ap.parse_args()
+    if shutil.which("mpirun") is None:
+        fail("mpirun not found (tools/setup.sh installs openmpi-bin for the LDFCZ_MPI build)")
+    ref_out = os.path.join(a.out, "np1")
+    rc1, text1 = run(a.exe, a.deck, ref_out, 1, a.user, a.extra, a.threads)
+    want = 2 if a.xit else a.expect_exit
+    if rc1 != want:
+        fail(f"one process: exit {rc1}, expected {want}\n{text1[-3000:]}")
+    base1 = job_files(ref_out, a.deck)
+    log1 = open(base1 + ".log").read()
+    for np in a.np:
+        out = os.path.join(a.out, f"np{np}")
+        rc, text = run(a.exe, a.deck, out, np, a.user, a.extra, a.threads)
+        if rc != want:
+            fail(f"-np {np}: exit {rc}, expected {want}\n{text[-3000:]}")
+        base = job_files(out, a.deck)
+        log = open(base + ".log").read()
+        if a.xit:
+            m1 = re.findall(r"ldfcz: error: .*", log1)
+            m = re.findall(r"ldfcz: error: .*", log)
+            if not m1 or not m or m1[-1] != m[-1]:
+                fail(f"-np {np}: XIT message differs:\n  1: {m1[-1:]}\n  {np}: {m[-1:]}")
+            if "(element " not in m[-1]:
+                fail(f"-np {np}: the XIT message names no element: {m[-1]}")
+            who = re.findall(r"the element is computed by process (\d+) of", log)
+            if not who:
+                fail(f"-np {np}: the log does not say which process computed the element")
+            if np in a.remote_at and who[-1] == "0":
+                fail(f"-np {np}: the element is rank 0's: the test needs it on another process")
+            print(f"-np {np}: exit 2 everywhere, element on process {who[-1]}, message: {m[-1]}")
+            continue
+        c1, c = summary_counts(log1), summary_counts(log)
+        if c1 is None or c != c1:
+            fail(f"-np {np}: increments/attempts/cutbacks/iterations {c} against {c1} on one process")
+        if f"MPI processes {np}" not in log:
+            fail(f"-np {np}: the summary does not report {np} processes")
+        s1, s = sta_lines(base1 + ".sta"), sta_lines(base + ".sta")
+        if s1 != s:
+            for k, (x, y) in enumerate(zip(s1, s)):
+                if x != y:
+                    fail(f"-np {np}: JOB.sta line {k + 1} differs: {y} against {x}")
+            fail(f"-np {np}: JOB.sta has {len(s)} attempts against {len(s1)}")
+        h1, d1 = csv_rows(base1 + ".csv")
+        h, d = csv_rows(base + ".csv")
+        if h != h1 or len(d) != len(d1):
+            fail(f"-np {np}: CSV header or row count differs ({len(d)} against {len(d1)})")
+        worst = 0.0
+        for j in range(len(h1)):
+            col1 = [r[j] for r in d1]
+            scale = max(max(abs(x) for x in col1), 1e-300)
+            for x, y in zip(col1, (r[j] for r in d)):
+                rel = abs(x - y) / scale
+                lim = 1e-12 if j < 4 else a.tol
+                if rel > lim:
+                    fail(f"-np {np}: CSV column {h1[j]}: {y} against {x} (relative to the column {rel:.2e} > {lim})")
+                worst = max(worst, rel)
+        frames1 = sorted(f for f in os.listdir(ref_out) if f.endswith(".vtu"))
+        frames = sorted(f for f in os.listdir(out) if f.endswith(".pvtu"))
+        if [f[:-5] for f in frames] != [f[:-4] for f in frames1]:
+            fail(f"-np {np}: .pvtu frames {frames} against the .vtu frames {frames1} of one process")
+        vworst = 0.0
+        if frames:
+            vworst = compare_frames(os.path.join(ref_out, frames1[-1]), os.path.join(out, frames[-1]), np)
+            if vworst > a.tol:
+                fail(f"-np {np}: last frame differs by {vworst:.2e} of an array's largest value")
+        print(f"-np {np}: {c[0]} increments, {c[1]} attempts, {c[3]} Newton iterations as on one process; "
+              f"largest CSV difference {worst:.2e} of the column, last VTU frame {vworst:.2e}")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
