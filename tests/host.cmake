@@ -53,6 +53,7 @@ endforeach()
 foreach(patch patch_c3d8 patch_cpe4)
   ldfcz_add_deck_test(NAME deck_${patch} DECK ${LDFCZ_DECKS}/patch/${patch}.inp CASE patch)
 endforeach()
+ldfcz_add_deck_test(NAME deck_patch_c3d8_linear DECK ${LDFCZ_DECKS}/patch/patch_c3d8_linear.inp CASE patch_linear)
 
 # single elements against closed-form answers
 ldfcz_add_deck_test(NAME deck_c3d8_uniaxial DECK ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp CASE c3d8_uniaxial)

@@ -8,8 +8,10 @@
 !>   Hughes-Winget mid-point increment: G = (Fbar1 - Fbar0) ((Fbar0 + Fbar1) / 2)^-1 = grad(du) w.r.t. x_mid,
 !>   DSTRAN = sym G (engineering shears), W = skw G, DROT = (I - W/2)^-1 (I + W/2).
 !>   STRESS and STRAN are rotated by DROT before the call; DFGRD0 = Fbar0, DFGRD1 = Fbar1.
-!> Without NLGEOM: DSTRAN = sym of grad(du) w.r.t. X with its trace replaced by the centre value (B-bar, the small
-!>   strain limit of F-bar), DROT = I, f_int and K on the reference configuration.
+!> Without NLGEOM: DSTRAN = sym of grad(du) w.r.t. X with its trace replaced by the element's volume mean (B-bar of
+!>   Hughes 1980, the mean-dilatation small-strain counterpart of F-bar), DROT = I, f_int and K on the reference
+!>   configuration with the B-bar virtual strain as well: f = int Bbar^T sigma dV, K = int Bbar^T DDSDDE Bbar dV,
+!>   symmetric for a symmetric DDSDDE (one Newton correction for a linear elastic problem with the symmetric solve).
 !>
 !> Internal force and tangent (current configuration, dv = J dV):
 !>   f_(a i) = int sigma_ij dN_a/dx_j dv
@@ -18,7 +20,8 @@
 !>   K_(a i)(b k) = int [ dN_a/dx_j A_ijkl dN_b/dx_l + dN_a/dx_j q_ij (dN_b/dx_k|centre - dN_b/dx_k) ] dv
 !> The derivation (linearisation of J sigma(Fbar) with d(Fbar) Fbar^-1 = dL + (1/m)(tr dL_c - tr dL) I) is in
 !> docs/elements.md; it is exact when DDSDDE is the exact Jaumann tangent of a stress that depends on DFGRD1 only.
-!> Without NLGEOM the same formulas hold with x = X, sigma-terms dropped (A = DDSDDE, q = (1/m) sum_a A_ijaa).
+!> Without NLGEOM the same formulas hold with x = X, sigma-terms dropped (A = DDSDDE, q = (1/m) sum_a A_ijaa), the
+!> mean instead of the centre derivatives, and the row term K_(a i)(b k) += (1/m) bc_ai sum_n t_nn of Bbar^T.
 !> DDSDDE is symmetrised first unless the material is a UMAT with UNSYMM (Abaqus semantics). k_e itself is NOT
 !> symmetrised: the F-bar term (and under NLGEOM the Jaumann/geometric terms) make it unsymmetric, and a
 !> symmetrised k_e would cost the quadratic convergence of Newton (it is symmetric for a homogeneous state only).
@@ -66,6 +69,7 @@ module solid_element
     real(dp) :: dndx_ref(maxnode, 3, maxip)    !< dN_a/dX_j at the integration points
     real(dp) :: wdet(maxip)                    !< Gauss weight x det(dX/dxi)
     real(dp) :: dndx_0c(maxnode, 3)            !< dN_a/dX_j at the element centre
+    real(dp) :: dndx_0m(maxnode, 3)            !< volume mean of dN_a/dX_j (B-bar without NLGEOM)
   end type solid_geometry_t
 
 contains
@@ -103,6 +107,7 @@ contains
     geo%dndx_ref = 0.0_dp
     geo%wdet = 0.0_dp
     geo%dndx_0c = 0.0_dp
+    geo%dndx_0m = 0.0_dp
     shape = shape_of(etype)
     call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
     if (nnode == 0) return
@@ -115,7 +120,9 @@ contains
       call solid_reference_derivatives(shape, nnode, ndim, coords0, xi, geo%nfun(:, ip), geo%dndx_ref(:, :, ip), detj)
       if (.not. (detj > 0.0_dp)) return
       geo%wdet(ip) = w * detj
+      geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
     end do
+    geo%dndx_0m = geo%dndx_0m / sum(geo%wdet(1:nip))
     geo%valid = .true.
   end subroutine solid_element_geometry
 
@@ -186,7 +193,8 @@ contains
     real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3), eye(3, 3)
     real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), finv(3, 3), dv, gc(3, 3), trc, trg, m
     real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
-    real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), bc(maxnode, 3), t(3, 3), kl(maxnode, 3, 3, maxnode)
+    real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), bc(maxnode, 3), t(3, 3)
+    real(dp) :: kl(maxnode, 3, 3, maxnode), bcr(maxnode, 3), trs
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
     character(len=*), parameter :: here = 'solid_element_compute: '
@@ -286,7 +294,7 @@ contains
       dndx_c = 0.0_dp
       dndx_c(1:nnode, 1:ndim) = matmul(gp%dndx_0c(1:nnode, 1:ndim), finv(1:ndim, 1:ndim))
     else
-      dndx_c = gp%dndx_0c
+      dndx_c = gp%dndx_0m
     end if
 
     ! ---- first pass: kinematics at the integration points, checks, volume for CELENT
@@ -335,7 +343,7 @@ contains
       else
         ! small strain: grad(du) w.r.t. X with the centre dilatation (B-bar)
         g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
-        gc = def_grad(dun, gp%dndx_0c) - eye
+        gc = def_grad(dun, gp%dndx_0m) - eye
         trg = 0.0_dp
         trc = 0.0_dp
         do i = 1, ndim
@@ -417,10 +425,16 @@ contains
       call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
       ! bc(b, k) = dN_b/dx_k at the centre minus at the point: the F-bar (B-bar) dilatation operator
       bc(1:nnode, 1:ndim) = dndx_c(1:nnode, 1:ndim) - dndx(1:nnode, 1:ndim)
+      ! without NLGEOM the virtual strain is the B-bar one too (f = int Bbar^T sigma dV), so that K = int Bbar^T C Bbar
+      ! is symmetric for a symmetric DDSDDE; under NLGEOM f = int B^T sigma dv (de Souza Neto et al., 1996)
+      trs = 0.0_dp
+      if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, ndim == 3)) / m
+      bcr = 0.0_dp
+      if (.not. nlgeom) bcr(1:nnode, 1:ndim) = bc(1:nnode, 1:ndim)
       do a = 1, nnode
         do i = 1, ndim
           r = ndim * (a - 1) + i
-          f_int(r) = f_int(r) + dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) * dv
+          f_int(r) = f_int(r) + (dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) + trs * bcr(a, i)) * dv
         end do
       end do
 
@@ -434,15 +448,16 @@ contains
         ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
         ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve CPE4; kl is a contiguous local)
         if (ndim == 3 .and. nnode == 8) then
-          call k_point_c3d8(a4, q, dndx, bc, dv, kl)
+          call k_point_c3d8(a4, q, dndx, bc, bcr / m, dv, kl)
         else
           do b = 1, nnode
             do k = 1, ndim
               t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
                    + a4(:, :, k, 3) * dndx(b, 3)) * dv
+              trs = (t(1, 1) + t(2, 2) + t(3, 3)) / m
               do i = 1, ndim
                 kl(1:nnode, i, k, b) = kl(1:nnode, i, k, b) + t(i, 1) * dndx(1:nnode, 1) &
-                                       + t(i, 2) * dndx(1:nnode, 2) + t(i, 3) * dndx(1:nnode, 3)
+                                       + t(i, 2) * dndx(1:nnode, 2) + t(i, 3) * dndx(1:nnode, 3) + trs * bcr(1:nnode, i)
               end do
             end do
           end do
