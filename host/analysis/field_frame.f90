@@ -3,7 +3,8 @@
 !> elements opening, traction and largest opening (docs/host.md, "Outputs").
 module field_frame
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4
+  use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, &
+    etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use output_files, only: output_t, output_vtu_frame, output_vtu_t
@@ -69,11 +70,20 @@ contains
     fr%cohesive = 0
     do ie = 1, ncell
       nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+      ! VTK cell types; Abaqus' node order of these elements is VTK's (corners, then the mid-side nodes edge by edge)
       select case (model%elem_kind(ie))
-      case (etype_c3d8)
+      case (etype_c3d8, etype_c3d8i)
         fr%cell_type(ie) = 12
-      case (etype_cpe4)
+      case (etype_c3d20, etype_c3d20r)
+        fr%cell_type(ie) = 25
+      case (etype_c3d4)
+        fr%cell_type(ie) = 10
+      case (etype_c3d10)
+        fr%cell_type(ie) = 24
+      case (etype_cpe4, etype_cpe4i)
         fr%cell_type(ie) = 9
+      case (etype_cpe8, etype_cpe8r)
+        fr%cell_type(ie) = 23
       case default
         if (nn == 8) then
           fr%cell_type(ie) = 12
@@ -114,7 +124,8 @@ contains
         fr%principal(:, ie) = [p(3), p(2), p(1)]
         fr%mises(ie) = mises_stress(s)
         if (want_strain) fr%strain(:, ie) = [e(1:3), 0.5_dp * e(4:6)]  ! engineering -> tensor shear
-        nsv = size(an%conv(ie)%statev, 1)
+        ! the material's STATEV (the rows after them are the element's own: incompatible modes)
+        nsv = max(1, an%mats(model%elem_section(ie))%nstatv)
         do k = 1, size(fr%sdv_index)
           if (fr%sdv_index(k) > nsv) cycle
           fr%sdv(k, ie) = sum(an%conv(ie)%statev(fr%sdv_index(k), :)) / nip
@@ -135,7 +146,7 @@ contains
     nmax = 0
     do ie = 1, model%nelem
       if (model%elem_kind(ie) /= etype_user .and. allocated(an%conv(ie)%statev)) &
-        nmax = max(nmax, size(an%conv(ie)%statev, 1))
+        nmax = max(nmax, an%mats(model%elem_section(ie))%nstatv, 1)
     end do
     if (step%out_sdv_all) then
       idx = [(k, k = 1, nmax)]

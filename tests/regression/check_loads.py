@@ -316,6 +316,79 @@ def case_lame3d(exe, out):
     check_lame(rows, a, b, p, 3e-3)
 
 
+def quadratic_ring_deck(path, etype, a, b, nr, nt, p):
+    """Quarter of the thick cylinder a < r < b under internal pressure p (*DSLOAD on S4 / S6) meshed with quadratic
+    elements (CPE8, CPE8R; C3D20, C3D20R one element thick with u3 = 0): mid-side nodes on the circles (curved,
+    isoparametric edges), symmetry planes t = 0 and t = 90 degrees."""
+    three_d = etype.startswith("C3D")
+    ids = {}
+
+    def nid(i, j, k=0):
+        return ids[(i, j, k)]
+    out = ["*HEADING", "thick cylinder, quadratic %s elements (tests/regression/check_loads.py)" % etype,
+           "*NODE, NSET=ALL"]
+    # doubled grid; only the nodes an element uses (no face or body centres)
+    for k in range(3 if three_d else 1):
+        for j in range(2 * nt + 1):
+            for i in range(2 * nr + 1):
+                odd = (i % 2) + (j % 2) + (k % 2)
+                if odd > 1:
+                    continue
+                ids[(i, j, k)] = len(ids) + 1
+                r = a + (b - a) * i / (2 * nr)
+                t = math.pi / 2 * j / (2 * nt)
+                out.append("%d, %.15g, %.15g" % (ids[(i, j, k)], r * math.cos(t), r * math.sin(t)) +
+                           (", %g" % (0.05 * k) if three_d else ""))
+    out.append("*ELEMENT, TYPE=%s, ELSET=RING" % etype)
+    e = 1
+    for j in range(nt):
+        for i in range(nr):
+            I, J = 2 * i, 2 * j
+            if three_d:
+                c = [nid(I, J), nid(I + 2, J), nid(I + 2, J + 2), nid(I, J + 2),
+                     nid(I, J, 2), nid(I + 2, J, 2), nid(I + 2, J + 2, 2), nid(I, J + 2, 2),
+                     nid(I + 1, J), nid(I + 2, J + 1), nid(I + 1, J + 2), nid(I, J + 1),
+                     nid(I + 1, J, 2), nid(I + 2, J + 1, 2), nid(I + 1, J + 2, 2), nid(I, J + 1, 2),
+                     nid(I, J, 1), nid(I + 2, J, 1), nid(I + 2, J + 2, 1), nid(I, J + 2, 1)]
+            else:
+                c = [nid(I, J), nid(I + 2, J), nid(I + 2, J + 2), nid(I, J + 2),
+                     nid(I + 1, J), nid(I + 2, J + 1), nid(I + 1, J + 2), nid(I, J + 1)]
+            # at most 16 entries on a data line (Abaqus): continue on the next line
+            line = ", ".join(str(n) for n in [e] + c[:15])
+            out.append(line + ("," if len(c) > 15 else ""))
+            if len(c) > 15:
+                out.append(", ".join(str(n) for n in c[15:]))
+            e += 1
+    out.append("*ELSET, ELSET=INNER")
+    out += ["%d," % (j * nr + 1) for j in range(nt)]
+    out += ["*NSET, NSET=RIN", "%d," % nid(0, 0), "*NSET, NSET=ROUT", "%d," % nid(2 * nr, 0)]
+    out += ["*NSET, NSET=T0"] + ["%d," % v for (i, j, k), v in sorted(ids.items()) if j == 0]
+    out += ["*NSET, NSET=T90"] + ["%d," % v for (i, j, k), v in sorted(ids.items()) if j == 2 * nt]
+    out += ["*SOLID SECTION, ELSET=RING, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3"]
+    out += ["*SURFACE, NAME=BORE", "INNER, %s" % ("S6" if three_d else "S4")]
+    out += ["*BOUNDARY", "T0, 2, 2", "T90, 1, 1"] + (["ALL, 3, 3"] if three_d else [])
+    out += ["*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*DSLOAD", "BORE, P, %.15g" % p,
+            "*NODE PRINT, NSET=RIN", "U1", "*NODE PRINT, NSET=ROUT", "U1", "*END STEP"]
+    write(path, out)
+
+
+def case_lame_quadratic(exe, out):
+    """Quadratic elements (curved edges, pressure on 3-node edges / 8-node faces) against Lame: the error of the
+    coarse mesh 2 x 4 and its decrease on 4 x 8 (O(h^3) or better for the displacement; at least a factor 4 asked)."""
+    a, b, p = 1.0, 2.0, 1.0
+    for etype in ("CPE8", "CPE8R", "C3D20", "C3D20R"):
+        errs = []
+        for nr, nt in ((2, 4), (4, 8)):
+            job = "lame_%s_%d" % (etype.lower(), nr)
+            rows = run(exe, out, job, lambda d: quadratic_ring_deck(d, etype, a, b, nr, nt, p))
+            want = lame(a, a, b, p, 1000.0, 0.3)
+            errs.append(abs(rows[-1]["RIN.U1"] - want) / want)
+        print("%s: relative error of the bore displacement %.2e (2 x 4), %.2e (4 x 8)" % (etype, errs[0], errs[1]))
+        close(etype + " 4 x 8 bore displacement (Lame)", errs[1], 0.0, 0.0, 1e-4)
+        if not errs[1] <= errs[0] / 4:
+            fail("%s: error does not converge (%.2e -> %.2e)" % (etype, errs[0], errs[1]))
+
+
 def case_balloon(exe, out, user, three_d=False):
     """Full ring of a neo-Hookean UMAT (exact tangent) inflated under NLGEOM by follower pressure (the bore grows
     by about 23 %): with the load stiffness and UNSYMM=YES Newton converges quadratically."""
@@ -563,7 +636,7 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
+                                                      "lame3d", "lame_quadratic", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
