@@ -4,7 +4,8 @@
 module field_frame
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, &
-    etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r
+    etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, &
+    etype_cps8, etype_cps8r
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use output_files, only: output_t, output_vtu_frame, output_vtu_t
@@ -80,9 +81,9 @@ contains
         fr%cell_type(ie) = 10
       case (etype_c3d10)
         fr%cell_type(ie) = 24
-      case (etype_cpe4, etype_cpe4i)
+      case (etype_cpe4, etype_cpe4i, etype_cps4, etype_cps4i)
         fr%cell_type(ie) = 9
-      case (etype_cpe8, etype_cpe8r)
+      case (etype_cpe8, etype_cpe8r, etype_cps8, etype_cps8r)
         fr%cell_type(ie) = 23
       case default
         if (nn == 8) then
@@ -119,6 +120,11 @@ contains
           s(1:nt) = s(1:nt) + an%conv(ie)%stress(:, ip) / nip
           e(1:nt) = e(1:nt) + an%conv(ie)%stran(:, ip) / nip
         end do
+        if (nt == 3) then
+          ! plane stress (11, 22, 12): sigma33 = 0; the thickness strain is not kept (0 in the frame)
+          s(4) = s(3); s(3) = 0.0_dp
+          e(4) = e(3); e(3) = 0.0_dp
+        end if
         fr%stress(:, ie) = s
         call principal_stresses(s, p)
         fr%principal(:, ie) = [p(3), p(2), p(1)]

@@ -47,6 +47,8 @@ module solid_element
   integer, parameter :: maxalpha = 9             !< incompatible-mode parameters at most (3 modes x 3 components)
   !> Voigt position of tensor component (i,j), order 11,22,33,12,13,23 (CPE4 uses only i,j <= 2: 11,22,12)
   integer, parameter :: vidx(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
+  !> the same for plane stress (NTENS = 3: 11,22,12; no 33 entry, never addressed in 2D)
+  integer, parameter :: vidx_ps(3, 3) = reshape([1, 3, 0, 3, 2, 0, 0, 0, 0], [3, 3])
 
   !> Material (and section) data of an element set.
   type :: solid_material_t
@@ -279,6 +281,11 @@ contains
       call fail(2, here // 'section thickness must be > 0')
       return
     end if
+    if (solid_types(it)%pstress .and. nlgeom) then
+      call fail(2, here // 'plane stress element ' // trim(etype) // ' under NLGEOM is not supported (the ' // &
+        'thickness change is not implemented): use NLGEOM=NO, or CPE/C3D elements (docs/elements.md)')
+      return
+    end if
 
     eye = identity()
     m = real(ndim, dp)
@@ -352,7 +359,9 @@ contains
         dun = u1 - un
         call element_pass(.true.)
         if (stat /= 0) return
-        scale = maxval(abs(fe(1:ndof)))
+        ! scale of the terms that make up f_alpha: the element forces, and stiffness x displacement (so that an
+        ! element with f_u ~ 0, e.g. on a neutral axis, still reaches the round-off floor)
+        scale = max(maxval(abs(fe(1:ndof))), maxval(abs(ke(ndof + 1:ndofe, 1:ndofe))) * maxval(abs(u1(:, 1:nne))))
         if (maxval(abs(fe(ndof + 1:ndofe))) <= 1.0e-11_dp * scale .or. last) exit
         kaa(1:nalpha, 1:nalpha) = ke(ndof + 1:ndofe, ndof + 1:ndofe)
         rhs(1:nalpha, 1) = -fe(ndof + 1:ndofe)
@@ -562,7 +571,7 @@ contains
             ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
             ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
           end if
-          call spatial_tangent(ddsdde, sig, ndim, nlgeom, a4, q)
+          call spatial_tangent(ddsdde, ntens, sig, ndim, nlgeom, a4, q)
           ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then
           ! K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t
           ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
@@ -709,9 +718,9 @@ contains
 
   !> Spatial tangent A_ijkl (material + geometric, from DDSDDE by the Jaumann correction of CONVENTIONS.md) and the
   !> F-bar coefficient q_ij; without NLGEOM A = DDSDDE and q = (1/m) sum_a A_ijaa.
-  pure subroutine spatial_tangent(ddsdde, sig, ndim, nlgeom, a4, q)
+  pure subroutine spatial_tangent(ddsdde, ntens, sig, ndim, nlgeom, a4, q)
     real(dp), intent(in) :: ddsdde(6, 6), sig(3, 3)
-    integer, intent(in) :: ndim
+    integer, intent(in) :: ntens, ndim
     logical, intent(in) :: nlgeom
     real(dp), intent(out) :: a4(3, 3, 3, 3), q(3, 3)
     integer :: i, j, k, l
@@ -724,7 +733,11 @@ contains
       do k = 1, ndim
         do j = 1, ndim
           do i = 1, ndim
-            a4(i, j, k, l) = ddsdde(vidx(i, j), vidx(k, l))
+            if (ntens == 3) then
+              a4(i, j, k, l) = ddsdde(vidx_ps(i, j), vidx_ps(k, l))
+            else
+              a4(i, j, k, l) = ddsdde(vidx(i, j), vidx(k, l))
+            end if
           end do
         end do
       end do
@@ -755,14 +768,20 @@ contains
     if (allocated(mat%props)) nprops_of = size(mat%props)
   end function nprops_of
 
-  !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain.
+  !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain. Layout by
+  !> ntens: 6 (11,22,33,12,13,23), 4 (11,22,33,12: plane strain), 3 (11,22,12: plane stress).
   pure subroutine voigt_to_tensor(v, ntens, t, shear_factor)
     real(dp), intent(in) :: v(:)
     integer, intent(in) :: ntens
     real(dp), intent(out) :: t(3, 3)
     real(dp), intent(in) :: shear_factor
     t = 0.0_dp
-    t(1, 1) = v(1); t(2, 2) = v(2); t(3, 3) = v(3)
+    t(1, 1) = v(1); t(2, 2) = v(2)
+    if (ntens == 3) then
+      t(1, 2) = shear_factor * v(3); t(2, 1) = t(1, 2)
+      return
+    end if
+    t(3, 3) = v(3)
     t(1, 2) = shear_factor * v(4); t(2, 1) = t(1, 2)
     if (ntens >= 6) then
       t(1, 3) = shear_factor * v(5); t(3, 1) = t(1, 3)
@@ -770,14 +789,20 @@ contains
     end if
   end subroutine voigt_to_tensor
 
-  !> Voigt components of a symmetric tensor; shear_factor 1 for stress, 2 for engineering strain.
+  !> Voigt components of a symmetric tensor; shear_factor 1 for stress, 2 for engineering strain (layout as in
+  !> voigt_to_tensor; entries beyond ntens are 0).
   pure subroutine tensor_to_voigt(t, ntens, v, shear_factor)
     real(dp), intent(in) :: t(3, 3)
     integer, intent(in) :: ntens
     real(dp), intent(out) :: v(6)
     real(dp), intent(in) :: shear_factor
     v = 0.0_dp
-    v(1) = t(1, 1); v(2) = t(2, 2); v(3) = t(3, 3)
+    v(1) = t(1, 1); v(2) = t(2, 2)
+    if (ntens == 3) then
+      v(3) = shear_factor * t(1, 2)
+      return
+    end if
+    v(3) = t(3, 3)
     v(4) = shear_factor * t(1, 2)
     if (ntens >= 6) then
       v(5) = shear_factor * t(1, 3)

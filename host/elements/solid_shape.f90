@@ -36,9 +36,10 @@ module solid_shape
     integer :: nshr = 0        !< shear stress components
     logical :: fbar = .false.  !< F-bar (NLGEOM) / mean-dilatation B-bar (small strain) of the linear elements
     integer :: nmode = 0       !< incompatible displacement modes (each a vector of ndim parameters), condensed
+    logical :: pstress = .false.  !< plane stress (NDI = 2, NSHR = 1: sigma33 = 0, the thickness strain free)
   end type solid_type_t
 
-  type(solid_type_t), parameter :: solid_types(10) = [ &
+  type(solid_type_t), parameter :: solid_types(14) = [ &
     solid_type_t('C3D8', FAM_HEX8, 8, 3, 2, 8, 3, 3, .true., 0), &
     solid_type_t('C3D8I', FAM_HEX8, 8, 3, 2, 8, 3, 3, .false., 3), &
     solid_type_t('C3D20', FAM_HEX20, 20, 3, 3, 27, 3, 3, .false., 0), &
@@ -48,7 +49,11 @@ module solid_shape
     solid_type_t('CPE4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0), &
     solid_type_t('CPE4I', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .false., 2), &
     solid_type_t('CPE8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0), &
-    solid_type_t('CPE8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0)]
+    solid_type_t('CPE8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0), &
+    solid_type_t('CPS4', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 0, .true.), &
+    solid_type_t('CPS4I', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 2, .true.), &
+    solid_type_t('CPS8', FAM_QUAD8, 8, 2, 3, 9, 2, 1, .false., 0, .true.), &
+    solid_type_t('CPS8R', FAM_QUAD8, 8, 2, 2, 4, 2, 1, .false., 0, .true.)]
 
   real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &
