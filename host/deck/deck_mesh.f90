@@ -13,8 +13,8 @@ module deck_mesh
   public :: read_node, read_element, read_set
 
   !> The continuum element types: nodes and dimension per etype_* of model_types (0: the user kind)
-  integer, parameter :: etype_nnode(15) = [8, 4, 0, 8, 20, 20, 4, 10, 4, 8, 8, 4, 4, 8, 8]
-  integer, parameter :: etype_dim(15) = [3, 2, 0, 3, 3, 3, 3, 3, 2, 2, 2, 2, 2, 2, 2]
+  integer, parameter :: etype_nnode(18) = [8, 4, 0, 8, 20, 20, 4, 10, 4, 8, 8, 4, 4, 8, 8, 8, 4, 4]
+  integer, parameter :: etype_dim(18) = [3, 2, 0, 3, 3, 3, 3, 3, 2, 2, 2, 2, 2, 2, 2, 3, 2, 2]
 
 contains
 
@@ -106,8 +106,9 @@ contains
             '"*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=3, I PROPERTIES=2, VARIABLES=8, UNSYMM" '// &
             'and "*ELEMENT, TYPE=U2, ELSET=..." with *UEL PROPERTY (docs/uel.md)')
         else
-          call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, C3D8I, C3D20, C3D20R, C3D4, '// &
-            'C3D10, CPE4, CPE4I, CPE8, CPE8R, CPS4, CPS4I, CPS8, CPS8R and user types Un; docs/elements.md)')
+          call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, C3D8I, C3D8R, C3D20, C3D20R, '// &
+            'C3D4, C3D10, CPE4, CPE4I, CPE4R, CPE8, CPE8R, CPS4, CPS4I, CPS4R, CPS8, CPS8R and user types Un; '// &
+            'docs/elements.md)')
         end if
         return
       end if

@@ -7,7 +7,8 @@
 !> order Abaqus requires), so the outward normal is (dy, -dx) of that edge; local(3) is its mid-side node (CPE8).
 module element_faces
   use model_types, only: etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, etype_c3d20r, etype_c3d4, etype_c3d10, &
-    etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, etype_cps8, etype_cps8r
+    etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, &
+    etype_cps4r
   implicit none
   private
   public :: element_face_nodes
@@ -43,7 +44,7 @@ contains
     local = 0
     nfn = 0
     select case (kind)
-    case (etype_c3d8, etype_c3d8i, etype_c3d20, etype_c3d20r)
+    case (etype_c3d8, etype_c3d8i, etype_c3d8r, etype_c3d20, etype_c3d20r)
       if (face < 1 .or. face > 6) return
       nfn = merge(8, 4, kind == etype_c3d20 .or. kind == etype_c3d20r)
       local(1:nfn) = hex_faces(1:nfn, face)
@@ -51,7 +52,8 @@ contains
       if (face < 1 .or. face > 4) return
       nfn = merge(6, 3, kind == etype_c3d10)
       local(1:nfn) = tet_faces(1:nfn, face)
-    case (etype_cpe4, etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, etype_cps8, etype_cps8r)
+    case (etype_cpe4, etype_cpe4i, etype_cpe4r, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, etype_cps4r, &
+          etype_cps8, etype_cps8r)
       if (face < 1 .or. face > 4) return
       nfn = merge(3, 2, any(kind == [etype_cpe8, etype_cpe8r, etype_cps8, etype_cps8r]))
       local(1:nfn) = quad_faces(1:nfn, face)

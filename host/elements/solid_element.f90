@@ -30,7 +30,7 @@ module solid_element
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
   use solid_shape, only: solid_type_t, solid_types, solid_type_index, solid_shape_eval, solid_gauss_point, &
-    solid_parent_centre
+    solid_parent_centre, solid_hourglass_base
   use solid_elastic, only: elastic_update, elastic_check
   use solid_tangent_kernel, only: k_point_c3d8
   implicit none
@@ -45,6 +45,10 @@ module solid_element
   !> nodes (plus incompatible-mode pseudo-nodes) and integration points at most
   integer, parameter :: maxnode = 20, maxip = 27
   integer, parameter :: maxalpha = 9             !< incompatible-mode parameters at most (3 modes x 3 components)
+  !> hourglass stiffness factor c of the one-point elements: k = c G V sum_(a,j) (dN_a/dX_j)^2 per hourglass
+  !> mode and direction (Flanagan-Belytschko stiffness form; c = 1 is 0.56 of the exact bending stiffness of a
+  !> cube's xi-eta mode at nu = 0, docs/elements.md)
+  real(dp), parameter :: hourglass_factor = 1.0_dp
   !> Voigt position of tensor component (i,j), order 11,22,33,12,13,23 (CPE4 uses only i,j <= 2: 11,22,12)
   integer, parameter :: vidx(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
   !> the same for plane stress (NTENS = 3: 11,22,12; no 33 entry, never addressed in 2D)
@@ -76,6 +80,9 @@ module solid_element
     real(dp), allocatable :: wdet(:)           !< (nip) Gauss weight x det(dX/dxi)
     real(dp), allocatable :: dndx_0c(:, :)     !< (nnode+nmode, 3) dN_a/dX_j at the element centre
     real(dp), allocatable :: dndx_0m(:, :)     !< (nnode+nmode, 3) volume mean of dN_a/dX_j (B-bar, small strain)
+    real(dp), allocatable :: gamma(:, :)       !< (nnode, nhg) Flanagan-Belytschko hourglass vectors (one-point types)
+    integer :: nhg = 0                         !< hourglass vectors (0: none)
+    real(dp) :: hg_vsum = 0.0_dp               !< reference volume x sum_(a,j) (dN_a/dX_j)^2 at the point
   end type solid_geometry_t
 
 contains
@@ -99,7 +106,10 @@ contains
     if (it == 0) return
     associate (tp => solid_types(it))
       nnode = tp%nnode; ndim = tp%ndim; nip = tp%nip; ndi = tp%ndi; nshr = tp%nshr; ntens = ndi + nshr
-      if (present(nextra)) nextra = (tp%ndim * tp%nmode + tp%nip - 1) / tp%nip
+      if (present(nextra)) then
+        nextra = (tp%ndim * tp%nmode + tp%nip - 1) / tp%nip
+        if (tp%hourglass) nextra = max(nextra, 1)   ! the hourglass shear modulus, fixed at the first increment
+      end if
     end associate
   end subroutine solid_element_info
 
@@ -143,6 +153,46 @@ contains
         geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
       end do
       geo%dndx_0m = geo%dndx_0m / sum(geo%wdet)
+      if (tp%hourglass) then
+        ! the one point's gradient operator is the element mean (Flanagan-Belytschko's uniform gradient,
+        ! integrated with the 2x2(x2) rule, exact), and its weight the element volume: the centre derivatives
+        ! alone fail the patch test of a distorted hexahedron
+        block
+          real(dp) :: nq(maxnode), dq(maxnode, 3), vq, wq, xq(3)
+          integer :: iq
+          geo%dndx_ref(:, :, 1) = 0.0_dp
+          vq = 0.0_dp
+          do iq = 1, 2**ndim
+            call solid_gauss_point(2, ndim, iq, xq, wq)
+            call solid_reference_derivatives(tp%family, nnode, ndim, coords0, xq, nq(1:nnode), dq(1:nnode, :), detj, &
+              jinv)
+            if (.not. (detj > 0.0_dp)) return
+            geo%dndx_ref(1:nnode, :, 1) = geo%dndx_ref(1:nnode, :, 1) + wq * detj * dq(1:nnode, :)
+            vq = vq + wq * detj
+          end do
+          geo%dndx_ref(:, :, 1) = geo%dndx_ref(:, :, 1) / vq
+          geo%wdet(1) = vq
+          geo%dndx_0m = geo%dndx_ref(:, :, 1)
+        end block
+        ! Flanagan-Belytschko (1981): gamma_m = (h_m - sum_j (h_m . X_j) b_j) / nnode with b_j = dN/dX_j at the
+        ! single (centre) point, orthogonal to every linear field (gamma_m . X_j = 0): no hourglass force in a
+        ! homogeneous deformation or a rigid motion of any size
+        block
+          real(dp) :: h(8, 4)
+          integer :: j
+          call solid_hourglass_base(tp%family, h, geo%nhg)
+          allocate (geo%gamma(nnode, geo%nhg))
+          do m = 1, geo%nhg
+            geo%gamma(:, m) = h(1:nnode, m)
+            do j = 1, ndim
+              geo%gamma(:, m) = geo%gamma(:, m) - dot_product(h(1:nnode, m), coords0(j, :)) * &
+                geo%dndx_ref(1:nnode, j, 1)
+            end do
+            geo%gamma(:, m) = geo%gamma(:, m) / nnode
+          end do
+          geo%hg_vsum = geo%wdet(1) * sum(geo%dndx_ref(1:nnode, 1:ndim, 1)**2)
+        end block
+      end if
     end associate
     geo%valid = .true.
   end subroutine solid_element_geometry
@@ -173,7 +223,7 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes)
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg)
     character(len=*), intent(in) :: etype             !< element type name (solid_shape: solid_types)
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -205,6 +255,8 @@ contains
     type(solid_geometry_t), intent(in), optional, target :: geo
     real(dp), intent(in), optional :: temp_nodes(:)   !< (nnode) nodal temperatures at the start of the increment
     real(dp), intent(in), optional :: dtemp_nodes(:)  !< (nnode) their increments (TEMP, DTEMP interpolated to points)
+    !> hourglass energy of a one-point element (included in energy(1); Abaqus reports it apart, as ALLAE)
+    real(dp), intent(out), optional :: energy_hg
 
     integer, parameter :: max_local_iter = 30      ! element-level Newton on the incompatible modes
     integer :: it, nnode, nne, ndim, nip, ntens, ndi, nshr, nextra, ndof, ndofe, nalpha, nsv, np
@@ -216,7 +268,8 @@ contains
     real(dp) :: fc0(3, 3), fc1(3, 3), jc0, jc1, celent, eye(3, 3), m, finv(3, 3), dndx_c(maxnode, 3)
     real(dp) :: fe(3 * maxnode), ke(3 * maxnode, 3 * maxnode), kl(maxnode, 3, 3, maxnode)
     real(dp) :: alpha_n(maxalpha), alpha(maxalpha), dalpha(maxalpha), kaa(maxalpha, maxalpha)
-    real(dp) :: rhs(maxalpha, 3 * maxnode + 1), scale
+    real(dp) :: rhs(maxalpha, 3 * maxnode + 1), scale, g_shear, ghg, khg, qhg(3)
+    integer :: mh
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
     character(len=*), parameter :: here = 'solid_element_compute: '
@@ -225,6 +278,8 @@ contains
     errmsg = ''
     f_int = 0.0_dp
     energy = 0.0_dp
+    if (present(energy_hg)) energy_hg = 0.0_dp
+    g_shear = 0.0_dp
     it = solid_type_index(etype)
     call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr, nextra)
     ndof = ndim * nnode
@@ -345,6 +400,37 @@ contains
       if (stat /= 0) return
       f_int = fe(1:ndof)
       if (want_k) k_e = ke(1:ndof, 1:ndof)
+      if (solid_types(it)%hourglass) then
+        ! ---- hourglass stiffness (Flanagan-Belytschko stiffness form on the total displacement, reference
+        ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
+        ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
+        ! (STATEV row nstatv+1) so that k is constant and the tangent consistent after the first increment.
+        if (mat%kind == SOLID_MAT_ELASTIC) then
+          ghg = mat%e / (2 * (1 + mat%nu))
+        else
+          ghg = statev_old(nsv + 1, 1)
+          if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
+        end if
+        statev_new(nsv + 1, 1) = ghg
+        khg = hourglass_factor * ghg * gp%hg_vsum * mat%thickness
+        do mh = 1, gp%nhg
+          qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
+          do a = 1, nnode
+            r = ndim * (a - 1)
+            f_int(r + 1:r + ndim) = f_int(r + 1:r + ndim) + khg * gp%gamma(a, mh) * qhg(1:ndim)
+            if (want_k) then
+              do b = 1, nnode
+                c = ndim * (b - 1)
+                do i = 1, ndim
+                  k_e(r + i, c + i) = k_e(r + i, c + i) + khg * gp%gamma(a, mh) * gp%gamma(b, mh)
+                end do
+              end do
+            end if
+          end do
+          energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+          if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+        end do
+      end if
     else
       ! ---- incompatible modes: Newton on the internal parameters alpha (f_alpha = 0) from the converged alpha_n,
       ! then static condensation f = f_u - K_ua K_aa^-1 f_a, K = K_uu - K_ua K_aa^-1 K_au (exact at f_a = 0, and
@@ -521,6 +607,7 @@ contains
           statev_new(1:nsv, ip) = sv(1:nsv)
         end select
         pnewdt = min(pnewdt, pn)
+        if (ip == 1) g_shear = sum([(ddsdde(k, k), k = ndi + 1, ntens)]) / nshr
         if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
           call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
                     // itoa(ip))

@@ -19,6 +19,7 @@ module solid_shape
   implicit none
   private
   public :: solid_type_t, solid_types, solid_type_index, solid_shape_eval, solid_gauss_point, solid_parent_centre
+  public :: solid_hourglass_base
   public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8
 
   integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6
@@ -37,9 +38,10 @@ module solid_shape
     logical :: fbar = .false.  !< F-bar (NLGEOM) / mean-dilatation B-bar (small strain) of the linear elements
     integer :: nmode = 0       !< incompatible displacement modes (each a vector of ndim parameters), condensed
     logical :: pstress = .false.  !< plane stress (NDI = 2, NSHR = 1: sigma33 = 0, the thickness strain free)
+    logical :: hourglass = .false. !< one point with hourglass stiffness (Flanagan-Belytschko, solid_element)
   end type solid_type_t
 
-  type(solid_type_t), parameter :: solid_types(14) = [ &
+  type(solid_type_t), parameter :: solid_types(17) = [ &
     solid_type_t('C3D8', FAM_HEX8, 8, 3, 2, 8, 3, 3, .true., 0), &
     solid_type_t('C3D8I', FAM_HEX8, 8, 3, 2, 8, 3, 3, .false., 3), &
     solid_type_t('C3D20', FAM_HEX20, 20, 3, 3, 27, 3, 3, .false., 0), &
@@ -53,7 +55,10 @@ module solid_shape
     solid_type_t('CPS4', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 0, .true.), &
     solid_type_t('CPS4I', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 2, .true.), &
     solid_type_t('CPS8', FAM_QUAD8, 8, 2, 3, 9, 2, 1, .false., 0, .true.), &
-    solid_type_t('CPS8R', FAM_QUAD8, 8, 2, 2, 4, 2, 1, .false., 0, .true.)]
+    solid_type_t('CPS8R', FAM_QUAD8, 8, 2, 2, 4, 2, 1, .false., 0, .true.), &
+    solid_type_t('C3D8R', FAM_HEX8, 8, 3, 1, 1, 3, 3, .false., 0, .false., .true.), &
+    solid_type_t('CPE4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true.), &
+    solid_type_t('CPS4R', FAM_QUAD4, 4, 2, 1, 1, 2, 1, .false., 0, .true., .true.)]
 
   real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &
@@ -98,6 +103,27 @@ contains
     xi = 0.0_dp
     if (family == FAM_TET4 .or. family == FAM_TET10) xi = 0.25_dp
   end function solid_parent_centre
+
+  !> Hourglass base vectors h(a, m) of the linear hexahedron (xi eta, eta zeta, zeta xi, xi eta zeta at the nodes:
+  !> 4 vectors) or quadrilateral (xi eta: 1 vector); nh = their number (0 for other families).
+  pure subroutine solid_hourglass_base(family, h, nh)
+    integer, intent(in) :: family
+    real(dp), intent(out) :: h(8, 4)
+    integer, intent(out) :: nh
+    h = 0.0_dp
+    nh = 0
+    select case (family)
+    case (FAM_HEX8)
+      nh = 4
+      h(:, 1) = hex_nodes(1, 1:8) * hex_nodes(2, 1:8)
+      h(:, 2) = hex_nodes(2, 1:8) * hex_nodes(3, 1:8)
+      h(:, 3) = hex_nodes(3, 1:8) * hex_nodes(1, 1:8)
+      h(:, 4) = hex_nodes(1, 1:8) * hex_nodes(2, 1:8) * hex_nodes(3, 1:8)
+    case (FAM_QUAD4)
+      nh = 1
+      h(1:4, 1) = quad_nodes(1, 1:4) * quad_nodes(2, 1:4)
+    end select
+  end subroutine solid_hourglass_base
 
   !> Shape functions n(a) and their derivatives dndxi(a, k) = dN_a / dxi_k at the parent point xi.
   pure subroutine solid_shape_eval(family, xi, n, dndxi)

@@ -10,7 +10,7 @@ module model_types
   public :: initial_condition_t, init_stress, init_solution, equation_t, tie_t
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: etype_c3d8i, etype_c3d20, etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r
-  public :: etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_names
+  public :: etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_names
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor
 
@@ -30,9 +30,12 @@ module model_types
   integer, parameter :: etype_cps4i = 13   !< 4-node plane-stress quadrilateral, incompatible modes
   integer, parameter :: etype_cps8 = 14    !< 8-node plane-stress quadrilateral, 9 points
   integer, parameter :: etype_cps8r = 15   !< 8-node plane-stress quadrilateral, 4 points
+  integer, parameter :: etype_c3d8r = 16   !< 8-node hexahedron, 1 point, hourglass stiffness
+  integer, parameter :: etype_cpe4r = 17   !< 4-node plane-strain quadrilateral, 1 point, hourglass stiffness
+  integer, parameter :: etype_cps4r = 18   !< 4-node plane-stress quadrilateral, 1 point, hourglass stiffness
   !> Abaqus name of each continuum element kind (index = etype_*; the user kind is 'U')
-  character(len=8), parameter :: etype_names(15) = [character(len=8) :: 'C3D8', 'CPE4', 'U', 'C3D8I', 'C3D20', &
-    'C3D20R', 'C3D4', 'C3D10', 'CPE4I', 'CPE8', 'CPE8R', 'CPS4', 'CPS4I', 'CPS8', 'CPS8R']
+  character(len=8), parameter :: etype_names(18) = [character(len=8) :: 'C3D8', 'CPE4', 'U', 'C3D8I', 'C3D20', &
+    'C3D20R', 'C3D4', 'C3D10', 'CPE4I', 'CPE8', 'CPE8R', 'CPS4', 'CPS4I', 'CPS8', 'CPS8R', 'C3D8R', 'CPE4R', 'CPS4R']
   integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
   integer, parameter :: init_stress = 1    !< *INITIAL CONDITIONS, TYPE=STRESS
   integer, parameter :: init_solution = 2  !< *INITIAL CONDITIONS, TYPE=SOLUTION
