@@ -6,7 +6,8 @@
 !> JDLTYP, ADLMAG, DDLMAG arrays of a user element.
 module distributed_loads
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user
+  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user, &
+    etype_is_axisymmetric
   use element_faces, only: element_face_nodes
   use solver_text, only: itoa
   implicit none
@@ -201,7 +202,8 @@ contains
       select case (ds%kind(k))
       case (dload_bx, dload_grav)
         w = 1.0_dp
-        if (ndim == 2) w = thickness
+        ! (axisymmetric elements: wdet is already the volume weight around 2 pi radians)
+        if (ndim == 2 .and. .not. etype_is_axisymmetric(model%elem_kind(ie))) w = thickness
         if (ds%kind(k) == dload_grav) w = w * density
         do ip = 1, size(wdet)
           do a = 1, nn
@@ -228,22 +230,33 @@ contains
     real(dp), parameter :: tri_pts(2, 3) = reshape([1.0_dp / 6, 1.0_dp / 6, 2.0_dp / 3, 1.0_dp / 6, 1.0_dp / 6, &
       2.0_dp / 3], [2, 3])
     integer :: loc(8), nfn, g, h, a, b, ia, ib, npt
-    real(dp) :: s, t, w, nf(8), ds(8), dt(8), xs(3), xe(3), na(3), sx(3, 3), se(3, 3), c
+    real(dp) :: s, t, w, nf(8), ds(8), dt(8), xs(3), xe(3), na(3), sx(3, 3), se(3, 3), c, wr
+    logical :: axi
     call element_face_nodes(kind, face, loc, nfn)
+    axi = etype_is_axisymmetric(kind)
     if (ndim == 2) then
+      ! plane elements: per section thickness; axisymmetric: per 2 pi r (totals around the circumference)
       do g = 1, 3
         call line_shape(nfn, g3(g), nf, ds)
         xs(1:2) = matmul(x(:, loc(1:nfn)), ds(1:nfn))
+        wr = thickness
+        if (axi) wr = 2 * acos(-1.0_dp) * dot_product(nf(1:nfn), x(1, loc(1:nfn)))
         do a = 1, nfn
           ia = (loc(a) - 1) * 2
-          f(ia + 1) = f(ia + 1) - p * thickness * w3(g) * nf(a) * xs(2)
-          f(ia + 2) = f(ia + 2) + p * thickness * w3(g) * nf(a) * xs(1)
+          f(ia + 1) = f(ia + 1) - p * wr * w3(g) * nf(a) * xs(2)
+          f(ia + 2) = f(ia + 2) + p * wr * w3(g) * nf(a) * xs(1)
           if (.not. follower) cycle
           do b = 1, nfn
             ib = (loc(b) - 1) * 2
-            c = p * thickness * w3(g) * nf(a) * ds(b)
+            c = p * wr * w3(g) * nf(a) * ds(b)
             k_l(ia + 1, ib + 2) = k_l(ia + 1, ib + 2) + c
             k_l(ia + 2, ib + 1) = k_l(ia + 2, ib + 1) - c
+            if (axi) then
+              ! d(2 pi r)/du_(b r) = 2 pi N_b
+              c = p * 2 * acos(-1.0_dp) * w3(g) * nf(a) * nf(b)
+              k_l(ia + 1, ib + 1) = k_l(ia + 1, ib + 1) + c * xs(2)
+              k_l(ia + 2, ib + 1) = k_l(ia + 2, ib + 1) - c * xs(1)
+            end if
           end do
         end do
       end do

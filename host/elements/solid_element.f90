@@ -81,6 +81,7 @@ module solid_element
     real(dp), allocatable :: dndx_0c(:, :)     !< (nnode+nmode, 3) dN_a/dX_j at the element centre
     real(dp), allocatable :: dndx_0m(:, :)     !< (nnode+nmode, 3) volume mean of dN_a/dX_j (B-bar, small strain)
     real(dp), allocatable :: gamma(:, :)       !< (nnode, nhg) Flanagan-Belytschko hourglass vectors (one-point types)
+    real(dp), allocatable :: hoop(:, :)        !< (nnode+nmode, nip) N_a / R at the points (axisymmetric types)
     integer :: nhg = 0                         !< hourglass vectors (0: none)
     real(dp) :: hg_vsum = 0.0_dp               !< reference volume x sum_(a,j) (dN_a/dX_j)^2 at the point
   end type solid_geometry_t
@@ -152,6 +153,22 @@ contains
         end do
         geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
       end do
+      if (tp%axisym) then
+        ! axisymmetric: wdet becomes the reference volume weight 2 pi R x (Gauss weight x det), so that volumes,
+        ! forces and energies are totals around the circumference (Abaqus); hoop operator N_a / R
+        allocate (geo%hoop(nne, nip))
+        geo%hoop = 0.0_dp
+        do ip = 1, nip
+          w = dot_product(geo%nfun(1:nnode, ip), coords0(1, :))
+          if (.not. (w > 0.0_dp)) return
+          geo%hoop(1:nnode, ip) = geo%nfun(1:nnode, ip) / w
+          geo%wdet(ip) = 2 * acos(-1.0_dp) * w * geo%wdet(ip)
+        end do
+        geo%dndx_0m = 0.0_dp
+        do ip = 1, nip
+          geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
+        end do
+      end if
       geo%dndx_0m = geo%dndx_0m / sum(geo%wdet)
       if (tp%hourglass) then
         ! the one point's gradient operator is the element mean (Flanagan-Belytschko's uniform gradient,
@@ -368,7 +385,7 @@ contains
     if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
     if (.not. gp%valid) then
       call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
-                'integration point)')
+                'integration point, or radius <= 0 at a point of an axisymmetric element)')
       return
     end if
 
@@ -496,7 +513,11 @@ contains
       real(dp) :: bcr(maxnode, 3), trs
       real(dp) :: kl8(8, 3, 3, 8)   ! C3D8: contiguous fixed-size accumulator of the vectorised kernel
       real(dp) :: d8(8, 3), b8(8, 3), r8(8, 3)
-      logical :: k8
+      real(dp) :: hc(maxnode), thk
+      logical :: k8, axi
+      axi = solid_types(it)%axisym
+      ! section thickness of plane elements; axisymmetric volumes are per 2 pi radians already (geometry)
+      thk = merge(1.0_dp, mat%thickness, axi)
 
       fe = 0.0_dp
       energy = 0.0_dp
@@ -505,13 +526,24 @@ contains
       do ip = 1, nip
         fg0(:, :, ip) = def_grad(un, gp%dndx_ref(:, :, ip))
         fg1(:, :, ip) = def_grad(u1, gp%dndx_ref(:, :, ip))
+        if (axi) then
+          ! hoop stretch r / R = 1 + u_r / R
+          fg0(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), un(1, 1:nne))
+          fg1(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), u1(1, 1:nne))
+        end if
         j0 = det3(fg0(:, :, ip))
         j1 = det3(fg1(:, :, ip))
         if (.not. (j0 > 0.0_dp .and. j1 > 0.0_dp)) then
           call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')')
           return
         end if
-        vol = vol + gp%wdet(ip) * merge(j1, 1.0_dp, nlgeom)
+        if (axi) then
+          ! CELENT from the area of the (r, z) section: divide the volume weight by 2 pi R
+          vol = vol + gp%wdet(ip) * merge(j1 / fg1(3, 3, ip), 1.0_dp, nlgeom) / &
+            (2 * acos(-1.0_dp) * dot_product(gp%nfun(1:nnode, ip), xref(1, 1:nnode)))
+        else
+          vol = vol + gp%wdet(ip) * merge(j1, 1.0_dp, nlgeom)
+        end if
       end do
       celent = vol**(1.0_dp / m)
 
@@ -551,6 +583,7 @@ contains
         else
           ! small strain: grad(du) w.r.t. X, with the mean dilatation of the element for F-bar types (B-bar)
           g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
+          if (axi) g(3, 3) = dot_product(gp%hoop(:, ip), dun(1, 1:nne))   ! hoop strain increment du_r / R
           if (fbar) then
             gc = def_grad(dun, gp%dndx_0m) - eye
             trg = 0.0_dp
@@ -624,13 +657,16 @@ contains
 
         ! spatial derivatives and volume element
         dndx = 0.0_dp
+        hc = 0.0_dp
         if (nlgeom) then
           finv = inv3(fg1(:, :, ip))
           dndx(1:nne, 1:ndim) = matmul(gp%dndx_ref(1:nne, 1:ndim, ip), finv(1:ndim, 1:ndim))
-          dv = gp%wdet(ip) * j1 * mat%thickness
+          dv = gp%wdet(ip) * j1 * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip) / fg1(3, 3, ip)   ! N_a / r, current radius
         else
           dndx(1:nne, 1:ndim) = gp%dndx_ref(1:nne, 1:ndim, ip)
-          dv = gp%wdet(ip) * mat%thickness
+          dv = gp%wdet(ip) * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip)
         end if
         energy = energy + [sse, spd] * dv
 
@@ -651,6 +687,8 @@ contains
             r = ndim * (a - 1) + i
             fe(r) = fe(r) + (dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) + trs * bcr(a, i)) * dv
           end do
+          ! axisymmetric: the hoop virtual strain du_r / r
+          if (axi) fe(ndim * (a - 1) + 1) = fe(ndim * (a - 1) + 1) + sig(3, 3) * hc(a) * dv
         end do
 
         if (want) then
@@ -658,7 +696,8 @@ contains
             ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
             ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
           end if
-          call spatial_tangent(ddsdde, ntens, sig, ndim, nlgeom, a4, q)
+          ! (axisymmetric: the full 3x3 spatial tangent, the hoop direction being the third)
+          call spatial_tangent(ddsdde, ntens, sig, merge(3, ndim, axi), nlgeom, a4, q)
           ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then
           ! K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t
           ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
@@ -673,11 +712,15 @@ contains
               do k = 1, ndim
                 t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
                      + a4(:, :, k, 3) * dndx(b, 3)) * dv
+                ! axisymmetric: the column's hoop gradient L_33 = N_b / r for k = 1
+                if (axi .and. k == 1) t = t + a4(:, :, 3, 3) * hc(b) * dv
                 trs = (t(1, 1) + t(2, 2) + t(3, 3)) / m
                 do i = 1, ndim
                   kl(1:nne, i, k, b) = kl(1:nne, i, k, b) + t(i, 1) * dndx(1:nne, 1) &
                     + t(i, 2) * dndx(1:nne, 2) + t(i, 3) * dndx(1:nne, 3) + trs * bcr(1:nne, i)
                 end do
+                ! and the row's hoop virtual strain for i = 1
+                if (axi) kl(1:nne, 1, k, b) = kl(1:nne, 1, k, b) + t(3, 3) * hc(1:nne)
               end do
             end do
           end if

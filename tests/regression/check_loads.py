@@ -400,6 +400,61 @@ def case_lame_quadratic(exe, out):
             fail("%s: error does not converge (%.2e -> %.2e)" % (etype, errs[0], errs[1]))
 
 
+def axisymmetric_cylinder_deck(path, etype, a, b, nr, p, h=0.2):
+    """Axisymmetric thick cylinder a < r < b, one element layer 0 < z < h (CAX4, CAX8, CAX8R; mid-side nodes of
+    CAX8 at the edge midpoints), *DSLOAD pressure p on the bore (S4), u_z = 0 everywhere (plane strain)."""
+    quad = etype.startswith("CAX8")
+    ids = {}
+    out = ["*HEADING", "axisymmetric thick cylinder, %s (tests/regression/check_loads.py)" % etype, "*NODE, NSET=ALL"]
+    nz = 2 if quad else 1
+    ni = 2 * nr if quad else nr
+    for k in range(nz + 1):
+        for i in range(ni + 1):
+            if quad and k == 1 and i % 2 == 1:
+                continue
+            ids[(i, k)] = len(ids) + 1
+            out.append("%d, %.15g, %.15g" % (ids[(i, k)], a + (b - a) * i / ni, h * k / nz))
+    out.append("*ELEMENT, TYPE=%s, ELSET=TUBE" % etype)
+    for e in range(nr):
+        if quad:
+            i = 2 * e
+            c = [ids[(i, 0)], ids[(i + 2, 0)], ids[(i + 2, 2)], ids[(i, 2)], ids[(i + 1, 0)], ids[(i + 2, 1)],
+                 ids[(i + 1, 2)], ids[(i, 1)]]
+        else:
+            c = [ids[(e, 0)], ids[(e + 1, 0)], ids[(e + 1, 1)], ids[(e, 1)]]
+        out.append("%d, %s" % (e + 1, ", ".join(str(n) for n in c)))
+    out += ["*ELSET, ELSET=INNER", "1,", "*NSET, NSET=RIN", "%d," % ids[(0, 0)], "*NSET, NSET=ROUT",
+            "%d," % ids[(ni, 0)], "*NSET, NSET=BOTTOM"] + ["%d," % v for (i, k), v in sorted(ids.items()) if k == 0]
+    out += ["*SOLID SECTION, ELSET=TUBE, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3",
+            "*SURFACE, NAME=BORE", "INNER, S4", "*BOUNDARY", "ALL, 2, 2",
+            "*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*DSLOAD", "BORE, P, %.15g" % p,
+            "*NODE PRINT, NSET=RIN", "U1", "*NODE PRINT, NSET=ROUT", "U1", "*NODE PRINT, NSET=BOTTOM, TOTALS=YES",
+            "RF2", "*END STEP"]
+    write(path, out)
+
+
+def case_lame_axisymmetric(exe, out):
+    """CAX4, CAX8, CAX8R thick cylinder under bore pressure with u_z = 0 against plane-strain Lame, and the axial
+    reaction on the bottom nodes as the total around the circumference (Abaqus' convention for axisymmetric
+    elements): sigma_zz = nu (sigma_rr + sigma_tt) = 2 nu p a^2 / (b^2 - a^2), so sum RF2 = -2 nu p pi a^2 (the
+    bottom holds the tube's axial tension). Radial mesh convergence: CAX4 O(h^2), the quadratic ones faster."""
+    a, b, p, nu = 1.0, 2.0, 1.0, 0.3
+    want_u = lame(a, a, b, p, 1000.0, nu)
+    want_f = -2.0 * nu * p * math.pi * a * a
+    for etype, meshes, tol in (("CAX4", (8, 16), 3e-3), ("CAX8", (4, 8), 1e-4), ("CAX8R", (4, 8), 1e-4)):
+        errs = []
+        for nr in meshes:
+            rows = run(exe, out, "axi_%s_%d" % (etype.lower(), nr),
+                       lambda d: axisymmetric_cylinder_deck(d, etype, a, b, nr, p))
+            errs.append(abs(rows[-1]["RIN.U1"] - want_u) / want_u)
+        print("%s: relative error of the bore displacement %.2e (%d elements), %.2e (%d)" %
+              (etype, errs[0], meshes[0], errs[1], meshes[1]))
+        close(etype + " bore displacement (Lame)", errs[1], 0.0, 0.0, tol)
+        if not (errs[1] < errs[0] or errs[1] < 1e-10):   # (CAX8R reproduces this Lame field to round-off)
+            fail("%s: no convergence (%.2e -> %.2e)" % (etype, errs[0], errs[1]))
+        close(etype + " axial reaction, total over 2 pi", rows[-1]["BOTTOM.RF2"], want_f, tol)
+
+
 def case_balloon(exe, out, user, three_d=False):
     """Full ring of a neo-Hookean UMAT (exact tangent) inflated under NLGEOM by follower pressure (the bore grows
     by about 23 %): with the load stiffness and UNSYMM=YES Newton converges quadratically."""
@@ -647,7 +702,7 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "lame_quadratic", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
+                                                      "lame3d", "lame_quadratic", "lame_axisymmetric", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
