@@ -455,6 +455,50 @@ def case_lame_axisymmetric(exe, out):
         close(etype + " axial reaction, total over 2 pi", rows[-1]["BOTTOM.RF2"], want_f, tol)
 
 
+def bending_beam_deck(path, etype, nx, m, nlgeom=False):
+    """Slender beam 10 x 1 x 1, nx elements along x and ONE through the thickness, nu = 0, u = 0 on x = 0, u_z = 0
+    everywhere, end moment m as the consistent nodal forces of the linear traction sigma_xx = -m (y - 1/2) / I on
+    x = 10 (+-m/2 per tip node in x)."""
+    out = ["*HEADING", "pure bending, %s, one element through the thickness (tests/regression/check_loads.py)"
+           % etype, "*NODE, NSET=ALL"]
+    nid = lambda i, j, k: 1 + i + (nx + 1) * (j + 2 * k)
+    for k in range(2):
+        for j in range(2):
+            for i in range(nx + 1):
+                out.append("%d, %.15g, %d, %d" % (nid(i, j, k), 10.0 * i / nx, j, k))
+    out.append("*ELEMENT, TYPE=%s, ELSET=BEAM" % etype)
+    for i in range(nx):
+        c = [nid(i, 0, 0), nid(i + 1, 0, 0), nid(i + 1, 1, 0), nid(i, 1, 0),
+             nid(i, 0, 1), nid(i + 1, 0, 1), nid(i + 1, 1, 1), nid(i, 1, 1)]
+        out.append("%d, %s" % (i + 1, ", ".join(str(n) for n in c)))
+    out += ["*NSET, NSET=ROOT"] + ["%d," % nid(0, j, k) for j in range(2) for k in range(2)]
+    out += ["*NSET, NSET=TIP"] + ["%d," % nid(nx, j, k) for j in range(2) for k in range(2)]
+    out += ["*SOLID SECTION, ELSET=BEAM, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.",
+            "*BOUNDARY", "ROOT, 1, 3", "ALL, 3, 3",
+            "*STEP, NLGEOM=%s" % ("YES" if nlgeom else "NO"), "*STATIC", "1., 1.", "*CLOAD"]
+    out += ["%d, 1, %.15g" % (nid(nx, j, k), (0.5 - j) * m) for j in range(2) for k in range(2)]
+    out += ["*NODE PRINT, NSET=TIP, TOTALS=YES", "U2", "*END STEP"]
+    write(path, out)
+
+
+def case_bending(exe, out):
+    """Pure bending of a slender beam with one element through the thickness (bending_beam_deck), against the
+    elasticity solution v = m L^2 / (2 E I) = 6e-4 (m = 1e-3): C3D8I reproduces it (incompatible modes condensed
+    in the element, their parameters kept in the STATEV rows after NSTATV): 1e-8; C3D8 locks in shear (6/7 of it
+    with square elements, docs/elements.md); C3D8R with one element through the thickness carries the bending in
+    its hourglass modes only (16/9 of the exact deflection with the hourglass factor 1, docs/elements.md)."""
+    exact = 1e-3 * 100.0 / (2 * 1000.0 / 12.0)
+    rows = run(exe, out, "bend_c3d8i", lambda d: bending_beam_deck(d, "C3D8I", 10, 1e-3))
+    close("C3D8I tip deflection (pure bending)", rows[-1]["TIP.U2"], exact, 1e-8)
+    rows = run(exe, out, "bend_c3d8", lambda d: bending_beam_deck(d, "C3D8", 10, 1e-3))
+    close("C3D8 tip deflection / exact (shear locking)", rows[-1]["TIP.U2"] / exact, 6.0 / 7.0, 1e-6)
+    rows = run(exe, out, "bend_c3d8r", lambda d: bending_beam_deck(d, "C3D8R", 10, 1e-3))
+    close("C3D8R tip deflection / exact (hourglass modes)", rows[-1]["TIP.U2"] / exact, 16.0 / 9.0, 1e-6)
+    # NLGEOM at a small load: the same answer within the geometric nonlinearity (tip rotation 0.12 rad at m)
+    rows = run(exe, out, "bend_c3d8i_nl", lambda d: bending_beam_deck(d, "C3D8I", 10, 1e-4, nlgeom=True))
+    close("C3D8I tip deflection, NLGEOM, m = 1e-4", rows[-1]["TIP.U2"], 0.1 * exact, 2e-3)
+
+
 def case_balloon(exe, out, user, three_d=False):
     """Full ring of a neo-Hookean UMAT (exact tangent) inflated under NLGEOM by follower pressure (the bore grows
     by about 23 %): with the load stiffness and UNSYMM=YES Newton converges quadratically."""
@@ -702,7 +746,7 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "lame_quadratic", "lame_axisymmetric", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
+                                                      "lame3d", "lame_quadratic", "lame_axisymmetric", "bending", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
