@@ -93,6 +93,13 @@ if(TARGET material_point AND EXISTS "${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.in
   ldfcz_add_perf_test(deck_c3d8_umat_uniaxial ${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp umat_uniaxial
     --mp $<TARGET_FILE:material_point>)
 endif()
+# the Leonov UMAT in one element of each continuum type under a homogeneous F against the driver (docs/elements.md)
+if(TARGET material_point)
+  add_test(NAME deck_element_leonov COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_element_leonov.py --exe $<TARGET_FILE:ldfcz>
+    --mp $<TARGET_FILE:material_point> --out ${LDFCZ_RUNS}/element_leonov)
+  set_tests_properties(deck_element_leonov PROPERTIES LABELS "deck" TIMEOUT 300)
+endif()
 if(EXISTS "${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp")
   ldfcz_add_perf_test(deck_c3d8_rotation_uniaxial ${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp rotation_uniaxial)
 endif()
