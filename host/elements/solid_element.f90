@@ -462,9 +462,11 @@ contains
         dun = u1 - un
         call element_pass(.true.)
         if (stat /= 0) return
-        ! scale of the terms that make up f_alpha: the element forces, and stiffness x displacement (so that an
-        ! element with f_u ~ 0, e.g. on a neutral axis, still reaches the round-off floor)
-        scale = max(maxval(abs(fe(1:ndof))), maxval(abs(ke(ndof + 1:ndofe, 1:ndofe))) * maxval(abs(u1(:, 1:nne))))
+        ! scale of the terms that make up f_alpha: the element forces, and stiffness x (displacement or element
+        ! size): the round-off floor of f_alpha is about eps E L^2 whatever the deformation (current coordinates
+        ! of order L), so an element with f_u ~ 0 (a neutral axis, a tiny increment) still converges
+        scale = max(maxval(abs(fe(1:ndof))), maxval(abs(ke(ndof + 1:ndofe, 1:ndofe))) * &
+          max(maxval(abs(u1(:, 1:nne))), celent))
         if (maxval(abs(fe(ndof + 1:ndofe))) <= 1.0e-11_dp * scale .or. last) exit
         kaa(1:nalpha, 1:nalpha) = ke(ndof + 1:ndofe, ndof + 1:ndofe)
         rhs(1:nalpha, 1) = -fe(ndof + 1:ndofe)
@@ -476,7 +478,7 @@ contains
         dalpha(1:nalpha) = rhs(1:nalpha, 1)
         alpha(1:nalpha) = alpha(1:nalpha) + dalpha(1:nalpha)
         ! round-off floor: the correction no longer changes alpha; one more pass at it and stop
-        last = maxval(abs(dalpha(1:nalpha))) <= 1.0e-14_dp * max(maxval(abs(alpha(1:nalpha))), tiny(1.0_dp))
+        last = maxval(abs(dalpha(1:nalpha))) <= 1.0e-14_dp * max(maxval(abs(alpha(1:nalpha))), celent)
         if (iter == max_local_iter) then
           call fail(3, 'element ' // itoa(noel) // ': incompatible modes did not converge')
           return
