@@ -1,6 +1,10 @@
-!> Continuum elements C3D8 (8-node hexahedron, 2x2x2 Gauss) and CPE4 (4-node plane-strain quadrilateral, 2x2 Gauss)
-!> with the F-bar method of de Souza Neto, Peric, Dutko and Owen (1996, Int. J. Solids Struct. 33, 3277-3296),
-!> calling their material exactly as Abaqus/Standard calls a UMAT (../../../shared/CONVENTIONS.md).
+!> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the library in
+!> solid_shape.f90 (C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, CPE4/CPE4I/CPE4R/CPE8/CPE8R, CPS4/CPS4I/CPS4R/
+!> CPS8/CPS8R, CAX4/CAX8/CAX8R), calling their material exactly as Abaqus/Standard calls a UMAT
+!> (../../../shared/CONVENTIONS.md). Types differ only by data: shape functions, integration rule, and the switches
+!> F-bar (C3D8, CPE4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
+!> incompatible modes (condensed pseudo-nodes, element-level Newton), one point with Flanagan-Belytschko hourglass
+!> stiffness, plane stress (NTENS = 3) and axisymmetry (hoop strain u_r / r, totals over 2 pi). docs/elements.md.
 !>
 !> Kinematics at Gauss point p (updated Lagrange, NLGEOM):
 !>   F = dx/dX at t_n (F0, from u - du) and t_n+1 (F1, from u); J = det F; J_c = det F at the element centre.
