@@ -152,7 +152,7 @@ set_tests_properties(deck_field_output PROPERTIES LABELS "deck" TIMEOUT 300)
 # branch; the two classic mis-orientations refused before the analysis, and reordered by --reorient-interfaces
 add_test(NAME deck_dcb_orientation COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_dcb.py
   --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/deck_dcb_orientation)
-set_tests_properties(deck_dcb_orientation PROPERTIES LABELS "deck" TIMEOUT 600)
+set_tests_properties(deck_dcb_orientation PROPERTIES LABELS "deck" TIMEOUT 900)
 # concentrated loads, amplitudes and load propagation across steps (tests/regression/check_loads.py: decks written
 # by the script, checked against beam theory, the elastica and the linear response to the load history)
 set(LDFCZ_CHECK_LOADS "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py")
