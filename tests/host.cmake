@@ -167,7 +167,7 @@ foreach(case small large steps release visco equation tie)
 endforeach()
 # distributed loads: gravity column (exact), thick cylinder under *DSLOAD/*DLOAD pressure (Lame, CPE4 and C3D8),
 # follower pressure inflating a neo-Hookean ring (quadratic Newton convergence), a UEL reading its Un loads
-foreach(case gravity lame2d lame3d lame_quadratic lame_axisymmetric bending)
+foreach(case gravity lame2d lame3d lame_quadratic lame_axisymmetric bending kirsch)
   add_test(NAME deck_dload_${case} COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/dload_${case} --case ${case})
   set_tests_properties(deck_dload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)

@@ -499,6 +499,85 @@ def case_bending(exe, out):
     close("C3D8I tip deflection, NLGEOM, m = 1e-4", rows[-1]["TIP.U2"], 0.1 * exact, 2e-3)
 
 
+def kirsch_displacement(x, y, a, s0, e, nu):
+    """Kirsch: infinite plane-stress plate with a hole of radius a under uniaxial tension s0 along x (Barber,
+    Elasticity, the hole in a tension field): u_r, u_t in polar form, returned as (u_x, u_y)."""
+    r, t = math.hypot(x, y), math.atan2(y, x)
+    mu, kappa = e / (2 * (1 + nu)), (3 - nu) / (1 + nu)
+    ur = s0 / (4 * mu) * (r * ((kappa - 1) / 2 + math.cos(2 * t)) + a * a / r * (1 + (1 + kappa) * math.cos(2 * t))
+                          - a ** 4 / r ** 3 * math.cos(2 * t))
+    ut = s0 / (4 * mu) * ((1 - kappa) * a * a / r - r - a ** 4 / r ** 3) * math.sin(2 * t)
+    return ur * math.cos(t) - ut * math.sin(t), ur * math.sin(t) + ut * math.cos(t)
+
+
+def kirsch_deck(path, etype, a, b, nr, nt, s0, e, nu):
+    """Quarter of the annulus a < r < b (plane stress CPS4 or CPS8, radial spacing growing geometrically, CPS8
+    mid-side nodes on the circles), symmetry planes, free hole, the Kirsch displacement prescribed on r = b."""
+    quad = etype == "CPS8"
+    m = 2 if quad else 1
+    ids = {}
+    out = ["*HEADING", "plate with a hole, %s, Kirsch displacement on the outer arc (tests/regression/check_loads.py)"
+           % etype, "*NODE, NSET=ALL"]
+    g = 1.25  # radial growth of the element size
+    radii = [a + (b - a) * (g ** (i / m) - 1) / (g ** nr - 1) for i in range(m * nr + 1)]
+    for j in range(m * nt + 1):
+        for i in range(m * nr + 1):
+            if quad and i % 2 == 1 and j % 2 == 1:
+                continue
+            t = math.pi / 2 * j / (m * nt)
+            ids[(i, j)] = len(ids) + 1
+            out.append("%d, %.15g, %.15g" % (ids[(i, j)], radii[i] * math.cos(t), radii[i] * math.sin(t)))
+    out.append("*ELEMENT, TYPE=%s, ELSET=PLATE" % etype)
+    e_id = 1
+    for j in range(nt):
+        for i in range(nr):
+            I, J = m * i, m * j
+            c = [ids[(I, J)], ids[(I + m, J)], ids[(I + m, J + m)], ids[(I, J + m)]]
+            if quad:
+                c += [ids[(I + 1, J)], ids[(I + 2, J + 1)], ids[(I + 1, J + 2)], ids[(I, J + 1)]]
+            out.append("%d, %s" % (e_id, ", ".join(str(n) for n in c)))
+            e_id += 1
+    out += ["*NSET, NSET=HOLE_X", "%d," % ids[(0, 0)], "*NSET, NSET=HOLE_Y", "%d," % ids[(0, m * nt)]]
+    out += ["*SOLID SECTION, ELSET=PLATE, MATERIAL=M", "1.", "*MATERIAL, NAME=M", "*ELASTIC", "%g, %g" % (e, nu),
+            "*BOUNDARY"]
+    out += ["%d, 2, 2" % v for (i, j), v in sorted(ids.items()) if j == 0]
+    out += ["%d, 1, 1" % v for (i, j), v in sorted(ids.items()) if j == m * nt]
+    out += ["*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*BOUNDARY"]
+    for (i, j), v in sorted(ids.items()):
+        if i != m * nr:
+            continue
+        t = math.pi / 2 * j / (m * nt)
+        ux, uy = kirsch_displacement(b * math.cos(t), b * math.sin(t), a, s0, e, nu)
+        if j != m * nt:
+            out.append("%d, 1, 1, %.15g" % (v, ux))
+        if j != 0:
+            out.append("%d, 2, 2, %.15g" % (v, uy))
+    out += ["*NODE PRINT, NSET=HOLE_X", "U1", "*NODE PRINT, NSET=HOLE_Y", "U2", "*END STEP"]
+    write(path, out)
+
+
+def case_kirsch(exe, out):
+    """Plate with a hole, plane stress (CPS4, CPS8): the annulus 1 < r < 4 with Kirsch's displacement on r = 4, so
+    that the exact solution of the finite domain IS Kirsch's; the displacements of the hole at theta = 0 and 90 deg
+    (where sigma_tt = -s0 and 3 s0) converge to the closed form with mesh refinement: CPS4 O(h^2) (error down by
+    about 4 per halving), CPS8 faster; bounds: the finer mesh within 1e-2 (CPS4) and 1e-4 (CPS8) of the larger of
+    the two hole displacements, and the error falls by at least 3 per halving."""
+    a, b, s0, e, nu = 1.0, 4.0, 1.0, 1000.0, 0.3
+    want = (kirsch_displacement(a, 0.0, a, s0, e, nu)[0], kirsch_displacement(0.0, a, a, s0, e, nu)[1])
+    scale = max(abs(want[0]), abs(want[1]))
+    for etype, tol in (("CPS4", 1e-2), ("CPS8", 1e-4)):
+        errs = []
+        for nr, nt in ((4, 6), (8, 12), (16, 24)):
+            rows = run(exe, out, "kirsch_%s_%d" % (etype.lower(), nr),
+                       lambda d: kirsch_deck(d, etype, a, b, nr, nt, s0, e, nu))
+            errs.append(max(abs(rows[-1]["HOLE_X.U1"] - want[0]), abs(rows[-1]["HOLE_Y.U2"] - want[1])) / scale)
+        print("%s: hole displacement error %s (4x6, 8x12, 16x24)" % (etype, ", ".join("%.2e" % x for x in errs)))
+        close(etype + " 16x24 hole displacement (Kirsch)", errs[-1], 0.0, 0.0, tol)
+        for k in range(2):
+            if not (errs[k + 1] <= errs[k] / 3 or errs[k + 1] < 1e-9):
+                fail("%s: no convergence (%s)" % (etype, errs))
+
+
 def case_balloon(exe, out, user, three_d=False):
     """Full ring of a neo-Hookean UMAT (exact tangent) inflated under NLGEOM by follower pressure (the bore grows
     by about 23 %): with the load stiffness and UNSYMM=YES Newton converges quadratically."""
@@ -746,7 +825,7 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "lame_quadratic", "lame_axisymmetric", "bending", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
+                                                      "lame3d", "lame_quadratic", "lame_axisymmetric", "bending", "kirsch", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)
