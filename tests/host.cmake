@@ -56,6 +56,7 @@ endforeach()
 foreach(patch patch_c3d8 patch_cpe4)
   ldfcz_add_deck_test(NAME deck_${patch} DECK ${LDFCZ_DECKS}/patch/${patch}.inp CASE patch)
 endforeach()
+ldfcz_add_deck_test(NAME deck_patch_c3d8_linear DECK ${LDFCZ_DECKS}/patch/patch_c3d8_linear.inp CASE patch_linear)
 
 # single elements against closed-form answers
 ldfcz_add_deck_test(NAME deck_c3d8_uniaxial DECK ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp CASE c3d8_uniaxial)
@@ -94,6 +95,13 @@ endfunction()
 if(TARGET material_point AND EXISTS "${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp")
   ldfcz_add_perf_test(deck_c3d8_umat_uniaxial ${LDFCZ_DECKS}/single/c3d8_umat_uniaxial.inp umat_uniaxial
     --mp $<TARGET_FILE:material_point>)
+endif()
+# the Leonov UMAT in one element of each continuum type under a homogeneous F against the driver (docs/elements.md)
+if(TARGET material_point)
+  add_test(NAME deck_element_leonov COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_element_leonov.py --exe $<TARGET_FILE:ldfcz>
+    --mp $<TARGET_FILE:material_point> --out ${LDFCZ_RUNS}/element_leonov)
+  set_tests_properties(deck_element_leonov PROPERTIES LABELS "deck" TIMEOUT 300)
 endif()
 if(EXISTS "${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp")
   ldfcz_add_perf_test(deck_c3d8_rotation_uniaxial ${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp rotation_uniaxial)
@@ -148,6 +156,10 @@ set_tests_properties(deck_field_output PROPERTIES LABELS "deck" TIMEOUT 300)
 add_test(NAME deck_dcb_orientation COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_dcb.py
   --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/deck_dcb_orientation)
 set_tests_properties(deck_dcb_orientation PROPERTIES LABELS "deck" TIMEOUT 600)
+# the same DCB with C3D8I arms, one element through each arm's thickness: beam theory within 0.5 % (docs/elements.md)
+add_test(NAME deck_dcb_c3d8i COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_dcb.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/deck_dcb_c3d8i --c3d8i)
+set_tests_properties(deck_dcb_c3d8i PROPERTIES LABELS "deck" TIMEOUT 600)
 # concentrated loads, amplitudes and load propagation across steps (tests/regression/check_loads.py: decks written
 # by the script, checked against beam theory, the elastica and the linear response to the load history)
 set(LDFCZ_CHECK_LOADS "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_loads.py")
@@ -158,7 +170,7 @@ foreach(case small large steps release visco equation tie)
 endforeach()
 # distributed loads: gravity column (exact), thick cylinder under *DSLOAD/*DLOAD pressure (Lame, CPE4 and C3D8),
 # follower pressure inflating a neo-Hookean ring (quadratic Newton convergence), a UEL reading its Un loads
-foreach(case gravity lame2d lame3d)
+foreach(case gravity lame2d lame3d lame_quadratic lame_axisymmetric bending kirsch)
   add_test(NAME deck_dload_${case} COMMAND Python3::Interpreter ${LDFCZ_CHECK_LOADS} --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/dload_${case} --case ${case})
   set_tests_properties(deck_dload_${case} PROPERTIES LABELS "deck" TIMEOUT 300)

@@ -4,7 +4,7 @@
 module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, etype_c3d8, etype_cpe4, etype_user, orientation_axes
+  use model_types, only: model_t, etype_user, etype_names, orientation_axes
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
@@ -56,7 +56,7 @@ module analysis_core
     logical, allocatable :: used(:)             !< (ndof) dof attached to an element
     logical, allocatable :: prescribed(:)       !< (ndof)
     integer, allocatable :: elem_nip(:)         !< integration points per element (continuum)
-    character(len=4), allocatable :: elem_tname(:) !< 'C3D8', 'CPE4' or 'U'
+    character(len=8), allocatable :: elem_tname(:) !< Abaqus element type name ('C3D8', ...) or 'U'
     type(solid_material_t), allocatable :: mats(:)  !< per section
     type(elem_state_t), allocatable :: conv(:)  !< converged state
     type(elem_state_t), allocatable :: trial(:) !< state of the last element loop
@@ -100,15 +100,9 @@ contains
 
   pure function elem_type_name(kind) result(s)
     integer, intent(in) :: kind
-    character(len=4) :: s
-    select case (kind)
-    case (etype_c3d8)
-      s = 'C3D8'
-    case (etype_cpe4)
-      s = 'CPE4'
-    case default
-      s = 'U'
-    end select
+    character(len=8) :: s
+    s = 'U'
+    if (kind >= 1 .and. kind <= size(etype_names)) s = etype_names(kind)
   end function elem_type_name
 
   !> Dof maps, materials and initial (zero) states.
@@ -118,7 +112,7 @@ contains
     type(user_routines_t), intent(in) :: routines        !< UEL and UMAT to call
     integer, intent(out) :: stat                         !< 0 ok, 2 model error
     character(len=:), allocatable, intent(out) :: errmsg !< message
-    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact
+    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra
     character(len=16) :: b
 
     stat = 0
@@ -238,11 +232,12 @@ contains
         allocate (an%conv(ie)%svars(n))
         an%conv(ie)%svars = 0.0_dp
       else
-        call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, ntens, ndi, nshr)
+        call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, ntens, ndi, nshr, nextra)
         an%elem_nip(ie) = nip
         is = model%elem_section(ie)
+        ! STATEV rows: the material's NSTATV, then the element's own (incompatible-mode parameters)
         allocate (an%conv(ie)%stress(ntens, nip), an%conv(ie)%stran(ntens, nip), &
-          an%conv(ie)%statev(max(1, an%mats(is)%nstatv), nip), an%conv(ie)%eip(3, nip))
+          an%conv(ie)%statev(max(1, an%mats(is)%nstatv + nextra), nip), an%conv(ie)%eip(3, nip))
         an%conv(ie)%stress = 0.0_dp
         an%conv(ie)%stran = 0.0_dp
         an%conv(ie)%statev = 0.0_dp
@@ -496,7 +491,7 @@ contains
     integer, intent(out) :: stat
     character(len=*), intent(out) :: msg
     integer :: nn, a, iu, ip, mcrd, nsv
-    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 8), energy(8), svars(1)
+    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8), svars(1)
     real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
     integer :: jdltyp(mdload, 1), lflags(5), ndload, im

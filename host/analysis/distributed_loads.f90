@@ -6,14 +6,13 @@
 !> JDLTYP, ADLMAG, DDLMAG arrays of a user element.
 module distributed_loads
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user
+  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user, &
+    etype_is_axisymmetric
   use element_faces, only: element_face_nodes
   use solver_text, only: itoa
   implicit none
   private
   public :: dload_state_t, dload_step_begin, dload_element, dload_uel_arrays, dload_has
-
-  real(dp), parameter :: gauss2 = 0.577350269189625764509148780502_dp  !< 1/sqrt(3)
 
   !> The distributed loads in force in the current step, one record per element and label.
   type :: dload_state_t
@@ -203,7 +202,8 @@ contains
       select case (ds%kind(k))
       case (dload_bx, dload_grav)
         w = 1.0_dp
-        if (ndim == 2) w = thickness
+        ! (axisymmetric elements: wdet is already the volume weight around 2 pi radians)
+        if (ndim == 2 .and. .not. etype_is_axisymmetric(model%elem_kind(ie))) w = thickness
         if (ds%kind(k) == dload_grav) w = w * density
         do ip = 1, size(wdet)
           do a = 1, nn
@@ -217,67 +217,155 @@ contains
   end subroutine dload_element
 
   !> Pressure p on face `face` of an element with current coordinates x: f -= p N_a n dA (n outward, element_faces),
-  !> and with follower the stiffness -df/du. Face interpolation by the number of face nodes: 2 (2D line, 2-point
-  !> Gauss) or 4 (bilinear quadrilateral, 2x2 Gauss).
+  !> and with follower the stiffness -df/du. Face interpolation by the number of face nodes: 2 or 3 (2D line, linear
+  !> or quadratic, 3-point Gauss), 4 or 8 (quadrilateral, bilinear or serendipity, 3x3 Gauss), 3 or 6 (triangle,
+  !> linear or quadratic, 3-point rule of degree 2). Exact for the nodal forces of a flat face.
   pure subroutine face_pressure(kind, face, p, x, ndim, thickness, follower, f, k_l)
     integer, intent(in) :: kind, face, ndim
     real(dp), intent(in) :: p, x(:, :), thickness
     logical, intent(in) :: follower
     real(dp), intent(inout) :: f(:), k_l(:, :)
-    integer :: loc(8), nfn, g, h, a, b, ia, ib
-    real(dp) :: xi, eta, nf(4), dxi(4), deta(4), xs(3), xe(3), na(3), sx(3, 3), se(3, 3), c
+    real(dp), parameter :: g3(3) = [-0.774596669241483377035853079956_dp, 0.0_dp, 0.774596669241483377035853079956_dp]
+    real(dp), parameter :: w3(3) = [5.0_dp / 9, 8.0_dp / 9, 5.0_dp / 9]
+    real(dp), parameter :: tri_pts(2, 3) = reshape([1.0_dp / 6, 1.0_dp / 6, 2.0_dp / 3, 1.0_dp / 6, 1.0_dp / 6, &
+      2.0_dp / 3], [2, 3])
+    integer :: loc(8), nfn, g, h, a, b, ia, ib, npt
+    real(dp) :: s, t, w, nf(8), ds(8), dt(8), xs(3), xe(3), na(3), sx(3, 3), se(3, 3), c, wr
+    logical :: axi
     call element_face_nodes(kind, face, loc, nfn)
-    if (ndim == 2 .and. nfn == 2) then
-      do g = 1, 2
-        xi = merge(-gauss2, gauss2, g == 1)
-        nf(1:2) = [0.5_dp * (1.0_dp - xi), 0.5_dp * (1.0_dp + xi)]
-        dxi(1:2) = [-0.5_dp, 0.5_dp]
-        xs(1:2) = dxi(1) * x(:, loc(1)) + dxi(2) * x(:, loc(2))
-        do a = 1, 2
+    axi = etype_is_axisymmetric(kind)
+    if (ndim == 2) then
+      ! plane elements: per section thickness; axisymmetric: per 2 pi r (totals around the circumference)
+      do g = 1, 3
+        call line_shape(nfn, g3(g), nf, ds)
+        xs(1:2) = matmul(x(:, loc(1:nfn)), ds(1:nfn))
+        wr = thickness
+        if (axi) wr = 2 * acos(-1.0_dp) * dot_product(nf(1:nfn), x(1, loc(1:nfn)))
+        do a = 1, nfn
           ia = (loc(a) - 1) * 2
-          f(ia + 1) = f(ia + 1) - p * thickness * nf(a) * xs(2)
-          f(ia + 2) = f(ia + 2) + p * thickness * nf(a) * xs(1)
+          f(ia + 1) = f(ia + 1) - p * wr * w3(g) * nf(a) * xs(2)
+          f(ia + 2) = f(ia + 2) + p * wr * w3(g) * nf(a) * xs(1)
           if (.not. follower) cycle
-          do b = 1, 2
+          do b = 1, nfn
             ib = (loc(b) - 1) * 2
-            c = p * thickness * nf(a) * dxi(b)
+            c = p * wr * w3(g) * nf(a) * ds(b)
             k_l(ia + 1, ib + 2) = k_l(ia + 1, ib + 2) + c
             k_l(ia + 2, ib + 1) = k_l(ia + 2, ib + 1) - c
+            if (axi) then
+              ! d(2 pi r)/du_(b r) = 2 pi N_b
+              c = p * 2 * acos(-1.0_dp) * w3(g) * nf(a) * nf(b)
+              k_l(ia + 1, ib + 1) = k_l(ia + 1, ib + 1) + c * xs(2)
+              k_l(ia + 2, ib + 1) = k_l(ia + 2, ib + 1) - c * xs(1)
+            end if
           end do
         end do
       end do
-    else if (ndim == 3 .and. nfn == 4) then
-      do g = 1, 2
-        do h = 1, 2
-          xi = merge(-gauss2, gauss2, g == 1)
-          eta = merge(-gauss2, gauss2, h == 1)
-          nf = 0.25_dp * [(1 - xi) * (1 - eta), (1 + xi) * (1 - eta), (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)]
-          dxi = 0.25_dp * [-(1 - eta), (1 - eta), (1 + eta), -(1 + eta)]
-          deta = 0.25_dp * [-(1 - xi), -(1 + xi), (1 + xi), (1 - xi)]
-          xs = 0.0_dp
-          xe = 0.0_dp
-          do a = 1, 4
-            xs = xs + dxi(a) * x(:, loc(a))
-            xe = xe + deta(a) * x(:, loc(a))
-          end do
-          na = [xs(2) * xe(3) - xs(3) * xe(2), xs(3) * xe(1) - xs(1) * xe(3), xs(1) * xe(2) - xs(2) * xe(1)]
-          sx = skew(xs)
-          se = skew(xe)
-          do a = 1, 4
-            ia = (loc(a) - 1) * 3
-            f(ia + 1:ia + 3) = f(ia + 1:ia + 3) - p * nf(a) * na
-            if (.not. follower) cycle
-            ! d(xs x xe)/du_b = deta_b [xs]x - dxi_b [xe]x
-            do b = 1, 4
-              ib = (loc(b) - 1) * 3
-              k_l(ia + 1:ia + 3, ib + 1:ib + 3) = k_l(ia + 1:ia + 3, ib + 1:ib + 3) + p * nf(a) * &
-                (deta(b) * sx - dxi(b) * se)
-            end do
+    else
+      npt = merge(3, 9, nfn == 3 .or. nfn == 6)
+      do g = 1, npt
+        if (npt == 3) then
+          s = tri_pts(1, g)
+          t = tri_pts(2, g)
+          w = 1.0_dp / 6
+        else
+          h = (g - 1) / 3 + 1
+          s = g3(g - 3 * (h - 1))
+          t = g3(h)
+          w = w3(g - 3 * (h - 1)) * w3(h)
+        end if
+        call surface_shape(nfn, s, t, nf, ds, dt)
+        xs = matmul(x(:, loc(1:nfn)), ds(1:nfn))
+        xe = matmul(x(:, loc(1:nfn)), dt(1:nfn))
+        na = [xs(2) * xe(3) - xs(3) * xe(2), xs(3) * xe(1) - xs(1) * xe(3), xs(1) * xe(2) - xs(2) * xe(1)]
+        sx = skew(xs)
+        se = skew(xe)
+        do a = 1, nfn
+          ia = (loc(a) - 1) * 3
+          f(ia + 1:ia + 3) = f(ia + 1:ia + 3) - p * w * nf(a) * na
+          if (.not. follower) cycle
+          ! d(xs x xe)/du_b = dt_b [xs]x - ds_b [xe]x
+          do b = 1, nfn
+            ib = (loc(b) - 1) * 3
+            k_l(ia + 1:ia + 3, ib + 1:ib + 3) = k_l(ia + 1:ia + 3, ib + 1:ib + 3) + p * w * nf(a) * &
+              (dt(b) * sx - ds(b) * se)
           end do
         end do
       end do
     end if
   end subroutine face_pressure
+
+  !> Line shape functions on [-1, 1]: 2 nodes (ends) or 3 (ends, then the middle).
+  pure subroutine line_shape(nfn, s, nf, ds)
+    integer, intent(in) :: nfn
+    real(dp), intent(in) :: s
+    real(dp), intent(out) :: nf(8), ds(8)
+    nf = 0.0_dp
+    ds = 0.0_dp
+    if (nfn == 2) then
+      nf(1:2) = [0.5_dp * (1 - s), 0.5_dp * (1 + s)]
+      ds(1:2) = [-0.5_dp, 0.5_dp]
+    else
+      nf(1:3) = [0.5_dp * s * (s - 1), 0.5_dp * s * (s + 1), 1 - s * s]
+      ds(1:3) = [s - 0.5_dp, s + 0.5_dp, -2 * s]
+    end if
+  end subroutine line_shape
+
+  !> Face shape functions and derivatives in the face's node order (element_faces): quadrilateral on [-1, 1]^2 with
+  !> 4 or 8 nodes (corners, then mid-sides of edges 1-2, 2-3, 3-4, 4-1), triangle in area coordinates (s, t) with
+  !> 3 or 6 nodes (corners at (0,0), (1,0), (0,1), then mid-sides of edges 1-2, 2-3, 3-1).
+  pure subroutine surface_shape(nfn, s, t, nf, ds, dt)
+    integer, intent(in) :: nfn
+    real(dp), intent(in) :: s, t
+    real(dp), intent(out) :: nf(8), ds(8), dt(8)
+    real(dp), parameter :: cs(4) = [-1.0_dp, 1.0_dp, 1.0_dp, -1.0_dp], ct(4) = [-1.0_dp, -1.0_dp, 1.0_dp, 1.0_dp]
+    real(dp) :: l(3), dls(3), dlt(3)
+    integer :: a, i, j
+    integer, parameter :: te(2, 3) = reshape([1, 2, 2, 3, 3, 1], [2, 3])
+    nf = 0.0_dp
+    ds = 0.0_dp
+    dt = 0.0_dp
+    select case (nfn)
+    case (4)
+      do a = 1, 4
+        nf(a) = 0.25_dp * (1 + cs(a) * s) * (1 + ct(a) * t)
+        ds(a) = 0.25_dp * cs(a) * (1 + ct(a) * t)
+        dt(a) = 0.25_dp * ct(a) * (1 + cs(a) * s)
+      end do
+    case (8)
+      do a = 1, 4
+        nf(a) = 0.25_dp * (1 + cs(a) * s) * (1 + ct(a) * t) * (cs(a) * s + ct(a) * t - 1)
+        ds(a) = 0.25_dp * cs(a) * (1 + ct(a) * t) * (2 * cs(a) * s + ct(a) * t)
+        dt(a) = 0.25_dp * ct(a) * (1 + cs(a) * s) * (cs(a) * s + 2 * ct(a) * t)
+      end do
+      ! mid-sides 5 (t = -1), 6 (s = 1), 7 (t = 1), 8 (s = -1)
+      nf(5) = 0.5_dp * (1 - s * s) * (1 - t); ds(5) = -s * (1 - t); dt(5) = -0.5_dp * (1 - s * s)
+      nf(6) = 0.5_dp * (1 + s) * (1 - t * t); ds(6) = 0.5_dp * (1 - t * t); dt(6) = -t * (1 + s)
+      nf(7) = 0.5_dp * (1 - s * s) * (1 + t); ds(7) = -s * (1 + t); dt(7) = 0.5_dp * (1 - s * s)
+      nf(8) = 0.5_dp * (1 - s) * (1 - t * t); ds(8) = -0.5_dp * (1 - t * t); dt(8) = -t * (1 - s)
+    case (3, 6)
+      l = [1 - s - t, s, t]
+      dls = [-1.0_dp, 1.0_dp, 0.0_dp]
+      dlt = [-1.0_dp, 0.0_dp, 1.0_dp]
+      if (nfn == 3) then
+        nf(1:3) = l
+        ds(1:3) = dls
+        dt(1:3) = dlt
+      else
+        do a = 1, 3
+          nf(a) = l(a) * (2 * l(a) - 1)
+          ds(a) = (4 * l(a) - 1) * dls(a)
+          dt(a) = (4 * l(a) - 1) * dlt(a)
+        end do
+        do a = 4, 6
+          i = te(1, a - 3)
+          j = te(2, a - 3)
+          nf(a) = 4 * l(i) * l(j)
+          ds(a) = 4 * (dls(i) * l(j) + l(i) * dls(j))
+          dt(a) = 4 * (dlt(i) * l(j) + l(i) * dlt(j))
+        end do
+      end if
+    end select
+  end subroutine surface_shape
 
   !> [v]x: the matrix of the cross product v x (.).
   pure function skew(v) result(s)

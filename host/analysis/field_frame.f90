@@ -3,7 +3,9 @@
 !> elements opening, traction and largest opening (docs/host.md, "Outputs").
 module field_frame
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4
+  use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, &
+    etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, &
+    etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use output_files, only: output_t, output_vtu_frame, output_vtu_t
@@ -81,11 +83,20 @@ contains
     do c = 1, ncell
       ie = cells(c)
       nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+      ! VTK cell types; Abaqus' node order of these elements is VTK's (corners, then the mid-side nodes edge by edge)
       select case (model%elem_kind(ie))
-      case (etype_c3d8)
+      case (etype_c3d8, etype_c3d8i, etype_c3d8r)
         fr%cell_type(c) = 12
-      case (etype_cpe4)
+      case (etype_c3d20, etype_c3d20r)
+        fr%cell_type(c) = 25
+      case (etype_c3d4)
+        fr%cell_type(c) = 10
+      case (etype_c3d10)
+        fr%cell_type(c) = 24
+      case (etype_cpe4, etype_cpe4i, etype_cpe4r, etype_cps4, etype_cps4i, etype_cps4r, etype_cax4, etype_cax4i)
         fr%cell_type(c) = 9
+      case (etype_cpe8, etype_cpe8r, etype_cps8, etype_cps8r, etype_cax8, etype_cax8r)
+        fr%cell_type(c) = 23
       case default
         if (nn == 8) then
           fr%cell_type(c) = 12
@@ -121,12 +132,18 @@ contains
           s(1:nt) = s(1:nt) + an%conv(ie)%stress(:, ip) / nip
           e(1:nt) = e(1:nt) + an%conv(ie)%stran(:, ip) / nip
         end do
+        if (nt == 3) then
+          ! plane stress (11, 22, 12): sigma33 = 0; the thickness strain is not kept (0 in the frame)
+          s(4) = s(3); s(3) = 0.0_dp
+          e(4) = e(3); e(3) = 0.0_dp
+        end if
         fr%stress(:, c) = s
         call principal_stresses(s, p)
         fr%principal(:, c) = [p(3), p(2), p(1)]
         fr%mises(c) = mises_stress(s)
         if (want_strain) fr%strain(:, c) = [e(1:3), 0.5_dp * e(4:6)]  ! engineering -> tensor shear
-        nsv = size(an%conv(ie)%statev, 1)
+        ! the material's STATEV (the rows after them are the element's own: incompatible modes)
+        nsv = max(1, an%mats(model%elem_section(ie))%nstatv)
         do k = 1, size(fr%sdv_index)
           if (fr%sdv_index(k) > nsv) cycle
           fr%sdv(k, c) = sum(an%conv(ie)%statev(fr%sdv_index(k), :)) / nip
@@ -147,7 +164,7 @@ contains
     nmax = 0
     do ie = 1, model%nelem
       if (model%elem_kind(ie) /= etype_user .and. allocated(an%conv(ie)%statev)) &
-        nmax = max(nmax, size(an%conv(ie)%statev, 1))
+        nmax = max(nmax, an%mats(model%elem_section(ie))%nstatv, 1)
     end do
     if (step%out_sdv_all) then
       idx = [(k, k = 1, nmax)]

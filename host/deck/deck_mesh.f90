@@ -3,8 +3,8 @@
 module deck_mesh
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_upper, deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: node_set_t, elem_set_t, etype_c3d8, etype_cpe4, etype_user, model_find_nset, &
-    model_find_elset, model_find_user_type
+  use model_types, only: node_set_t, elem_set_t, etype_user, etype_names, model_find_nset, model_find_elset, &
+    model_find_user_type
   use deck_lists, only: itoa, add_member, grow_int
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued
@@ -12,6 +12,11 @@ module deck_mesh
   private
   public :: read_node, read_element, read_set
   public :: get_nset, get_elset, grow_nodes, grow_elems
+
+  !> The continuum element types: nodes and dimension per etype_* of model_types (0: the user kind)
+  ! (CAX4I, kind 20, is not available: its incompatible modes would need the radius weighting of the patch test)
+  integer, parameter :: etype_nnode(22) = [8, 4, 0, 8, 20, 20, 4, 10, 4, 8, 8, 4, 4, 8, 8, 8, 4, 4, 4, 0, 8, 8]
+  integer, parameter :: etype_dim(22) = [3, 2, 0, 3, 3, 3, 3, 3, 2, 2, 2, 2, 2, 2, 2, 3, 2, 2, 2, 2, 2, 2]
 
 contains
 
@@ -74,7 +79,8 @@ contains
     end associate
   end subroutine read_node
 
-  !> *ELEMENT, TYPE=, ELSET=: element number and its nodes (C3D8, CPE4 or a user type Un defined before).
+  !> *ELEMENT, TYPE=, ELSET=: element number and its nodes (a continuum type of etype_names or a user type Un
+  !> defined before).
   subroutine read_element(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=:), allocatable :: tname, setname
@@ -85,29 +91,42 @@ contains
     tname = deck_normalize(ctx_required(ctx, 'TYPE'))
     if (ctx%stat /= 0) return
     iu = 0
-    select case (tname)
-    case ('C3D8')
-      kind = etype_c3d8
-      nn = 8
-      call set_dim(ctx, 3)
-    case ('CPE4')
-      kind = etype_cpe4
-      nn = 4
-      call set_dim(ctx, 2)
-    case default
+    kind = 0
+    do k = 1, size(etype_names)
+      if (etype_nnode(k) > 0 .and. tname == trim(etype_names(k))) kind = k
+    end do
+    if (kind > 0) then
+      nn = etype_nnode(kind)
+      call set_dim(ctx, etype_dim(kind))
+    else
       iu = model_find_user_type(ctx%model, tname)
       if (iu == 0) then
         if (tname(1:1) == 'U') then
           call ctx_fail(ctx, ctx%ir, 'user element type '//tname//' not defined by an earlier *USER ELEMENT')
+        else if (tname == 'COH3D8') then
+          ! Abaqus' cohesive elements need its built-in traction-separation laws: the LDF cohesive zone is the
+          ! user element with the same connectivity (docs/uel.md)
+          call ctx_fail(ctx, ctx%ir, 'element type COH3D8 (*COHESIVE SECTION, Abaqus traction-separation laws) '// &
+            'is not supported: use the LDF cohesive user element, same 8 nodes: '// &
+            '"*USER ELEMENT, TYPE=U1, NODES=8, COORDINATES=3, PROPERTIES=3, I PROPERTIES=2, VARIABLES=16, UNSYMM" '// &
+            'and "*ELEMENT, TYPE=U1, ELSET=..." with *UEL PROPERTY (docs/uel.md)')
+        else if (tname == 'COH2D4') then
+          call ctx_fail(ctx, ctx%ir, 'element type COH2D4 (*COHESIVE SECTION, Abaqus traction-separation laws) '// &
+            'is not supported: use the LDF cohesive user element, same 4 nodes: '// &
+            '"*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=3, I PROPERTIES=2, VARIABLES=8, UNSYMM" '// &
+            'and "*ELEMENT, TYPE=U2, ELSET=..." with *UEL PROPERTY (docs/uel.md)')
         else
-          call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, CPE4 and user types Un)')
+          call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, C3D8I, C3D8R, C3D20, C3D20R, '// &
+            'C3D4, C3D10, CPE4, CPE4I, CPE4R, CPE8, CPE8R, CPS4, CPS4I, CPS4R, CPS8, CPS8R, CAX4, CAX8, '// &
+            'CAX8R and user types Un; '// &
+            'docs/elements.md)')
         end if
         return
       end if
       kind = etype_user
       nn = ctx%model%utypes(iu)%nnode
       call set_dim(ctx, ctx%model%utypes(iu)%mcrd)
-    end select
+    end if
     if (ctx%stat /= 0) return
     iset = 0
     if (deck_has_param(ctx%params, 'ELSET')) then
@@ -119,8 +138,12 @@ contains
       do while (i < ctx%ir_next - 1)
         i = i + 1
         call ctx_split(ctx, i, f, n)
-        ! a line ending with a comma before the element's nodes are complete continues on the next line
+        ! a line ending with a comma before the element's nodes are complete continues on the next line (Abaqus:
+        ! more than 15 nodes, C3D20); the empty field after that comma is not a node
         do while (n < nn + 1 .and. ctx_continued(ctx, i))
+          if (n > 0) then
+            if (len_trim(f(n)) == 0) n = n - 1
+          end if
           i = i + 1
           call ctx_split(ctx, i, g, m)
           f = [f(1:n), g(1:m)]

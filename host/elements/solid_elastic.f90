@@ -13,7 +13,8 @@ module solid_elastic
 
 contains
 
-  !> Isotropic elasticity matrix in Abaqus Voigt order (engineering shears): lambda, mu from E, nu.
+  !> Isotropic elasticity matrix in Abaqus Voigt order (engineering shears): lambda, mu from E, nu. NDI = 2 is
+  !> plane stress (Abaqus CPS elements: NDI = 2, NSHR = 1): E/(1 - nu^2) [1 nu; nu 1] and G, sigma33 = 0.
   pure subroutine elastic_isotropic_ddsdde(e, nu, ndi, nshr, ddsdde)
     real(dp), intent(in) :: e, nu            !< Young's modulus (MPa), Poisson's ratio
     integer, intent(in) :: ndi, nshr         !< direct and shear component counts
@@ -24,6 +25,7 @@ contains
     lam = e * nu / ((1 + nu) * (1 - 2 * nu))
     mu = e / (2 * (1 + nu))
     ddsdde = 0.0_dp
+    if (ndi == 2) lam = 2 * mu * lam / (lam + 2 * mu)   ! plane stress: lambda* = 2 mu lambda / (lambda + 2 mu)
     ddsdde(1:ndi, 1:ndi) = lam
     do i = 1, ndi
       ddsdde(i, i) = lam + 2 * mu

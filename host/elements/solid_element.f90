@@ -1,6 +1,10 @@
-!> Continuum elements C3D8 (8-node hexahedron, 2x2x2 Gauss) and CPE4 (4-node plane-strain quadrilateral, 2x2 Gauss)
-!> with the F-bar method of de Souza Neto, Peric, Dutko and Owen (1996, Int. J. Solids Struct. 33, 3277-3296),
-!> calling their material exactly as Abaqus/Standard calls a UMAT (../../../shared/CONVENTIONS.md).
+!> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the library in
+!> solid_shape.f90 (C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, CPE4/CPE4I/CPE4R/CPE8/CPE8R, CPS4/CPS4I/CPS4R/
+!> CPS8/CPS8R, CAX4/CAX8/CAX8R), calling their material exactly as Abaqus/Standard calls a UMAT
+!> (docs/conventions.md). Types differ only by data: shape functions, integration rule, and the switches
+!> F-bar (C3D8, CPE4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
+!> incompatible modes (condensed pseudo-nodes, element-level Newton), one point with Flanagan-Belytschko hourglass
+!> stiffness, plane stress (NTENS = 3) and axisymmetry (hoop strain u_r / r, totals over 2 pi). docs/elements.md.
 !>
 !> Kinematics at Gauss point p (updated Lagrange, NLGEOM):
 !>   F = dx/dX at t_n (F0, from u - du) and t_n+1 (F1, from u); J = det F; J_c = det F at the element centre.
@@ -8,8 +12,10 @@
 !>   Hughes-Winget mid-point increment: G = (Fbar1 - Fbar0) ((Fbar0 + Fbar1) / 2)^-1 = grad(du) w.r.t. x_mid,
 !>   DSTRAN = sym G (engineering shears), W = skw G, DROT = (I - W/2)^-1 (I + W/2).
 !>   STRESS and STRAN are rotated by DROT before the call; DFGRD0 = Fbar0, DFGRD1 = Fbar1.
-!> Without NLGEOM: DSTRAN = sym of grad(du) w.r.t. X with its trace replaced by the centre value (B-bar, the small
-!>   strain limit of F-bar), DROT = I, f_int and K on the reference configuration.
+!> Without NLGEOM: DSTRAN = sym of grad(du) w.r.t. X with its trace replaced by the element's volume mean (B-bar of
+!>   Hughes 1980, the mean-dilatation small-strain counterpart of F-bar), DROT = I, f_int and K on the reference
+!>   configuration with the B-bar virtual strain as well: f = int Bbar^T sigma dV, K = int Bbar^T DDSDDE Bbar dV,
+!>   symmetric for a symmetric DDSDDE (one Newton correction for a linear elastic problem with the symmetric solve).
 !> Local orientation (*ORIENTATION on the section; optional argument orient = T0, local axes as columns): the
 !>   material sees STRESS, STRAN, DSTRAN, DDSDDE, DFGRD0/1 in the local axes T = R T0, R the rotation of the polar
 !>   decomposition Fbar = R U (T = T0 without NLGEOM), as Abaqus/Standard does for continuum elements (it passes
@@ -25,7 +31,8 @@
 !>   K_(a i)(b k) = int [ dN_a/dx_j A_ijkl dN_b/dx_l + dN_a/dx_j q_ij (dN_b/dx_k|centre - dN_b/dx_k) ] dv
 !> The derivation (linearisation of J sigma(Fbar) with d(Fbar) Fbar^-1 = dL + (1/m)(tr dL_c - tr dL) I) is in
 !> docs/elements.md; it is exact when DDSDDE is the exact Jaumann tangent of a stress that depends on DFGRD1 only.
-!> Without NLGEOM the same formulas hold with x = X, sigma-terms dropped (A = DDSDDE, q = (1/m) sum_a A_ijaa).
+!> Without NLGEOM the same formulas hold with x = X, sigma-terms dropped (A = DDSDDE, q = (1/m) sum_a A_ijaa), the
+!> mean instead of the centre derivatives, and the row term K_(a i)(b k) += (1/m) bc_ai sum_n t_nn of Bbar^T.
 !> DDSDDE is symmetrised first unless the material is a UMAT with UNSYMM (Abaqus semantics). k_e itself is NOT
 !> symmetrised: the F-bar term (and under NLGEOM the Jaumann/geometric terms) make it unsymmetric, and a
 !> symmetrised k_e would cost the quadratic convergence of Newton (it is symmetric for a homogeneous state only).
@@ -33,22 +40,30 @@ module solid_element
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
-  use solid_shape, only: solid_shape_eval, solid_gauss_point, SHAPE_C3D8, SHAPE_CPE4
+  use solid_shape, only: solid_type_t, solid_types, solid_type_index, solid_shape_eval, solid_gauss_point, &
+    solid_parent_centre, solid_hourglass_base
   use solid_elastic, only: elastic_update, elastic_check
   use solid_tangent_kernel, only: k_point_c3d8
   implicit none
   private
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
-  public :: solid_geometry_t, solid_element_geometry
+  public :: solid_geometry_t, solid_element_geometry, polar_rotation
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
-  public :: polar_rotation
 
   integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
   integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer
   real(dp), parameter :: SOLID_PNEWDT_LARGE = 1.0e36_dp  !< PNEWDT handed to each UMAT call ("a large value")
-  integer, parameter :: maxnode = 8, maxip = 8
+  !> nodes (plus incompatible-mode pseudo-nodes) and integration points at most
+  integer, parameter :: maxnode = 20, maxip = 27
+  integer, parameter :: maxalpha = 9             !< incompatible-mode parameters at most (3 modes x 3 components)
+  !> hourglass stiffness factor c of the one-point elements: k = c G V sum_(a,j) (dN_a/dX_j)^2 per hourglass
+  !> mode and direction (Flanagan-Belytschko stiffness form; c = 1 is 0.56 of the exact bending stiffness of a
+  !> cube's xi-eta mode at nu = 0, docs/elements.md)
+  real(dp), parameter :: hourglass_factor = 1.0_dp
   !> Voigt position of tensor component (i,j), order 11,22,33,12,13,23 (CPE4 uses only i,j <= 2: 11,22,12)
   integer, parameter :: vidx(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
+  !> the same for plane stress (NTENS = 3: 11,22,12; no 33 entry, never addressed in 2D)
+  integer, parameter :: vidx_ps(3, 3) = reshape([1, 3, 0, 3, 2, 0, 0, 0, 0], [3, 3])
 
   !> Material (and section) data of an element set.
   type :: solid_material_t
@@ -65,81 +80,166 @@ module solid_element
   end type solid_material_t
 
   !> Reference-configuration data of one element, the same on every call (original coordinates): shape functions,
-  !> dN/dX and Gauss weight x det(dX/dxi) at the integration points, dN/dX at the centre. A host may compute it once
-  !> per element (solid_element_geometry) and pass it to solid_element_compute instead of the per-call recomputation.
+  !> dN/dX and Gauss weight x det(dX/dxi) at the integration points, dN/dX at the centre and its volume mean. Rows
+  !> nnode+1..nnode+nmode of dndx_ref are the incompatible modes' reference gradients (C3D8I, CPE4I). Sized to the
+  !> element. A host may compute it once per element (solid_element_geometry) and pass it to solid_element_compute
+  !> instead of the per-call recomputation.
   type :: solid_geometry_t
-    logical :: valid = .false.                          !< computed, every reference Jacobian > 0
-    ! (no default values: a local copy per element call stays a plain copy; solid_element_geometry sets them all)
-    real(dp) :: nfun(maxnode, maxip)           !< N_a at the integration points
-    real(dp) :: dndx_ref(maxnode, 3, maxip)    !< dN_a/dX_j at the integration points
-    real(dp) :: wdet(maxip)                    !< Gauss weight x det(dX/dxi)
-    real(dp) :: dndx_0c(maxnode, 3)            !< dN_a/dX_j at the element centre
+    logical :: valid = .false.                 !< computed, every reference Jacobian > 0
+    real(dp), allocatable :: nfun(:, :)        !< (nnode+nmode, nip) N_a at the integration points (0 for modes)
+    real(dp), allocatable :: dndx_ref(:, :, :) !< (nnode+nmode, 3, nip) dN_a/dX_j at the integration points
+    real(dp), allocatable :: wdet(:)           !< (nip) Gauss weight x det(dX/dxi)
+    real(dp), allocatable :: dndx_0c(:, :)     !< (nnode+nmode, 3) dN_a/dX_j at the element centre
+    real(dp), allocatable :: dndx_0m(:, :)     !< (nnode+nmode, 3) volume mean of dN_a/dX_j (B-bar, small strain)
+    real(dp), allocatable :: gamma(:, :)       !< (nnode, nhg) Flanagan-Belytschko hourglass vectors (one-point types)
+    real(dp), allocatable :: hoop(:, :)        !< (nnode+nmode, nip) N_a / R at the points (axisymmetric types)
+    integer :: nhg = 0                         !< hourglass vectors (0: none)
+    real(dp) :: hg_vsum = 0.0_dp               !< reference volume x sum_(a,j) (dN_a/dX_j)^2 at the point
   end type solid_geometry_t
 
 contains
 
-  !> Sizes of an element type: nodes, spatial dimensions, integration points, stress components.
-  !> Unknown etype: every output 0.
-  pure subroutine solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
-    character(len=*), intent(in) :: etype  !< 'C3D8' or 'CPE4' (case-insensitive)
+  !> Sizes of an element type: nodes, spatial dimensions, integration points, stress components, and the rows of
+  !> the STATEV array per point the element keeps for itself after the material's NSTATV (nextra: incompatible
+  !> modes). Unknown etype: every output 0.
+  pure subroutine solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr, nextra)
+    character(len=*), intent(in) :: etype  !< Abaqus element name, e.g. 'C3D8', 'C3D20R', 'cpe4' (case-insensitive)
     integer, intent(out) :: nnode          !< nodes per element
     integer, intent(out) :: ndim           !< coordinates and displacement dofs per node
     integer, intent(out) :: nip            !< integration points
     integer, intent(out) :: ntens          !< stress components (ndi + nshr)
     integer, intent(out) :: ndi            !< direct stress components
     integer, intent(out) :: nshr           !< shear stress components
-
-    select case (shape_of(etype))
-    case (SHAPE_C3D8)
-      nnode = 8; ndim = 3; nip = 8; ntens = 6; ndi = 3; nshr = 3
-    case (SHAPE_CPE4)
-      nnode = 4; ndim = 2; nip = 4; ntens = 4; ndi = 3; nshr = 1
-    case default
-      nnode = 0; ndim = 0; nip = 0; ntens = 0; ndi = 0; nshr = 0
-    end select
+    integer, intent(out), optional :: nextra  !< STATEV rows per point after NSTATV used by the element itself
+    integer :: it
+    it = solid_type_index(etype)
+    nnode = 0; ndim = 0; nip = 0; ntens = 0; ndi = 0; nshr = 0
+    if (present(nextra)) nextra = 0
+    if (it == 0) return
+    associate (tp => solid_types(it))
+      nnode = tp%nnode; ndim = tp%ndim; nip = tp%nip; ndi = tp%ndi; nshr = tp%nshr; ntens = ndi + nshr
+      if (present(nextra)) then
+        nextra = (tp%ndim * tp%nmode + tp%nip - 1) / tp%nip
+        if (tp%hourglass) nextra = max(nextra, 1)   ! the hourglass shear modulus, fixed at the first increment
+      end if
+    end associate
   end subroutine solid_element_info
 
   !> Reference-configuration data of an element (solid_geometry_t); geo%valid = .false. for an unknown type, sizes
   !> that do not match it, or a reference Jacobian <= 0 (solid_element_compute then reports the element itself).
+  !> Incompatible modes M_m = 1 - xi_m^2 (Wilson, Taylor; with Taylor, Beresford and Wilson's correction so that the
+  !> patch test is passed): G_m = (j0 / j) dM_m/dxi J0^-1, j0 and J0 at the centre, so that int G_m dV = 0.
   subroutine solid_element_geometry(etype, coords0, geo)
-    character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
+    character(len=*), intent(in) :: etype             !< element type name
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     type(solid_geometry_t), intent(out) :: geo        !< reference data
-    integer :: shape, nnode, ndim, nip, ntens, ndi, nshr, ip
-    real(dp) :: xi(3), w, detj, nc(maxnode)
-    geo%nfun = 0.0_dp
-    geo%dndx_ref = 0.0_dp
-    geo%wdet = 0.0_dp
-    geo%dndx_0c = 0.0_dp
-    shape = shape_of(etype)
-    call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
-    if (nnode == 0) return
-    if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode) return
-    xi = 0.0_dp
-    call solid_reference_derivatives(shape, nnode, ndim, coords0, xi, nc, geo%dndx_0c, detj)
-    if (.not. (detj > 0.0_dp)) return
-    do ip = 1, nip
-      call solid_gauss_point(shape, ip, xi, w)
-      call solid_reference_derivatives(shape, nnode, ndim, coords0, xi, geo%nfun(:, ip), geo%dndx_ref(:, :, ip), detj)
-      if (.not. (detj > 0.0_dp)) return
-      geo%wdet(ip) = w * detj
-    end do
+    integer :: it, nnode, ndim, nip, nne, ip, m
+    real(dp) :: xi(3), w, detj, det0, nc(maxnode), j0inv(3, 3), jinv(3, 3)
+    it = solid_type_index(etype)
+    if (it == 0) return
+    associate (tp => solid_types(it))
+      nnode = tp%nnode
+      ndim = tp%ndim
+      nip = tp%nip
+      nne = nnode + tp%nmode
+      allocate (geo%nfun(nne, nip), geo%dndx_ref(nne, 3, nip), geo%wdet(nip), geo%dndx_0c(nne, 3), &
+        geo%dndx_0m(nne, 3))
+      geo%nfun = 0.0_dp
+      geo%dndx_ref = 0.0_dp
+      geo%wdet = 0.0_dp
+      geo%dndx_0c = 0.0_dp
+      geo%dndx_0m = 0.0_dp
+      if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode) return
+      xi = solid_parent_centre(tp%family)
+      call solid_reference_derivatives(tp%family, nnode, ndim, coords0, xi, nc, geo%dndx_0c(1:nnode, :), det0, j0inv)
+      if (.not. (det0 > 0.0_dp)) return
+      do ip = 1, nip
+        call solid_gauss_point(tp%rule, ndim, ip, xi, w)
+        call solid_reference_derivatives(tp%family, nnode, ndim, coords0, xi, geo%nfun(1:nnode, ip), &
+          geo%dndx_ref(1:nnode, :, ip), detj, jinv)
+        if (.not. (detj > 0.0_dp)) return
+        geo%wdet(ip) = w * detj
+        do m = 1, tp%nmode
+          geo%dndx_ref(nnode + m, 1:ndim, ip) = (det0 / detj) * (-2.0_dp * xi(m)) * j0inv(m, 1:ndim)
+        end do
+        geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
+      end do
+      if (tp%axisym) then
+        ! axisymmetric: wdet becomes the reference volume weight 2 pi R x (Gauss weight x det), so that volumes,
+        ! forces and energies are totals around the circumference (Abaqus); hoop operator N_a / R
+        allocate (geo%hoop(nne, nip))
+        geo%hoop = 0.0_dp
+        do ip = 1, nip
+          w = dot_product(geo%nfun(1:nnode, ip), coords0(1, :))
+          if (.not. (w > 0.0_dp)) return
+          geo%hoop(1:nnode, ip) = geo%nfun(1:nnode, ip) / w
+          geo%wdet(ip) = 2 * acos(-1.0_dp) * w * geo%wdet(ip)
+        end do
+        geo%dndx_0m = 0.0_dp
+        do ip = 1, nip
+          geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
+        end do
+      end if
+      geo%dndx_0m = geo%dndx_0m / sum(geo%wdet)
+      if (tp%hourglass) then
+        ! the one point's gradient operator is the element mean (Flanagan-Belytschko's uniform gradient,
+        ! integrated with the 2x2(x2) rule, exact), and its weight the element volume: the centre derivatives
+        ! alone fail the patch test of a distorted hexahedron
+        block
+          real(dp) :: nq(maxnode), dq(maxnode, 3), vq, wq, xq(3)
+          integer :: iq
+          geo%dndx_ref(:, :, 1) = 0.0_dp
+          vq = 0.0_dp
+          do iq = 1, 2**ndim
+            call solid_gauss_point(2, ndim, iq, xq, wq)
+            call solid_reference_derivatives(tp%family, nnode, ndim, coords0, xq, nq(1:nnode), dq(1:nnode, :), detj, &
+              jinv)
+            if (.not. (detj > 0.0_dp)) return
+            geo%dndx_ref(1:nnode, :, 1) = geo%dndx_ref(1:nnode, :, 1) + wq * detj * dq(1:nnode, :)
+            vq = vq + wq * detj
+          end do
+          geo%dndx_ref(:, :, 1) = geo%dndx_ref(:, :, 1) / vq
+          geo%wdet(1) = vq
+          geo%dndx_0m = geo%dndx_ref(:, :, 1)
+        end block
+        ! Flanagan-Belytschko (1981): gamma_m = (h_m - sum_j (h_m . X_j) b_j) / nnode with b_j = dN/dX_j at the
+        ! single (centre) point, orthogonal to every linear field (gamma_m . X_j = 0): no hourglass force in a
+        ! homogeneous deformation or a rigid motion of any size
+        block
+          real(dp) :: h(8, 4)
+          integer :: j
+          call solid_hourglass_base(tp%family, h, geo%nhg)
+          allocate (geo%gamma(nnode, geo%nhg))
+          do m = 1, geo%nhg
+            geo%gamma(:, m) = h(1:nnode, m)
+            do j = 1, ndim
+              geo%gamma(:, m) = geo%gamma(:, m) - dot_product(h(1:nnode, m), coords0(j, :)) * &
+                geo%dndx_ref(1:nnode, j, 1)
+            end do
+            geo%gamma(:, m) = geo%gamma(:, m) / nnode
+          end do
+          geo%hg_vsum = geo%wdet(1) * sum(geo%dndx_ref(1:nnode, 1:ndim, 1)**2)
+        end block
+      end if
+    end associate
     geo%valid = .true.
   end subroutine solid_element_geometry
 
-  !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi) (dndx = 0 if <= 0).
-  pure subroutine solid_reference_derivatives(shape, nnode, ndim, coords0, xi, n_p, dndx_p, detj)
-    integer, intent(in) :: shape, nnode, ndim
+  !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi), jinv its inverse
+  !> (dndx = 0 if detj <= 0).
+  pure subroutine solid_reference_derivatives(family, nnode, ndim, coords0, xi, n_p, dndx_p, detj, jinv)
+    integer, intent(in) :: family, nnode, ndim
     real(dp), intent(in) :: coords0(:, :), xi(3)
-    real(dp), intent(out) :: n_p(maxnode), dndx_p(maxnode, 3), detj
-    real(dp) :: dndxi(maxnode, 3), jac(3, 3), jinv(3, 3)
+    real(dp), intent(out) :: n_p(:), dndx_p(:, :), detj, jinv(3, 3)
+    real(dp) :: dndxi(maxnode, 3), jac(3, 3)
     dndxi = 0.0_dp
     n_p = 0.0_dp
-    call solid_shape_eval(shape, xi(1:ndim), n_p(1:nnode), dndxi(1:nnode, 1:ndim))
+    call solid_shape_eval(family, xi(1:ndim), n_p(1:nnode), dndxi(1:nnode, 1:ndim))
     jac = identity()
     jac(1:ndim, 1:ndim) = matmul(coords0(1:ndim, 1:nnode), dndxi(1:nnode, 1:ndim))
     detj = det3(jac)
     dndx_p = 0.0_dp
+    jinv = 0.0_dp
     if (detj > 0.0_dp) then
       jinv = inv3(jac)
       dndx_p(1:nnode, 1:ndim) = matmul(dndxi(1:nnode, 1:ndim), jinv(1:ndim, 1:ndim))
@@ -151,15 +251,16 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, orient)
-    character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient)
+    character(len=*), intent(in) :: etype             !< element type name (solid_shape: solid_types)
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
     real(dp), intent(in) :: du(:)                     !< (ndim*nnode) increment since the last converged state
     type(solid_material_t), intent(in) :: mat         !< material and section
     real(dp), intent(in) :: stress_old(:, :)          !< (ntens, nip) converged Cauchy stress
     real(dp), intent(in) :: stran_old(:, :)           !< (ntens, nip) converged strain (engineering shears)
-    real(dp), intent(in) :: statev_old(:, :)          !< (>= nstatv, nip) converged state variables
+    !> (>= nstatv + nextra, nip) converged state variables; rows nstatv+1.. hold the element's own (solid_element_info)
+    real(dp), intent(in) :: statev_old(:, :)
     real(dp), intent(in) :: time(2)                   !< step time and total time at the start of the increment
     real(dp), intent(in) :: dtime                     !< time increment
     integer, intent(in) :: kstep                      !< step number
@@ -171,7 +272,7 @@ contains
     real(dp), intent(out) :: k_e(:, :)                !< (ndim*nnode)^2 tangent d f_int / d u (unsymmetric)
     real(dp), intent(out) :: stress_new(:, :)         !< (ntens, nip) Cauchy stress at the end of the increment
     real(dp), intent(out) :: stran_new(:, :)          !< (ntens, nip) rotated old strain + DSTRAN
-    real(dp), intent(out) :: statev_new(:, :)         !< (>= nstatv, nip) state variables from the material
+    real(dp), intent(out) :: statev_new(:, :)         !< (>= nstatv + nextra, nip) state variables
     real(dp), intent(out) :: energy(2)                !< element integrals of SSE and SPD (N mm)
     real(dp), intent(inout) :: pnewdt                 !< min over points of the materials' PNEWDT (unchanged if none)
     integer, intent(out) :: stat                      !< 0 ok; 1 inverted element; 2 bad input; 3 non-finite material
@@ -182,22 +283,22 @@ contains
     type(solid_geometry_t), intent(in), optional, target :: geo
     real(dp), intent(in), optional :: temp_nodes(:)   !< (nnode) nodal temperatures at the start of the increment
     real(dp), intent(in), optional :: dtemp_nodes(:)  !< (nnode) their increments (TEMP, DTEMP interpolated to points)
+    !> hourglass energy of a one-point element (included in energy(1); Abaqus reports it apart, as ALLAE)
+    real(dp), intent(out), optional :: energy_hg
     real(dp), intent(in), optional :: orient(:, :, :) !< (3, 3, nip) local material axes T0 (columns) per point
-    real(dp) :: temp_ip, dtemp_ip, tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3)
-    real(dp) :: s_unit(6), col_g(6, 6)
-    logical :: local
 
-    integer :: nnode, ndim, nip, ntens, ndi, nshr, ndof, nsv, np
-    integer :: a, b, i, k, ip, r, c, jstep(4)
+    integer, parameter :: max_local_iter = 30      ! element-level Newton on the incompatible modes
+    integer :: it, nnode, nne, ndim, nip, ntens, ndi, nshr, nextra, ndof, ndofe, nalpha, nsv, np
+    integer :: a, b, i, k, r, c, jstep(4), iter
+    logical :: fbar, last
     real(dp) :: xref(3, maxnode), un(3, maxnode), u1(3, maxnode), dun(3, maxnode)
     type(solid_geometry_t), target :: gl          ! reference data computed here when the host has none
     type(solid_geometry_t), pointer :: gp         ! the reference data in use (no per-call copy of the host's)
-    real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), dndx_c(maxnode, 3)
-    real(dp) :: fc0(3, 3), fc1(3, 3), jc0, jc1, j0, j1, vol, celent
-    real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3), eye(3, 3)
-    real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), finv(3, 3), dv, gc(3, 3), trc, trg, m
-    real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
-    real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), bc(maxnode, 3), t(3, 3), kl(maxnode, 3, 3, maxnode)
+    real(dp) :: fc0(3, 3), fc1(3, 3), jc0, jc1, celent, eye(3, 3), m, finv(3, 3), dndx_c(maxnode, 3)
+    real(dp) :: fe(3 * maxnode), ke(3 * maxnode, 3 * maxnode), kl(maxnode, 3, 3, maxnode)
+    real(dp) :: alpha_n(maxalpha), alpha(maxalpha), dalpha(maxalpha), kaa(maxalpha, maxalpha)
+    real(dp) :: rhs(maxalpha, 3 * maxnode + 1), scale, g_shear, ghg, khg, qhg(3)
+    integer :: mh
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
     character(len=*), parameter :: here = 'solid_element_compute: '
@@ -206,22 +307,29 @@ contains
     errmsg = ''
     f_int = 0.0_dp
     energy = 0.0_dp
-    call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr)
+    if (present(energy_hg)) energy_hg = 0.0_dp
+    g_shear = 0.0_dp
+    it = solid_type_index(etype)
+    call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr, nextra)
     ndof = ndim * nnode
     nsv = mat%nstatv
     np = nprops_of(mat)
 
     ! ---- argument checks (bad input: stat = 2)
-    if (nnode == 0) then
+    if (it == 0) then
       call fail(2, here // 'unknown element type "' // trim(etype) // '"')
       return
     end if
+    nne = nnode + solid_types(it)%nmode
+    ndofe = ndim * nne
+    nalpha = ndofe - ndof
+    fbar = solid_types(it)%fbar
     if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
         size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
         size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
         size(stran_old, 2) /= nip .or. size(stress_new, 1) /= ntens .or. size(stress_new, 2) /= nip .or. &
-        size(stran_new, 1) /= ntens .or. size(stran_new, 2) /= nip .or. size(statev_old, 1) < nsv .or. &
-        size(statev_old, 2) /= nip .or. size(statev_new, 1) < nsv .or. size(statev_new, 2) /= nip) then
+        size(stran_new, 1) /= ntens .or. size(stran_new, 2) /= nip .or. size(statev_old, 1) < nsv + nextra .or. &
+        size(statev_old, 2) /= nip .or. size(statev_new, 1) < nsv + nextra .or. size(statev_new, 2) /= nip) then
       call fail(2, here // 'array sizes do not match element type ' // trim(etype))
       return
     end if
@@ -257,6 +365,11 @@ contains
       call fail(2, here // 'section thickness must be > 0')
       return
     end if
+    if (solid_types(it)%pstress .and. nlgeom) then
+      call fail(2, here // 'plane stress element ' // trim(etype) // ' under NLGEOM is not supported (the ' // &
+        'thickness change is not implemented): use NLGEOM=NO, or CPE/C3D elements (docs/elements.md)')
+      return
+    end if
 
     eye = identity()
     m = real(ndim, dp)
@@ -270,6 +383,11 @@ contains
       dun(1:ndim, a) = du(ndim * (a - 1) + 1:ndim * a)
       un(1:ndim, a) = u1(1:ndim, a) - dun(1:ndim, a)
     end do
+    ! incompatible-mode parameters of the last converged state, kept after NSTATV in the STATEV rows
+    alpha_n = 0.0_dp
+    do k = 1, nalpha
+      alpha_n(k) = statev_old(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1)
+    end do
 
     ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
     gp => gl
@@ -279,7 +397,7 @@ contains
     if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
     if (.not. gp%valid) then
       call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
-                'integration point)')
+                'integration point, or radius <= 0 at a point of an axisymmetric element)')
       return
     end if
 
@@ -292,233 +410,395 @@ contains
       call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at the centre)')
       return
     end if
-    if (nlgeom) then
-      finv = inv3(fc1)
-      dndx_c = 0.0_dp
-      dndx_c(1:nnode, 1:ndim) = matmul(gp%dndx_0c(1:nnode, 1:ndim), finv(1:ndim, 1:ndim))
-    else
-      dndx_c = gp%dndx_0c
-    end if
-
-    ! ---- first pass: kinematics at the integration points, checks, volume for CELENT
-    vol = 0.0_dp
-    do ip = 1, nip
-      fg0(:, :, ip) = def_grad(un, gp%dndx_ref(:, :, ip))
-      fg1(:, :, ip) = def_grad(u1, gp%dndx_ref(:, :, ip))
-      j0 = det3(fg0(:, :, ip))
-      j1 = det3(fg1(:, :, ip))
-      if (.not. (j0 > 0.0_dp .and. j1 > 0.0_dp)) then
-        call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')')
-        return
+    dndx_c = 0.0_dp
+    if (fbar) then
+      if (nlgeom) then
+        finv = inv3(fc1)
+        dndx_c(1:nne, 1:ndim) = matmul(gp%dndx_0c(1:nne, 1:ndim), finv(1:ndim, 1:ndim))
+      else
+        dndx_c(1:nne, :) = gp%dndx_0m
       end if
-      vol = vol + gp%wdet(ip) * merge(j1, 1.0_dp, nlgeom)
-    end do
-    celent = vol**(1.0_dp / m)
+    end if
 
     jstep = [kstep, 1, merge(1, 0, nlgeom), 0]
     cmname = mat%cmname
     if (np > 0) pr(1:np) = mat%props
 
-    ! ---- second pass: material calls, internal force, tangent
-    if (want_k) kl = 0.0_dp
-    do ip = 1, nip
-      j0 = det3(fg0(:, :, ip))
-      j1 = det3(fg1(:, :, ip))
-      fb0 = fg0(:, :, ip)
-      fb1 = fg1(:, :, ip)
-      fb0(1:ndim, 1:ndim) = (jc0 / j0)**(1.0_dp / m) * fb0(1:ndim, 1:ndim)
-      fb1(1:ndim, 1:ndim) = (jc1 / j1)**(1.0_dp / m) * fb1(1:ndim, 1:ndim)
-
-      if (nlgeom) then
-        ! Hughes-Winget: G = grad(du) w.r.t. x_mid, with the F-bar modified gradients
-        fm = 0.5_dp * (fb0 + fb1)
-        if (.not. (det3(fm) > 0.0_dp)) then
-          call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
-                    // itoa(ip) // ')')
-          return
-        end if
-        g = matmul(fb1 - fb0, inv3(fm))
-        ! DROT = (I - W/2)^-1 (I + W/2), W = (G - G^T)/2 (Hughes-Winget), in closed form: with A = W/2 (skew,
-        ! axial vector a), A^3 = -|a|^2 A gives (I - A)^-1 = I + (A + A^2)/(1 + |a|^2),
-        ! so DROT = I + 2 (A + A^2)/(1 + |a|^2)
-        wsk = 0.25_dp * (g - transpose(g))
-        drot = eye + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
-      else
-        ! small strain: grad(du) w.r.t. X with the centre dilatation (B-bar)
-        g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
-        gc = def_grad(dun, gp%dndx_0c) - eye
-        trg = 0.0_dp
-        trc = 0.0_dp
-        do i = 1, ndim
-          trg = trg + g(i, i)
-          trc = trc + gc(i, i)
-        end do
-        do i = 1, ndim
-          g(i, i) = g(i, i) + (trc - trg) / m
-        end do
-        drot = eye
-      end if
-      call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
-
-      local = present(orient)
-      drot_m = drot
-      fl0 = fb0
-      fl1 = fb1
-      if (local) then
-        ! local axes at the start and end of the increment; the material gets every tensor in their components
-        tn = orient(:, :, ip)
-        t1 = orient(:, :, ip)
-        if (nlgeom) then
-          tn = matmul(polar_rotation(fb0), tn)
-          t1 = matmul(polar_rotation(fb1), t1)
-        end if
-        call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
-        call tensor_to_voigt(matmul(matmul(transpose(tn), sig), tn), ntens, stress, 1.0_dp)
-        call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
-        call tensor_to_voigt(matmul(matmul(transpose(tn), eps), tn), ntens, stran, 2.0_dp)
-        call voigt_to_tensor(dstran, ntens, eps, 0.5_dp)
-        call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, dstran, 2.0_dp)
-        drot_m = matmul(transpose(tn), t1)
-        fl0 = matmul(matmul(transpose(tn), fb0), orient(:, :, ip))
-        fl1 = matmul(matmul(transpose(t1), fb1), orient(:, :, ip))
-      else
-        ! rotate the converged stress and strain by DROT (identity without NLGEOM)
-        call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
-        sig = matmul(matmul(drot, sig), transpose(drot))
-        call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
-        call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
-        eps = matmul(matmul(drot, eps), transpose(drot))
-        call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
-      end if
-
-      sse = 0.0_dp
-      spd = 0.0_dp
-      scd = 0.0_dp
-      if (present(energy_ip_old)) then
-        sse = energy_ip_old(1, ip)
-        spd = energy_ip_old(2, ip)
-        scd = energy_ip_old(3, ip)
-      end if
-      ! temperature at the point (TEMP, DTEMP of the UMAT); *EXPANSION: mechanical strain increment = total -
-      ! alpha dT on the direct components (Abaqus subtracts the thermal strain before the material is called)
-      temp_ip = 0.0_dp
-      dtemp_ip = 0.0_dp
-      if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
-      if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
-      if (mat%alpha /= 0.0_dp) dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
-      ddsdde = 0.0_dp
-      pn = SOLID_PNEWDT_LARGE
-      select case (mat%kind)
-      case (SOLID_MAT_ELASTIC)
-        call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), sse)
-      case default
-        sv = 0.0_dp
-        if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
-        do i = 1, 3
-          ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
-          coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
-        end do
-        call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-          ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
-        statev_new(1:nsv, ip) = sv(1:nsv)
-      end select
-      pnewdt = min(pnewdt, pn)
-      if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
-        call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
-                  // itoa(ip))
-        return
-      end if
-      if (local) then
-        ! back to global components: stress, strain and the tangent (column by column of unit global strains)
-        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
-        call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, stress, 1.0_dp)
-        call voigt_to_tensor(stran(1:ntens), ntens, eps, 0.5_dp)
-        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, stran, 2.0_dp)
-        call voigt_to_tensor(dstran(1:ntens), ntens, eps, 0.5_dp)
-        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, dstran, 2.0_dp)
-        do c = 1, ntens
-          s_unit = 0.0_dp
-          s_unit(c) = 1.0_dp
-          call voigt_to_tensor(s_unit(1:ntens), ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, s_unit, 2.0_dp)
-          s_unit(1:ntens) = matmul(ddsdde(1:ntens, 1:ntens), s_unit(1:ntens))
-          call voigt_to_tensor(s_unit(1:ntens), ntens, sig, 1.0_dp)
-          call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, s_unit, 1.0_dp)
-          col_g(1:ntens, c) = s_unit(1:ntens)
-        end do
-        ddsdde(1:ntens, 1:ntens) = col_g(1:ntens, 1:ntens)
-      end if
-      if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
-      if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
-      stress_new(:, ip) = stress(1:ntens)
-      stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
-      if (present(energy_ip_new)) then
-        energy_ip_new(:, ip) = 0.0_dp
-        energy_ip_new(1:3, ip) = [sse, spd, scd]
-      end if
-
-      ! spatial derivatives and volume element
-      dndx = 0.0_dp
-      if (nlgeom) then
-        finv = inv3(fg1(:, :, ip))
-        dndx(1:nnode, 1:ndim) = matmul(gp%dndx_ref(1:nnode, 1:ndim, ip), finv(1:ndim, 1:ndim))
-        dv = gp%wdet(ip) * j1 * mat%thickness
-      else
-        dndx(1:nnode, 1:ndim) = gp%dndx_ref(1:nnode, 1:ndim, ip)
-        dv = gp%wdet(ip) * mat%thickness
-      end if
-      energy = energy + [sse, spd] * dv
-
-      call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
-      ! bc(b, k) = dN_b/dx_k at the centre minus at the point: the F-bar (B-bar) dilatation operator
-      bc(1:nnode, 1:ndim) = dndx_c(1:nnode, 1:ndim) - dndx(1:nnode, 1:ndim)
-      do a = 1, nnode
-        do i = 1, ndim
-          r = ndim * (a - 1) + i
-          f_int(r) = f_int(r) + dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) * dv
-        end do
-      end do
-
-      if (want_k) then
-        if (.not. (mat%kind == SOLID_MAT_UMAT .and. mat%unsymm)) then
-          ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
-          ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
-        end if
-        call spatial_tangent(ddsdde, sig, ndim, nlgeom, a4, q)
-        ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then K_(a i)(b k) += sum_j dN_a/dx_j t_ij
-        ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
-        ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve CPE4; kl is a contiguous local)
-        if (ndim == 3 .and. nnode == 8) then
-          call k_point_c3d8(a4, q, dndx, bc, dv, kl)
+    if (nalpha == 0) then
+      call element_pass(want_k)
+      if (stat /= 0) return
+      f_int = fe(1:ndof)
+      if (want_k) k_e = ke(1:ndof, 1:ndof)
+      if (solid_types(it)%hourglass) then
+        ! ---- hourglass stiffness (Flanagan-Belytschko stiffness form on the total displacement, reference
+        ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
+        ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
+        ! (STATEV row nstatv+1) so that k is constant and the tangent consistent after the first increment.
+        if (mat%kind == SOLID_MAT_ELASTIC) then
+          ghg = mat%e / (2 * (1 + mat%nu))
         else
-          do b = 1, nnode
-            do k = 1, ndim
-              t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
-                   + a4(:, :, k, 3) * dndx(b, 3)) * dv
-              do i = 1, ndim
-                kl(1:nnode, i, k, b) = kl(1:nnode, i, k, b) + t(i, 1) * dndx(1:nnode, 1) &
-                                       + t(i, 2) * dndx(1:nnode, 2) + t(i, 3) * dndx(1:nnode, 3)
-              end do
-            end do
-          end do
+          ghg = statev_old(nsv + 1, 1)
+          if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
         end if
-      end if
-    end do
-    if (want_k) then
-      do b = 1, nnode
-        do k = 1, ndim
-          c = ndim * (b - 1) + k
+        statev_new(nsv + 1, 1) = ghg
+        khg = hourglass_factor * ghg * gp%hg_vsum * mat%thickness
+        do mh = 1, gp%nhg
+          qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
           do a = 1, nnode
             r = ndim * (a - 1)
-            k_e(r + 1:r + ndim, c) = kl(a, 1:ndim, k, b)
+            f_int(r + 1:r + ndim) = f_int(r + 1:r + ndim) + khg * gp%gamma(a, mh) * qhg(1:ndim)
+            if (want_k) then
+              do b = 1, nnode
+                c = ndim * (b - 1)
+                do i = 1, ndim
+                  k_e(r + i, c + i) = k_e(r + i, c + i) + khg * gp%gamma(a, mh) * gp%gamma(b, mh)
+                end do
+              end do
+            end if
           end do
+          energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+          if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
         end do
-      end do
+      end if
     else
-      k_e = 0.0_dp
+      ! ---- incompatible modes: Newton on the internal parameters alpha (f_alpha = 0) from the converged alpha_n,
+      ! then static condensation f = f_u - K_ua K_aa^-1 f_a, K = K_uu - K_ua K_aa^-1 K_au (exact at f_a = 0, and
+      ! f_u - K_ua K_aa^-1 f_a corrects a residual f_a to first order)
+      alpha = alpha_n
+      last = .false.
+      do iter = 1, max_local_iter
+        do k = 1, nalpha
+          u1(k - 1 - ndim * ((k - 1) / ndim) + 1, nnode + 1 + (k - 1) / ndim) = alpha(k)
+          un(k - 1 - ndim * ((k - 1) / ndim) + 1, nnode + 1 + (k - 1) / ndim) = alpha_n(k)
+        end do
+        dun = u1 - un
+        call element_pass(.true.)
+        if (stat /= 0) return
+        ! scale of the terms that make up f_alpha: the element forces, and stiffness x (displacement or element
+        ! size): the round-off floor of f_alpha is about eps E L^2 whatever the deformation (current coordinates
+        ! of order L), so an element with f_u ~ 0 (a neutral axis, a tiny increment) still converges
+        scale = max(maxval(abs(fe(1:ndof))), maxval(abs(ke(ndof + 1:ndofe, 1:ndofe))) * &
+          max(maxval(abs(u1(:, 1:nne))), celent))
+        if (maxval(abs(fe(ndof + 1:ndofe))) <= 1.0e-11_dp * scale .or. last) exit
+        kaa(1:nalpha, 1:nalpha) = ke(ndof + 1:ndofe, ndof + 1:ndofe)
+        rhs(1:nalpha, 1) = -fe(ndof + 1:ndofe)
+        call dense_solve(kaa(1:nalpha, 1:nalpha), rhs(1:nalpha, 1:1), i)
+        if (i /= 0) then
+          call fail(3, 'element ' // itoa(noel) // ': singular incompatible-mode stiffness')
+          return
+        end if
+        dalpha(1:nalpha) = rhs(1:nalpha, 1)
+        alpha(1:nalpha) = alpha(1:nalpha) + dalpha(1:nalpha)
+        ! round-off floor: the correction no longer changes alpha; one more pass at it and stop
+        last = maxval(abs(dalpha(1:nalpha))) <= 1.0e-14_dp * max(maxval(abs(alpha(1:nalpha))), celent)
+        if (iter == max_local_iter) then
+          call fail(3, 'element ' // itoa(noel) // ': incompatible modes did not converge')
+          return
+        end if
+      end do
+      kaa(1:nalpha, 1:nalpha) = ke(ndof + 1:ndofe, ndof + 1:ndofe)
+      rhs(1:nalpha, 1) = fe(ndof + 1:ndofe)
+      rhs(1:nalpha, 2:ndof + 1) = ke(ndof + 1:ndofe, 1:ndof)
+      call dense_solve(kaa(1:nalpha, 1:nalpha), rhs(1:nalpha, 1:ndof + 1), i)
+      if (i /= 0) then
+        call fail(3, 'element ' // itoa(noel) // ': singular incompatible-mode stiffness')
+        return
+      end if
+      f_int = fe(1:ndof) - matmul(ke(1:ndof, ndof + 1:ndofe), rhs(1:nalpha, 1))
+      if (want_k) k_e = ke(1:ndof, 1:ndof) - matmul(ke(1:ndof, ndof + 1:ndofe), rhs(1:nalpha, 2:ndof + 1))
+      do k = 1, nalpha
+        statev_new(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1) = alpha(k)
+      end do
     end if
+    if (.not. want_k) k_e = 0.0_dp
 
   contains
+
+    !> One pass over the integration points at the current (u1, un) including the mode pseudo-nodes: material
+    !> calls, new point state, fe(1:ndofe) and (want) ke(1:ndofe, 1:ndofe).
+    subroutine element_pass(want)
+      logical, intent(in) :: want
+      integer :: ip
+      real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), j0, j1, vol, temp_ip, dtemp_ip
+      real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3)
+      real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), dv, gc(3, 3), trc, trg
+      real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
+      real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), bc(maxnode, 3), t(3, 3)
+      real(dp) :: bcr(maxnode, 3), trs
+      real(dp) :: kl8(8, 3, 3, 8)   ! C3D8: contiguous fixed-size accumulator of the vectorised kernel
+      real(dp) :: d8(8, 3), b8(8, 3), r8(8, 3)
+      real(dp) :: hc(maxnode), thk
+      real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3), s_unit(6), col_g(6, 6)
+      integer :: icol
+      logical :: k8, axi, local
+      axi = solid_types(it)%axisym
+      ! section thickness of plane elements; axisymmetric volumes are per 2 pi radians already (geometry)
+      thk = merge(1.0_dp, mat%thickness, axi)
+
+      fe = 0.0_dp
+      energy = 0.0_dp
+      ! ---- first pass: kinematics at the integration points, checks, volume for CELENT
+      vol = 0.0_dp
+      do ip = 1, nip
+        fg0(:, :, ip) = def_grad(un, gp%dndx_ref(:, :, ip))
+        fg1(:, :, ip) = def_grad(u1, gp%dndx_ref(:, :, ip))
+        if (axi) then
+          ! hoop stretch r / R = 1 + u_r / R
+          fg0(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), un(1, 1:nne))
+          fg1(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), u1(1, 1:nne))
+        end if
+        j0 = det3(fg0(:, :, ip))
+        j1 = det3(fg1(:, :, ip))
+        if (.not. (j0 > 0.0_dp .and. j1 > 0.0_dp)) then
+          call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')')
+          return
+        end if
+        if (axi) then
+          ! CELENT from the area of the (r, z) section: divide the volume weight by 2 pi R
+          vol = vol + gp%wdet(ip) * merge(j1 / fg1(3, 3, ip), 1.0_dp, nlgeom) / &
+            (2 * acos(-1.0_dp) * dot_product(gp%nfun(1:nnode, ip), xref(1, 1:nnode)))
+        else
+          vol = vol + gp%wdet(ip) * merge(j1, 1.0_dp, nlgeom)
+        end if
+      end do
+      celent = vol**(1.0_dp / m)
+
+      ! ---- second pass: material calls, internal force, tangent
+      k8 = ndim == 3 .and. nne == 8
+      if (want) then
+        if (k8) then
+          kl8 = 0.0_dp
+        else
+          kl(1:nne, :, :, 1:nne) = 0.0_dp
+        end if
+      end if
+      do ip = 1, nip
+        j0 = det3(fg0(:, :, ip))
+        j1 = det3(fg1(:, :, ip))
+        fb0 = fg0(:, :, ip)
+        fb1 = fg1(:, :, ip)
+        if (fbar) then
+          fb0(1:ndim, 1:ndim) = (jc0 / j0)**(1.0_dp / m) * fb0(1:ndim, 1:ndim)
+          fb1(1:ndim, 1:ndim) = (jc1 / j1)**(1.0_dp / m) * fb1(1:ndim, 1:ndim)
+        end if
+
+        if (nlgeom) then
+          ! Hughes-Winget: G = grad(du) w.r.t. x_mid, with the F-bar modified gradients
+          fm = 0.5_dp * (fb0 + fb1)
+          if (.not. (det3(fm) > 0.0_dp)) then
+            call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
+                      // itoa(ip) // ')')
+            return
+          end if
+          g = matmul(fb1 - fb0, inv3(fm))
+          ! DROT = (I - W/2)^-1 (I + W/2), W = (G - G^T)/2 (Hughes-Winget), in closed form: with A = W/2 (skew,
+          ! axial vector a), A^3 = -|a|^2 A gives (I - A)^-1 = I + (A + A^2)/(1 + |a|^2),
+          ! so DROT = I + 2 (A + A^2)/(1 + |a|^2)
+          wsk = 0.25_dp * (g - transpose(g))
+          drot = eye + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
+        else
+          ! small strain: grad(du) w.r.t. X, with the mean dilatation of the element for F-bar types (B-bar)
+          g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
+          if (axi) g(3, 3) = dot_product(gp%hoop(:, ip), dun(1, 1:nne))   ! hoop strain increment du_r / R
+          if (fbar) then
+            gc = def_grad(dun, gp%dndx_0m) - eye
+            trg = 0.0_dp
+            trc = 0.0_dp
+            do i = 1, ndim
+              trg = trg + g(i, i)
+              trc = trc + gc(i, i)
+            end do
+            do i = 1, ndim
+              g(i, i) = g(i, i) + (trc - trg) / m
+            end do
+          end if
+          drot = eye
+        end if
+        call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
+
+        local = present(orient)
+        drot_m = drot
+        fl0 = fb0
+        fl1 = fb1
+        if (local) then
+          ! local axes at the start and end of the increment; the material gets every tensor in their components
+          tn = orient(:, :, ip)
+          t1 = orient(:, :, ip)
+          if (nlgeom) then
+            tn = matmul(polar_rotation(fb0), tn)
+            t1 = matmul(polar_rotation(fb1), t1)
+          end if
+          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(tn), sig), tn), ntens, stress, 1.0_dp)
+          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(tn), eps), tn), ntens, stran, 2.0_dp)
+          call voigt_to_tensor(dstran, ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, dstran, 2.0_dp)
+          drot_m = matmul(transpose(tn), t1)
+          fl0 = matmul(matmul(transpose(tn), fb0), orient(:, :, ip))
+          fl1 = matmul(matmul(transpose(t1), fb1), orient(:, :, ip))
+        else
+          ! rotate the converged stress and strain by DROT (identity without NLGEOM)
+          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+          sig = matmul(matmul(drot, sig), transpose(drot))
+          call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
+          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+          eps = matmul(matmul(drot, eps), transpose(drot))
+          call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
+        end if
+
+        sse = 0.0_dp
+        spd = 0.0_dp
+        scd = 0.0_dp
+        if (present(energy_ip_old)) then
+          sse = energy_ip_old(1, ip)
+          spd = energy_ip_old(2, ip)
+          scd = energy_ip_old(3, ip)
+        end if
+        ! temperature at the point (TEMP, DTEMP of the UMAT); *EXPANSION: mechanical strain increment = total -
+        ! alpha dT on the direct components (Abaqus subtracts the thermal strain before the material is called)
+        temp_ip = 0.0_dp
+        dtemp_ip = 0.0_dp
+        if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
+        if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
+        if (mat%alpha /= 0.0_dp) dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
+        ddsdde = 0.0_dp
+        pn = SOLID_PNEWDT_LARGE
+        select case (mat%kind)
+        case (SOLID_MAT_ELASTIC)
+          call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), &
+            sse)
+        case default
+          sv = 0.0_dp
+          if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
+          do i = 1, 3
+            ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
+            coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
+          end do
+          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
+            ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
+          statev_new(1:nsv, ip) = sv(1:nsv)
+        end select
+        pnewdt = min(pnewdt, pn)
+        if (ip == 1) g_shear = sum([(ddsdde(k, k), k = ndi + 1, ntens)]) / nshr
+        if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
+          call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
+                    // itoa(ip))
+          return
+        end if
+        if (local) then
+          ! back to global components: stress, strain and the tangent (column by column of unit global strains)
+          call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+          call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, stress, 1.0_dp)
+          call voigt_to_tensor(stran(1:ntens), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, stran, 2.0_dp)
+          call voigt_to_tensor(dstran(1:ntens), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, dstran, 2.0_dp)
+          do icol = 1, ntens
+            s_unit = 0.0_dp
+            s_unit(icol) = 1.0_dp
+            call voigt_to_tensor(s_unit(1:ntens), ntens, eps, 0.5_dp)
+            call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, s_unit, 2.0_dp)
+            s_unit(1:ntens) = matmul(ddsdde(1:ntens, 1:ntens), s_unit(1:ntens))
+            call voigt_to_tensor(s_unit(1:ntens), ntens, sig, 1.0_dp)
+            call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, s_unit, 1.0_dp)
+            col_g(1:ntens, icol) = s_unit(1:ntens)
+          end do
+          ddsdde(1:ntens, 1:ntens) = col_g(1:ntens, 1:ntens)
+        end if
+        if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
+        if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
+        stress_new(:, ip) = stress(1:ntens)
+        stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
+        if (present(energy_ip_new)) then
+          energy_ip_new(:, ip) = 0.0_dp
+          energy_ip_new(1:3, ip) = [sse, spd, scd]
+        end if
+
+        ! spatial derivatives and volume element
+        dndx = 0.0_dp
+        hc = 0.0_dp
+        if (nlgeom) then
+          finv = inv3(fg1(:, :, ip))
+          dndx(1:nne, 1:ndim) = matmul(gp%dndx_ref(1:nne, 1:ndim, ip), finv(1:ndim, 1:ndim))
+          dv = gp%wdet(ip) * j1 * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip) / fg1(3, 3, ip)   ! N_a / r, current radius
+        else
+          dndx(1:nne, 1:ndim) = gp%dndx_ref(1:nne, 1:ndim, ip)
+          dv = gp%wdet(ip) * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip)
+        end if
+        energy = energy + [sse, spd] * dv
+
+        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+        ! bc(b, k) = dN_b/dx_k at the centre (mean without NLGEOM) minus at the point: the F-bar (B-bar)
+        ! dilatation operator (0 for the other element types)
+        bc = 0.0_dp
+        if (fbar) bc(1:nne, 1:ndim) = dndx_c(1:nne, 1:ndim) - dndx(1:nne, 1:ndim)
+        ! without NLGEOM the virtual strain is the B-bar one too (f = int Bbar^T sigma dV), so that
+        ! K = int Bbar^T C Bbar is symmetric for a symmetric DDSDDE; under NLGEOM f = int B^T sigma dv
+        ! (de Souza Neto et al., 1996)
+        trs = 0.0_dp
+        if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, ndim == 3)) / m
+        bcr = 0.0_dp
+        if (.not. nlgeom) bcr(1:nne, 1:ndim) = bc(1:nne, 1:ndim)
+        do a = 1, nne
+          do i = 1, ndim
+            r = ndim * (a - 1) + i
+            fe(r) = fe(r) + (dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) + trs * bcr(a, i)) * dv
+          end do
+          ! axisymmetric: the hoop virtual strain du_r / r
+          if (axi) fe(ndim * (a - 1) + 1) = fe(ndim * (a - 1) + 1) + sig(3, 3) * hc(a) * dv
+        end do
+
+        if (want) then
+          if (.not. (mat%kind == SOLID_MAT_UMAT .and. mat%unsymm)) then
+            ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
+            ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
+          end if
+          ! (axisymmetric: the full 3x3 spatial tangent, the hoop direction being the third)
+          call spatial_tangent(ddsdde, ntens, sig, merge(3, ndim, axi), nlgeom, a4, q)
+          ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then
+          ! K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t
+          ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
+          ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve 2D; kl is a contiguous local)
+          if (k8) then
+            d8 = dndx(1:8, :)
+            b8 = bc(1:8, :)
+            r8 = bcr(1:8, :) / m
+            call k_point_c3d8(a4, q, d8, b8, r8, dv, kl8)
+          else
+            do b = 1, nne
+              do k = 1, ndim
+                t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
+                     + a4(:, :, k, 3) * dndx(b, 3)) * dv
+                ! axisymmetric: the column's hoop gradient L_33 = N_b / r for k = 1
+                if (axi .and. k == 1) t = t + a4(:, :, 3, 3) * hc(b) * dv
+                trs = (t(1, 1) + t(2, 2) + t(3, 3)) / m
+                do i = 1, ndim
+                  kl(1:nne, i, k, b) = kl(1:nne, i, k, b) + t(i, 1) * dndx(1:nne, 1) &
+                    + t(i, 2) * dndx(1:nne, 2) + t(i, 3) * dndx(1:nne, 3) + trs * bcr(1:nne, i)
+                end do
+                ! and the row's hoop virtual strain for i = 1
+                if (axi) kl(1:nne, 1, k, b) = kl(1:nne, 1, k, b) + t(3, 3) * hc(1:nne)
+              end do
+            end do
+          end if
+        end if
+      end do
+      if (want) then
+        if (k8) kl(1:8, :, :, 1:8) = kl8
+        do b = 1, nne
+          do k = 1, ndim
+            c = ndim * (b - 1) + k
+            do a = 1, nne
+              r = ndim * (a - 1)
+              ke(r + 1:r + ndim, c) = kl(a, 1:ndim, k, b)
+            end do
+          end do
+        end do
+      end if
+    end subroutine element_pass
 
     !> Record a failure: zero force and tangent, old state kept, cutback requested for an inverted element.
     subroutine fail(code, msg)
@@ -545,14 +825,15 @@ contains
       if (code == 1 .or. code == 3) pnewdt = min(pnewdt, 0.25_dp)
     end subroutine fail
 
-    !> Deformation gradient I + sum_a disp_a (x) dN_a/dX (3x3, F33 = 1 in plane strain).
+    !> Deformation gradient I + sum_a disp_a (x) dN_a/dX (3x3, F33 = 1 in plane strain), over the nodes and the
+    !> incompatible-mode pseudo-nodes.
     pure function def_grad(disp, dn) result(f)
-      real(dp), intent(in) :: disp(3, maxnode), dn(maxnode, 3)
+      real(dp), intent(in) :: disp(3, maxnode), dn(:, :)
       real(dp) :: f(3, 3)
       integer :: aa, ii, jj
       f = identity()
       do jj = 1, ndim
-        do aa = 1, nnode
+        do aa = 1, nne
           do ii = 1, ndim
             f(ii, jj) = f(ii, jj) + disp(ii, aa) * dn(aa, jj)
           end do
@@ -561,6 +842,36 @@ contains
     end function def_grad
 
   end subroutine solid_element_compute
+
+  !> Solve a x = b in place (b holds x on return) by Gaussian elimination with partial pivoting; stat 1 when a is
+  !> singular (zero pivot).
+  pure subroutine dense_solve(a, b, stat)
+    real(dp), intent(inout) :: a(:, :), b(:, :)
+    integer, intent(out) :: stat
+    integer :: n, i, p, k
+    real(dp) :: t, row(size(a, 2)), rowb(size(b, 2))
+    n = size(a, 1)
+    stat = 0
+    do k = 1, n
+      p = k - 1 + maxloc(abs(a(k:n, k)), 1)
+      if (.not. (abs(a(p, k)) > 0.0_dp)) then
+        stat = 1
+        return
+      end if
+      if (p /= k) then
+        row = a(k, :); a(k, :) = a(p, :); a(p, :) = row
+        rowb = b(k, :); b(k, :) = b(p, :); b(p, :) = rowb
+      end if
+      do i = k + 1, n
+        t = a(i, k) / a(k, k)
+        a(i, k:n) = a(i, k:n) - t * a(k, k:n)
+        b(i, :) = b(i, :) - t * b(k, :)
+      end do
+    end do
+    do k = n, 1, -1
+      b(k, :) = (b(k, :) - matmul(a(k, k + 1:n), b(k + 1:n, :))) / a(k, k)
+    end do
+  end subroutine dense_solve
 
   !> Call the UMAT through the pointer with contiguous explicit-shape copies of every argument (a user routine
   !> may overwrite any of them; only STRESS, STATEV, DDSDDE, SSE, SPD, SCD and PNEWDT are taken back).
@@ -597,9 +908,9 @@ contains
 
   !> Spatial tangent A_ijkl (material + geometric, from DDSDDE by the Jaumann correction of CONVENTIONS.md) and the
   !> F-bar coefficient q_ij; without NLGEOM A = DDSDDE and q = (1/m) sum_a A_ijaa.
-  pure subroutine spatial_tangent(ddsdde, sig, ndim, nlgeom, a4, q)
+  pure subroutine spatial_tangent(ddsdde, ntens, sig, ndim, nlgeom, a4, q)
     real(dp), intent(in) :: ddsdde(6, 6), sig(3, 3)
-    integer, intent(in) :: ndim
+    integer, intent(in) :: ntens, ndim
     logical, intent(in) :: nlgeom
     real(dp), intent(out) :: a4(3, 3, 3, 3), q(3, 3)
     integer :: i, j, k, l
@@ -612,7 +923,11 @@ contains
       do k = 1, ndim
         do j = 1, ndim
           do i = 1, ndim
-            a4(i, j, k, l) = ddsdde(vidx(i, j), vidx(k, l))
+            if (ntens == 3) then
+              a4(i, j, k, l) = ddsdde(vidx_ps(i, j), vidx_ps(k, l))
+            else
+              a4(i, j, k, l) = ddsdde(vidx(i, j), vidx(k, l))
+            end if
           end do
         end do
       end do
@@ -643,14 +958,20 @@ contains
     if (allocated(mat%props)) nprops_of = size(mat%props)
   end function nprops_of
 
-  !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain.
+  !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain. Layout by
+  !> ntens: 6 (11,22,33,12,13,23), 4 (11,22,33,12: plane strain), 3 (11,22,12: plane stress).
   pure subroutine voigt_to_tensor(v, ntens, t, shear_factor)
     real(dp), intent(in) :: v(:)
     integer, intent(in) :: ntens
     real(dp), intent(out) :: t(3, 3)
     real(dp), intent(in) :: shear_factor
     t = 0.0_dp
-    t(1, 1) = v(1); t(2, 2) = v(2); t(3, 3) = v(3)
+    t(1, 1) = v(1); t(2, 2) = v(2)
+    if (ntens == 3) then
+      t(1, 2) = shear_factor * v(3); t(2, 1) = t(1, 2)
+      return
+    end if
+    t(3, 3) = v(3)
     t(1, 2) = shear_factor * v(4); t(2, 1) = t(1, 2)
     if (ntens >= 6) then
       t(1, 3) = shear_factor * v(5); t(3, 1) = t(1, 3)
@@ -658,42 +979,26 @@ contains
     end if
   end subroutine voigt_to_tensor
 
-  !> Voigt components of a symmetric tensor; shear_factor 1 for stress, 2 for engineering strain.
+  !> Voigt components of a symmetric tensor; shear_factor 1 for stress, 2 for engineering strain (layout as in
+  !> voigt_to_tensor; entries beyond ntens are 0).
   pure subroutine tensor_to_voigt(t, ntens, v, shear_factor)
     real(dp), intent(in) :: t(3, 3)
     integer, intent(in) :: ntens
     real(dp), intent(out) :: v(6)
     real(dp), intent(in) :: shear_factor
     v = 0.0_dp
-    v(1) = t(1, 1); v(2) = t(2, 2); v(3) = t(3, 3)
+    v(1) = t(1, 1); v(2) = t(2, 2)
+    if (ntens == 3) then
+      v(3) = shear_factor * t(1, 2)
+      return
+    end if
+    v(3) = t(3, 3)
     v(4) = shear_factor * t(1, 2)
     if (ntens >= 6) then
       v(5) = shear_factor * t(1, 3)
       v(6) = shear_factor * t(2, 3)
     end if
   end subroutine tensor_to_voigt
-
-  pure integer function shape_of(etype)
-    character(len=*), intent(in) :: etype
-    character(len=16) :: up
-    integer :: i, first, last
-    shape_of = 0
-    first = verify(etype, ' ')
-    last = len_trim(etype)
-    if (first == 0 .or. last - first + 1 > len(up)) return
-    up = etype(first:last)
-    do i = 1, len(up)
-      if (up(i:i) >= 'a' .and. up(i:i) <= 'z') up(i:i) = achar(iachar(up(i:i)) - 32)
-    end do
-    select case (trim(up))
-    case ('C3D8')
-      shape_of = SHAPE_C3D8
-    case ('CPE4')
-      shape_of = SHAPE_CPE4
-    case default
-      shape_of = 0
-    end select
-  end function shape_of
 
   !> Rotation R of the polar decomposition F = R U (det F > 0), by the Newton iteration X <- (X + X^-T)/2, which
   !> converges quadratically to R from X = F.

@@ -1,64 +1,276 @@
-!> Shape functions and Gauss rules of the continuum elements, with Abaqus node and integration-point orderings.
+!> The continuum element library as data: for each Abaqus element name its shape-function family, integration rule
+!> and formulation flags (solid_type_t, table solid_types), with the shape functions and rules in Abaqus node and
+!> integration-point order. solid_element.f90 has ONE kinematics and UMAT-calling path for all of them.
 !>
-!> C3D8: nodes 1-4 on the face zeta = -1 counter-clockwise seen from +zeta, nodes 5-8 above them on zeta = +1;
-!> 2x2x2 Gauss points numbered with xi fastest, then eta, then zeta (Abaqus order).
-!> CPE4: nodes counter-clockwise (-1,-1), (1,-1), (1,1), (-1,1); 2x2 Gauss points, xi fastest.
+!> Families (parent coordinates, Abaqus node order):
+!>   HEX8   nodes 1-4 on zeta = -1 counter-clockwise seen from +zeta, 5-8 above them on zeta = +1.
+!>   HEX20  corners 1-8 as HEX8; mid-side 9-12 on the edges 1-2, 2-3, 3-4, 4-1; 13-16 on 5-6, 6-7, 7-8, 8-5;
+!>          17-20 on 1-5, 2-6, 3-7, 4-8 (serendipity).
+!>   TET4   corners 1 (0,0,0), 2 (1,0,0), 3 (0,1,0), 4 (0,0,1): 1-2-3 counter-clockwise seen from node 4.
+!>   TET10  corners as TET4; mid-side 5 on 1-2, 6 on 2-3, 7 on 3-1, 8 on 1-4, 9 on 2-4, 10 on 3-4.
+!>   QUAD4  counter-clockwise (-1,-1), (1,-1), (1,1), (-1,1).
+!>   QUAD8  corners as QUAD4; mid-side 5 on 1-2, 6 on 2-3, 7 on 3-4, 8 on 4-1.
+!> Rules: Gauss n x n (x n) with xi fastest, then eta, then zeta (points at -g, [0,] +g in that order); tetrahedra:
+!> 1 point at the centroid, or 4 points (volume coordinates a = 0.5854..., b = 0.1382...), point k nearest corner k.
+!> The 2x2x2 order is Abaqus' documented one; for 3x3x3, 3x3 and the 4-point tetrahedron the same convention is
+!> inferred (docs/elements.md).
 module solid_shape
   use ldfcz_kinds, only: dp
   implicit none
   private
-  public :: solid_shape_eval, solid_gauss_point, SHAPE_C3D8, SHAPE_CPE4
+  public :: solid_type_t, solid_types, solid_type_index, solid_shape_eval, solid_gauss_point, solid_parent_centre
+  public :: solid_hourglass_base
+  public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8
 
-  integer, parameter :: SHAPE_C3D8 = 1  !< 8-node hexahedron
-  integer, parameter :: SHAPE_CPE4 = 2  !< 4-node quadrilateral
+  integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6
+  integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4   !< tetrahedral rules; n > 0: n Gauss points per direction
 
-  real(dp), parameter :: hex_nodes(3, 8) = reshape([ &
+  !> One element type: everything that distinguishes it from another is here.
+  type :: solid_type_t
+    character(len=8) :: name = ''
+    integer :: family = 0      !< FAM_*
+    integer :: nnode = 0       !< nodes
+    integer :: ndim = 0        !< coordinates and displacement dofs per node
+    integer :: rule = 0        !< Gauss points per direction (> 0) or RULE_TET1 / RULE_TET4
+    integer :: nip = 0         !< integration points
+    integer :: ndi = 0         !< direct stress components passed to the material
+    integer :: nshr = 0        !< shear stress components
+    logical :: fbar = .false.  !< F-bar (NLGEOM) / mean-dilatation B-bar (small strain) of the linear elements
+    integer :: nmode = 0       !< incompatible displacement modes (each a vector of ndim parameters), condensed
+    logical :: pstress = .false.  !< plane stress (NDI = 2, NSHR = 1: sigma33 = 0, the thickness strain free)
+    logical :: hourglass = .false. !< one point with hourglass stiffness (Flanagan-Belytschko, solid_element)
+    logical :: axisym = .false.    !< axisymmetric (r, z): hoop strain u_r / r, volumes and forces over 2 pi
+  end type solid_type_t
+
+  type(solid_type_t), parameter :: solid_types(20) = [ &
+    solid_type_t('C3D8', FAM_HEX8, 8, 3, 2, 8, 3, 3, .true., 0), &
+    solid_type_t('C3D8I', FAM_HEX8, 8, 3, 2, 8, 3, 3, .false., 3), &
+    solid_type_t('C3D20', FAM_HEX20, 20, 3, 3, 27, 3, 3, .false., 0), &
+    solid_type_t('C3D20R', FAM_HEX20, 20, 3, 2, 8, 3, 3, .false., 0), &
+    solid_type_t('C3D4', FAM_TET4, 4, 3, RULE_TET1, 1, 3, 3, .false., 0), &
+    solid_type_t('C3D10', FAM_TET10, 10, 3, RULE_TET4, 4, 3, 3, .false., 0), &
+    solid_type_t('CPE4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0), &
+    solid_type_t('CPE4I', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .false., 2), &
+    solid_type_t('CPE8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0), &
+    solid_type_t('CPE8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0), &
+    solid_type_t('CPS4', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 0, .true.), &
+    solid_type_t('CPS4I', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 2, .true.), &
+    solid_type_t('CPS8', FAM_QUAD8, 8, 2, 3, 9, 2, 1, .false., 0, .true.), &
+    solid_type_t('CPS8R', FAM_QUAD8, 8, 2, 2, 4, 2, 1, .false., 0, .true.), &
+    solid_type_t('C3D8R', FAM_HEX8, 8, 3, 1, 1, 3, 3, .false., 0, .false., .true.), &
+    solid_type_t('CPE4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true.), &
+    solid_type_t('CPS4R', FAM_QUAD4, 4, 2, 1, 1, 2, 1, .false., 0, .true., .true.), &
+    solid_type_t('CAX4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.), &
+    solid_type_t('CAX8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0, .false., .false., .true.), &
+    solid_type_t('CAX8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.)]
+
+  real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &
-    -1.0_dp, -1.0_dp,  1.0_dp,   1.0_dp, -1.0_dp,  1.0_dp,   1.0_dp, 1.0_dp,  1.0_dp,   -1.0_dp, 1.0_dp,  1.0_dp], [3, 8])
-  real(dp), parameter :: quad_nodes(2, 4) = reshape([ &
-    -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp,   -1.0_dp, 1.0_dp], [2, 4])
+    -1.0_dp, -1.0_dp,  1.0_dp,   1.0_dp, -1.0_dp,  1.0_dp,   1.0_dp, 1.0_dp,  1.0_dp,   -1.0_dp, 1.0_dp,  1.0_dp, &
+     0.0_dp, -1.0_dp, -1.0_dp,   1.0_dp,  0.0_dp, -1.0_dp,   0.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 0.0_dp, -1.0_dp, &
+     0.0_dp, -1.0_dp,  1.0_dp,   1.0_dp,  0.0_dp,  1.0_dp,   0.0_dp, 1.0_dp,  1.0_dp,   -1.0_dp, 0.0_dp,  1.0_dp, &
+    -1.0_dp, -1.0_dp,  0.0_dp,   1.0_dp, -1.0_dp,  0.0_dp,   1.0_dp, 1.0_dp,  0.0_dp,   -1.0_dp, 1.0_dp,  0.0_dp], &
+    [3, 20])
+  real(dp), parameter :: quad_nodes(2, 8) = reshape([ &
+    -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp,   -1.0_dp, 1.0_dp, &
+     0.0_dp, -1.0_dp,   1.0_dp,  0.0_dp,   0.0_dp, 1.0_dp,   -1.0_dp, 0.0_dp], [2, 8])
+  !> TET10 mid-side nodes 5..10: the two corners of their edge
+  integer, parameter :: tet_edges(2, 6) = reshape([1, 2, 2, 3, 3, 1, 1, 4, 2, 4, 3, 4], [2, 6])
 
 contains
 
-  !> Shape functions n(a) and their derivatives dndxi(a, k) = dN_a / dxi_k at the parent point xi.
-  pure subroutine solid_shape_eval(shape, xi, n, dndxi)
-    integer, intent(in) :: shape          !< SHAPE_C3D8 or SHAPE_CPE4
-    real(dp), intent(in) :: xi(:)         !< parent coordinates (3 or 2)
-    real(dp), intent(out) :: n(:)         !< shape functions (8 or 4)
-    real(dp), intent(out) :: dndxi(:, :)  !< derivatives (8x3 or 4x2)
-    integer :: a
+  !> Index of an element type name in solid_types (case-insensitive, blanks ignored); 0 when unknown.
+  pure integer function solid_type_index(etype) result(it)
+    character(len=*), intent(in) :: etype
+    character(len=16) :: up
+    integer :: i, first, last
+    it = 0
+    first = verify(etype, ' ')
+    last = len_trim(etype)
+    if (first == 0 .or. last - first + 1 > len(up)) return
+    up = etype(first:last)
+    do i = 1, len(up)
+      if (up(i:i) >= 'a' .and. up(i:i) <= 'z') up(i:i) = achar(iachar(up(i:i)) - 32)
+    end do
+    do i = 1, size(solid_types)
+      if (trim(up) == trim(solid_types(i)%name)) then
+        it = i
+        return
+      end if
+    end do
+  end function solid_type_index
 
-    select case (shape)
-    case (SHAPE_C3D8)
+  !> Parent coordinates of the element centre (centroid for tetrahedra).
+  pure function solid_parent_centre(family) result(xi)
+    integer, intent(in) :: family
+    real(dp) :: xi(3)
+    xi = 0.0_dp
+    if (family == FAM_TET4 .or. family == FAM_TET10) xi = 0.25_dp
+  end function solid_parent_centre
+
+  !> Hourglass base vectors h(a, m) of the linear hexahedron (xi eta, eta zeta, zeta xi, xi eta zeta at the nodes:
+  !> 4 vectors) or quadrilateral (xi eta: 1 vector); nh = their number (0 for other families).
+  pure subroutine solid_hourglass_base(family, h, nh)
+    integer, intent(in) :: family
+    real(dp), intent(out) :: h(8, 4)
+    integer, intent(out) :: nh
+    h = 0.0_dp
+    nh = 0
+    select case (family)
+    case (FAM_HEX8)
+      nh = 4
+      h(:, 1) = hex_nodes(1, 1:8) * hex_nodes(2, 1:8)
+      h(:, 2) = hex_nodes(2, 1:8) * hex_nodes(3, 1:8)
+      h(:, 3) = hex_nodes(3, 1:8) * hex_nodes(1, 1:8)
+      h(:, 4) = hex_nodes(1, 1:8) * hex_nodes(2, 1:8) * hex_nodes(3, 1:8)
+    case (FAM_QUAD4)
+      nh = 1
+      h(1:4, 1) = quad_nodes(1, 1:4) * quad_nodes(2, 1:4)
+    end select
+  end subroutine solid_hourglass_base
+
+  !> Shape functions n(a) and their derivatives dndxi(a, k) = dN_a / dxi_k at the parent point xi.
+  pure subroutine solid_shape_eval(family, xi, n, dndxi)
+    integer, intent(in) :: family         !< FAM_*
+    real(dp), intent(in) :: xi(:)         !< parent coordinates (3 or 2)
+    real(dp), intent(out) :: n(:)         !< shape functions (nnode)
+    real(dp), intent(out) :: dndxi(:, :)  !< derivatives (nnode x ndim)
+    real(dp) :: p, q, r, s, l(4), dl(4, 3)
+    integer :: a, k, i, j
+
+    select case (family)
+    case (FAM_HEX8)
       do a = 1, 8
-        n(a) = 0.125_dp * (1 + hex_nodes(1, a) * xi(1)) * (1 + hex_nodes(2, a) * xi(2)) * (1 + hex_nodes(3, a) * xi(3))
-        dndxi(a, 1) = 0.125_dp * hex_nodes(1, a) * (1 + hex_nodes(2, a) * xi(2)) * (1 + hex_nodes(3, a) * xi(3))
-        dndxi(a, 2) = 0.125_dp * hex_nodes(2, a) * (1 + hex_nodes(1, a) * xi(1)) * (1 + hex_nodes(3, a) * xi(3))
-        dndxi(a, 3) = 0.125_dp * hex_nodes(3, a) * (1 + hex_nodes(1, a) * xi(1)) * (1 + hex_nodes(2, a) * xi(2))
+        p = 1 + hex_nodes(1, a) * xi(1)
+        q = 1 + hex_nodes(2, a) * xi(2)
+        r = 1 + hex_nodes(3, a) * xi(3)
+        n(a) = 0.125_dp * p * q * r
+        dndxi(a, 1) = 0.125_dp * hex_nodes(1, a) * q * r
+        dndxi(a, 2) = 0.125_dp * hex_nodes(2, a) * p * r
+        dndxi(a, 3) = 0.125_dp * hex_nodes(3, a) * p * q
+      end do
+    case (FAM_HEX20)
+      do a = 1, 8
+        p = 1 + hex_nodes(1, a) * xi(1)
+        q = 1 + hex_nodes(2, a) * xi(2)
+        r = 1 + hex_nodes(3, a) * xi(3)
+        s = hex_nodes(1, a) * xi(1) + hex_nodes(2, a) * xi(2) + hex_nodes(3, a) * xi(3) - 2
+        n(a) = 0.125_dp * p * q * r * s
+        dndxi(a, 1) = 0.125_dp * hex_nodes(1, a) * q * r * (s + p)
+        dndxi(a, 2) = 0.125_dp * hex_nodes(2, a) * p * r * (s + q)
+        dndxi(a, 3) = 0.125_dp * hex_nodes(3, a) * p * q * (s + r)
+      end do
+      do a = 9, 20
+        ! the direction k in which the node sits at 0: N = (1 - xi_k^2)(1 + xi_i xi_ia)(1 + xi_j xi_ja) / 4
+        k = minloc(abs(hex_nodes(:, a)), 1)
+        i = modulo(k, 3) + 1
+        j = modulo(k + 1, 3) + 1
+        p = 1 - xi(k)**2
+        q = 1 + hex_nodes(i, a) * xi(i)
+        r = 1 + hex_nodes(j, a) * xi(j)
+        n(a) = 0.25_dp * p * q * r
+        dndxi(a, k) = -0.5_dp * xi(k) * q * r
+        dndxi(a, i) = 0.25_dp * p * hex_nodes(i, a) * r
+        dndxi(a, j) = 0.25_dp * p * q * hex_nodes(j, a)
+      end do
+    case (FAM_TET4, FAM_TET10)
+      ! volume coordinates L1 = 1 - xi - eta - zeta, L2 = xi, L3 = eta, L4 = zeta
+      l = [1 - xi(1) - xi(2) - xi(3), xi(1), xi(2), xi(3)]
+      dl = 0.0_dp
+      dl(1, :) = -1.0_dp
+      dl(2, 1) = 1.0_dp
+      dl(3, 2) = 1.0_dp
+      dl(4, 3) = 1.0_dp
+      if (family == FAM_TET4) then
+        n(1:4) = l
+        dndxi(1:4, 1:3) = dl
+      else
+        do a = 1, 4
+          n(a) = l(a) * (2 * l(a) - 1)
+          dndxi(a, :) = (4 * l(a) - 1) * dl(a, :)
+        end do
+        do a = 5, 10
+          i = tet_edges(1, a - 4)
+          j = tet_edges(2, a - 4)
+          n(a) = 4 * l(i) * l(j)
+          dndxi(a, :) = 4 * (dl(i, :) * l(j) + l(i) * dl(j, :))
+        end do
+      end if
+    case (FAM_QUAD4)
+      do a = 1, 4
+        p = 1 + quad_nodes(1, a) * xi(1)
+        q = 1 + quad_nodes(2, a) * xi(2)
+        n(a) = 0.25_dp * p * q
+        dndxi(a, 1) = 0.25_dp * quad_nodes(1, a) * q
+        dndxi(a, 2) = 0.25_dp * quad_nodes(2, a) * p
+      end do
+    case (FAM_QUAD8)
+      do a = 1, 4
+        p = 1 + quad_nodes(1, a) * xi(1)
+        q = 1 + quad_nodes(2, a) * xi(2)
+        s = quad_nodes(1, a) * xi(1) + quad_nodes(2, a) * xi(2) - 1
+        n(a) = 0.25_dp * p * q * s
+        dndxi(a, 1) = 0.25_dp * quad_nodes(1, a) * q * (s + p)
+        dndxi(a, 2) = 0.25_dp * quad_nodes(2, a) * p * (s + q)
+      end do
+      do a = 5, 8
+        k = minloc(abs(quad_nodes(:, a)), 1)
+        i = 3 - k
+        p = 1 - xi(k)**2
+        q = 1 + quad_nodes(i, a) * xi(i)
+        n(a) = 0.5_dp * p * q
+        dndxi(a, k) = -xi(k) * q
+        dndxi(a, i) = 0.5_dp * p * quad_nodes(i, a)
       end do
     case default
-      do a = 1, 4
-        n(a) = 0.25_dp * (1 + quad_nodes(1, a) * xi(1)) * (1 + quad_nodes(2, a) * xi(2))
-        dndxi(a, 1) = 0.25_dp * quad_nodes(1, a) * (1 + quad_nodes(2, a) * xi(2))
-        dndxi(a, 2) = 0.25_dp * quad_nodes(2, a) * (1 + quad_nodes(1, a) * xi(1))
-      end do
+      n = 0.0_dp
+      dndxi = 0.0_dp
     end select
   end subroutine solid_shape_eval
 
-  !> Parent coordinates xi and weight w of Gauss point ip (2 points per direction at +-1/sqrt(3), weights 1).
-  pure subroutine solid_gauss_point(shape, ip, xi, w)
-    integer, intent(in) :: shape   !< SHAPE_C3D8 or SHAPE_CPE4
-    integer, intent(in) :: ip      !< integration point, Abaqus numbering
-    real(dp), intent(out) :: xi(:) !< parent coordinates
+  !> Parent coordinates xi and weight w of integration point ip of a rule (Abaqus numbering, see the module header).
+  pure subroutine solid_gauss_point(rule, ndim, ip, xi, w)
+    integer, intent(in) :: rule    !< Gauss points per direction (1..3) or RULE_TET1 / RULE_TET4
+    integer, intent(in) :: ndim    !< 2 or 3
+    integer, intent(in) :: ip      !< integration point
+    real(dp), intent(out) :: xi(3) !< parent coordinates (xi(3) = 0 in 2D)
     real(dp), intent(out) :: w     !< weight
-    real(dp), parameter :: g = 0.577350269189625764509148780502_dp  ! 1/sqrt(3)
-    integer :: k
-
-    k = ip - 1
-    xi(1) = merge(g, -g, mod(k, 2) == 1)
-    xi(2) = merge(g, -g, mod(k / 2, 2) == 1)
-    if (shape == SHAPE_C3D8) xi(3) = merge(g, -g, mod(k / 4, 2) == 1)
-    w = 1.0_dp
+    real(dp), parameter :: g2 = 0.577350269189625764509148780502_dp   ! 1/sqrt(3)
+    real(dp), parameter :: g3 = 0.774596669241483377035853079956_dp   ! sqrt(3/5)
+    real(dp), parameter :: ta = 0.585410196624968500_dp, tb = 0.138196601125010500_dp  ! (5 +- 3 sqrt 5)/20
+    real(dp) :: pts(3), wts(3)
+    integer :: k, d, m
+    xi = 0.0_dp
+    w = 0.0_dp
+    select case (rule)
+    case (RULE_TET1)
+      xi = 0.25_dp
+      w = 1.0_dp / 6
+    case (RULE_TET4)
+      xi = tb
+      if (ip > 1) xi(ip - 1) = ta
+      w = 1.0_dp / 24
+    case (1, 2, 3)
+      select case (rule)
+      case (1)
+        pts(1) = 0.0_dp
+        wts(1) = 2.0_dp
+      case (2)
+        pts(1:2) = [-g2, g2]
+        wts(1:2) = 1.0_dp
+      case default
+        pts = [-g3, 0.0_dp, g3]
+        wts = [5.0_dp / 9, 8.0_dp / 9, 5.0_dp / 9]
+      end select
+      k = ip - 1
+      w = 1.0_dp
+      do d = 1, ndim
+        m = mod(k, rule) + 1
+        k = k / rule
+        xi(d) = pts(m)
+        w = w * wts(m)
+      end do
+    end select
   end subroutine solid_gauss_point
 
 end module solid_shape

@@ -295,6 +295,13 @@ def lame(r, a, b, p, e, nu):
     return (1 + nu) / e * ((1 - 2 * nu) * big_a * r + big_b / r)
 
 
+def lame_plane_stress(r, a, b, p, e, nu):
+    """Plane-stress radial displacement of a thin disc with a hole under internal pressure p (Lame)."""
+    big_a = p * a * a / (b * b - a * a)
+    big_b = p * a * a * b * b / (b * b - a * a)
+    return ((1 - nu) * big_a * r + (1 + nu) * big_b / r) / e
+
+
 def check_lame(rows, a, b, p, tol):
     r = rows[-1]
     close("inner radial displacement (Lame)", r["RIN.U1"], lame(a, a, b, p, 1000.0, 0.3), tol)
@@ -314,6 +321,261 @@ def case_lame3d(exe, out):
     a, b, p = 1.0, 2.0, 1.0
     rows = run(exe, out, "lame3d", lambda d: ring_deck(d, a, b, 8, 24, p, three_d=True))
     check_lame(rows, a, b, p, 3e-3)
+
+
+def quadratic_ring_deck(path, etype, a, b, nr, nt, p):
+    """Quarter of the thick cylinder a < r < b under internal pressure p (*DSLOAD on S4 / S6) meshed with quadratic
+    elements (CPE8, CPE8R; C3D20, C3D20R one element thick with u3 = 0): mid-side nodes on the circles (curved,
+    isoparametric edges), symmetry planes t = 0 and t = 90 degrees."""
+    three_d = etype.startswith("C3D")
+    ids = {}
+
+    def nid(i, j, k=0):
+        return ids[(i, j, k)]
+    out = ["*HEADING", "thick cylinder, quadratic %s elements (tests/regression/check_loads.py)" % etype,
+           "*NODE, NSET=ALL"]
+    # doubled grid; only the nodes an element uses (no face or body centres)
+    for k in range(3 if three_d else 1):
+        for j in range(2 * nt + 1):
+            for i in range(2 * nr + 1):
+                odd = (i % 2) + (j % 2) + (k % 2)
+                if odd > 1:
+                    continue
+                ids[(i, j, k)] = len(ids) + 1
+                r = a + (b - a) * i / (2 * nr)
+                t = math.pi / 2 * j / (2 * nt)
+                out.append("%d, %.15g, %.15g" % (ids[(i, j, k)], r * math.cos(t), r * math.sin(t)) +
+                           (", %g" % (0.05 * k) if three_d else ""))
+    out.append("*ELEMENT, TYPE=%s, ELSET=RING" % etype)
+    e = 1
+    for j in range(nt):
+        for i in range(nr):
+            I, J = 2 * i, 2 * j
+            if three_d:
+                c = [nid(I, J), nid(I + 2, J), nid(I + 2, J + 2), nid(I, J + 2),
+                     nid(I, J, 2), nid(I + 2, J, 2), nid(I + 2, J + 2, 2), nid(I, J + 2, 2),
+                     nid(I + 1, J), nid(I + 2, J + 1), nid(I + 1, J + 2), nid(I, J + 1),
+                     nid(I + 1, J, 2), nid(I + 2, J + 1, 2), nid(I + 1, J + 2, 2), nid(I, J + 1, 2),
+                     nid(I, J, 1), nid(I + 2, J, 1), nid(I + 2, J + 2, 1), nid(I, J + 2, 1)]
+            else:
+                c = [nid(I, J), nid(I + 2, J), nid(I + 2, J + 2), nid(I, J + 2),
+                     nid(I + 1, J), nid(I + 2, J + 1), nid(I + 1, J + 2), nid(I, J + 1)]
+            # at most 16 entries on a data line (Abaqus): continue on the next line
+            line = ", ".join(str(n) for n in [e] + c[:15])
+            out.append(line + ("," if len(c) > 15 else ""))
+            if len(c) > 15:
+                out.append(", ".join(str(n) for n in c[15:]))
+            e += 1
+    out.append("*ELSET, ELSET=INNER")
+    out += ["%d," % (j * nr + 1) for j in range(nt)]
+    out += ["*NSET, NSET=RIN", "%d," % nid(0, 0), "*NSET, NSET=ROUT", "%d," % nid(2 * nr, 0)]
+    out += ["*NSET, NSET=T0"] + ["%d," % v for (i, j, k), v in sorted(ids.items()) if j == 0]
+    out += ["*NSET, NSET=T90"] + ["%d," % v for (i, j, k), v in sorted(ids.items()) if j == 2 * nt]
+    out += ["*SOLID SECTION, ELSET=RING, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3"]
+    out += ["*SURFACE, NAME=BORE", "INNER, %s" % ("S6" if three_d else "S4")]
+    out += ["*BOUNDARY", "T0, 2, 2", "T90, 1, 1"] + (["ALL, 3, 3"] if three_d else [])
+    out += ["*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*DSLOAD", "BORE, P, %.15g" % p,
+            "*NODE PRINT, NSET=RIN", "U1", "*NODE PRINT, NSET=ROUT", "U1", "*END STEP"]
+    write(path, out)
+
+
+def case_lame_quadratic(exe, out):
+    """Quadratic elements (curved edges, pressure on 3-node edges / 8-node faces; CPS8(R) plane stress) against
+    Lame: the error of the
+    coarse mesh 2 x 4 and its decrease on 4 x 8 (O(h^3) or better for the displacement; at least a factor 4 asked)."""
+    a, b, p = 1.0, 2.0, 1.0
+    for etype in ("CPE8", "CPE8R", "C3D20", "C3D20R", "CPS8", "CPS8R"):
+        errs = []
+        for nr, nt in ((2, 4), (4, 8)):
+            job = "lame_%s_%d" % (etype.lower(), nr)
+            rows = run(exe, out, job, lambda d: quadratic_ring_deck(d, etype, a, b, nr, nt, p))
+            if etype.startswith("CPS"):
+                want = lame_plane_stress(a, a, b, p, 1000.0, 0.3)
+            else:
+                want = lame(a, a, b, p, 1000.0, 0.3)
+            errs.append(abs(rows[-1]["RIN.U1"] - want) / want)
+        print("%s: relative error of the bore displacement %.2e (2 x 4), %.2e (4 x 8)" % (etype, errs[0], errs[1]))
+        close(etype + " 4 x 8 bore displacement (Lame)", errs[1], 0.0, 0.0, 1e-4)
+        if not errs[1] <= errs[0] / 4:
+            fail("%s: error does not converge (%.2e -> %.2e)" % (etype, errs[0], errs[1]))
+
+
+def axisymmetric_cylinder_deck(path, etype, a, b, nr, p, h=0.2):
+    """Axisymmetric thick cylinder a < r < b, one element layer 0 < z < h (CAX4, CAX8, CAX8R; mid-side nodes of
+    CAX8 at the edge midpoints), *DSLOAD pressure p on the bore (S4), u_z = 0 everywhere (plane strain)."""
+    quad = etype.startswith("CAX8")
+    ids = {}
+    out = ["*HEADING", "axisymmetric thick cylinder, %s (tests/regression/check_loads.py)" % etype, "*NODE, NSET=ALL"]
+    nz = 2 if quad else 1
+    ni = 2 * nr if quad else nr
+    for k in range(nz + 1):
+        for i in range(ni + 1):
+            if quad and k == 1 and i % 2 == 1:
+                continue
+            ids[(i, k)] = len(ids) + 1
+            out.append("%d, %.15g, %.15g" % (ids[(i, k)], a + (b - a) * i / ni, h * k / nz))
+    out.append("*ELEMENT, TYPE=%s, ELSET=TUBE" % etype)
+    for e in range(nr):
+        if quad:
+            i = 2 * e
+            c = [ids[(i, 0)], ids[(i + 2, 0)], ids[(i + 2, 2)], ids[(i, 2)], ids[(i + 1, 0)], ids[(i + 2, 1)],
+                 ids[(i + 1, 2)], ids[(i, 1)]]
+        else:
+            c = [ids[(e, 0)], ids[(e + 1, 0)], ids[(e + 1, 1)], ids[(e, 1)]]
+        out.append("%d, %s" % (e + 1, ", ".join(str(n) for n in c)))
+    out += ["*ELSET, ELSET=INNER", "1,", "*NSET, NSET=RIN", "%d," % ids[(0, 0)], "*NSET, NSET=ROUT",
+            "%d," % ids[(ni, 0)], "*NSET, NSET=BOTTOM"] + ["%d," % v for (i, k), v in sorted(ids.items()) if k == 0]
+    out += ["*SOLID SECTION, ELSET=TUBE, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3",
+            "*SURFACE, NAME=BORE", "INNER, S4", "*BOUNDARY", "ALL, 2, 2",
+            "*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*DSLOAD", "BORE, P, %.15g" % p,
+            "*NODE PRINT, NSET=RIN", "U1", "*NODE PRINT, NSET=ROUT", "U1", "*NODE PRINT, NSET=BOTTOM, TOTALS=YES",
+            "RF2", "*END STEP"]
+    write(path, out)
+
+
+def case_lame_axisymmetric(exe, out):
+    """CAX4, CAX8, CAX8R thick cylinder under bore pressure with u_z = 0 against plane-strain Lame, and the axial
+    reaction on the bottom nodes as the total around the circumference (Abaqus' convention for axisymmetric
+    elements): sigma_zz = nu (sigma_rr + sigma_tt) = 2 nu p a^2 / (b^2 - a^2), so sum RF2 = -2 nu p pi a^2 (the
+    bottom holds the tube's axial tension). Radial mesh convergence: CAX4 O(h^2), the quadratic ones faster."""
+    a, b, p, nu = 1.0, 2.0, 1.0, 0.3
+    want_u = lame(a, a, b, p, 1000.0, nu)
+    want_f = -2.0 * nu * p * math.pi * a * a
+    for etype, meshes, tol in (("CAX4", (8, 16), 3e-3), ("CAX8", (4, 8), 1e-4), ("CAX8R", (4, 8), 1e-4)):
+        errs = []
+        for nr in meshes:
+            rows = run(exe, out, "axi_%s_%d" % (etype.lower(), nr),
+                       lambda d: axisymmetric_cylinder_deck(d, etype, a, b, nr, p))
+            errs.append(abs(rows[-1]["RIN.U1"] - want_u) / want_u)
+        print("%s: relative error of the bore displacement %.2e (%d elements), %.2e (%d)" %
+              (etype, errs[0], meshes[0], errs[1], meshes[1]))
+        close(etype + " bore displacement (Lame)", errs[1], 0.0, 0.0, tol)
+        if not (errs[1] < errs[0] or errs[1] < 1e-10):   # (CAX8R reproduces this Lame field to round-off)
+            fail("%s: no convergence (%.2e -> %.2e)" % (etype, errs[0], errs[1]))
+        close(etype + " axial reaction, total over 2 pi", rows[-1]["BOTTOM.RF2"], want_f, tol)
+
+
+def bending_beam_deck(path, etype, nx, m, nlgeom=False):
+    """Slender beam 10 x 1 x 1, nx elements along x and ONE through the thickness, nu = 0, u = 0 on x = 0, u_z = 0
+    everywhere, end moment m as the consistent nodal forces of the linear traction sigma_xx = -m (y - 1/2) / I on
+    x = 10 (+-m/2 per tip node in x)."""
+    out = ["*HEADING", "pure bending, %s, one element through the thickness (tests/regression/check_loads.py)"
+           % etype, "*NODE, NSET=ALL"]
+    nid = lambda i, j, k: 1 + i + (nx + 1) * (j + 2 * k)
+    for k in range(2):
+        for j in range(2):
+            for i in range(nx + 1):
+                out.append("%d, %.15g, %d, %d" % (nid(i, j, k), 10.0 * i / nx, j, k))
+    out.append("*ELEMENT, TYPE=%s, ELSET=BEAM" % etype)
+    for i in range(nx):
+        c = [nid(i, 0, 0), nid(i + 1, 0, 0), nid(i + 1, 1, 0), nid(i, 1, 0),
+             nid(i, 0, 1), nid(i + 1, 0, 1), nid(i + 1, 1, 1), nid(i, 1, 1)]
+        out.append("%d, %s" % (i + 1, ", ".join(str(n) for n in c)))
+    out += ["*NSET, NSET=ROOT"] + ["%d," % nid(0, j, k) for j in range(2) for k in range(2)]
+    out += ["*NSET, NSET=TIP"] + ["%d," % nid(nx, j, k) for j in range(2) for k in range(2)]
+    out += ["*SOLID SECTION, ELSET=BEAM, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.",
+            "*BOUNDARY", "ROOT, 1, 3", "ALL, 3, 3",
+            "*STEP, NLGEOM=%s" % ("YES" if nlgeom else "NO"), "*STATIC", "1., 1.", "*CLOAD"]
+    out += ["%d, 1, %.15g" % (nid(nx, j, k), (0.5 - j) * m) for j in range(2) for k in range(2)]
+    out += ["*NODE PRINT, NSET=TIP, TOTALS=YES", "U2", "*END STEP"]
+    write(path, out)
+
+
+def case_bending(exe, out):
+    """Pure bending of a slender beam with one element through the thickness (bending_beam_deck), against the
+    elasticity solution v = m L^2 / (2 E I) = 6e-4 (m = 1e-3): C3D8I reproduces it (incompatible modes condensed
+    in the element, their parameters kept in the STATEV rows after NSTATV): 1e-8; C3D8 locks in shear (6/7 of it
+    with square elements, docs/elements.md); C3D8R with one element through the thickness carries the bending in
+    its hourglass modes only (16/9 of the exact deflection with the hourglass factor 1, docs/elements.md)."""
+    exact = 1e-3 * 100.0 / (2 * 1000.0 / 12.0)
+    rows = run(exe, out, "bend_c3d8i", lambda d: bending_beam_deck(d, "C3D8I", 10, 1e-3))
+    close("C3D8I tip deflection (pure bending)", rows[-1]["TIP.U2"], exact, 1e-8)
+    rows = run(exe, out, "bend_c3d8", lambda d: bending_beam_deck(d, "C3D8", 10, 1e-3))
+    close("C3D8 tip deflection / exact (shear locking)", rows[-1]["TIP.U2"] / exact, 6.0 / 7.0, 1e-6)
+    rows = run(exe, out, "bend_c3d8r", lambda d: bending_beam_deck(d, "C3D8R", 10, 1e-3))
+    close("C3D8R tip deflection / exact (hourglass modes)", rows[-1]["TIP.U2"] / exact, 16.0 / 9.0, 1e-6)
+    # NLGEOM at a small load: the same answer within the geometric nonlinearity (tip rotation 0.12 rad at m)
+    rows = run(exe, out, "bend_c3d8i_nl", lambda d: bending_beam_deck(d, "C3D8I", 10, 1e-4, nlgeom=True))
+    close("C3D8I tip deflection, NLGEOM, m = 1e-4", rows[-1]["TIP.U2"], 0.1 * exact, 2e-3)
+
+
+def kirsch_displacement(x, y, a, s0, e, nu):
+    """Kirsch: infinite plane-stress plate with a hole of radius a under uniaxial tension s0 along x (Barber,
+    Elasticity, the hole in a tension field): u_r, u_t in polar form, returned as (u_x, u_y)."""
+    r, t = math.hypot(x, y), math.atan2(y, x)
+    mu, kappa = e / (2 * (1 + nu)), (3 - nu) / (1 + nu)
+    ur = s0 / (4 * mu) * (r * ((kappa - 1) / 2 + math.cos(2 * t)) + a * a / r * (1 + (1 + kappa) * math.cos(2 * t))
+                          - a ** 4 / r ** 3 * math.cos(2 * t))
+    ut = s0 / (4 * mu) * ((1 - kappa) * a * a / r - r - a ** 4 / r ** 3) * math.sin(2 * t)
+    return ur * math.cos(t) - ut * math.sin(t), ur * math.sin(t) + ut * math.cos(t)
+
+
+def kirsch_deck(path, etype, a, b, nr, nt, s0, e, nu):
+    """Quarter of the annulus a < r < b (plane stress CPS4 or CPS8, radial spacing growing geometrically, CPS8
+    mid-side nodes on the circles), symmetry planes, free hole, the Kirsch displacement prescribed on r = b."""
+    quad = etype == "CPS8"
+    m = 2 if quad else 1
+    ids = {}
+    out = ["*HEADING", "plate with a hole, %s, Kirsch displacement on the outer arc (tests/regression/check_loads.py)"
+           % etype, "*NODE, NSET=ALL"]
+    g = 1.25  # radial growth of the element size
+    radii = [a + (b - a) * (g ** (i / m) - 1) / (g ** nr - 1) for i in range(m * nr + 1)]
+    for j in range(m * nt + 1):
+        for i in range(m * nr + 1):
+            if quad and i % 2 == 1 and j % 2 == 1:
+                continue
+            t = math.pi / 2 * j / (m * nt)
+            ids[(i, j)] = len(ids) + 1
+            out.append("%d, %.15g, %.15g" % (ids[(i, j)], radii[i] * math.cos(t), radii[i] * math.sin(t)))
+    out.append("*ELEMENT, TYPE=%s, ELSET=PLATE" % etype)
+    e_id = 1
+    for j in range(nt):
+        for i in range(nr):
+            I, J = m * i, m * j
+            c = [ids[(I, J)], ids[(I + m, J)], ids[(I + m, J + m)], ids[(I, J + m)]]
+            if quad:
+                c += [ids[(I + 1, J)], ids[(I + 2, J + 1)], ids[(I + 1, J + 2)], ids[(I, J + 1)]]
+            out.append("%d, %s" % (e_id, ", ".join(str(n) for n in c)))
+            e_id += 1
+    out += ["*NSET, NSET=HOLE_X", "%d," % ids[(0, 0)], "*NSET, NSET=HOLE_Y", "%d," % ids[(0, m * nt)]]
+    out += ["*SOLID SECTION, ELSET=PLATE, MATERIAL=M", "1.", "*MATERIAL, NAME=M", "*ELASTIC", "%g, %g" % (e, nu),
+            "*BOUNDARY"]
+    out += ["%d, 2, 2" % v for (i, j), v in sorted(ids.items()) if j == 0]
+    out += ["%d, 1, 1" % v for (i, j), v in sorted(ids.items()) if j == m * nt]
+    out += ["*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*BOUNDARY"]
+    for (i, j), v in sorted(ids.items()):
+        if i != m * nr:
+            continue
+        t = math.pi / 2 * j / (m * nt)
+        ux, uy = kirsch_displacement(b * math.cos(t), b * math.sin(t), a, s0, e, nu)
+        if j != m * nt:
+            out.append("%d, 1, 1, %.15g" % (v, ux))
+        if j != 0:
+            out.append("%d, 2, 2, %.15g" % (v, uy))
+    out += ["*NODE PRINT, NSET=HOLE_X", "U1", "*NODE PRINT, NSET=HOLE_Y", "U2", "*END STEP"]
+    write(path, out)
+
+
+def case_kirsch(exe, out):
+    """Plate with a hole, plane stress (CPS4, CPS8): the annulus 1 < r < 4 with Kirsch's displacement on r = 4, so
+    that the exact solution of the finite domain IS Kirsch's; the displacements of the hole at theta = 0 and 90 deg
+    (where sigma_tt = -s0 and 3 s0) converge to the closed form with mesh refinement: CPS4 O(h^2) (error down by
+    about 4 per halving), CPS8 faster; bounds: the finer mesh within 1e-2 (CPS4) and 1e-4 (CPS8) of the larger of
+    the two hole displacements, and the error falls by at least 3 per halving."""
+    a, b, s0, e, nu = 1.0, 4.0, 1.0, 1000.0, 0.3
+    want = (kirsch_displacement(a, 0.0, a, s0, e, nu)[0], kirsch_displacement(0.0, a, a, s0, e, nu)[1])
+    scale = max(abs(want[0]), abs(want[1]))
+    for etype, tol in (("CPS4", 1e-2), ("CPS8", 1e-4)):
+        errs = []
+        for nr, nt in ((4, 6), (8, 12), (16, 24)):
+            rows = run(exe, out, "kirsch_%s_%d" % (etype.lower(), nr),
+                       lambda d: kirsch_deck(d, etype, a, b, nr, nt, s0, e, nu))
+            errs.append(max(abs(rows[-1]["HOLE_X.U1"] - want[0]), abs(rows[-1]["HOLE_Y.U2"] - want[1])) / scale)
+        print("%s: hole displacement error %s (4x6, 8x12, 16x24)" % (etype, ", ".join("%.2e" % x for x in errs)))
+        close(etype + " 16x24 hole displacement (Kirsch)", errs[-1], 0.0, 0.0, tol)
+        for k in range(2):
+            if not (errs[k + 1] <= errs[k] / 3 or errs[k + 1] < 1e-9):
+                fail("%s: no convergence (%s)" % (etype, errs))
 
 
 def case_balloon(exe, out, user, three_d=False):
@@ -564,7 +826,7 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--case", required=True, choices=["small", "large", "steps", "release", "gravity", "lame2d",
-                                                      "lame3d", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
+                                                      "lame3d", "lame_quadratic", "lame_axisymmetric", "bending", "kirsch", "balloon", "balloon3d", "uel_loads", "initial_stress", "visco", "thermal", "equation", "tie"])
     ap.add_argument("--user", help="user routine file (balloon: the neo-Hookean UMAT; uel_loads: the UEL)")
     a = ap.parse_args()
     a.exe = os.path.abspath(a.exe)

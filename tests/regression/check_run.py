@@ -112,6 +112,7 @@ def case_cohesive_block(d, job):
 # homogeneous displacement gradients and interior nodes of the patch decks (tests/regression/make_single_decks.py)
 PATCH = {
     "patch_c3d8": ([[0.10, 0.02, -0.03], [-0.04, -0.05, 0.02], [0.03, 0.01, 0.06]], (0.57, 0.45, 0.54)),
+    "patch_c3d8_linear": ([[0.10, 0.02, -0.03], [-0.04, -0.05, 0.02], [0.03, 0.01, 0.06]], (0.57, 0.45, 0.54)),
     "patch_cpe4": ([[0.10, 0.02], [-0.04, -0.05]], (0.57, 0.45)),
 }
 
@@ -125,6 +126,21 @@ def case_patch(d, job):
     for i in range(len(x)):
         want = sum(a[i][c] * x[c] for c in range(len(x)))
         close("INNER.U%d (interior node on u = A X)" % (i + 1), row["INNER.U%d" % (i + 1)], want, 1e-8, 1e-12)
+
+
+def case_patch_linear(d, job):
+    """Linear patch test (NLGEOM=NO, *ELASTIC): the exact field as case_patch, and ONE Newton correction with the
+    default symmetric solver, since the small-strain B-bar stiffness of a linear elastic material is symmetric
+    (docs/elements.md); an unsymmetric element matrix solved with its symmetric part needs more."""
+    case_patch(d, job)
+    with open(os.path.join(d, job + ".sta")) as f:
+        rows = [line.split() for line in f if "converged" in line and not line.startswith("#")]
+    if not rows:
+        fail("no converged increment in JOB.sta")
+    for r in rows:
+        if int(r[3]) != 1:
+            fail("increment %s needed %s Newton iterations, expected 1" % (r[1], r[3]))
+    print("iterations per increment:", [int(r[3]) for r in rows])
 
 
 def case_quadratic(d, job):

@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""The built-in Leonov UMAT in ONE element of each continuum type against bin/material_point on the same history.
+
+  check_element_leonov.py --exe BIN --mp MATERIAL_POINT --out DIR
+
+Each deck is one element on the unit cube (unit square, thickness 1, for the plane-strain types) with EVERY node
+prescribed on u = (F(t) - I) X, F(t) = I + t/T (F_end - I) with stretch and shear (NLGEOM, T = 300 s, 30 DIRECT
+increments: the PET of Table 1 yields). A homogeneous F is reproduced exactly by every type (F-bar: J_c = J;
+incompatible modes: f_alpha = sigma F^-T int G_m dV J = 0, so alpha = 0; one-point types: no hourglass force), so
+every point calls the UMAT with the F of the driver's mode=deformation. The host's nodal reactions give the first
+Piola-Kirchhoff stress: sum_a RF_a (x) X_a = P V0 with P = J sigma F^-T, compared at every increment with the
+driver's Cauchy stress: max |P_host - P_driver| <= 1e-8 of the peak (the two differ only by round-off).
+"""
+import argparse
+import csv
+import os
+import subprocess
+import sys
+
+PROPS = "1250., 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990\n200., -4."
+F3 = [[1.25, 0.10, 0.0], [0.05, 0.92, 0.03], [0.0, -0.02, 0.95]]
+F2 = [[1.25, 0.10, 0.0], [0.05, 0.92, 0.0], [0.0, 0.0, 1.0]]
+T, STEPS = 300.0, 30
+
+CORNERS3 = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+HEX20_EDGES = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (6, 7), (7, 8), (8, 5), (1, 5), (2, 6), (3, 7), (4, 8)]
+TET_EDGES = [(1, 2), (2, 3), (3, 1), (1, 4), (2, 4), (3, 4)]
+CORNERS2 = [(0, 0), (1, 0), (1, 1), (0, 1)]
+QUAD_EDGES = [(1, 2), (2, 3), (3, 4), (4, 1)]
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def nodes_of(etype):
+    if etype.startswith("C3D4") or etype.startswith("C3D10"):
+        x = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+        edges = TET_EDGES if etype == "C3D10" else []
+    elif etype.startswith("C3D"):
+        x = list(CORNERS3)
+        edges = HEX20_EDGES if etype.startswith("C3D20") else []
+    else:
+        x = list(CORNERS2)
+        edges = QUAD_EDGES if etype.startswith("CPE8") else []
+    for a, b in edges:
+        x.append(tuple(0.5 * (p + q) for p, q in zip(x[a - 1], x[b - 1])))
+    return x
+
+
+def deck(path, etype):
+    x = nodes_of(etype)
+    nd = len(x[0])
+    f = F3 if nd == 3 else F2
+    out = ["*HEADING", "Leonov UMAT, one %s, homogeneous F (tests/regression/check_element_leonov.py)" % etype,
+           "*NODE, NSET=ALL"]
+    out += ["%d, %s" % (i + 1, ", ".join("%.15g" % c for c in p)) for i, p in enumerate(x)]
+    conn = ", ".join(str(i + 1) for i in range(len(x)))
+    out += ["*ELEMENT, TYPE=%s, ELSET=E" % etype]
+    if len(x) > 15:
+        out += ["1, " + ", ".join(str(i + 1) for i in range(15)) + ",",
+                ", ".join(str(i + 1) for i in range(15, len(x)))]
+    else:
+        out += ["1, " + conn]
+    for i in range(len(x)):
+        out += ["*NSET, NSET=N%d" % (i + 1), "%d," % (i + 1)]
+    out += ["*SOLID SECTION, ELSET=E, MATERIAL=PET", "*MATERIAL, NAME=PET", "*USER MATERIAL, CONSTANTS=10, UNSYMM",
+            PROPS, "*DEPVAR", "11", "**LDFCZ STATEV, MATERIAL=PET, PLASTIC STRAIN=7",
+            "*STEP, NLGEOM=YES, INC=1000", "*STATIC, DIRECT", "%g, %g" % (T / STEPS, T), "*BOUNDARY"]
+    for i, p in enumerate(x):
+        for d in range(nd):
+            u = sum(f[d][c] * p[c] for c in range(nd)) - p[d]
+            out.append("%d, %d, %d, %.15g" % (i + 1, d + 1, d + 1, u))
+    for i in range(len(x)):
+        out += ["*NODE PRINT, NSET=N%d, TOTALS=YES" % (i + 1), "RF1, RF2" + (", RF3" if nd == 3 else "")]
+    out += ["*END STEP"]
+    with open(path, "w") as fh:
+        fh.write("\n".join(out) + "\n")
+    return x, f
+
+
+def det3(a):
+    return (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+            + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+
+
+def inv3(a):
+    d = det3(a)
+    c = [[a[1][1] * a[2][2] - a[1][2] * a[2][1], a[0][2] * a[2][1] - a[0][1] * a[2][2],
+          a[0][1] * a[1][2] - a[0][2] * a[1][1]],
+         [a[1][2] * a[2][0] - a[1][0] * a[2][2], a[0][0] * a[2][2] - a[0][2] * a[2][0],
+          a[0][2] * a[1][0] - a[0][0] * a[1][2]],
+         [a[1][0] * a[2][1] - a[1][1] * a[2][0], a[0][1] * a[2][0] - a[0][0] * a[2][1],
+          a[0][0] * a[1][1] - a[0][1] * a[1][0]]]
+    return [[c[i][j] / d for j in range(3)] for i in range(3)]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--mp", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--types", default="C3D8,C3D8I,C3D8R,C3D20,C3D20R,C3D4,C3D10,CPE4,CPE4I,CPE4R,CPE8,CPE8R")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    drivers = {}
+    for nd, f in ((3, F3), (2, F2)):
+        csv_path = os.path.join(a.out, "mp_%dd.csv" % nd)
+        res = subprocess.run([a.mp, "mode=deformation", "time_end=%g" % T, "steps=%d" % STEPS,
+                              "f_end=" + " ".join("%.15g" % v for row in f for v in row), "output=" + csv_path],
+                             capture_output=True, text=True)
+        if res.returncode != 0:
+            fail("material_point failed: " + res.stderr)
+        drivers[nd] = {round(float(r["time"]), 6): r for r in csv.DictReader(open(csv_path))}
+    for etype in a.types.split(","):
+        job = etype.lower()
+        path = os.path.join(a.out, job + ".inp")
+        x, f_end = deck(path, etype)
+        nd = len(x[0])
+        vol = 1.0 / 6.0 if etype in ("C3D4", "C3D10") else 1.0
+        res = subprocess.run([a.exe, "-q", path], cwd=a.out, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             text=True)
+        if res.returncode != 0:
+            print(res.stdout)
+            fail("ldfcz exited with %d on %s" % (res.returncode, path))
+        worst, peak, n = 0.0, 0.0, 0
+        for r in csv.DictReader(open(os.path.join(a.out, job + ".csv"))):
+            t = round(float(r["step_time"]), 6)
+            mp = drivers[nd].get(t)
+            if mp is None:
+                continue
+            fm = [[float(mp["F%d%d" % (i + 1, j + 1)]) for j in range(3)] for i in range(3)]
+            s = [float(mp[k]) for k in ("S11", "S22", "S33", "S12", "S13", "S23")]
+            sig = [[s[0], s[3], s[4]], [s[3], s[1], s[5]], [s[4], s[5], s[2]]]
+            fit = inv3(fm)
+            jd = det3(fm)
+            p_drv = [[jd * sum(sig[i][k] * fit[j][k] for k in range(3)) for j in range(3)] for i in range(3)]
+            p_host = [[sum(float(r["N%d.RF%d" % (a_ + 1, i + 1)]) * x[a_][j] for a_ in range(len(x))) / vol
+                       for j in range(nd)] for i in range(nd)]
+            for i in range(nd):
+                for j in range(nd):
+                    worst = max(worst, abs(p_host[i][j] - p_drv[i][j]))
+                    peak = max(peak, abs(p_drv[i][j]))
+            n += 1
+        ok = n == STEPS and peak > 30.0 and worst <= 1e-8 * peak
+        print("%-7s increments %d, peak |P| %.3f MPa, max |P_host - P_driver| / peak %.2e %s"
+              % (etype, n, peak, worst / max(peak, 1e-300), "ok" if ok else "FAIL"))
+        if not ok:
+            fail(etype)
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
