@@ -121,7 +121,7 @@ def build(p):
         'n_far_x': len(far_x), 'n_flap_x': len(flap_x), 'nz_coating': p.nz, 'nz_steel': nzs,
         'ny': p.ny if three_d else 0,
         'width_mm': (2.0 * p.width if p.full_width else p.width) if three_d else 1.0, 'x_front_mm': x_front,
-        'x_load_mm': xs[-1], 'rigid_substrate': p.rigid_substrate, 'rate_mm_s': p.rate,
+        'x_load_mm': xs[-1], 'fine_length_mm': fine, 'rigid_substrate': p.rigid_substrate, 'rate_mm_s': p.rate,
         'du_mm': p.du, 'u_total_mm': p.u_total, 'phi_N_mm': p.phi,
     }
     w('*HEADING')

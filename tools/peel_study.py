@@ -29,9 +29,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import peel_deck  # noqa: E402  (same directory)
+import steady_force as sfe  # noqa: E402
 
-# The default plane-strain scene (the main job). Every study starts from these arguments.
-DEFAULT_PS = ['--rigid-substrate']
+# The default plane-strain scene (the main job). Every study starts from these arguments. Pulled 0.1 mm with a fine
+# region of 0.16 mm: the front (about 1.5 um per um of pull once steady) stays in the fine region, and the steady
+# force is read over a plateau of 40-50 um of pull (tools/steady_force.py; issue 17).
+DEFAULT_PS = ['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.16']
 DEFAULT_3D = ['--3d', '--rigid-substrate']
 
 
@@ -365,12 +368,24 @@ def collect(res, outdir, job, info, p, plateau, progress):
     res['u_end_mm'] = u[-1] if u else 0.0
     res['u_total_mm'] = p.u_total
     res['completed'] = bool(u) and abs(u[-1] - p.u_total) <= 1e-6 * p.u_total and rc == 0
-    res['F_w'], res['spread'] = steady_force(u, fw, plateau)
+    res['F_w_tail'], res['spread'] = steady_force(u, fw, plateau)
     vtus = sorted(x for x in os.listdir(outdir) if x.endswith('.vtu')) if os.path.isdir(outdir) else []
     front = read_vtu_front(os.path.join(outdir, vtus[-1]), info['delta_mm']) if vtus else None
     res['delaminated_mm'] = (info['x_front_mm'] - front) if front is not None else 0.0
     res['vtus'] = [os.path.join(outdir, x) for x in vtus]
     res['info'] = info
+    # the steady force with its plateau window and uncertainty (tools/steady_force.py): the front history of the
+    # field frames decides where the front is inside the fine region
+    hist = front_history(res)
+    est = sfe.estimate(u, fw, hist[1:] if len(hist) > 1 else None, info['l_e_mm'],
+                                info.get('fine_length_mm'))
+    res['steady'] = est
+    res['F_w'] = est['value'] if est['value'] == est['value'] else res['F_w_tail']
+    res['F_unc'] = est['uncertainty']
+    res['F_drift'] = est['drift']
+    res['F_ripple'] = est['ripple']
+    res['F_status'] = est['status']
+    res['F_window_um'] = '%.1f-%.1f' % (1e3 * est['window'][0], 1e3 * est['window'][1])
     if res.get('increments') and res.get('wall_s'):
         res['t_inc_s'] = res['wall_s'] / res['attempts'] if res.get('attempts') else res['wall_s'] / res['increments']
     if res.get('iterations') and res.get('wall_s'):
@@ -386,7 +401,12 @@ def write_report(study, results, outdir):
     for r in results:
         r['F_over_Fr'] = r['F_w'] / fref if fref == fref and fref else float('nan')
         r['error'] = abs(r['F_over_Fr'] - 1.0) if r['F_over_Fr'] == r['F_over_Fr'] else float('nan')
-    cols = ['label', 'reference', 'completed', 'exit', 'F_w', 'F_over_Fr', 'error', 'spread', 'delaminated_mm', 'run_time_s',
+    for r in results:
+        # an error is resolved when it exceeds the two steady-force uncertainties (tools/steady_force.py)
+        ur = ref[0].get('F_unc', float('nan')) if ref else float('nan')
+        r['resolved'] = (r['error'] > ur + r.get('F_unc', float('nan'))) if not r.get('reference') else ''
+    cols = ['label', 'reference', 'completed', 'exit', 'F_w', 'F_unc', 'F_status', 'F_window_um', 'F_drift',
+            'F_ripple', 'F_w_tail', 'F_over_Fr', 'error', 'resolved', 'spread', 'delaminated_mm', 'run_time_s',
             'increments', 'cutbacks', 'iterations', 'elements', 'dofs', 't_inc_s', 't_assembly_s', 't_factor_s',
             't_iter_s', 'attempts', 'energy_rel_diff', 'max_open_ratio', 'cpu_busy_before', 'cpu_time_s',
             'load_avg_start', 'load_avg_end', 'u_end_mm', 'solver', 'args']
@@ -418,14 +438,20 @@ def write_report(study, results, outdir):
         busy = 'Machine: %s, %d cores visible.' % (os.uname().nodename, os.cpu_count() or 1)
     lines = ['# Study %s' % study, '', head, '', busy,
              '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
-             'F/w: steady peel force per unit width (N/mm), mean over the last part of the pull; spread: (max-min)/mean '
-             'there; error: |F/F_r - 1| against the reference case (marked *).', '',
-             '| case | F/w (N/mm) | F/F_r | error | spread | delaminated (mm) | run time (s) | increments | cutbacks '
-             '| elements | DOFs | energy balance |',
-             '|---|---|---|---|---|---|---|---|---|---|---|---|']
+             'F/w: steady peel force per unit width (N/mm) by tools/steady_force.py: the pull-weighted mean over the '
+             'plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
+             'elements of its end, from where a straight-line fit drifts less than 0.5 %), +- its relative '
+             'uncertainty (half the drift plus the ripple\'s averaging bias); status: ok, or why the value is not '
+             'a plateau (no-plateau, front-not-in-fine-region); error: |F/F_r - 1| against the reference case '
+             '(marked *); resolved: the error exceeds the two uncertainties together.', '',
+             '| case | F/w (N/mm) | +- | window (um of pull) | status | F/F_r | error | resolved | delaminated (mm) '
+             '| run time (s) | increments | cutbacks | elements | DOFs | energy balance |',
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     for r in results:
-        lines.append('| %s%s | %.4f | %.4f | %.2e | %.1e | %.3f | %.1f | %s | %s | %d | %d | %s |' % (
-            r['label'], ' *' if r.get('reference') else '', r['F_w'], r['F_over_Fr'], r['error'], r['spread'],
+        lines.append('| %s%s | %.4f | %.2f %% | %s | %s | %.4f | %.2e | %s | %.3f | %.1f | %s | %s | %d | %d | %s |' % (
+            r['label'], ' *' if r.get('reference') else '', r['F_w'], 100 * r.get('F_unc', float('nan')),
+            r.get('F_window_um', '-'), r.get('F_status', '-'), r['F_over_Fr'], r['error'],
+            {True: 'yes', False: 'no'}.get(r['resolved'], '-'),
             r['delaminated_mm'], r['run_time_s'], int(r.get('increments', 0)), int(r.get('cutbacks', 0)),
             r['elements'], r['dofs'], '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-'))
         if not r['completed']:
@@ -447,6 +473,8 @@ def study_extras(study, results, outdir):
     """Study-specific lines under the table of STUDY.md."""
     out = []
     ok = [r for r in results if r['F_w'] == r['F_w']]
+    if study in ('mesh-x', 'mesh-z') or study.startswith('mesh-x') or study.startswith('mesh-z'):
+        out += richardson_lines(study, ok)
     if study == 'ps-vs-3d':
         out += ['', '| pair | F/w plane strain | F/w 3D | plane-strain overestimate | run time PS / 3D (s) | speed-up |',
                 '|---|---|---|---|---|---|']
@@ -514,6 +542,40 @@ def study_extras(study, results, outdir):
     elif study == 'application':
         for r in results:
             out += application_extras(r, outdir)
+    return out
+
+
+def mesh_size(r, study):
+    """The mesh parameter h of a case for Richardson: l_e (mm) for mesh-x, 1/n_z for mesh-z."""
+    if 'mesh-z' in study:
+        m = re.search(r'nz=(\d+)', r['label'])
+        return 1.0 / int(m.group(1)) if m else None
+    return r['l_e_mm']
+
+
+def richardson_lines(study, ok):
+    """Richardson estimate and observed order from every three consecutive meshes whose values are plateaus."""
+    rows = sorted([(mesh_size(r, study), r) for r in ok if mesh_size(r, study)], key=lambda t: -t[0])
+    out = ['', 'Richardson extrapolation (tools/steady_force.py) from three consecutive meshes (h = %s):' % (
+        '1/n_z' if 'mesh-z' in study else 'l_e'), '',
+        '| meshes | F/w (N/mm) | all plateaus | observed order p | F_inf (N/mm) | finest against F_inf |',
+        '|---|---|---|---|---|---|']
+    for k in range(len(rows) - 2):
+        tri = rows[k:k + 3]
+        hs = [t[0] for t in tri]
+        fs = [t[1]['F_w'] for t in tri]
+        plate = all(t[1].get('F_status') == 'ok' for t in tri)
+        f_inf, p, why = sfe.richardson(hs, fs)
+        # differences below the uncertainties are not resolved: no order from them
+        unc = max(t[1].get('F_unc', 0.0) for t in tri) * fs[-1]
+        if f_inf is not None and min(abs(fs[0] - fs[1]), abs(fs[1] - fs[2])) < unc:
+            why = 'differences (%.2g, %.2g N/mm) below the uncertainty %.2g N/mm' % (
+                fs[0] - fs[1], fs[1] - fs[2], unc)
+            f_inf = None
+        out.append('| %s | %s | %s | %s | %s | %s |' % (
+            ', '.join(t[1]['label'] for t in tri), ', '.join('%.4f' % f for f in fs), 'yes' if plate else 'no',
+            '%.2f' % p if f_inf is not None else '- (%s)' % why, '%.4f' % f_inf if f_inf is not None else '-',
+            '%.2f %%' % (100 * abs(fs[-1] / f_inf - 1)) if f_inf is not None else '-'))
     return out
 
 
@@ -821,9 +883,10 @@ def main(argv=None):
         r = run_case('peel_ps', DEFAULT_PS, work, ldfcz, a.threads, a.plateau, extra, a.time_limit, a.wait_idle)
         r['reference'] = True
         write_report('main', [r], outdir)
-        print('steady peel force per unit width: %.4f N/mm (plane strain, mean over the last %d%% of the pull, '
-              'spread %.1f%%), delamination %.3f mm, run time %.1f s' % (
-                  r['F_w'], round(100 * a.plateau), 100 * r['spread'], r['delaminated_mm'], r['run_time_s']))
+        print('steady peel force per unit width: %s; delamination %.3f mm, run time %.1f s' % (
+            sfe.describe(r['steady']), r['delaminated_mm'], r['run_time_s']))
+        for fl in r['steady']['flags']:
+            print('  flag: ' + fl)
         print('force-displacement: %s; plot: %s; ParaView frames: %s' % (
             os.path.join(outdir, 'main_curves.csv'), os.path.join(outdir, 'main.png'),
             os.path.join(work, r['job'], r['job'] + '.pvd')))
