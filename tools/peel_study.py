@@ -152,14 +152,21 @@ def find_ldfcz(path):
     raise SystemExit('peel_study: bin/ldfcz not found: build first (tools/setup.sh) or pass --ldfcz')
 
 
-def read_history(csv_path):
-    """(U1, RF1) lists from JOB.csv (columns LOAD.U1, LOAD.RF1)."""
+def read_history(csv_path, info=None):
+    """(pull, force) lists from JOB.csv: reading A (bridge) the columns LOAD.U1, LOAD.RF1; reading B (peel, info
+    from peel_deck.build) the displacement and reaction of LOAD along the pull direction d (x, z plane)."""
     u, f = [], []
+    d = info.get('pull_dir', (1.0, 0.0)) if info and info.get('reading') == 'peel' else None
     with open(csv_path) as fh:
         rows = csv.DictReader(fh)
         for r in rows:
-            u.append(float(r['LOAD.U1']))
-            f.append(float(r['LOAD.RF1']))
+            if d is None:
+                u.append(float(r['LOAD.U1']))
+                f.append(float(r['LOAD.RF1']))
+            else:
+                z = info['z_dof']
+                u.append(d[0] * float(r['LOAD.U1']) + d[1] * float(r['LOAD.U%d' % z]))
+                f.append(d[0] * float(r['LOAD.RF1']) + d[1] * float(r['LOAD.RF%d' % z]))
     return u, f
 
 
@@ -360,7 +367,7 @@ def collect(res, outdir, job, info, p, plateau, progress):
     csv_path = os.path.join(outdir, job + '.csv')
     rc = res['exit']
     wall = res['run_time_s']
-    u, f = read_history(csv_path) if os.path.exists(csv_path) else ([], [])
+    u, f = read_history(csv_path, info) if os.path.exists(csv_path) else ([], [])
     if u and (not progress or u[-1] > progress[-1][1] * (1.0 + 1e-5)):  # (the samples are written to 6 digits)
         progress.append((wall, u[-1]))
     res['progress'] = progress
