@@ -26,6 +26,14 @@ E1 = math.exp(1.0)
 
 # Table 1 (PET), PROPS order of docs/umat.md: E (MPa), nu, S_a, eta_0r (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2
 PET_TABLE1 = [1250.0, 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990, 200.0, -4.0]
+# A documented alternative reading of Table 1 (issue 17; docs/scenes.md "Table 1"): the printed eta_0r = 0.486 MPa s
+# leaves the fully softened material (S -> 0) almost no flow stress. The alternative keeps the aged viscosity
+# eta_0r exp(S_a) = 1.05e12 MPa s of the printed set (hence the same yield stress at every rate and pressure, Eq. 37)
+# and gives half of the printed S_a to the rejuvenated state: S_a' = S_a / 2 = 14.2, eta_0r' = eta_0r exp(S_a / 2).
+PET_ALT = list(PET_TABLE1)
+PET_ALT[2] = PET_TABLE1[2] / 2.0
+PET_ALT[3] = PET_TABLE1[3] * math.exp(PET_TABLE1[2] / 2.0)
+PET_SETS = {'table1': PET_TABLE1, 'alt': PET_ALT}
 LEONOV_NSTATV = 11          # docs/umat.md: NSTATV >= 11
 STEEL = (210000.0, 0.3)     # MPa, -
 UEL_NSVARS_PER_IP = 4       # docs/uel.md: 4 SVARS per Gauss point
@@ -275,7 +283,7 @@ def build(p):
         if not three_d:
             w('1.0')
     w('*MATERIAL, NAME=PET')
-    pet = list(PET_TABLE1) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
+    pet = list(PET_SETS[p.pet]) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
     w('*USER MATERIAL, CONSTANTS=%d, UNSYMM' % len(pet))
     w(', '.join('%.9g' % v for v in pet[:8]))
     w(', '.join('%.9g' % v for v in pet[8:]))
@@ -356,6 +364,9 @@ def parser():
     g.add_argument('--grip', choices=('fixed', 'carriage'), default='fixed',
                    help='reading B: fixed (default): the flap end moves by u_total along the peel direction, '
                    'both components prescribed; carriage (90 degrees only): u_z prescribed, u_x free')
+    g.add_argument('--pet', choices=sorted(PET_SETS), default='table1',
+                   help='PET constants: table1 (as printed, default) or alt (same aged viscosity eta_0r exp(S_a), '
+                   'S_a halved: a rejuvenated state with a flow stress; docs/scenes.md)')
     g.add_argument('--dgamma-max', type=float, default=0.0,
                    help='PET accuracy bound on the plastic strain increment, PROPS(11); 0 = UMAT default 0.05')
     g = ap.add_argument_group('interface (LDF, docs/uel.md)')
