@@ -6,7 +6,7 @@ add_test(NAME peel_generator
 set_tests_properties(peel_generator PROPERTIES LABELS "regression;peel" TIMEOUT 120)
 
 if(TARGET ldfcz)
-  foreach(_case refinement symmetry)
+  foreach(_case refinement symmetry readings)
     add_test(NAME peel_${_case}
       COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_peel.py" ${_case}
               $<TARGET_FILE:ldfcz> "${CMAKE_CURRENT_BINARY_DIR}/peel_${_case}")

@@ -207,15 +207,16 @@ def observed_order(h, F, tol=1e-12):
     ratio = d12 / d23
     r12, r23 = h1 / h2, h2 / h3
     if abs(r12 - r23) < 1e-9 * r23:
-        if ratio <= 0:
-            return None, 'no order'
-        return math.log(ratio) / math.log(r23), ''
+        p = math.log(ratio) / math.log(r23)
+        if p <= 0.0:
+            return None, 'differences growing with refinement (p = %.2f <= 0): not in the asymptotic range' % p
+        return p, ''
 
     def g(p):
         return (h1 ** p - h2 ** p) / (h2 ** p - h3 ** p) - ratio
     lo, hi = 1e-3, 20.0
     if g(lo) * g(hi) > 0:
-        return None, 'no order in (0, 20]'
+        return None, 'no order in (0, 20]: not in the asymptotic range'
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if g(lo) * g(mid) <= 0:

@@ -129,5 +129,8 @@ check(abs(p - 1.5) < 1e-8 and abs(fi - 1) < 1e-8, 'Richardson uneven ratio: p = 
 fi, p, why = sf.richardson([4, 2, 1], [1.01, 0.99, 1.005])
 check(p is None and 'oscillat' in why, 'Richardson oscillating: no order (%s)' % why)
 
+fi, p, why = sf.richardson([4, 2, 1], [1.0, 1.001, 1.003])
+check(p is None and 'asymptotic' in why, 'Richardson growing differences: no order (%s)' % why)
+
 print('%d failure(s)' % len(BAD))
 sys.exit(1 if BAD else 0)
