@@ -79,18 +79,22 @@ def refinement(ldfcz, work):
 
 
 # Readings of Fig. 10 (issue 17): plane strain, rigid substrate, l_e = 10 um, n_z = 3, 0.1 mm of pull over a 0.16 mm
-# fine region (the studies' scene). Asserted for each reading:
+# fine region. Reading A: the 0-degree bridge. Reading B: the flap lifted at 90 degrees and pulled by a fixed grip
+# (the grip's line stays at x = const, so the peel angle falls towards ~55 degrees as the front runs away: a
+# plateau within 0.1 mm of pull; the carriage grip, which keeps 90 degrees, has not settled within 0.16 mm and is
+# a study case, not a regression). Asserted for each reading:
 # - the steady-force estimator finds a plateau (status ok) with an uncertainty below UNC_TOL;
-# - energy: over the plateau window the work of the pull exceeds the interface's phi times the delaminated area
+# - energy: over the plateau window the work of the pull exceeds the interface's phi times the delaminated length
 #   (F/w du >= phi da; the rest is the coating's plastic work); a lost cohesive law or a wrong width normalisation
 #   breaks it;
-# - the value agrees with the mesh-converged plateau of the stmt-mesh-x study (Richardson F_inf from l_e = 10, 5,
-#   2.5 um: A 1.1908, B 0.4888 N/mm; reports/stmt-mesh-x) within the l_e = 10 um discretisation error measured
-#   there plus three uncertainties: READ_TOL.
+# - the value agrees with the finest mesh of the l_e study (l_e = 2.5 um, same scene: A 1.1964 N/mm, reports/
+#   stmt-mesh-x; B fixed grip 0.5167 N/mm, first pass of stmt-mesh-x, docs/scenes.md) within READ_TOL: the measured
+#   l_e = 10 um discretisation error (A 0.28 %, B 0.7 %) plus three times the two runs' uncertainties (A 0.05 and
+#   0.1 %, B 0.7 and 0.6 %), rounded up: A 1 %, B 5 %.
 READINGS = {
-    'A': (['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.16'], 1.1908, 0.012),
+    'A': (['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.16'], 1.1964, 0.01),
     'B': (['--rigid-substrate', '--reading', 'peel', '--flap', '0.1', '--u-total', '0.1', '--fine-length', '0.16'],
-          0.4888, 0.06),
+          0.5167, 0.05),
 }
 UNC_TOL = 0.02
 
