@@ -777,9 +777,10 @@ def statements(reports):
         uz = {n: fnum(mz.get('%s nz=%d' % (k, n)), 'F_unc') for n in (1, 2, 3, 5, 9)}
         c['nz1'] = pct(fz[1] / fz[9] - 1, uz[1] + uz[9])
         ok_n = [n for n in (1, 2, 3, 5) if fz[n] == fz[n] and abs(fz[n] / fz[9] - 1) < 0.005]
-        c['nz05'] = ('n_z = %d (errors %s against n_z = 9)' % (ok_n[0], ', '.join(
-            '%d: %.2f %%' % (n, 100 * abs(fz[n] / fz[9] - 1)) for n in (1, 2, 3, 5) if fz[n] == fz[n]))
-            if ok_n else (nm if fz[9] != fz[9] else 'none below 9'))
+        errs = ', '.join('%d: %.2f %% (+-%.2f)' % (n, 100 * abs(fz[n] / fz[9] - 1), 100 * (uz[n] + uz[9]))
+                         for n in (1, 2, 3, 5) if fz[n] == fz[n])
+        c['nz05'] = ('n_z = %d (errors %s against n_z = 9)' % (ok_n[0], errs) if ok_n else
+                     (nm if fz[9] != fz[9] else 'none below 9 (errors %s)' % errs))
         les = [0.02, 0.01, 0.005, 0.0025]
         fx = {le: val(mx, '%s le=%g' % (k, le))[0] for le in les}
         ux = {le: fnum(mx.get('%s le=%g' % (k, le)), 'F_unc') for le in les}
@@ -806,15 +807,17 @@ def statements(reports):
                                                      max(p_[0] for p_ in pts)) if len(pts) >= 2 else nm)
         inc = [(lab, r) for lab, r in mi.items() if group(lab) == k]
         fr = [fnum(r, 'F_w') for lab, r in inc if 'reference' in lab]
+        ufr = [fnum(r, 'F_unc') for lab, r in inc if 'reference' in lab]
         desc = []
         for lab, r in inc:
             if 'reference' in lab:
                 continue
             done = r.get('completed') == 'True'
             desc.append('%s um/inc requested: %s' % (lab.split(',')[-1].split('um')[0].strip(), (
-                'taken %.3g/%.3g/%.3g um (min/median/max), error %.2f %%' % (
+                'taken %.3g/%.3g/%.3g um (min/median/max), error %.2f %% (+-%.2f)' % (
                     fnum(r, 'du_min_um'), fnum(r, 'du_median_um'), fnum(r, 'du_max_um'),
-                    100 * abs(fnum(r, 'F_w') / fr[0] - 1) if fr else float('nan'))) if done else 'not completed'))
+                    100 * abs(fnum(r, 'F_w') / fr[0] - 1) if fr else float('nan'),
+                    100 * (fnum(r, 'F_unc') + ufr[0]) if ufr else float('nan'))) if done else 'not completed'))
         c['inc'] = '; '.join(desc) if desc else nm
         cells[k] = c
     table = [
