@@ -832,7 +832,7 @@ def statements(reports):
         ('load step (section 7)', 'error < 1 % for all steps; stable up to 100 nm/inc (PET model)', 'inc'),
     ]
     out = ['# The paper\'s statements against the two readings of Fig. 10', '',
-           'Written by `tools/peel_study.py statements` on %s from reports/stmt-mesh-x, stmt-mesh-z, stmt-3d and '
+           'Written by `tools/peel_study.py statements` on %s from reports/stmt-mesh-x, stmt-mesh-z, stmt-3d, stmt-3d-fine and '
            'stmt-increment (each made by `tools/peel_study.py STUDY --threads 1`; their .md files hold every case, '
            'run times and the machine load). Reading A: the 0-degree bridge (the coating drawn along x); reading B: '
            'the pre-delaminated flap lifted and pulled at 90 degrees (carriage grip, u_x free). Plane strain, rigid substrate, '

@@ -58,7 +58,7 @@ def refinement(ldfcz, work):
         r = peel_study.run_case(label, COMMON + ['--le', str(le), '--nz', str(nz)], work, ldfcz, 1, 0.3)
         res[le] = r
         print('%s: F/w = %.4f N/mm, spread %.3f, delaminated %.4f mm, energy balance %s, %.1f s' % (
-            label, r['F_w'], r['spread'], r['delaminated_mm'], r.get('energy_rel_diff'), r['run_time_s']))
+            label, r['F_w_tail'], r['spread'], r['delaminated_mm'], r.get('energy_rel_diff'), r['run_time_s']))
         if not r['completed']:
             fail(bad, '%s did not complete (exit %d, U1 = %g mm)' % (label, r['exit'], r['u_end_mm']))
             continue
@@ -71,7 +71,9 @@ def refinement(ldfcz, work):
         if not e < ENERGY_TOL:
             fail(bad, '%s: energy balance %.3e >= %.3e' % (label, e, ENERGY_TOL))
     if all(r['completed'] for r in res.values()):
-        d = abs(res[0.02]['F_w'] / res[0.01]['F_w'] - 1.0)
+        # the mean over the last 30 % of the 50 um pull for both (too short a pull for the plateau estimator at
+        # l_e = 20 um: the front crosses 3 elements only at its end; peel_readings checks the plateaus)
+        d = abs(res[0.02]['F_w_tail'] / res[0.01]['F_w_tail'] - 1.0)
         print('refinement l_e 20 -> 10 um: |F_20/F_10 - 1| = %.4f (tolerance %.3f)' % (d, REFINE_TOL))
         if not d < REFINE_TOL:
             fail(bad, 'steady force not stable under refinement: %.4f >= %.3f' % (d, REFINE_TOL))
