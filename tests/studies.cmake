@@ -6,10 +6,15 @@ add_test(NAME peel_generator
 set_tests_properties(peel_generator PROPERTIES LABELS "regression;peel" TIMEOUT 120)
 
 if(TARGET ldfcz)
-  foreach(_case refinement symmetry)
+  foreach(_case refinement symmetry readings)
     add_test(NAME peel_${_case}
       COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_peel.py" ${_case}
               $<TARGET_FILE:ldfcz> "${CMAKE_CURRENT_BINARY_DIR}/peel_${_case}")
     set_tests_properties(peel_${_case} PROPERTIES LABELS "regression;peel" TIMEOUT 600)
   endforeach()
 endif()
+
+# The steady-force estimator (tools/steady_force.py) on synthetic curves with known answers (no solver needed).
+add_test(NAME steady_force
+  COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_steady_force.py")
+set_tests_properties(steady_force PROPERTIES LABELS "regression;peel" TIMEOUT 60)

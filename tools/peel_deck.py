@@ -26,6 +26,14 @@ E1 = math.exp(1.0)
 
 # Table 1 (PET), PROPS order of docs/umat.md: E (MPa), nu, S_a, eta_0r (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2
 PET_TABLE1 = [1250.0, 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990, 200.0, -4.0]
+# A documented alternative reading of Table 1 (issue 17; docs/scenes.md "Table 1"): the printed eta_0r = 0.486 MPa s
+# leaves the fully softened material (S -> 0) almost no flow stress. The alternative keeps the aged viscosity
+# eta_0r exp(S_a) = 1.05e12 MPa s of the printed set (hence the same yield stress at every rate and pressure, Eq. 37)
+# and gives half of the printed S_a to the rejuvenated state: S_a' = S_a / 2 = 14.2, eta_0r' = eta_0r exp(S_a / 2).
+PET_ALT = list(PET_TABLE1)
+PET_ALT[2] = PET_TABLE1[2] / 2.0
+PET_ALT[3] = PET_TABLE1[3] * math.exp(PET_TABLE1[2] / 2.0)
+PET_SETS = {'table1': PET_TABLE1, 'alt': PET_ALT}
 LEONOV_NSTATV = 11          # docs/umat.md: NSTATV >= 11
 STEEL = (210000.0, 0.3)     # MPa, -
 UEL_NSVARS_PER_IP = 4       # docs/uel.md: 4 SVARS per Gauss point
@@ -85,6 +93,27 @@ def build(p):
     nbx = len(far_x) + len(fine_x)          # element columns over the substrate
     nxt = len(xs) - 1                        # element columns of the coating
     x_front = xs[nbx]
+    peel = p.reading == 'peel'
+    theta = math.radians(p.peel_angle) if peel else 0.0
+    radius = p.bend_radius if p.bend_radius else 1.5 * p.coating
+
+    def coat_xz(ix, t):
+        """(x, z) of the coating node of column ix at height t above the interface. Bonded part and the bridge's
+        flap: (x, t). Peel reading: the flap's column at arc length s = x - x_front along its bottom face is bent
+        upwards about the centre (x_front, R) by the angle s/R up to the peel angle theta (bottom face at radius R,
+        top face at R - h_c), then runs straight in the direction (cos theta, sin theta)."""
+        x = xs[ix]
+        if not peel or ix <= nbx or theta == 0.0:
+            return x, t
+        sa = x - x_front
+        sb = radius * theta
+        a = min(sa / radius, theta)
+        xx = x_front + (radius - t) * math.sin(a)
+        zz = radius - (radius - t) * math.cos(a)
+        if sa > sb:
+            xx += (sa - sb) * math.cos(theta)
+            zz += (sa - sb) * math.sin(theta)
+        return xx, zz
     # ---- z stations: coating uniform n_z; steel graded from the interface down
     zc = [p.coating * k / p.nz for k in range(p.nz + 1)]
     if p.rigid_substrate:
@@ -121,12 +150,23 @@ def build(p):
         'n_far_x': len(far_x), 'n_flap_x': len(flap_x), 'nz_coating': p.nz, 'nz_steel': nzs,
         'ny': p.ny if three_d else 0,
         'width_mm': (2.0 * p.width if p.full_width else p.width) if three_d else 1.0, 'x_front_mm': x_front,
-        'x_load_mm': xs[-1], 'rigid_substrate': p.rigid_substrate, 'rate_mm_s': p.rate,
-        'du_mm': p.du, 'u_total_mm': p.u_total, 'phi_N_mm': p.phi,
+        'x_load_mm': xs[-1], 'fine_length_mm': fine, 'rigid_substrate': p.rigid_substrate, 'rate_mm_s': p.rate,
+        'du_mm': p.du, 'u_total_mm': p.u_total, 'phi_N_mm': p.phi, 'reading': p.reading,
+        'peel_angle_deg': p.peel_angle if peel else 0.0, 'bend_radius_mm': radius if peel else 0.0,
+        'grip': p.grip if peel else 'fixed', 'flap_mm': p.flap,
     }
+    # the pull: LOAD moves by u_total along d = (cos theta, sin theta) in the (x, z) plane; the peel force is the
+    # reaction along d. Carriage grip (90 degrees only): u_z prescribed, u_x free (the specimen rides on a carriage
+    # that keeps the arm vertical). z is dof 3 in 3D, dof 2 in plane strain.
+    zdof = 3 if three_d else 2
+    pull_dir = tuple(0.0 if abs(c) < 1e-12 else c for c in (math.cos(theta), math.sin(theta)))
+    if peel and p.grip == 'carriage':
+        pull_dir = (0.0, 1.0)
+    info.update({'z_dof': zdof, 'pull_dir': pull_dir})
     w('*HEADING')
-    w('ldfcz peel scene (tools/peel_deck.py): %s, PET %g mm on %s, LDF phi=%g N/mm delta=%.4e mm'
-      % ('3D quarter' if three_d else 'plane strain', p.coating,
+    w('ldfcz peel scene (tools/peel_deck.py): %s%s, PET %g mm on %s, LDF phi=%g N/mm delta=%.4e mm'
+      % ('3D quarter' if three_d else 'plane strain',
+         ', reading B: flap lifted at %g degrees (%s grip)' % (p.peel_angle, p.grip) if peel else '', p.coating,
          'rigid substrate' if p.rigid_substrate else 'steel %g mm' % p.substrate, p.phi, delta))
     # parameters as JSON, split into comment lines of at most 132 characters (Abaqus reads lines up to 256)
     pj = json.dumps({k: v for k, v in sorted(vars(p).items()) if k not in ('output', 'info')}, sort_keys=True)
@@ -134,20 +174,23 @@ def build(p):
         w('**PARAMS ' + pj[k:k + 120])
     w('** units: mm, N, s, MPa. x along the specimen, %s through the thickness%s.'
       % ('z' if three_d else 'coordinate 2 (the paper\'s z)', ', y the width' if three_d else ''))
+    rfd = 'RF1' if not peel else ('RF%d' % zdof if p.grip == 'carriage' else
+                                   '(RF1 cos %g + RF%d sin %g)' % (p.peel_angle, zdof, p.peel_angle))
     if three_d:
-        fw = ('RF1 of LOAD / (2 b), b = %g mm (full width modelled)' if p.full_width else
-              'RF1 of LOAD / b, b = %g mm (quarter model: modelled width = half the specimen width)') % p.width
+        fw = ('%s of LOAD / (2 b), b = %%g mm (full width modelled)' % rfd if p.full_width else
+              '%s of LOAD / b, b = %%g mm (quarter model: modelled width = half the specimen width)' % rfd) % p.width
     else:
-        fw = 'RF1 of LOAD (plane strain, unit thickness)'
+        fw = '%s of LOAD (plane strain, unit thickness)' % rfd
     w('** peel force per unit width: ' + fw)
     w('*NODE')
     for iz, z in enumerate(zc):
         for iy, y in enumerate(ys):
-            for ix, x in enumerate(xs):
+            for ix in range(nxt + 1):
+                x, zz = coat_xz(ix, z)
                 if three_d:
-                    w('%d, %.9g, %.9g, %.9g' % (cid(ix, iy, iz), x, y, z))
+                    w('%d, %.9g, %.9g, %.9g' % (cid(ix, iy, iz), x, y, zz))
                 else:
-                    w('%d, %.9g, %.9g' % (cid(ix, iy, iz), x, z))
+                    w('%d, %.9g, %.9g' % (cid(ix, iy, iz), x, zz))
     for iz, z in enumerate(zs):
         for iy, y in enumerate(ys):
             for ix in range(nbx + 1):
@@ -240,7 +283,7 @@ def build(p):
         if not three_d:
             w('1.0')
     w('*MATERIAL, NAME=PET')
-    pet = list(PET_TABLE1) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
+    pet = list(PET_SETS[p.pet]) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
     w('*USER MATERIAL, CONSTANTS=%d, UNSYMM' % len(pet))
     w(', '.join('%.9g' % v for v in pet[:8]))
     w(', '.join('%.9g' % v for v in pet[8:]))
@@ -263,18 +306,28 @@ def build(p):
     # INC only caps runaway runs: the UMAT cuts increments to keep the plastic strain increment below 0.05, which
     # on fine meshes means increments far below --du (about 0.05 um at l_e = 2.5 um)
     w('*STEP, NLGEOM=YES, INC=%d%s' % (50 * ninc + 1000, ', EXTRAPOLATION=NO' if p.no_extrapolation else ''))
-    w('pull the flap end: u_x = %g mm at %g mm/s with %g mm per increment' % (p.u_total, p.rate, p.du))
+    if peel:
+        w('pull the lifted flap end by %g mm along %g degrees (%s grip) at %g mm/s with %g mm per increment'
+          % (p.u_total, p.peel_angle, p.grip, p.rate, p.du))
+    else:
+        w('pull the flap end: u_x = %g mm at %g mm/s with %g mm per increment' % (p.u_total, p.rate, p.du))
     w('*STATIC')
     w('%.9g, %.9g, %.9g, %.9g' % (dt, period, dt * p.dt_min_ratio, dt))
     w('*BOUNDARY')
-    w('LOAD, 1, 1, %.9g' % p.u_total)
+    if not peel:
+        w('LOAD, 1, 1, %.9g' % p.u_total)
+    elif p.grip == 'carriage':
+        w('LOAD, %d, %d, %.9g' % (zdof, zdof, p.u_total))
+    else:
+        w('LOAD, 1, 1, %.9g' % (p.u_total * pull_dir[0]))
+        w('LOAD, %d, %d, %.9g' % (zdof, zdof, p.u_total * pull_dir[1]))
     w('*OUTPUT, FIELD, FREQUENCY=%d' % p.field_frequency)
     w('*NODE OUTPUT')
     w('U, RF')
     w('*ELEMENT OUTPUT')
     w('S, SDV')
     w('*NODE PRINT, NSET=LOAD, TOTALS=YES')
-    w('RF1, U1, U2')
+    w('RF1, RF%d, U1, U%d' % (zdof, zdof) if peel else 'RF1, U1, U2')
     w('*END STEP')
 
     nel = eid
@@ -299,6 +352,21 @@ def parser():
                    help='3D: modelled width b = half the specimen width (mm), default 0.040')
     g.add_argument('--full-width', action='store_true',
                    help='3D: model y in [-b, b] without the YSYMM plane (checks the quarter model; 2 n_y elements)')
+    g.add_argument('--reading', choices=('bridge', 'peel'), default='bridge',
+                   help='Fig. 10 reading: bridge (A, default: the flap bridges the broken substrate and is pulled '
+                   'along x) or peel (B: the pre-delaminated flap is lifted and pulled at --peel-angle)')
+    g.add_argument('--peel-angle', type=float, default=90.0,
+                   help='reading B: angle of the lifted flap and of the pull from the interface (degrees, 0-180], '
+                   'default 90')
+    g.add_argument('--bend-radius', type=float, default=0.0,
+                   help='reading B: radius of the flap\'s bottom face in its initial bend (mm, > h_c); '
+                   'default 1.5 h_c')
+    g.add_argument('--grip', choices=('fixed', 'carriage'), default='fixed',
+                   help='reading B: fixed (default): the flap end moves by u_total along the peel direction, '
+                   'both components prescribed; carriage (90 degrees only): u_z prescribed, u_x free')
+    g.add_argument('--pet', choices=sorted(PET_SETS), default='table1',
+                   help='PET constants: table1 (as printed, default) or alt (same aged viscosity eta_0r exp(S_a), '
+                   'S_a halved: a rejuvenated state with a flow stress; docs/scenes.md)')
     g.add_argument('--dgamma-max', type=float, default=0.0,
                    help='PET accuracy bound on the plastic strain increment, PROPS(11); 0 = UMAT default 0.05')
     g = ap.add_argument_group('interface (LDF, docs/uel.md)')
@@ -346,6 +414,19 @@ def check(p):
         raise SystemExit('peel_deck: --nz, --ny must be >= 1')
     if p.du > p.u_total:
         raise SystemExit('peel_deck: --du larger than --u-total')
+    if p.reading == 'peel':
+        if not 0.0 < p.peel_angle <= 180.0:
+            raise SystemExit('peel_deck: --peel-angle must be in (0, 180] degrees')
+        r = p.bend_radius if p.bend_radius else 1.5 * p.coating
+        if r <= p.coating:
+            raise SystemExit('peel_deck: --bend-radius must exceed the coating thickness %g mm' % p.coating)
+        if p.flap < r * math.radians(p.peel_angle):
+            raise SystemExit('peel_deck: --flap %g mm is shorter than the bend (R theta = %g mm): lengthen it'
+                             % (p.flap, r * math.radians(p.peel_angle)))
+        if p.grip == 'carriage' and p.peel_angle != 90.0:
+            raise SystemExit('peel_deck: --grip carriage needs --peel-angle 90')
+    elif p.grip != 'fixed' or p.bend_radius or p.peel_angle != 90.0:
+        raise SystemExit('peel_deck: --peel-angle, --bend-radius, --grip belong to --reading peel')
 
 
 def main(argv=None):

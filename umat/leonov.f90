@@ -416,16 +416,27 @@ contains
       else
         u_hi = u
       end if
-      du = -g / dg
       x = x_tr - v
-      if (v > x .and. x < 1.0_dp) then
-        ! step in ln x: d(ln x)/du = -v/x; new drop v' = x_tr - x exp(dy) must stay in (0, x_tr)
-        dy = -du * v / x
-        if (dy < 30.0_dp) then
-          if (x * exp(dy) < x_tr) du = log((x_tr - x * exp(dy)) / v)
+      if (g <= -huge(1.0_dp)) then
+        ! G dgamma >= tau_tr (round-off at the upper bracket, g_of's flag): no Newton step (it would be -huge and
+        ! overflow below); bisect when bracketed, else step down
+        if (have_lo) then
+          du = 0.5_dp * (u_lo + u_hi) - u
+        else
+          du = -5.0_dp
         end if
-      else if (v > 1.0_dp .and. du > -1.0_dp) then
-        du = log(1.0_dp + du)
+      else
+        du = -g / dg
+        if (v > x .and. x < 1.0_dp) then
+          ! step in ln x: d(ln x)/du = -v/x; new drop v' = x_tr - x exp(dy) must stay in (0, x_tr); dy < 30 tested
+          ! before dividing (x may be tiny)
+          if (-du * v < 30.0_dp * x) then
+            dy = -du * v / x
+            if (x * exp(dy) < x_tr) du = log((x_tr - x * exp(dy)) / v)
+          end if
+        else if (v > 1.0_dp .and. du > -1.0_dp) then
+          du = log(1.0_dp + du)
+        end if
       end if
       un = u + du
       if (abs(du) <= 1.0e-12_dp * max(1.0_dp, abs(u))) then

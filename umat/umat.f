@@ -22,8 +22,22 @@
 !       stress over J, analytic (implicit function theorem on the
 !       return map, module leonov); not symmetric in general:
 !       declare UNSYMM.
-!     SSE = G/2 (tr Be~ - 3) + kappa/2 (J-1)^2 + G_r/2 (tr B~ - 3);
-!       SPD += tau_bar dgamma_p; SCD unchanged.
+!     SSE, SPD per unit CURRENT volume (the host, like Abaqus for
+!       the energy output (inferred), integrates them over the current
+!       volume J dV): SSE = psi / J with, per unit reference volume,
+!       psi = J (G/2 (tr Be~ - 3) + G_r/2 (tr B~ - 3)) + kappa/2 (J-1)^2
+!       (the Cauchy deviators G dev Be~, G_r dev B~ of Eqs. 31-33 are
+!       Kirchhoff deviators / J: J psi_dev; exact for J = 1, otherwise
+!       short by int psi_dev dJ, ~3e-4 of the work in uniaxial tension
+!       of PET: the model has no exact stored energy when J varies);
+!       SPD = (SPD_n J_n + d) / J with d = (J_n tau_bar_n + J tau_bar)
+!       dgamma_p / 2, the viscoplastic dissipation of the increment per
+!       unit reference volume by the mid-point (trapezoidal) rule on
+!       the dissipation rate J tau_bar gamma_p_dot (Eqs. 36-40):
+!       second order in the increment like the host's trapezoidal
+!       external work, so the energy balance is a consistency check
+!       (docs/umat.md, tests/regression/check_energy_pet.py).
+!       SCD unchanged.
 !     PNEWDT (written only to request a cutback): 0.25 if the local
 !       Newton fails or DFGRD1/STATEV are unusable (STRESS, STATEV
 !       then unchanged, DDSDDE isotropic elastic); < 1 when
@@ -54,7 +68,8 @@
 !
       TYPE(LEONOV_PROPS) PR
       TYPE(LEONOV_STATE) OLD, ANEW
-      DOUBLE PRECISION SIG(3,3), C6(6,6), FACTOR, BT(3,3), DETF
+      DOUBLE PRECISION SIG(3,3), C6(6,6), FACTOR, BT(3,3), DETF, DETF0
+      DOUBLE PRECISION PSI
       INTEGER ISTAT, K, L, INTV(1)
       INTEGER, PARAMETER :: IV(6) = [1, 2, 3, 1, 1, 2]
       INTEGER, PARAMETER :: JV(6) = [1, 2, 3, 2, 3, 3]
@@ -118,11 +133,17 @@
      1 DFGRD1(3,2)) - DFGRD1(1,2)*(DFGRD1(2,1)*DFGRD1(3,3)-
      2 DFGRD1(2,3)*DFGRD1(3,1)) + DFGRD1(1,3)*(DFGRD1(2,1)*
      3 DFGRD1(3,2)-DFGRD1(2,2)*DFGRD1(3,1))
+      DETF0 = DFGRD0(1,1)*(DFGRD0(2,2)*DFGRD0(3,3)-DFGRD0(2,3)*
+     1 DFGRD0(3,2)) - DFGRD0(1,2)*(DFGRD0(2,1)*DFGRD0(3,3)-
+     2 DFGRD0(2,3)*DFGRD0(3,1)) + DFGRD0(1,3)*(DFGRD0(2,1)*
+     3 DFGRD0(3,2)-DFGRD0(2,2)*DFGRD0(3,1))
       BT = MATMUL(DFGRD1, TRANSPOSE(DFGRD1)) * DETF**(-2.0D0/3.0D0)
-      SSE = 0.5D0*PR%G*(ANEW%BE(1,1)+ANEW%BE(2,2)+ANEW%BE(3,3)-3.0D0)
-     1 + 0.5D0*PR%KAPPA*(DETF-1.0D0)**2
-     2 + 0.5D0*PR%G_R*(BT(1,1)+BT(2,2)+BT(3,3)-3.0D0)
-      SPD = SPD + ANEW%TAU_BAR*ANEW%DGAMMA
+      PSI = DETF*(0.5D0*PR%G*(ANEW%BE(1,1)+ANEW%BE(2,2)+ANEW%BE(3,3)
+     1 -3.0D0) + 0.5D0*PR%G_R*(BT(1,1)+BT(2,2)+BT(3,3)-3.0D0))
+     2 + 0.5D0*PR%KAPPA*(DETF-1.0D0)**2
+      SSE = PSI / DETF
+      SPD = (SPD*DETF0 + 0.5D0*(DETF0*OLD%TAU_BAR + DETF*ANEW%TAU_BAR)*
+     1 ANEW%DGAMMA) / DETF
       IF (ISTAT .EQ. LEONOV_STEP_TOO_LARGE) THEN
         IF (.NOT. (PNEWDT .GT. 0.0D0 .AND. PNEWDT .LT. FACTOR))
      1   PNEWDT = FACTOR

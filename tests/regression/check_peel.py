@@ -10,6 +10,9 @@ run ldfcz on them and assert physical facts with stated tolerances.
       over the full width without the symmetry plane: RF1_full = 2 RF1_quarter at every increment within SYM_TOL,
       mean U2 of the loaded face of the full model zero (no out-of-plane drift), and the quarter's loaded face
       contracts towards the symmetry plane (U2 < 0: the plane is active and the edge y = b free).
+  check_peel.py readings LDFCZ WORKDIR     plane-strain peel of each reading of Fig. 10 (A: 0-degree bridge, B: flap
+      lifted at 90 degrees): plateau found, pull work above phi times the delaminated length, value within the
+      measured discretisation error of the mesh-converged plateau, energy balance (constants below).
 Exit status 0 when every assertion holds, 1 otherwise (each failure printed).
 """
 import os
@@ -29,10 +32,11 @@ REFINE_TOL = 0.03
 #   time modulates the force); 6 % allows the coarse mesh's larger ripple and fails on a force still rising.
 SPREAD_TOL = 0.06
 # - energy balance |W_ext - (stored + dissipated)| / W_ext: the host integrates the external work with the
-#   trapezoidal rule, the UMAT accumulates its dissipation tau_bar * dgamma_p at the end of each increment (first
-#   order in the increment); measured 1.1 % at 0.3 um/inc and 0.7 % at 0.1 um/inc. 3 %: a missing dissipation term
-#   (the cohesive phi per delaminated area alone is 15-20 % of W_ext here) fails it.
-ENERGY_TOL = 0.03
+#   trapezoidal rule, the UMAT its dissipation with the mid-point rule (second order, umat/umat.f); measured
+#   0.2-0.3 % (the rest: the cohesive law's own integration and the model's J-dependent term, docs/umat.md).
+#   1 %: a missing dissipation term (the cohesive phi per delaminated area alone is 15-20 % of W_ext here) or the
+#   former first-order bookkeeping (1.1 % at 0.3 um/inc) fails it.
+ENERGY_TOL = 0.01
 # - quarter against full width: the full model's Newton iterates are the mirror extensions of the quarter's, so the
 #   forces agree to round-off (1e-11 measured); 1e-6 leaves room for a different cutback sequence.
 SYM_TOL = 1e-6
@@ -54,7 +58,7 @@ def refinement(ldfcz, work):
         r = peel_study.run_case(label, COMMON + ['--le', str(le), '--nz', str(nz)], work, ldfcz, 1, 0.3)
         res[le] = r
         print('%s: F/w = %.4f N/mm, spread %.3f, delaminated %.4f mm, energy balance %s, %.1f s' % (
-            label, r['F_w'], r['spread'], r['delaminated_mm'], r.get('energy_rel_diff'), r['run_time_s']))
+            label, r['F_w_tail'], r['spread'], r['delaminated_mm'], r.get('energy_rel_diff'), r['run_time_s']))
         if not r['completed']:
             fail(bad, '%s did not complete (exit %d, U1 = %g mm)' % (label, r['exit'], r['u_end_mm']))
             continue
@@ -67,10 +71,66 @@ def refinement(ldfcz, work):
         if not e < ENERGY_TOL:
             fail(bad, '%s: energy balance %.3e >= %.3e' % (label, e, ENERGY_TOL))
     if all(r['completed'] for r in res.values()):
-        d = abs(res[0.02]['F_w'] / res[0.01]['F_w'] - 1.0)
+        # the mean over the last 30 % of the 50 um pull for both (too short a pull for the plateau estimator at
+        # l_e = 20 um: the front crosses 3 elements only at its end; peel_readings checks the plateaus)
+        d = abs(res[0.02]['F_w_tail'] / res[0.01]['F_w_tail'] - 1.0)
         print('refinement l_e 20 -> 10 um: |F_20/F_10 - 1| = %.4f (tolerance %.3f)' % (d, REFINE_TOL))
         if not d < REFINE_TOL:
             fail(bad, 'steady force not stable under refinement: %.4f >= %.3f' % (d, REFINE_TOL))
+    return bad
+
+
+# Readings of Fig. 10 (issue 17): plane strain, rigid substrate, l_e = 10 um, n_z = 3, 0.1 mm of pull over a 0.16 mm
+# fine region. Reading A: the 0-degree bridge. Reading B: the flap lifted at 90 degrees and pulled by a fixed grip
+# (the grip's line stays at x = const, so the peel angle falls towards ~55 degrees as the front runs away: a
+# plateau within 0.1 mm of pull; the carriage grip, which keeps 90 degrees, has not settled within 0.16 mm and is
+# a study case, not a regression). Asserted for each reading:
+# - the steady-force estimator finds a plateau (status ok) with an uncertainty below UNC_TOL;
+# - energy: over the plateau window the work of the pull exceeds the interface's phi times the delaminated length
+#   (F/w du >= phi da; the rest is the coating's plastic work); a lost cohesive law or a wrong width normalisation
+#   breaks it;
+# - the value agrees with the finest mesh of the l_e study (l_e = 2.5 um, same scene: A 1.1964 N/mm, reports/
+#   stmt-mesh-x; B fixed grip 0.5167 N/mm, first pass of stmt-mesh-x, docs/scenes.md) within READ_TOL: the measured
+#   l_e = 10 um discretisation error (A 0.28 %, B 0.7 %) plus three times the two runs' uncertainties (A 0.05 and
+#   0.1 %, B 0.7 and 0.6 %), rounded up: A 1 %, B 5 %.
+READINGS = {
+    'A': (['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.16'], 1.1964, 0.01),
+    'B': (['--rigid-substrate', '--reading', 'peel', '--flap', '0.1', '--u-total', '0.1', '--fine-length', '0.16'],
+          0.5167, 0.05),
+}
+UNC_TOL = 0.02
+
+
+def readings(ldfcz, work):
+    bad = []
+    for k, (args, f_conv, tol) in READINGS.items():
+        r = peel_study.run_case('reading_' + k, args, work, ldfcz, 1, 0.3)
+        est = r['steady']
+        print('reading %s: %s; delaminated %.4f mm; energy balance %s; %.1f s' % (
+            k, peel_study.sfe.describe(est), r['delaminated_mm'], r.get('energy_rel_diff'), r['run_time_s']))
+        if not r['completed']:
+            fail(bad, 'reading %s did not complete (exit %d)' % (k, r['exit']))
+            continue
+        if est['status'] != 'ok' or not est['uncertainty'] < UNC_TOL:
+            fail(bad, 'reading %s: no plateau (%s, uncertainty %.3g)' % (k, est['status'], est['uncertainty']))
+        hist = peel_study.front_history(r)
+        u0, u1 = est['window']
+        da = interp(u1, [h[0] for h in hist], [h[1] for h in hist]) - interp(u0, [h[0] for h in hist],
+                                                                           [h[1] for h in hist])
+        work_pull = est['value'] * (u1 - u0)
+        phi = 0.2
+        print('  plateau window %.1f-%.1f um: F/w du = %.4e N/mm, phi da = %.4e N/mm' % (1e3 * u0, 1e3 * u1,
+                                                                                        work_pull, phi * da))
+        if not work_pull > phi * da:
+            fail(bad, 'reading %s: pull work %.4e below the interface energy %.4e' % (k, work_pull, phi * da))
+        dev = abs(est['value'] / f_conv - 1)
+        print('  against the converged %.4f N/mm: %.2f %% (tolerance %.1f %%)' % (f_conv, 100 * dev, 100 * tol))
+        if not dev < tol:
+            fail(bad, 'reading %s: F/w %.4f differs from the converged %.4f by %.2f %%' % (k, est['value'], f_conv,
+                                                                                       100 * dev))
+        e = r.get('energy_rel_diff', float('nan'))
+        if not e < ENERGY_TOL:
+            fail(bad, 'reading %s: energy balance %.3e >= %.3e' % (k, e, ENERGY_TOL))
     return bad
 
 
@@ -116,12 +176,12 @@ def symmetry(ldfcz, work):
 
 
 def main(argv):
-    if len(argv) != 4 or argv[1] not in ('refinement', 'symmetry'):
+    if len(argv) != 4 or argv[1] not in ('refinement', 'symmetry', 'readings'):
         print(__doc__)
         return 2
     ldfcz, work = argv[2], argv[3]
     os.makedirs(work, exist_ok=True)
-    bad = refinement(ldfcz, work) if argv[1] == 'refinement' else symmetry(ldfcz, work)
+    bad = {'refinement': refinement, 'symmetry': symmetry, 'readings': readings}[argv[1]](ldfcz, work)
     print('check_peel %s: %s' % (argv[1], 'FAILED (%d)' % len(bad) if bad else 'passed'))
     return 1 if bad else 0
 

@@ -9,6 +9,14 @@ For each option family (plane strain / 3D quarter / 3D full width, steel / rigid
   bottom->top normal points to +z, and their faces tile the bonded interface L_b w (relative 1e-9);
 - PROPS of the UEL are phi and delta = phi/(e T_max) (Eq. 5), the UMAT's Table 1 constants and *DEPVAR 11;
 - the LOAD set is the coating's end face x = L_b + a_0, the whole face (coating nodes only).
+Reading B (--reading peel: the flap lifted at the peel angle theta, bottom face bent on radius R about
+(L_b, R) then straight along d = (cos theta, sin theta)):
+- every flap node lies where the bend puts it: at distance R - t from the bend centre while its arc length is
+  within R theta, else on the straight arm at distance (s - R theta) from the bend's end along d (1e-9 mm);
+- the end face (LOAD, the whole face, coating nodes only) is the segment of length h_c normal to d at arc length a_0;
+- the coating area (volume) is h_c L_b w + (a_0 - R theta) h_c w + the bend's theta/2 (R^2 - (R - h_c)^2) w, the
+  bend within the chord error of its elements (relative da^2/6 of the bend, da = largest angle of an element);
+- *BOUNDARY of the step: fixed grip u_x = U cos theta and u_z = U sin theta on LOAD; carriage grip u_z = U alone.
 """
 import math
 import os
@@ -117,10 +125,14 @@ def check_case(gen, work, args, bad):
                 bad.append('%s: cohesive element %d normal does not point bottom -> top (+z)' % (tag, eid))
             coh_area += nz
     exp_c = hc * (lb + a0) * w
+    peel = val.get('reading') == 'peel'
+    if peel:
+        exp_c, chord_tol = peel_checks(args, val, nodes, elems, sets, blocks, hc, lb, a0, w, three_d, tag, bad)
     exp_s = 0.0 if '--rigid-substrate' in args else hs * lb * w
     for name, got, exp in (('coating', vol['COATING'], exp_c), ('substrate', vol['SUBSTRATE'], exp_s),
                            ('interface', coh_area, lb * w)):
-        if abs(got - exp) > 1e-9 * max(exp, 1e-30) + (1e-15 if exp == 0 else 0):
+        tol = 1e-9 * max(exp, 1e-30) + (1e-15 if exp == 0 else 0) + (chord_tol if peel and name == 'coating' else 0)
+        if abs(got - exp) > tol:
             bad.append('%s: %s volume/area %.9e, expected %.9e' % (tag, name, got, exp))
     for kw, params, data in blocks:
         if kw == '*UEL PROPERTY':
@@ -132,9 +144,13 @@ def check_case(gen, work, args, bad):
         if kw == '*USER MATERIAL':
             f = [float(x) for line in data for x in line.split(',')]
             exp = [1250.0, 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990, 200.0, -4.0]
+            if val.get('pet') == 'alt':
+                # the alternative: S_a halved, the aged viscosity eta_0r exp(S_a) kept (docs/scenes.md)
+                exp[2], exp[3] = 14.2, 0.486 * math.exp(14.2)
             if '--dgamma-max' in args:
                 exp.append(float(val['dgamma-max']))   # PROPS(11): the accuracy bound dgamma_max
-            if f != exp:
+            # the deck writes 9 significant digits
+            if len(f) != len(exp) or any(abs(a - b) > 1e-8 * abs(b) for a, b in zip(f, exp)):
                 bad.append('%s: UMAT constants %s are not Table 1%s' % (tag, f, ' + dgamma_max' if len(exp) > 10
                                                                          else ''))
             n = int(params.get('CONSTANTS', '0'))
@@ -148,11 +164,84 @@ def check_case(gen, work, args, bad):
             bad.append('%s: *DEPVAR %s, the UMAT needs 11' % (tag, data[0]))
     xload = lb + a0
     load = sets.get('LOAD', [])
+    if peel:
+        print('%-70s %5d elements: checked' % (tag[:70], len(elems)))
+        return
     coat_nodes = {n for et, es, conn in elems.values() if es == 'COATING' for n in conn}
     face = [n for n in coat_nodes if abs(nodes[n][0] - xload) < 1e-12]
     if sorted(load) != sorted(face):
         bad.append('%s: LOAD is not the end face x = %g (%d nodes, face %d)' % (tag, xload, len(load), len(face)))
     print('%-70s %5d elements: checked' % (tag[:70], len(elems)))
+
+
+def peel_checks(args, val, nodes, elems, sets, blocks, hc, lb, a0, w, three_d, tag, bad):
+    """Reading B: flap geometry, LOAD face, loads. Returns the expected coating volume and its chord tolerance."""
+    theta = math.radians(float(val.get('peel-angle', 90.0)))
+    r = float(val.get('bend-radius', 1.5 * hc))
+    zc = 2 if three_d else 1                      # index of z in a node's coordinates
+    d = (math.cos(theta), math.sin(theta))
+    sb = r * theta
+    coat = {n for et, es, conn in elems.values() if es == 'COATING' for n in conn}
+    flap = [n for n in coat if nodes[n][0] > lb + 1e-12 or nodes[n][zc] > hc + 1e-12]
+    da = 0.0
+    end_face = []
+    arcs = {}
+    for n in flap:
+        x, z = nodes[n][0], nodes[n][zc]
+        # distance from the bend centre and angle: in the bend part the node lies on the circle of radius R - t
+        cx, cz = lb, r
+        rho = math.hypot(x - cx, z - cz)
+        ang = math.atan2(x - cx, cz - z)           # 0 at the front, theta at the end of the bend
+        if ang <= theta + 1e-9 and (ang >= -1e-12):
+            t = r - rho
+            if -1e-9 <= t <= hc + 1e-9:
+                arcs[n] = (r * ang, t)
+                continue
+        # straight arm: P - C = (R - t) (sin theta, -cos theta) + l d (the two directions are orthogonal)
+        t = r - ((x - cx) * math.sin(theta) - (z - cz) * math.cos(theta))
+        ll = (x - cx) * d[0] + (z - cz) * d[1]
+        if -1e-9 <= t <= hc + 1e-9 and ll >= -1e-9:
+            arcs[n] = (sb + ll, t)
+        else:
+            bad.append('%s: flap node %d at (%.6g, %.6g) is neither on the bend nor on the arm' % (tag, n, x, z))
+    for n, (sa, t) in arcs.items():
+        if abs(sa - a0) < 1e-9:
+            end_face.append(n)
+    load = sets.get('LOAD', [])
+    if sorted(load) != sorted(end_face) or not end_face:
+        bad.append('%s: LOAD (%d nodes) is not the end face at arc length a_0 (%d nodes)' % (tag, len(load),
+                                                                                             len(end_face)))
+    ts = sorted(set(round(arcs[n][1], 9) for n in end_face))
+    if end_face and abs(ts[-1] - ts[0] - hc) > 1e-9:
+        bad.append('%s: end face spans %.6g mm of thickness, not h_c' % (tag, ts[-1] - ts[0]))
+    # largest angle of a bend element: from the bottom-face nodes' arc lengths
+    # (the element across the bend's end included: its chord spans the kink)
+    sbot = sorted(set(round(sa, 12) for sa, t in arcs.values() if abs(t) < 1e-9))
+    for a, b in zip(sbot, sbot[1:]):
+        if a < sb - 1e-12:
+            da = max(da, (b - a) / r)
+    bend = 0.5 * theta * (r * r - (r - hc) ** 2)
+    exp = hc * lb * w + (a0 - sb) * hc * w + bend * w
+    # loads
+    u_total = float(val.get('u-total', 0.05))
+    grip = val.get('grip', 'fixed')
+    zdof = 3 if three_d else 2
+    step = False
+    got = {}
+    for kw, params, data in blocks:
+        if kw == '*STEP':
+            step = True
+        if kw == '*BOUNDARY' and step:
+            for line in data:
+                f = [x.strip() for x in line.split(',')]
+                if f[0] == 'LOAD':
+                    got[int(f[1])] = float(f[3])
+    want = {zdof: u_total} if grip == 'carriage' else {1: u_total * d[0], zdof: u_total * d[1]}
+    if set(got) != set(want) or any(abs(got[k] - want[k]) > 1e-9 * u_total + 1e-15 for k in want):
+        bad.append('%s: LOAD boundary %s, expected %s' % (tag, got, want))
+    # polygon against arc: a sector of angle da loses the fraction 1 - sin(da)/da < da^2/6 of its area; twice that
+    # for the element across the bend's end (chord deviations on both sides of the kink)
+    return exp, 2.0 * bend * w * da * da / 6.0 + 1e-12
 
 
 def main(argv):
@@ -163,7 +252,15 @@ def main(argv):
              ['--3d', '--ny', '2', '--le', '0.02'], ['--3d', '--rigid-substrate', '--ny', '3', '--width', '0.03'],
              ['--3d', '--full-width', '--ny', '2', '--le', '0.02', '--nz', '2'],
              ['--tmax', '10', '--phi', '0.1', '--bonded', '0.5', '--coating', '0.02'], ['--flap', '0', '--rigid-substrate'],
-             ['--rigid-substrate', '--dgamma-max', '1.0', '--no-extrapolation']]
+             ['--rigid-substrate', '--dgamma-max', '1.0', '--no-extrapolation'],
+             # reading B: the lifted flap (90 degrees fixed and carriage grip, small angle, 3D quarter, steel)
+             ['--reading', 'peel', '--flap', '0.1', '--rigid-substrate'],
+             ['--reading', 'peel', '--flap', '0.1', '--grip', 'carriage', '--rigid-substrate', '--nz', '4'],
+             ['--reading', 'peel', '--flap', '0.05', '--peel-angle', '10', '--le', '0.005', '--rigid-substrate'],
+             ['--reading', 'peel', '--flap', '0.12', '--peel-angle', '135', '--bend-radius', '0.04'],
+             ['--reading', 'peel', '--flap', '0.1', '--3d', '--ny', '2', '--le', '0.02', '--rigid-substrate'],
+             ['--reading', 'peel', '--flap', '0.1', '--3d', '--ny', '2', '--le', '0.02'],
+             ['--pet', 'alt', '--rigid-substrate']]
     for c in cases:
         check_case(gen, work, c, bad)
     for b in bad:
