@@ -26,6 +26,7 @@ E1 = math.exp(1.0)
 
 # Table 1 (PET), PROPS order of docs/umat.md: E (MPa), nu, S_a, eta_0r (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2
 PET_TABLE1 = [1250.0, 0.4, 28.4, 0.486, 0.95, 0.047, 28.2, 0.990, 200.0, -4.0]
+PET_NAMES = ['E', 'nu', 'S_a', 'eta_0r', 'tau_0', 'mu', 'G_r', 'r0', 'r1', 'r2']   # --pet NAME=VALUE
 LEONOV_NSTATV = 11          # docs/umat.md: NSTATV >= 11
 STEEL = (210000.0, 0.3)     # MPa, -
 UEL_NSVARS_PER_IP = 4       # docs/uel.md: 4 SVARS per Gauss point
@@ -129,7 +130,9 @@ def build(p):
       % ('3D quarter' if three_d else 'plane strain', p.coating,
          'rigid substrate' if p.rigid_substrate else 'steel %g mm' % p.substrate, p.phi, delta))
     # parameters as JSON, split into comment lines of at most 132 characters (Abaqus reads lines up to 256)
-    pj = json.dumps({k: v for k, v in sorted(vars(p).items()) if k not in ('output', 'info')}, sort_keys=True)
+    # (--pet only when given: the committed decks' headers stay as they were)
+    pj = json.dumps({k: v for k, v in sorted(vars(p).items())
+                     if k not in ('output', 'info') and not (k == 'pet' and not v)}, sort_keys=True)
     for k in range(0, len(pj), 120):
         w('**PARAMS ' + pj[k:k + 120])
     w('** units: mm, N, s, MPa. x along the specimen, %s through the thickness%s.'
@@ -240,7 +243,7 @@ def build(p):
         if not three_d:
             w('1.0')
     w('*MATERIAL, NAME=PET')
-    pet = list(PET_TABLE1) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
+    pet = pet_constants(p.pet) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
     w('*USER MATERIAL, CONSTANTS=%d, UNSYMM' % len(pet))
     w(', '.join('%.9g' % v for v in pet[:8]))
     w(', '.join('%.9g' % v for v in pet[8:]))
@@ -284,6 +287,21 @@ def build(p):
     return '\n'.join(out) + '\n', info
 
 
+def pet_constants(overrides):
+    """Table 1 with the --pet NAME=VALUE overrides applied (PROPS order of docs/umat.md)."""
+    pet = list(PET_TABLE1)
+    for item in overrides or []:
+        name, _, value = item.partition('=')
+        if name not in PET_NAMES:
+            raise SystemExit('peel_deck: --pet %s: unknown PET constant %r (one of %s)' % (item, name,
+                                                                                     ', '.join(PET_NAMES)))
+        try:
+            pet[PET_NAMES.index(name)] = float(value)
+        except ValueError:
+            raise SystemExit('peel_deck: --pet %s: %r is not a number' % (item, value))
+    return pet
+
+
 def parser():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     g = ap.add_argument_group('scene')
@@ -299,6 +317,8 @@ def parser():
                    help='3D: modelled width b = half the specimen width (mm), default 0.040')
     g.add_argument('--full-width', action='store_true',
                    help='3D: model y in [-b, b] without the YSYMM plane (checks the quarter model; 2 n_y elements)')
+    g.add_argument('--pet', action='append', default=[], metavar='NAME=VALUE',
+                   help='replace a Table 1 constant of the PET (names: %s; repeatable)' % ', '.join(PET_NAMES))
     g.add_argument('--dgamma-max', type=float, default=0.0,
                    help='PET accuracy bound on the plastic strain increment, PROPS(11); 0 = UMAT default 0.05')
     g = ap.add_argument_group('interface (LDF, docs/uel.md)')
@@ -346,6 +366,7 @@ def check(p):
         raise SystemExit('peel_deck: --nz, --ny must be >= 1')
     if p.du > p.u_total:
         raise SystemExit('peel_deck: --du larger than --u-total')
+    pet_constants(p.pet)
 
 
 def main(argv=None):
