@@ -445,18 +445,59 @@ def fmt_params(p):
     return ', '.join('%s = %.5g %s' % (k, v, unit_of(k)) for k, v in p.items())
 
 
-def sensitivity_table(J, names, parts, sigma):
-    """Per parameter: RMS over the curve (and over each part) of the change of the force for a doubling of the
-    parameter (linearised: |dF/d ln p| ln 2), divided by the noise sigma."""
+def factor_sensitivity(scene, model, params, names, parts, sigma):
+    """Per parameter and direction (up: the parameter doubled, down: halved): the RMS change of the force over the
+    curve and over each part, divided by the noise sigma, from runs at 2 p and p/2 (all in parallel). A direction
+    whose run fails is None. A finite factor, not the derivative: the response of a discretised peel front ripples
+    with the parameters (one element after the other fails), and only a change that moves the curve by more than
+    the noise can be told from it."""
     import numpy as np
+    f0 = model.curve_at(scene.evaluate(params))
+    plist = []
+    for n in names:
+        for fac in (2.0, 0.5):
+            q = dict(params)
+            q[n] = params[n] * fac
+            plist.append(q)
+    res = scene.evaluate_many(plist)
     out = {}
-    for j, n in enumerate(names):
-        col = np.abs(J[:, j]) * LN2
-        row = {'all': float(np.sqrt(np.mean(col ** 2)) / sigma)}
-        for pname, m in parts:
-            row[pname] = float(np.sqrt(np.mean(col[m] ** 2)) / sigma)
+    for k, n in enumerate(names):
+        row = {}
+        for d, c in zip(('up', 'down'), res[2 * k:2 * k + 2]):
+            if c is None:
+                row[d] = None
+                continue
+            diff = model.curve_at(c) - f0
+            v = {'all': float(np.sqrt(np.mean(diff ** 2)) / sigma)}
+            for pname, m in parts:
+                v[pname] = float(np.sqrt(np.mean(diff[m] ** 2)) / sigma)
+            row[d] = v
         out[n] = row
     return out
+
+
+def sens_level(row, part='all'):
+    """(smaller, larger) of the two directions' ratios; a failed direction is left out; (None, None) if both."""
+    v = [row[d][part] for d in ('up', 'down') if row[d] is not None]
+    return (min(v), max(v)) if v else (None, None)
+
+
+def verdict(row):
+    """'identifiable' (a halving and a doubling both move the curve by more than the noise), 'lower bound' /
+    'upper bound' (only a halving / only a doubling does: the data bound the parameter on one side), 'none'."""
+    up = row['up']['all'] if row['up'] is not None else None
+    down = row['down']['all'] if row['down'] is not None else None
+    if up is None and down is None:
+        return 'unknown'
+    if up is None or down is None:
+        return 'identifiable' if (up or down) >= 1.0 else 'none'
+    if up >= 1.0 and down >= 1.0:
+        return 'identifiable'
+    if down >= 1.0:
+        return 'lower bound'
+    if up >= 1.0:
+        return 'upper bound'
+    return 'none'
 
 
 def cmd_fit(a):
@@ -510,9 +551,13 @@ def cmd_fit(a):
     say('identify: %d points, pull %.4g-%.4g mm, force per width up to %.4g N/mm%s; fitting %s from %s' % (
         len(u), u[0], u_max, float(np.max(y_meas)), (' (x %.4g: plane-strain equivalent)' % ratio) if a.ps3d_ratio
         else '', ', '.join(names), fmt_params(start)))
-    # ---- the start point and its Jacobian (also every parameter's sensitivity there)
-    J0 = model.jacobian(x0)
-    f_start = model.curve_at(scene.evaluate(model.params(x0)))
+    # ---- the start point: units plausible, the scene reaches the measured pull, sensitivities
+    c_start = scene.evaluate(start)
+    if c_start is None:
+        raise FitError('the scene cannot reach the measured pull %.4g mm at the start values (%s): %s; start '
+                       'elsewhere or change the scene (--du, --bonded, the mesh)' % (u_max, fmt_params(start),
+                                                                                   scene.failed[-1][1]))
+    f_start = model.curve_at(c_start)
     ratio_units = float(np.sqrt(np.mean(y_ps ** 2)) / max(np.sqrt(np.mean(f_start ** 2)), 1e-300))
     if not 0.2 <= ratio_units <= 5.0:
         raise InputError('%s: the measured force is %.3g times the scene\'s at the start values (RMS over the '
@@ -521,12 +566,13 @@ def cmd_fit(a):
     sigma0 = a.noise if a.noise else sigma_data
     if not sigma0 > 0:
         sigma0 = 1e-3 * float(np.max(np.abs(y_ps)))
-    sens0 = sensitivity_table(J0, names, parts, sigma0)
-    free = [n for n in names if sens0[n]['all'] >= 1.0]
+    sens0 = factor_sensitivity(scene, model, start, names, parts, sigma0)
+    # a parameter that the curve bounds on one side only is held too: the fit would drift along its flat side
+    free = [n for n in names if verdict(sens0[n]) in ('identifiable', 'unknown')]
     held = [n for n in names if n not in free]
     for n in held:
-        say('  %s: a doubling changes the curve by %.2g x the noise (RMS) at the start: not identifiable, held at '
-            '%.5g %s' % (n, sens0[n]['all'], start[n], unit_of(n)))
+        say('  %s at the start: %s (doubled / halved: %s x the noise): held at %.5g %s' % (
+            n, VERDICT_TEXT[verdict(sens0[n])], fmt_sens(sens0[n], 'all'), start[n], unit_of(n)))
     # ---- the fit of the identifiable parameters
     result = None
     if free:
@@ -554,25 +600,24 @@ def cmd_fit(a):
     dof = max(len(u) - len(free), 1)
     s_res = float(math.sqrt(r @ r / dof))
     sigma = a.noise if a.noise else s_res
-    x_all = np.array([math.log(best[n]) for n in names])
-    mod_all = Model(scene, u_arr, y_ps, names, {k: v for k, v in best.items() if k not in names}, a.fd_step)
-    J = mod_all.jacobian(x_all)
-    sens = sensitivity_table(J, names, parts, sigma)
-    ident = [n for n in free if sens[n]['all'] >= 1.0]
-    # covariance of ln p of the identifiable parameters
-    cols = [names.index(n) for n in ident]
-    Ji = J[:, cols]
+    sens = factor_sensitivity(scene, model, best, names, parts, sigma)
+    verdicts = {n: verdict(sens[n]) for n in names}
+    ident = [n for n in free if verdicts[n] in ('identifiable', 'unknown')]
     out = {'parameters': {}, 'correlation': {}, 'parts': [p for p, _ in parts]}
     tq = float(stats.t.ppf(0.975, dof)) if ident else float('nan')
     cov = None
     if ident:
+        # covariance of ln p of the identifiable parameters from the Jacobian of the residual at the optimum
+        mod_i = Model(scene, u_arr, y_ps, ident, {k: v for k, v in best.items() if k not in ident}, a.fd_step)
+        Ji = mod_i.jacobian(np.array([math.log(best[n]) for n in ident]))
         JTJ = Ji.T @ Ji
         try:
             cov = sigma ** 2 * np.linalg.inv(JTJ)
         except np.linalg.LinAlgError:
             cov = sigma ** 2 * np.linalg.pinv(JTJ)
     for n in names:
-        e = {'unit': unit_of(n), 'start': start[n], 'sensitivity': sens[n], 'sensitivity_start': sens0[n]}
+        e = {'unit': unit_of(n), 'start': start[n], 'sensitivity': sens[n], 'sensitivity_start': sens0[n],
+             'verdict': verdicts[n], 'fitted': n in free}
         if n in ident:
             k = ident.index(n)
             half = tq * math.sqrt(max(cov[k, k], 0.0))
@@ -631,6 +676,26 @@ def cmd_fit(a):
 # report
 # ----------------------------------------------------------------------------------------------------------------
 
+VERDICT_TEXT = {
+    'identifiable': 'identifiable',
+    'unknown': 'sensitivity unknown: both runs at 2 p and p/2 failed',
+    'none': 'halving or doubling it moves the curve by less than the noise',
+    'lower bound': 'only bounded from below: halving it moves the curve by more than the noise, doubling it does not',
+    'upper bound': 'only bounded from above: doubling it moves the curve by more than the noise, halving it does not',
+}
+
+
+def fmt_sens(row, part):
+    return ' / '.join('%.3g' % row[d][part] if row[d] is not None else 'failed' for d in ('up', 'down'))
+
+
+def part_info(row, part):
+    lo, hi = sens_level(row, part)
+    if hi is None:
+        return '?'
+    return 'yes' if lo >= 1.0 else 'one-sided' if hi >= 1.0 else 'no'
+
+
 def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
     import numpy as np
     os.makedirs(a.report_dir, exist_ok=True)
@@ -647,16 +712,17 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
     w('Scene: plane strain, 0-degree (tensile) peel, `tools/peel_deck.py %s` (%d DOFs).' % (out['generator'],
                                                                                          out['dofs']))
     w('')
-    w('| parameter | start | result | 95 % CI | sensitivity / noise (doubling, RMS over the curve) |')
+    w('| parameter | start | result | 95 % CI | change of the curve / noise: doubled, halved (RMS) |')
     w('|---|---|---|---|---|')
     for n, e in out['parameters'].items():
         if e['status'] == 'identified':
             res = '%.5g %s' % (e['value'], e['unit'])
             ci = '%.5g - %.5g (+-%.2f %%)' % (e['ci95'][0], e['ci95'][1], 100 * e['ci95_rel'])
         else:
-            res = '**not identifiable** (held at %.5g)' % e['held_at']
+            res = '**not identifiable** (%s; %s %.5g)' % (VERDICT_TEXT[e['verdict']],
+                                                          'ended at' if e['fitted'] else 'held at', e['held_at'])
             ci = '-'
-        w('| %s | %.5g | %s | %s | %.3g |' % (n, e['start'], res, ci, e['sensitivity']['all']))
+        w('| %s | %.5g | %s | %s | %s |' % (n, e['start'], res, ci, fmt_sens(e['sensitivity'], 'all')))
     w('')
     if out['correlation']:
         nm = out['correlation']['names']
@@ -667,16 +733,16 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
         for i, n in enumerate(nm):
             w('| %s | %s |' % (n, ' | '.join('%.3f' % v for v in out['correlation']['matrix'][i])))
         w('')
-    w('Which part of the curve carries information (RMS change of the force for a doubling of the parameter over '
-      'that part, divided by the noise; >= 1: informative):')
+    w('Which part of the curve carries information: RMS change of the force over that part when the parameter is '
+      'doubled / halved (runs at the result), divided by the noise; both >= 1: informative, one: one-sided:')
     w('')
     pn = [p for p, _ in parts]
     w('| parameter | ' + ' | '.join('%s (%d pts, u %.3g-%.3g mm)' % (
         p, int(m.sum()), float(u[m][0]), float(u[m][-1])) for p, m in parts) + ' |')
     w('|---' * (len(pn) + 1) + '|')
     for n, e in out['parameters'].items():
-        w('| %s | %s |' % (n, ' | '.join('%.3g%s' % (e['sensitivity'][p], '' if e['sensitivity'][p] >= 1 else
-                                                   ' (no)') for p in pn)))
+        w('| %s | %s |' % (n, ' | '.join('%s (%s)' % (fmt_sens(e['sensitivity'], p), part_info(e['sensitivity'], p))
+                                         for p in pn)))
     w('')
     w('Noise: %s; residual std after the fit %.4g N/mm (%d points, RMS residual %.4g N/mm); the data\'s own '
       'estimate (second differences) %.4g N/mm.' % (
@@ -734,9 +800,12 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
             print('  %-7s = %.5g %s  (95 %% CI %.5g - %.5g, +-%.2f %%)' % (
                 n, e['value'], e['unit'], e['ci95'][0], e['ci95'][1], 100 * e['ci95_rel']))
         else:
-            print('  %-7s   not identifiable: a doubling changes the curve by %.2g x the noise (held at %.5g %s)'
-                  % (n, e['sensitivity']['all'], e['held_at'], e['unit']))
-        print('          informative parts: %s' % (', '.join(p for p in pn if e['sensitivity'][p] >= 1) or 'none'))
+            print('  %-7s   not identifiable: %s (%s %.5g %s)' % (
+                n, VERDICT_TEXT[e['verdict']], 'ended at' if e['fitted'] else 'held at', e['held_at'], e['unit']))
+        print('          doubled / halved: %s x the noise; informative parts: %s' % (
+            fmt_sens(e['sensitivity'], 'all'),
+            ', '.join('%s%s' % (p, '' if part_info(e['sensitivity'], p) == 'yes' else ' (one-sided)')
+                      for p in pn if part_info(e['sensitivity'], p) != 'no') or 'none'))
     if out['correlation']:
         nm = out['correlation']['names']
         for i in range(len(nm)):
