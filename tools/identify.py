@@ -468,6 +468,7 @@ def factor_sensitivity(scene, model, params, names, parts, sigma):
                 row[d] = None
                 continue
             diff = model.curve_at(c) - f0
+            row['diff_' + d] = diff
             v = {'all': float(np.sqrt(np.mean(diff ** 2)) / sigma)}
             for pname, m in parts:
                 v[pname] = float(np.sqrt(np.mean(diff[m] ** 2)) / sigma)
@@ -615,6 +616,22 @@ def cmd_fit(a):
             cov = sigma ** 2 * np.linalg.inv(JTJ)
         except np.linalg.LinAlgError:
             cov = sigma ** 2 * np.linalg.pinv(JTJ)
+    # the effect of the parameters that are not identified (held or ended where the curve does not pin them) on the
+    # identified ones: re-fitting the latter (linearised) after the former is doubled or halved moves them by
+    # delta = -(J^T J)^-1 J^T dF; the interval 'ci95_with_held' adds the largest such moves to the 95 % interval
+    moves = {n: [] for n in ident}
+    if cov is not None:
+        for h in [n for n in names if n not in ident]:
+            for d in ('up', 'down'):
+                dF = sens[h].get('diff_' + d)
+                if dF is None:
+                    continue
+                delta = -np.linalg.solve(Ji.T @ Ji, Ji.T @ dF) if len(ident) else []
+                for k, n in enumerate(ident):
+                    moves[n].append((h, d, float(delta[k])))
+    for n in names:
+        sens[n] = {k: v for k, v in sens[n].items() if not k.startswith('diff_')}
+        sens0[n] = {k: v for k, v in sens0[n].items() if not k.startswith('diff_')}
     for n in names:
         e = {'unit': unit_of(n), 'start': start[n], 'sensitivity': sens[n], 'sensitivity_start': sens0[n],
              'verdict': verdicts[n], 'fitted': n in free}
@@ -624,6 +641,12 @@ def cmd_fit(a):
             e.update({'status': 'identified', 'value': best[n], 'ci95': [best[n] * math.exp(-half),
                                                                          best[n] * math.exp(half)],
                       'ci95_rel': math.exp(half) - 1.0})
+            if moves[n]:
+                lo = min([0.0] + [m[2] for m in moves[n]])
+                hi = max([0.0] + [m[2] for m in moves[n]])
+                e['held_moves'] = [{'parameter': h, 'factor': 2.0 if d == 'up' else 0.5, 'relative_move':
+                                    math.exp(v) - 1.0} for h, d, v in moves[n]]
+                e['ci95_with_held'] = [best[n] * math.exp(lo - half), best[n] * math.exp(hi + half)]
         else:
             e.update({'status': 'not identifiable', 'value': None,
                       'held_at': best[n]})
@@ -718,6 +741,11 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
         if e['status'] == 'identified':
             res = '%.5g %s' % (e['value'], e['unit'])
             ci = '%.5g - %.5g (+-%.2f %%)' % (e['ci95'][0], e['ci95'][1], 100 * e['ci95_rel'])
+            if e.get('held_moves'):
+                ci += '; with the unidentified parameters doubled or halved: %.5g - %.5g (%s)' % (
+                    e['ci95_with_held'][0], e['ci95_with_held'][1], ', '.join(
+                        '%s x %g: %+.2f %%' % (m['parameter'], m['factor'], 100 * m['relative_move'])
+                        for m in e['held_moves']))
         else:
             res = '**not identifiable** (%s; %s %.5g)' % (VERDICT_TEXT[e['verdict']],
                                                           'ended at' if e['fitted'] else 'held at', e['held_at'])
@@ -799,6 +827,11 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
         if e['status'] == 'identified':
             print('  %-7s = %.5g %s  (95 %% CI %.5g - %.5g, +-%.2f %%)' % (
                 n, e['value'], e['unit'], e['ci95'][0], e['ci95'][1], 100 * e['ci95_rel']))
+            if e.get('held_moves'):
+                print('          with the unidentified parameters doubled or halved: %.5g - %.5g (%s)' % (
+                    e['ci95_with_held'][0], e['ci95_with_held'][1], ', '.join(
+                        '%s x %g: %+.2f %%' % (m['parameter'], m['factor'], 100 * m['relative_move'])
+                        for m in e['held_moves'])))
         else:
             print('  %-7s   not identifiable: %s (%s %.5g %s)' % (
                 n, VERDICT_TEXT[e['verdict']], 'ended at' if e['fitted'] else 'held at', e['held_at'], e['unit']))
