@@ -123,8 +123,9 @@ def noise_from_data(y):
 
 def curve_parts(u, y, plateau):
     """Index masks of the parts of the curve: the initial rise up to the first force peak followed by a drop of at
-    least 5 % (the yield peak of the flap), the peak and neck, and the plateau (the last `plateau` fraction of the
-    pull). Without such a peak: the part before the plateau and the plateau."""
+    least 5 % (the yield peak of the flap; only when the curve starts below half that peak, i.e. at the rise), the
+    peak and neck, and the plateau (the last `plateau` fraction of the pull). Without such a peak: the part before
+    the plateau and the plateau."""
     import numpy as np
     u, y = np.asarray(u), np.asarray(y)
     n = len(y)
@@ -137,6 +138,8 @@ def curve_parts(u, y, plateau):
         elif y[i] < 0.95 * run_max and u[imax] < u_pl:
             ipk = imax
             break
+    if ipk is not None and y[0] > 0.5 * y[ipk]:
+        ipk = None    # the window does not start at the rise from zero: a drop in it is ripple, not the yield peak
     parts = []
     if ipk is not None and ipk > 0:
         u_pk = u[ipk]
@@ -574,35 +577,50 @@ def cmd_fit(a):
     for n in held:
         say('  %s at the start: %s (doubled / halved: %s x the noise): held at %.5g %s' % (
             n, VERDICT_TEXT[verdict(sens0[n])], fmt_sens(sens0[n], 'all'), start[n], unit_of(n)))
-    # ---- the fit of the identifiable parameters
+    # ---- the fit of the identifiable parameters; a held parameter that is identifiable at the result is added and
+    # the fit repeated from there (once)
     result = None
-    if free:
-        fixed2 = dict(fixed)
-        fixed2.update({n: start[n] for n in held})
-        model = Model(scene, u_arr, y_ps, free, fixed2, a.fd_step)
-        xf0 = np.array([math.log(start[n]) for n in free])
-        span = math.log(a.bound_factor)
-        result = optimize.least_squares(model.residual, xf0, jac=model.jacobian, method='trf',
-                                        bounds=(xf0 - span, xf0 + span), x_scale=1.0, xtol=a.xtol, ftol=1e-8,
-                                        gtol=1e-10, max_nfev=a.max_evals)
-        x_best = result.x
-        say('  least_squares: %s after %d residual and %d Jacobian evaluations (%s)' % (
-            'converged' if result.success else 'NOT converged', result.nfev, result.njev, result.message))
-    else:
-        x_best = np.array([])
-        model = Model(scene, u_arr, y_ps, [], dict(start), a.fd_step)
-    best = model.params(x_best)
-    # ---- statistics at the optimum: residual, noise, Jacobian for every parameter (fitted and held)
-    c_best = scene.evaluate(best)
-    if c_best is None:
-        raise FitError('the scene failed at the fitted values %s' % fmt_params(best))
-    f_best = model.curve_at(c_best)
-    r = f_best - y_ps
-    dof = max(len(u) - len(free), 1)
-    s_res = float(math.sqrt(r @ r / dof))
-    sigma = a.noise if a.noise else s_res
-    sens = factor_sensitivity(scene, model, best, names, parts, sigma)
-    verdicts = {n: verdict(sens[n]) for n in names}
+    span = math.log(a.bound_factor)
+    x_from = dict(start)
+    for attempt in range(2):
+        if free:
+            fixed2 = dict(fixed)
+            fixed2.update({n: x_from[n] for n in held})
+            model = Model(scene, u_arr, y_ps, free, fixed2, a.fd_step)
+            xf0 = np.array([math.log(x_from[n]) for n in free])
+            lb = np.array([math.log(start[n]) - span for n in free])
+            ub = np.array([math.log(start[n]) + span for n in free])
+            result = optimize.least_squares(model.residual, np.clip(xf0, lb, ub), jac=model.jacobian,
+                                            method='trf', bounds=(lb, ub), x_scale=1.0, xtol=a.xtol, ftol=1e-8,
+                                            gtol=1e-10, max_nfev=a.max_evals)
+            x_best = result.x
+            say('  least_squares (%s): %s after %d residual and %d Jacobian evaluations (%s)' % (
+                ', '.join(free), 'converged' if result.success else 'NOT converged', result.nfev, result.njev,
+                result.message))
+        else:
+            x_best = np.array([])
+            model = Model(scene, u_arr, y_ps, [], dict(start), a.fd_step)
+        best = model.params(x_best)
+        # ---- statistics at the optimum: residual, noise, sensitivities of every parameter (fitted and held)
+        c_best = scene.evaluate(best)
+        if c_best is None:
+            raise FitError('the scene failed at the fitted values %s' % fmt_params(best))
+        f_best = model.curve_at(c_best)
+        r = f_best - y_ps
+        dof = max(len(u) - len(free), 1)
+        s_res = float(math.sqrt(r @ r / dof))
+        sigma = a.noise if a.noise else s_res
+        sens = factor_sensitivity(scene, model, best, names, parts, sigma)
+        verdicts = {n: verdict(sens[n]) for n in names}
+        newly = [n for n in held if verdicts[n] == 'identifiable']
+        if not newly or attempt == 1:
+            break
+        for n in newly:
+            say('  %s: identifiable at the result (doubled / halved: %s x the noise): fitted too, from there' % (
+                n, fmt_sens(sens[n], 'all')))
+        free += newly
+        held = [n for n in held if n not in newly]
+        x_from = dict(best)
     ident = [n for n in free if verdicts[n] in ('identifiable', 'unknown')]
     out = {'parameters': {}, 'correlation': {}, 'parts': [p for p, _ in parts]}
     tq = float(stats.t.ppf(0.975, dof)) if ident else float('nan')
@@ -708,6 +726,12 @@ VERDICT_TEXT = {
 }
 
 
+def verdict_text(e):
+    if e['verdict'] in ('identifiable', 'unknown') and not e['fitted']:
+        return 'held at the start, where it was not identifiable, and sensitive at the result: start from there'
+    return VERDICT_TEXT[e['verdict']]
+
+
 def fmt_sens(row, part):
     return ' / '.join('%.3g' % row[d][part] if row[d] is not None else 'failed' for d in ('up', 'down'))
 
@@ -747,7 +771,7 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
                         '%s x %g: %+.2f %%' % (m['parameter'], m['factor'], 100 * m['relative_move'])
                         for m in e['held_moves']))
         else:
-            res = '**not identifiable** (%s; %s %.5g)' % (VERDICT_TEXT[e['verdict']],
+            res = '**not identifiable** (%s; %s %.5g)' % (verdict_text(e),
                                                           'ended at' if e['fitted'] else 'held at', e['held_at'])
             ci = '-'
         w('| %s | %.5g | %s | %s | %s |' % (n, e['start'], res, ci, fmt_sens(e['sensitivity'], 'all')))
@@ -834,7 +858,7 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
                         for m in e['held_moves'])))
         else:
             print('  %-7s   not identifiable: %s (%s %.5g %s)' % (
-                n, VERDICT_TEXT[e['verdict']], 'ended at' if e['fitted'] else 'held at', e['held_at'], e['unit']))
+                n, verdict_text(e), 'ended at' if e['fitted'] else 'held at', e['held_at'], e['unit']))
         print('          doubled / halved: %s x the noise; informative parts: %s' % (
             fmt_sens(e['sensitivity'], 'all'),
             ', '.join('%s%s' % (p, '' if part_info(e['sensitivity'], p) == 'yes' else ' (one-sided)')

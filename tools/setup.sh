@@ -12,7 +12,7 @@ case "$build_type" in
 esac
 build_dir=${LDFCZ_BUILD_DIR:-$default_dir}
 
-packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-numpy python3-vtk9
+packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-numpy python3-scipy python3-vtk9
           libmumps-seq-dev libmetis-dev liblapack-dev libopenblas-dev)
 # More packages for a particular use (tools/test.sh adds LLVM flang for the portability check).
 read -r -a extra <<< "${LDFCZ_EXTRA_PACKAGES:-}"
