@@ -192,6 +192,14 @@ def case_bad_input(work, ldfcz):
     # a pull longer than the bonded length
     bad('unreachable', [(0.02 * k, 1.1) for k in range(1, 31)], [], ['bonded length', '0.6'])
     bad('angle', base, ['--angle', '90'], ['0-degree'])
+    bad('fit_unknown', base, ['--fit', 'phi,kc'], ['--fit kc', 'not a fittable parameter'])
+    bad('fit_and_held', base, ['--fit', 'phi,G_r', '--pet', 'G_r=30'], ['--pet G_r=30', 'fitted'])
+    # the generator's --pet (how PET constants are varied): G_r replaced in the deck, the rest Table 1
+    deck = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'peel_deck.py'), '--rigid-substrate', '--pet',
+                           'G_r=30'], stdout=subprocess.PIPE, universal_newlines=True).stdout.splitlines()
+    k = deck.index('*USER MATERIAL, CONSTANTS=10, UNSYMM')
+    check(deck[k + 1] == '1250, 0.4, 28.4, 0.486, 0.95, 0.047, 30, 0.99' and deck[k + 2] == '200, -4',
+          'peel_deck --pet G_r=30 replaces G_r only: %r' % deck[k + 1:k + 3])
     p = run(['fit', os.path.join(work, 'missing.csv'), '--force-unit', 'N/mm'] + common, expect_rc=None)
     check(p.returncode == 2 and 'no such file' in p.stderr, 'missing file: exit %d' % p.returncode)
 
