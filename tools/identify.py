@@ -675,11 +675,11 @@ def cmd_fit(a):
         out['correlation'] = {'names': ident, 'matrix': corr.tolist()}
     t_total = time.time() - t_start
     out.update({
-        'curve': os.path.abspath(a.curve), 'points': len(u), 'force_unit': a.force_unit, 'width_mm': a.width,
+        'curve': os.path.relpath(os.path.abspath(a.curve), ROOT), 'points': len(u), 'force_unit': a.force_unit, 'width_mm': a.width,
         'ps3d_ratio': a.ps3d_ratio, 'noise_given': a.noise, 'noise_from_data': sigma_data, 'residual_std': s_res,
         'sigma_used': sigma, 'rms_residual': float(math.sqrt(r @ r / len(r))), 'runs': scene.runs,
         'cache_hits': scene.hits, 'failed_runs': [{'params': p, 'reason': why} for p, why in scene.failed],
-        'run_seconds': scene.run_seconds, 'total_seconds': t_total, 'jobs': a.jobs, 'ldfcz': scene.ldfcz,
+        'run_seconds': scene.run_seconds, 'total_seconds': t_total, 'jobs': a.jobs, 'ldfcz': os.path.relpath(scene.ldfcz, ROOT),
         'generator': ' '.join(scene.gen_args(best)), 'fd_step': a.fd_step,
         'least_squares': ({'success': bool(result.success), 'nfev': int(result.nfev), 'njev': int(result.njev),
                            'message': result.message} if result is not None else None),
@@ -751,8 +751,9 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
     w = lines.append
     w('# Identification: %s' % a.name)
     w('')
-    w('Command: `tools/identify.py %s` (%s, %s).' % (' '.join(sys.argv[1:]), time.strftime('%Y-%m-%d %H:%M'),
-                                                    os.uname().nodename))
+    args = ' '.join(x.replace(ROOT + os.sep, '') for x in sys.argv[1:])
+    w('Command: `tools/identify.py %s` (%s, %s; 1-min load average %.1f at the end).' % (
+        args, time.strftime('%Y-%m-%d %H:%M'), os.uname().nodename, os.getloadavg()[0]))
     for c in comments:
         w('Curve header: `%s`' % c.lstrip('# '))
     w('')
