@@ -397,7 +397,7 @@ contains
     real(dp), intent(in) :: la       !< ln A(gamma_n) (log_a)
     real(dp), intent(out) :: u
     integer, intent(out) :: n_eval   !< evaluations of g
-    real(dp) :: u_lo, u_hi, g, dg, v, x, x_tr, du, dy, un, ldt
+    real(dp) :: u_lo, u_hi, g, dg, v, x, x_tr, du, t, xn, un, ldt
     logical :: have_lo
     integer :: k
     ldt = log(dt)
@@ -419,10 +419,18 @@ contains
       du = -g / dg
       x = x_tr - v
       if (v > x .and. x < 1.0_dp) then
-        ! step in ln x: d(ln x)/du = -v/x; new drop v' = x_tr - x exp(dy) must stay in (0, x_tr)
-        dy = -du * v / x
-        if (dy < 30.0_dp) then
-          if (x * exp(dy) < x_tr) du = log((x_tr - x * exp(dy)) / v)
+        ! step in ln x: d(ln x)/du = -v/x, dy = -du v/x; new drop v' = x_tr - x exp(dy) must stay in (0, x_tr).
+        ! dy is formed only where it is finite: t = dy x is compared with 30 x and -700 x. At x <= 0 (tau <= 0
+        ! in floating point: an iterate at the bracket end u_hi, where g_of returns -huge) the step in ln x is
+        ! that of its limit x -> 0+, dy -> +inf (g ~ ln x -> -inf), i.e. the case dy >= 30: no step in ln x, the
+        ! step in u (-huge) is kept and the bracket test below replaces it by bisection.
+        if (x > 0.0_dp) then
+          t = -du * v
+          if (t < 30.0_dp * x) then
+            xn = 0.0_dp                    ! dy < -700: exp(dy) x is below the smallest normal number
+            if (t > -700.0_dp * x) xn = x * exp(t / x)
+            if (xn < x_tr) du = log((x_tr - xn) / v)
+          end if
         end if
       else if (v > 1.0_dp .and. du > -1.0_dp) then
         du = log(1.0_dp + du)
