@@ -24,6 +24,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -310,6 +311,11 @@ class Scene:
         reason = ''
         if not ok:
             why = {3: 'no convergence', 2: 'deck or option error', -1: 'timeout'}.get(rc, 'exit status %d' % rc)
+            if rc < -1:
+                try:
+                    why = 'killed by signal %s' % signal.Signals(-rc).name
+                except ValueError:
+                    why = 'killed by signal %d' % -rc
             reason = '%s; run ended at u = %.4g mm of %.4g mm%s' % (
                 why, u[-1] if u else 0.0, self.u_max, (': ' + err.splitlines()[-1]) if err else '')
         # keep the deck and the curve, drop the rest of the run files

@@ -304,17 +304,24 @@ contains
   end subroutine solve4
 
   !> Solve a x = rhs for the right-hand sides in the columns of rhs, Gaussian elimination with partial pivoting.
+  !> ok = .false. when a is singular in floating point: a zero pivot, or a back-substitution quotient beyond 1e150
+  !> (the unknowns of the local problems are increments of log stretches and of ln dgamma and their sensitivities,
+  !> O(1) to O(1e3)); the quotient is not formed then, so nothing overflows (e.g. the local Jacobian at
+  !> phi = dt G/(2 eta) ~ 1e25, where the identity next to phi times the deviatoric projection is lost in round-off
+  !> and the last pivot is 3e-300: test_singular_local_jacobian_requests_cutback).
   pure subroutine solve4m(a, rhs, x, ok)
     real(dp), intent(in) :: a(4, 4), rhs(:, :)   !< rhs(4, nrhs)
     real(dp), intent(out) :: x(:, :)             !< x(4, nrhs)
     logical, intent(out) :: ok
-    real(dp) :: m(4, 4 + size(rhs, 2)), row(4 + size(rhs, 2)), f
+    real(dp), parameter :: x_max = 1.0e150_dp
+    real(dp) :: m(4, 4 + size(rhs, 2)), row(4 + size(rhs, 2)), f, num
     integer :: k, i, piv, nc
     nc = 4 + size(rhs, 2)
     m(:, 1:4) = a
     m(:, 5:nc) = rhs(1:4, :)
     ok = .false.
     x = 0.0_dp
+    if (.not. all(is_finite(a))) return
     do k = 1, 4
       piv = k - 1 + maxloc(abs(m(k:4, k)), dim=1)
       if (.not. (abs(m(piv, k)) > 0.0_dp)) return
@@ -330,7 +337,9 @@ contains
     end do
     do k = 4, 1, -1
       do i = 1, nc - 4
-        x(k, i) = (m(k, 4 + i) - dot_product(m(k, k + 1:4), x(k + 1:4, i))) / m(k, k)
+        num = m(k, 4 + i) - dot_product(m(k, k + 1:4), x(k + 1:4, i))
+        if (.not. (abs(num) <= x_max * abs(m(k, k)))) return
+        x(k, i) = num / m(k, k)
       end do
     end do
     ok = all(is_finite(x))
