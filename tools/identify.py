@@ -499,8 +499,8 @@ def verdict(row):
     down = row['down']['all'] if row['down'] is not None else None
     if up is None and down is None:
         return 'unknown'
-    if up is None or down is None:
-        return 'identifiable' if (up or down) >= 1.0 else 'none'
+    if up is None or down is None:      # one direction failed: the other decides
+        return 'identifiable' if (up if up is not None else down) >= 1.0 else 'none'
     if up >= 1.0 and down >= 1.0:
         return 'identifiable'
     if down >= 1.0:
