@@ -34,6 +34,7 @@ PET_ALT = list(PET_TABLE1)
 PET_ALT[2] = PET_TABLE1[2] / 2.0
 PET_ALT[3] = PET_TABLE1[3] * math.exp(PET_TABLE1[2] / 2.0)
 PET_SETS = {'table1': PET_TABLE1, 'alt': PET_ALT}
+PET_NAMES = ['E', 'nu', 'S_a', 'eta_0r', 'tau_0', 'mu', 'G_r', 'r0', 'r1', 'r2']   # --pet NAME=VALUE
 LEONOV_NSTATV = 11          # docs/umat.md: NSTATV >= 11
 STEEL = (210000.0, 0.3)     # MPa, -
 UEL_NSVARS_PER_IP = 4       # docs/uel.md: 4 SVARS per Gauss point
@@ -169,7 +170,9 @@ def build(p):
          ', reading B: flap lifted at %g degrees (%s grip)' % (p.peel_angle, p.grip) if peel else '', p.coating,
          'rigid substrate' if p.rigid_substrate else 'steel %g mm' % p.substrate, p.phi, delta))
     # parameters as JSON, split into comment lines of at most 132 characters (Abaqus reads lines up to 256)
-    pj = json.dumps({k: v for k, v in sorted(vars(p).items()) if k not in ('output', 'info')}, sort_keys=True)
+    # (--pet only when given: the committed decks' headers stay as they were)
+    pj = json.dumps({k: v for k, v in sorted(vars(p).items())
+                     if k not in ('output', 'info') and not (k == 'pet' and not v)}, sort_keys=True)
     for k in range(0, len(pj), 120):
         w('**PARAMS ' + pj[k:k + 120])
     w('** units: mm, N, s, MPa. x along the specimen, %s through the thickness%s.'
@@ -283,7 +286,7 @@ def build(p):
         if not three_d:
             w('1.0')
     w('*MATERIAL, NAME=PET')
-    pet = list(PET_SETS[p.pet]) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
+    pet = pet_constants(p.pet) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
     w('*USER MATERIAL, CONSTANTS=%d, UNSYMM' % len(pet))
     w(', '.join('%.9g' % v for v in pet[:8]))
     w(', '.join('%.9g' % v for v in pet[8:]))
@@ -337,6 +340,25 @@ def build(p):
     return '\n'.join(out) + '\n', info
 
 
+def pet_constants(overrides):
+    """The PET constants (PROPS order of docs/umat.md): Table 1, or the set an item names (table1, alt), with the
+    NAME=VALUE items applied in order."""
+    pet = list(PET_TABLE1)
+    for item in overrides or []:
+        if item in PET_SETS:
+            pet = list(PET_SETS[item])
+            continue
+        name, _, value = item.partition('=')
+        if name not in PET_NAMES:
+            raise SystemExit('peel_deck: --pet %s: unknown PET constant %r (one of %s)' % (item, name,
+                                                                                     ', '.join(PET_NAMES)))
+        try:
+            pet[PET_NAMES.index(name)] = float(value)
+        except ValueError:
+            raise SystemExit('peel_deck: --pet %s: %r is not a number' % (item, value))
+    return pet
+
+
 def parser():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     g = ap.add_argument_group('scene')
@@ -364,9 +386,11 @@ def parser():
     g.add_argument('--grip', choices=('fixed', 'carriage'), default='fixed',
                    help='reading B: fixed (default): the flap end moves by u_total along the peel direction, '
                    'both components prescribed; carriage (90 degrees only): u_z prescribed, u_x free')
-    g.add_argument('--pet', choices=sorted(PET_SETS), default='table1',
-                   help='PET constants: table1 (as printed, default) or alt (same aged viscosity eta_0r exp(S_a), '
-                   'S_a halved: a rejuvenated state with a flow stress; docs/scenes.md)')
+    g.add_argument('--pet', action='append', default=[], metavar='SET|NAME=VALUE',
+                   help='PET constants: a set, table1 (as printed, default) or alt (same aged viscosity '
+                   'eta_0r exp(S_a), S_a halved: a rejuvenated state with a flow stress; docs/scenes.md), and/or '
+                   'NAME=VALUE replacing one constant (names: %s); repeatable, applied in order'
+                   % ', '.join(PET_NAMES))
     g.add_argument('--dgamma-max', type=float, default=0.0,
                    help='PET accuracy bound on the plastic strain increment, PROPS(11); 0 = UMAT default 0.05')
     g = ap.add_argument_group('interface (LDF, docs/uel.md)')
@@ -427,6 +451,7 @@ def check(p):
             raise SystemExit('peel_deck: --grip carriage needs --peel-angle 90')
     elif p.grip != 'fixed' or p.bend_radius or p.peel_angle != 90.0:
         raise SystemExit('peel_deck: --peel-angle, --bend-radius, --grip belong to --reading peel')
+    pet_constants(p.pet)
 
 
 def main(argv=None):

@@ -12,7 +12,7 @@ case "$build_type" in
 esac
 build_dir=${LDFCZ_BUILD_DIR:-$default_dir}
 
-packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-numpy python3-vtk9
+packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-numpy python3-scipy python3-vtk9
           libmumps-seq-dev libmetis-dev liblapack-dev libopenblas-dev)
 # The LDFCZ_MPI build (mpirun -np N ldfcz; its tests run in tools/test.sh): OpenMPI and the parallel MUMPS. The default
 # build does not use them; they are installed always so that the MPI tests never lack them on Debian.

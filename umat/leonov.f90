@@ -304,17 +304,24 @@ contains
   end subroutine solve4
 
   !> Solve a x = rhs for the right-hand sides in the columns of rhs, Gaussian elimination with partial pivoting.
+  !> ok = .false. when a is singular in floating point: a zero pivot, or a back-substitution quotient beyond 1e150
+  !> (the unknowns of the local problems are increments of log stretches and of ln dgamma and their sensitivities,
+  !> O(1) to O(1e3)); the quotient is not formed then, so nothing overflows (e.g. the local Jacobian at
+  !> phi = dt G/(2 eta) ~ 1e25, where the identity next to phi times the deviatoric projection is lost in round-off
+  !> and the last pivot is 3e-300: test_singular_local_jacobian_requests_cutback).
   pure subroutine solve4m(a, rhs, x, ok)
     real(dp), intent(in) :: a(4, 4), rhs(:, :)   !< rhs(4, nrhs)
     real(dp), intent(out) :: x(:, :)             !< x(4, nrhs)
     logical, intent(out) :: ok
-    real(dp) :: m(4, 4 + size(rhs, 2)), row(4 + size(rhs, 2)), f
+    real(dp), parameter :: x_max = 1.0e150_dp
+    real(dp) :: m(4, 4 + size(rhs, 2)), row(4 + size(rhs, 2)), f, num
     integer :: k, i, piv, nc
     nc = 4 + size(rhs, 2)
     m(:, 1:4) = a
     m(:, 5:nc) = rhs(1:4, :)
     ok = .false.
     x = 0.0_dp
+    if (.not. all(is_finite(a))) return
     do k = 1, 4
       piv = k - 1 + maxloc(abs(m(k:4, k)), dim=1)
       if (.not. (abs(m(piv, k)) > 0.0_dp)) return
@@ -330,7 +337,9 @@ contains
     end do
     do k = 4, 1, -1
       do i = 1, nc - 4
-        x(k, i) = (m(k, 4 + i) - dot_product(m(k, k + 1:4), x(k + 1:4, i))) / m(k, k)
+        num = m(k, 4 + i) - dot_product(m(k, k + 1:4), x(k + 1:4, i))
+        if (.not. (abs(num) <= x_max * abs(m(k, k)))) return
+        x(k, i) = num / m(k, k)
       end do
     end do
     ok = all(is_finite(x))
@@ -397,7 +406,7 @@ contains
     real(dp), intent(in) :: la       !< ln A(gamma_n) (log_a)
     real(dp), intent(out) :: u
     integer, intent(out) :: n_eval   !< evaluations of g
-    real(dp) :: u_lo, u_hi, g, dg, v, x, x_tr, du, dy, un, ldt
+    real(dp) :: u_lo, u_hi, g, dg, v, x, x_tr, du, t, xn, un, ldt
     logical :: have_lo
     integer :: k
     ldt = log(dt)
@@ -428,11 +437,17 @@ contains
       else
         du = -g / dg
         if (v > x .and. x < 1.0_dp) then
-          ! step in ln x: d(ln x)/du = -v/x; new drop v' = x_tr - x exp(dy) must stay in (0, x_tr); dy < 30 tested
-          ! before dividing (x may be tiny)
-          if (-du * v < 30.0_dp * x) then
-            dy = -du * v / x
-            if (x * exp(dy) < x_tr) du = log((x_tr - x * exp(dy)) / v)
+          ! step in ln x: d(ln x)/du = -v/x, dy = -du v/x; new drop v' = x_tr - x exp(dy) must stay in (0, x_tr).
+          ! dy is formed only where it is finite: t = dy x is compared with 30 x and -700 x. At x <= 0 (tau <= 0
+          ! in floating point) the step in ln x is that of its limit x -> 0+, dy -> +inf, i.e. the case dy >= 30:
+          ! no step in ln x; the bracket test below takes over.
+          if (x > 0.0_dp) then
+            t = -du * v
+            if (t < 30.0_dp * x) then
+              xn = 0.0_dp                    ! dy < -700: exp(dy) x is below the smallest normal number
+              if (t > -700.0_dp * x) xn = x * exp(t / x)
+              if (xn < x_tr) du = log((x_tr - xn) / v)
+            end if
           end if
         else if (v > 1.0_dp .and. du > -1.0_dp) then
           du = log(1.0_dp + du)
