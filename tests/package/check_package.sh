@@ -12,8 +12,12 @@ cmake -S "$here" -B "$out/build" -DCMAKE_PREFIX_PATH="$out/prefix" -DCMAKE_Fortr
 cmake --build "$out/build" > "$out.build.log"
 "$out/build/consumer"
 "$out/build/consumer_shared"
-ldd "$out/build/consumer_shared" | grep -q "$out/prefix/lib/libldfcz_umat.so" \
-  || { echo "FAIL: consumer_shared does not load the installed libldfcz_umat.so"; ldd "$out/build/consumer_shared"; exit 1; }
+# (ldd's output taken whole first: grep -q on a pipe would end ldd early with SIGPIPE, a failure under pipefail)
+loaded=$(ldd "$out/build/consumer_shared")
+case "$loaded" in
+  *"$out/prefix/lib/libldfcz_umat.so"*) ;;
+  *) echo "FAIL: consumer_shared does not load the installed libldfcz_umat.so"; echo "$loaded"; exit 1 ;;
+esac
 echo "shared libraries: consumer_shared loads them from the prefix: ok"
 libs=$(PKG_CONFIG_PATH="$out/prefix/lib/pkgconfig" pkg-config --libs ldfcz)
 echo "pkg-config --libs ldfcz: $libs"
