@@ -52,10 +52,14 @@ contains
     character(len=96), allocatable :: colnames(:)
     integer, allocatable :: col_set(:), col_var(:), bc_amp(:)
     logical, allocatable :: bc_on(:), bc_init(:)
+    logical, allocatable :: bc_vel(:)   !< the dof's boundary is a velocity (TYPE=VELOCITY)
+    real(dp), allocatable :: bc_rate(:) !< the velocity of the last converged increment (inherited by the next step)
     real(dp), allocatable :: bc_val(:), u_start(:), r(:), rf_old(:), ratios(:), colv(:), du_prev(:)
     real(dp), allocatable :: fext_old(:), fcl_old(:)
     logical, allocatable :: bc_was_on(:)
-    type(load_state_t) :: ls, ls_temp
+    type(load_state_t) :: ls, ls_temp, ls_field
+    real(dp), allocatable :: temp_init(:), field_init(:)
+    logical :: field_comp(max(1, model%nfield))
     real(dp), allocatable :: zero_nodes(:)
     real(dp) :: t_total0, time(2), dt, pnewdt_min, q_sum, q_now, t_end, next_mark, dt_prev
     real(dp) :: open_inc, plastic_inc
@@ -99,10 +103,11 @@ contains
     end if
     if (restarting .and. (any(model%steps(1:model%nstep)%ncload > 0) .or. &
         any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new) .or. &
-        any(model%steps(1:model%nstep)%ntemp > 0))) then
+        any(model%steps(1:model%nstep)%ntemp > 0) .or. any(model%steps(1:model%nstep)%nfielddef > 0) .or. &
+        model%nfield > 0 .or. any_velocity())) then
       ! the load state (step_loads) is not in the restart file
-      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE or *BOUNDARY, OP=NEW is '// &
-        'not supported'
+      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE, field '// &
+        'variables, *BOUNDARY, TYPE=VELOCITY or *BOUNDARY, OP=NEW is not supported'
       call output_log(out, 'ldfcz: error: '//errmsg)
       if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
@@ -202,6 +207,9 @@ contains
     call stop_signal_install()
 
     allocate (bc_on(an%ndof), bc_init(an%ndof), bc_val(an%ndof), bc_amp(an%ndof), u_start(an%ndof))
+    allocate (bc_vel(an%ndof), bc_rate(an%ndof))
+    bc_vel = .false.
+    bc_rate = 0.0_dp
     allocate (rf_old(an%ndof), du_prev(an%ndof), fext_old(an%ndof), bc_was_on(an%ndof), fcl_old(an%ndof))
     call load_state_init(ls, an%ndof)
     ! nodal temperatures: every node holds its initial temperature until a *TEMPERATURE changes it
@@ -211,6 +219,13 @@ contains
     ls_temp%target = an%temp_start
     allocate (zero_nodes(model%nnode))
     zero_nodes = 0.0_dp
+    temp_init = an%temp_start
+    ! field variables likewise (*INITIAL CONDITIONS, TYPE=FIELD until a *FIELD changes them), nfield per node
+    call load_state_init(ls_field, size(an%field_start))
+    ls_field%on = .true.
+    ls_field%base = an%field_start
+    ls_field%target = an%field_start
+    field_init = an%field_start
     fext_old = 0.0_dp
     fcl_old = 0.0_dp
     du_prev = 0.0_dp
@@ -243,10 +258,16 @@ contains
         if (.not. resumed) then
           ! boundaries of this step: inherited ones keep the value reached (OP=NEW drops them)
           u_start = an%u_conv
-          where (bc_on .and. .not. bc_init)
+          where (bc_on .and. .not. bc_init .and. .not. bc_vel)
             bc_val = an%u_conv
             bc_amp = 0
           end where
+          ! an inherited velocity keeps the velocity reached (constant in this step)
+          where (bc_on .and. bc_vel)
+            bc_val = bc_rate
+            bc_amp = 0
+          end where
+          if (st%op_new) where (.not. bc_init) bc_vel = .false.
           bc_was_on = bc_on
           if (st%op_new) where (.not. bc_init) bc_on = .false.
           call apply_bc_list(st%bcs, st%nbc, .false.)
@@ -258,7 +279,19 @@ contains
           end where
           call load_step_begin(ls, fcl_old, merge(rf_old, 0.0_dp, bc_was_on), st%cloads, st%ncload, &
             st%cload_op_new, model%ndim)
-          call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
+          ! predefined fields: OP=NEW (per variable, 0 the temperature) returns them to their initial values
+          field_comp = .false.
+          if (allocated(st%field_new)) then
+            do k = 1, model%nfield
+              field_comp(k) = any(st%field_new == k)
+            end do
+            call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, any(st%field_new == 0), 1, &
+              rest=temp_init)
+          else
+            call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
+          end if
+          if (model%nfield > 0) call load_step_begin(ls_field, an%field_start, 0.0_dp * field_init, st%fields, &
+            st%nfielddef, any(field_comp), model%nfield, rest=field_init, new_comp=field_comp)
           call dload_step_begin(an%dl, model, is, t_total0, stat, errmsg)
           if (stat /= 0) then
             call output_log(out, 'ldfcz: error: '//errmsg)
@@ -328,6 +361,7 @@ contains
             if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
             call load_vector(ls, model, is, t_end, t_total0, an%fext)
             call load_vector(ls_temp, model, is, t_end, t_total0, an%temp_end)
+            call load_vector(ls_field, model, is, t_end, t_total0, an%field_end)
             call newton_solve(an, model, is, kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, q_sum, &
               converged, stopped, iter, q_now, pnewdt_min, outcome)
             if (stopped) then
@@ -415,6 +449,10 @@ contains
           dt_prev = dt
           call analysis_commit(an)
           an%temp_start = an%temp_end
+          an%field_start = an%field_end
+          do i = 1, an%ndof
+            if (bc_vel(i)) bc_rate(i) = velocity_value(i, t_end)
+          end do
           call step_control_converged(sc, dt, iter, pnewdt_min)
           if (open_inc > 0.0_dp .and. .not. st%direct) then
             ! next increment from the opening bound: at most x1.5 after an easy increment, PNEWDT > 1 honoured
@@ -594,6 +632,7 @@ contains
             bc_on(dof) = .true.
             bc_val(dof) = list(k)%value
             bc_amp(dof) = list(k)%amplitude
+            bc_vel(dof) = list(k)%velocity
             if (initial) bc_init(dof) = .true.
           end do
         end do
@@ -604,6 +643,11 @@ contains
     real(dp) function prescribed_value(dof, t) result(v)
       integer, intent(in) :: dof
       real(dp), intent(in) :: t
+      if (bc_vel(dof)) then
+        ! TYPE=VELOCITY: u = u of the last converged increment + v(t) dt, v a STEP unless an amplitude is given
+        v = an%u_conv(dof) + velocity_value(dof, t) * dt
+        return
+      end if
       if (bc_amp(dof) > 0) then
         v = amplitude_factor(model%amplitudes(bc_amp(dof)), t, t_total0) * bc_val(dof)
       else if (model%steps(is)%amp_step) then
@@ -612,6 +656,26 @@ contains
         v = u_start(dof) + (t / model%steps(is)%period) * (bc_val(dof) - u_start(dof))
       end if
     end function prescribed_value
+
+    !> Prescribed velocity of dof at step time t: amplitude * value, else the value (Abaqus' default for velocity
+    !> boundaries in a static step is a STEP function whatever *STEP, AMPLITUDE says).
+    real(dp) function velocity_value(dof, t) result(v)
+      integer, intent(in) :: dof
+      real(dp), intent(in) :: t
+      v = bc_val(dof)
+      if (bc_amp(dof) > 0) v = amplitude_factor(model%amplitudes(bc_amp(dof)), t, t_total0) * bc_val(dof)
+    end function velocity_value
+
+    !> A step of the model has a velocity boundary.
+    logical function any_velocity()
+      integer :: js, kb
+      any_velocity = .false.
+      do js = 1, model%nstep
+        do kb = 1, model%steps(js)%nbc
+          if (model%steps(js)%bcs(kb)%velocity) any_velocity = .true.
+        end do
+      end do
+    end function any_velocity
 
     real(dp) function column_value(iset, ivar) result(v)
       integer, intent(in) :: iset, ivar

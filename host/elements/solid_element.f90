@@ -151,7 +151,7 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, orient)
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, orient, field_nodes, dfield_nodes)
     character(len=*), intent(in) :: etype             !< 'C3D8' or 'CPE4'
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -183,6 +183,8 @@ contains
     real(dp), intent(in), optional :: temp_nodes(:)   !< (nnode) nodal temperatures at the start of the increment
     real(dp), intent(in), optional :: dtemp_nodes(:)  !< (nnode) their increments (TEMP, DTEMP interpolated to points)
     real(dp), intent(in), optional :: orient(:, :, :) !< (3, 3, nip) local material axes T0 (columns) per point
+    real(dp), intent(in), optional :: field_nodes(:, :)  !< (nfield, nnode) field variables at the increment's start
+    real(dp), intent(in), optional :: dfield_nodes(:, :) !< (nfield, nnode) their increments (PREDEF, DPRED at points)
     real(dp) :: temp_ip, dtemp_ip, tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3)
     real(dp) :: s_unit(6), col_g(6, 6)
     logical :: local
@@ -418,8 +420,16 @@ contains
           ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
           coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
         end do
-        call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-          ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
+        ! PREDEF, DPRED: the field variables interpolated to the point (start of the increment) and their increments
+        if (present(field_nodes) .and. present(dfield_nodes)) then
+          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+            nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
+            dtemp_ip, matmul(field_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)), &
+            matmul(dfield_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)))
+        else
+          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+            nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
+        end if
         statev_new(1:nsv, ip) = sv(1:nsv)
       end select
       pnewdt = min(pnewdt, pn)
@@ -565,9 +575,11 @@ contains
   !> Call the UMAT through the pointer with contiguous explicit-shape copies of every argument (a user routine
   !> may overwrite any of them; only STRESS, STATEV, DDSDDE, SSE, SPD, SCD and PNEWDT are taken back).
   subroutine call_umat(umat, stress, statev, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-      ntens, nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, jstep, kinc, temp, dtemp)
+      ntens, nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, jstep, kinc, temp, dtemp, &
+      predef, dpred)
     procedure(umat_interface) :: umat                    !< the UMAT
     real(dp), intent(in) :: temp, dtemp                  !< temperature at the start of the increment, its increment
+    real(dp), intent(in), optional :: predef(:), dpred(:) !< field variables at the start of the increment, increments
     integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, kinc, jstep(4)
     real(dp), intent(inout) :: stress(6), statev(:), ddsdde(6, 6), sse, spd, scd, pnewdt
     real(dp), intent(in) :: stran(6), dstran(6), time(2), dtime, coords(3), drot(3, 3), celent
@@ -575,7 +587,8 @@ contains
     character(len=80), intent(in) :: cmname
     real(dp) :: c_stress(ntens), c_ddsdde(ntens, ntens), c_ddsddt(ntens), c_drplde(ntens), c_stran(ntens)
     real(dp) :: c_dstran(ntens), c_statev(size(statev)), c_props(size(props)), c_rpl, c_drpldt
-    real(dp) :: c_time(2), c_dtime, c_temp, c_dtemp, c_predef(1), c_dpred(1)
+    real(dp) :: c_time(2), c_dtime, c_temp, c_dtemp
+    real(dp), allocatable :: c_predef(:), c_dpred(:)
     real(dp) :: c_coords(3), c_drot(3, 3), c_celent, c_f0(3, 3), c_f1(3, 3)
     integer :: c_ndi, c_nshr, c_ntens, c_nstatv, c_nprops, c_noel, c_npt, c_layer, c_kspt, c_jstep(4), c_kinc
     character(len=80) :: c_cmname
@@ -583,7 +596,17 @@ contains
     c_stress = stress(1:ntens); c_ddsdde = 0.0_dp; c_ddsddt = 0.0_dp; c_drplde = 0.0_dp
     c_stran = stran(1:ntens); c_dstran = dstran(1:ntens); c_statev = statev; c_props = props
     c_rpl = 0.0_dp; c_drpldt = 0.0_dp
-    c_time = time; c_dtime = dtime; c_temp = temp; c_dtemp = dtemp; c_predef = 0.0_dp; c_dpred = 0.0_dp
+    c_time = time; c_dtime = dtime; c_temp = temp; c_dtemp = dtemp
+    ! NPREDF-sized PREDEF and DPRED (at least one entry, 0, without field variables)
+    allocate (c_predef(1), c_dpred(1))
+    c_predef = 0.0_dp
+    c_dpred = 0.0_dp
+    if (present(predef) .and. present(dpred)) then
+      if (size(predef) > 0) then
+        c_predef = predef
+        c_dpred = dpred
+      end if
+    end if
     c_coords = coords; c_drot = drot; c_celent = celent; c_f0 = dfgrd0; c_f1 = dfgrd1
     c_ndi = ndi; c_nshr = nshr; c_ntens = ntens; c_nstatv = nstatv; c_nprops = nprops; c_noel = noel; c_npt = npt
     c_layer = 1; c_kspt = 1; c_jstep = jstep; c_kinc = kinc; c_cmname = cmname
