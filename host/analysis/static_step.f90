@@ -104,10 +104,10 @@ contains
     if (restarting .and. (any(model%steps(1:model%nstep)%ncload > 0) .or. &
         any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new) .or. &
         any(model%steps(1:model%nstep)%ntemp > 0) .or. any(model%steps(1:model%nstep)%nfielddef > 0) .or. &
-        model%nfield > 0 .or. any_velocity())) then
+        any_velocity())) then
       ! the load state (step_loads) is not in the restart file
-      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE, field '// &
-        'variables, *BOUNDARY, TYPE=VELOCITY or *BOUNDARY, OP=NEW is not supported'
+      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE, *FIELD, '// &
+        '*BOUNDARY, TYPE=VELOCITY or *BOUNDARY, OP=NEW is not supported'
       call output_log(out, 'ldfcz: error: '//errmsg)
       if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
