@@ -189,6 +189,15 @@ add_test(NAME deck_thermal_expansion COMMAND Python3::Interpreter ${LDFCZ_CHECK_
   --out ${LDFCZ_RUNS}/thermal --case thermal --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_prestress.f90)
 set_tests_properties(deck_dload_balloon deck_dload_balloon3d deck_dload_uel deck_initial_stress deck_thermal_expansion PROPERTIES
   LABELS "deck" TIMEOUT 300)
+# field variables (*INITIAL CONDITIONS, TYPE=FIELD; *FIELD with an amplitude and OP=NEW) as PREDEF/DPRED of a UMAT
+# and PREDEF of a UEL, and *BOUNDARY, TYPE=VELOCITY, against closed forms (tests/regression/check_fields.py)
+set(LDFCZ_CHECK_FIELDS "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_fields.py")
+add_test(NAME deck_fields COMMAND Python3::Interpreter ${LDFCZ_CHECK_FIELDS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/fields --case fields
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_fields.f,${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_fields.f)
+add_test(NAME deck_boundary_velocity COMMAND Python3::Interpreter ${LDFCZ_CHECK_FIELDS} --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/boundary_velocity --case velocity)
+set_tests_properties(deck_fields deck_boundary_velocity PROPERTIES LABELS "deck" TIMEOUT 300)
 
 # a user UMAT that returns NaN at one point: the cutback's cause (element, routine, point, reason) in JOB.log once,
 # at default verbosity

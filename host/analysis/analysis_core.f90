@@ -68,6 +68,8 @@ module analysis_core
     real(dp), allocatable :: fdl(:)             !< distributed-load nodal forces (all dofs) at the current estimate
     real(dp), allocatable :: temp_start(:)      !< (nnode) temperatures at the start of the increment
     real(dp), allocatable :: temp_end(:)        !< (nnode) temperatures at the end of the increment
+    real(dp), allocatable :: field_start(:)     !< (nfield*nnode) field variables at the start of the increment
+    real(dp), allocatable :: field_end(:)       !< (nfield*nnode) at its end (variable n of node a: (a-1)*nfield+n)
     real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
     type(dload_state_t) :: dl                   !< distributed loads of the current step (distributed_loads)
     type(constraint_set_t) :: cs                !< *EQUATION constraints (linear_constraints), eliminated
@@ -260,6 +262,15 @@ contains
       an%temp_start(model%temp_inits(k)%nodes) = model%temp_inits(k)%value
     end do
     an%temp_end = an%temp_start
+    ! initial field variables (*INITIAL CONDITIONS, TYPE=FIELD, VARIABLE=n; 0 elsewhere), in deck order
+    allocate (an%field_start(model%nfield * model%nnode), an%field_end(model%nfield * model%nnode))
+    an%field_start = 0.0_dp
+    do k = 1, model%nfield_init
+      associate (fi => model%field_inits(k))
+        an%field_start((fi%nodes - 1) * model%nfield + fi%dof) = fi%value
+      end associate
+    end do
+    an%field_end = an%field_start
     an%trial = an%conv
     allocate (an%u(an%ndof), an%u_conv(an%ndof), an%fint(an%ndof), an%fe(an%elem_ptr(model%nelem + 1) - 1))
     an%u = 0.0_dp
@@ -490,7 +501,7 @@ contains
     real(dp), intent(inout) :: pnewdt
     integer, intent(out) :: stat
     character(len=*), intent(out) :: msg
-    integer :: nn, a, iu, ip, mcrd, nsv
+    integer :: nn, a, iu, ip, mcrd, nsv, nf, nd
     real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8), svars(1)
     real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
@@ -506,14 +517,19 @@ contains
     if (model%elem_kind(ie) == etype_user) then
       iu = model%elem_utype(ie)
       mcrd = model%utypes(iu)%mcrd
-      allocate (xc(mcrd, nn), predef(2, 1, nn))
+      nf = model%nfield
+      allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
       do a = 1, nn
         xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
       end do
-      ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment (Abaqus UEL)
+      ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
+      ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
       do a = 1, nn
-        predef(1, 1, a) = an%temp_end(model%conn(model%conn_ptr(ie) + a - 1))
-        predef(2, 1, a) = predef(1, 1, a) - an%temp_start(model%conn(model%conn_ptr(ie) + a - 1))
+        nd = model%conn(model%conn_ptr(ie) + a - 1)
+        predef(1, 1, a) = an%temp_end(nd)
+        predef(2, 1, a) = predef(1, 1, a) - an%temp_start(nd)
+        predef(1, 2:1 + nf, a) = an%field_end((nd - 1) * nf + 1:nd * nf)
+        predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%field_start((nd - 1) * nf + 1:nd * nf)
       end do
       ip = model%elem_uelprop(ie)
       if (ip > 0) then
@@ -544,7 +560,7 @@ contains
       lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, an%extrapolated)]
       call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
         ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
-        adlmag, predef, 1, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
+        adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
       fel = -rhs(:, 1)
       if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
         write (b, '(i0)') model%elem_id(ie)
@@ -567,7 +583,9 @@ contains
           energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
           temp_nodes=an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
           dtemp_nodes=an%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
-          an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t)
+          an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t, &
+          field_nodes=element_fields(an%field_start), dfield_nodes=element_fields(an%field_end) - &
+          element_fields(an%field_start))
         st%energy = 0.0_dp
         st%energy(2) = e2(1)
         st%energy(4) = e2(2)
@@ -593,6 +611,19 @@ contains
         if (want_k) ke = ke + kl
       end if
     end if
+
+  contains
+
+    !> (nfield, nnode) the field variables of the element's nodes in v (an%field_start or an%field_end).
+    pure function element_fields(v) result(fe)
+      real(dp), intent(in) :: v(:)
+      real(dp) :: fe(model%nfield, model%conn_ptr(ie + 1) - model%conn_ptr(ie))
+      integer :: b, m
+      do b = 1, size(fe, 2)
+        m = model%conn(model%conn_ptr(ie) + b - 1)
+        fe(:, b) = v((m - 1) * model%nfield + 1:m * model%nfield)
+      end do
+    end function element_fields
   end subroutine element_compute
 
   !> Local material axes at the integration points of the elements whose section has an *ORIENTATION (the points'

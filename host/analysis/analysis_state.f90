@@ -32,6 +32,8 @@ module analysis_state
     logical, allocatable :: bc_on(:)      !< (ndof) the dof is prescribed
     logical, allocatable :: bc_init(:)    !< (ndof) prescribed by an initial *BOUNDARY (model data)
     integer, allocatable :: bc_amp(:)     !< (ndof) amplitude of the prescribed value (0: step ramp)
+    logical, allocatable :: bc_vel(:)     !< (ndof) the prescribed value is a velocity (*BOUNDARY, TYPE=VELOCITY)
+    real(dp), allocatable :: bc_rate(:)   !< (ndof) that velocity in the last converged increment (next step's)
   end type analysis_state_t
 
 contains
@@ -41,7 +43,9 @@ contains
     type(analysis_state_t), intent(out) :: s  !< state
     integer, intent(in) :: ndof               !< dofs of the model
     allocate (s%u_start(ndof), s%rf_old(ndof), s%du_prev(ndof), s%fext_old(ndof), s%fcl_old(ndof), &
-      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof))
+      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), s%bc_vel(ndof), s%bc_rate(ndof))
+    s%bc_vel = .false.
+    s%bc_rate = 0.0_dp
     s%u_start = 0.0_dp
     s%rf_old = 0.0_dp
     s%du_prev = 0.0_dp
@@ -66,7 +70,7 @@ contains
       s%sc%total_cutbacks
     if (ios == 0) write (u, iostat=ios, iomsg=iomsg) size(s%u_start)
     if (ios == 0) write (u, iostat=ios, iomsg=iomsg) s%u_start, s%rf_old, s%du_prev, s%fext_old, s%fcl_old, &
-      s%bc_val, merge(1, 0, s%bc_on), merge(1, 0, s%bc_init), s%bc_amp
+      s%bc_val, merge(1, 0, s%bc_on), merge(1, 0, s%bc_init), s%bc_amp, merge(1, 0, s%bc_vel), s%bc_rate
   end subroutine analysis_state_write
 
   !> Read a state written by analysis_state_write for ndof dofs (ios = -2: another number of dofs).
@@ -76,7 +80,7 @@ contains
     type(analysis_state_t), intent(out) :: s    !< state read
     integer, intent(out) :: ios                 !< iostat (-2: the dofs differ)
     integer :: idirect, n
-    integer, allocatable :: ion(:), iinit(:)
+    integer, allocatable :: ion(:), iinit(:), ivel(:)
     read (u, iostat=ios) s%step, s%kinc, s%kinc_total, s%csv_rows, s%last_frame_inc, s%reuse_count, &
       s%t_total0, s%q_sum, s%next_mark, s%dt_prev
     if (ios == 0) read (u, iostat=ios) s%sc%period, s%sc%dt_min, s%sc%dt_max, idirect, s%sc%easy_iterations, &
@@ -90,10 +94,13 @@ contains
       return
     end if
     allocate (s%u_start(ndof), s%rf_old(ndof), s%du_prev(ndof), s%fext_old(ndof), s%fcl_old(ndof), &
-      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), ion(ndof), iinit(ndof))
-    read (u, iostat=ios) s%u_start, s%rf_old, s%du_prev, s%fext_old, s%fcl_old, s%bc_val, ion, iinit, s%bc_amp
+      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), s%bc_vel(ndof), s%bc_rate(ndof), ion(ndof), &
+      iinit(ndof), ivel(ndof))
+    read (u, iostat=ios) s%u_start, s%rf_old, s%du_prev, s%fext_old, s%fcl_old, s%bc_val, ion, iinit, s%bc_amp, &
+      ivel, s%bc_rate
     s%bc_on = ion == 1
     s%bc_init = iinit == 1
+    s%bc_vel = ivel == 1
   end subroutine analysis_state_read
 
 end module analysis_state

@@ -21,7 +21,7 @@ module restart_file
 
   character(len=8), parameter :: restart_magic = 'LDFCZRST'  !< first 8 bytes of a restart file
   character(len=8), parameter :: end_magic = 'LDFCZEND'      !< last 8 bytes
-  integer, parameter :: restart_version = 4                  !< format version
+  integer, parameter :: restart_version = 5                  !< format version
 
   !> The solver state at the end of a converged increment (element states are passed separately).
   type :: restart_state_t

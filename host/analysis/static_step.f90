@@ -54,7 +54,9 @@ contains
     real(dp), allocatable :: r(:), ratios(:), colv(:)
     logical, allocatable :: bc_was_on(:)
     type(analysis_state_t) :: s        !< the increment loop's state (what a restart file holds)
-    type(load_state_t) :: ls, ls_temp
+    type(load_state_t) :: ls, ls_temp, ls_field
+    real(dp), allocatable :: temp_init(:), field_init(:)
+    logical :: field_comp(max(1, model%nfield))
     real(dp), allocatable :: zero_nodes(:)
     real(dp) :: time(2), dt, pnewdt_min, q_now, t_end
     real(dp) :: open_inc, plastic_inc
@@ -101,10 +103,11 @@ contains
     end if
     if (restarting .and. (any(model%steps(1:model%nstep)%ncload > 0) .or. &
         any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new) .or. &
-        any(model%steps(1:model%nstep)%ntemp > 0))) then
+        any(model%steps(1:model%nstep)%ntemp > 0) .or. any(model%steps(1:model%nstep)%nfielddef > 0) .or. &
+        any_velocity())) then
       ! the load state (step_loads) is not in the restart file
-      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE or *BOUNDARY, OP=NEW is '// &
-        'not supported'
+      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE, *FIELD, '// &
+        '*BOUNDARY, TYPE=VELOCITY or *BOUNDARY, OP=NEW is not supported'
       call output_log(out, 'ldfcz: error: '//errmsg)
       if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
@@ -213,6 +216,13 @@ contains
     ls_temp%target = an%temp_start
     allocate (zero_nodes(model%nnode))
     zero_nodes = 0.0_dp
+    temp_init = an%temp_start
+    ! field variables likewise (*INITIAL CONDITIONS, TYPE=FIELD until a *FIELD changes them), nfield per node
+    call load_state_init(ls_field, size(an%field_start))
+    ls_field%on = .true.
+    ls_field%base = an%field_start
+    ls_field%target = an%field_start
+    field_init = an%field_start
     call apply_bc_list(model%initial_bcs, model%n_initial_bc, .true.)
     t_reached = 0.0_dp
     is_first = 1
@@ -233,10 +243,16 @@ contains
         if (.not. resumed) then
           ! boundaries of this step: inherited ones keep the value reached (OP=NEW drops them)
           s%u_start = an%u_conv
-          where (s%bc_on .and. .not. s%bc_init)
+          where (s%bc_on .and. .not. s%bc_init .and. .not. s%bc_vel)
             s%bc_val = an%u_conv
             s%bc_amp = 0
           end where
+          ! an inherited velocity keeps the velocity reached (constant in this step)
+          where (s%bc_on .and. s%bc_vel)
+            s%bc_val = s%bc_rate
+            s%bc_amp = 0
+          end where
+          if (st%op_new) where (.not. s%bc_init) s%bc_vel = .false.
           bc_was_on = s%bc_on
           if (st%op_new) where (.not. s%bc_init) s%bc_on = .false.
           call apply_bc_list(st%bcs, st%nbc, .false.)
@@ -248,7 +264,19 @@ contains
           end where
           call load_step_begin(ls, s%fcl_old, merge(s%rf_old, 0.0_dp, bc_was_on), st%cloads, st%ncload, &
             st%cload_op_new, model%ndim)
-          call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
+          ! predefined fields: OP=NEW (per variable, 0 the temperature) returns them to their initial values
+          field_comp = .false.
+          if (allocated(st%field_new)) then
+            do k = 1, model%nfield
+              field_comp(k) = any(st%field_new == k)
+            end do
+            call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, any(st%field_new == 0), 1, &
+              rest=temp_init)
+          else
+            call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
+          end if
+          if (model%nfield > 0) call load_step_begin(ls_field, an%field_start, 0.0_dp * field_init, st%fields, &
+            st%nfielddef, any(field_comp), model%nfield, rest=field_init, new_comp=field_comp)
           call dload_step_begin(an%dl, model, is, s%t_total0, stat, errmsg)
           if (stat /= 0) then
             call output_log(out, 'ldfcz: error: '//errmsg)
@@ -314,6 +342,7 @@ contains
             if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
             call load_vector(ls, model, is, t_end, s%t_total0, an%fext)
             call load_vector(ls_temp, model, is, t_end, s%t_total0, an%temp_end)
+            call load_vector(ls_field, model, is, t_end, s%t_total0, an%field_end)
             call newton_solve(an, model, is, s%kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, s%q_sum, &
               converged, stopped, iter, q_now, pnewdt_min, outcome)
             if (stopped) then
@@ -402,6 +431,10 @@ contains
           s%dt_prev = dt
           call analysis_commit(an)
           an%temp_start = an%temp_end
+          an%field_start = an%field_end
+          do i = 1, an%ndof
+            if (s%bc_vel(i)) s%bc_rate(i) = velocity_value(i, t_end)
+          end do
           call step_control_converged(s%sc, dt, iter, pnewdt_min, open_inc, opt%max_opening, plastic_inc, &
             opt%max_plastic)
           summary%increments = summary%increments + 1
@@ -545,6 +578,7 @@ contains
             s%bc_on(dof) = .true.
             s%bc_val(dof) = list(k)%value
             s%bc_amp(dof) = list(k)%amplitude
+            s%bc_vel(dof) = list(k)%velocity
             if (initial) s%bc_init(dof) = .true.
           end do
         end do
@@ -555,6 +589,11 @@ contains
     real(dp) function prescribed_value(dof, t) result(v)
       integer, intent(in) :: dof
       real(dp), intent(in) :: t
+      if (s%bc_vel(dof)) then
+        ! TYPE=VELOCITY: u = u of the last converged increment + v(t) dt, v a STEP unless an amplitude is given
+        v = an%u_conv(dof) + velocity_value(dof, t) * dt
+        return
+      end if
       if (s%bc_amp(dof) > 0) then
         v = amplitude_factor(model%amplitudes(s%bc_amp(dof)), t, s%t_total0) * s%bc_val(dof)
       else if (model%steps(is)%amp_step) then
@@ -563,6 +602,26 @@ contains
         v = s%u_start(dof) + (t / model%steps(is)%period) * (s%bc_val(dof) - s%u_start(dof))
       end if
     end function prescribed_value
+
+    !> Prescribed velocity of dof at step time t: amplitude * value, else the value (Abaqus' default for velocity
+    !> boundaries in a static step is a STEP function whatever *STEP, AMPLITUDE says).
+    real(dp) function velocity_value(dof, t) result(v)
+      integer, intent(in) :: dof
+      real(dp), intent(in) :: t
+      v = s%bc_val(dof)
+      if (s%bc_amp(dof) > 0) v = amplitude_factor(model%amplitudes(s%bc_amp(dof)), t, s%t_total0) * s%bc_val(dof)
+    end function velocity_value
+
+    !> A step of the model has a velocity boundary.
+    logical function any_velocity()
+      integer :: js, kb
+      any_velocity = .false.
+      do js = 1, model%nstep
+        do kb = 1, model%steps(js)%nbc
+          if (model%steps(js)%bcs(kb)%velocity) any_velocity = .true.
+        end do
+      end do
+    end function any_velocity
 
     real(dp) function column_value(iset, ivar) result(v)
       integer, intent(in) :: iset, ivar

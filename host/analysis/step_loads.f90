@@ -36,9 +36,11 @@ contains
   !> reaction the reaction force (internal minus external force) of the dofs whose boundary this step removes
   !> (zero elsewhere). Loads not re-specified keep their value (OP=MOD) or are released (OP=NEW); the step's
   !> *CLOAD lines are applied in deck order (the last line for a node and dof wins).
-  !> The same machinery carries the nodal temperatures (*TEMPERATURE: list = the step's temperatures, stride 1,
-  !> every node on from the start with its initial temperature).
-  pure subroutine load_step_begin(ls, f_now, reaction, list, n, op_new, stride)
+  !> The same machinery carries the predefined fields: the nodal temperatures (*TEMPERATURE, stride 1) and the
+  !> field variables (*FIELD, stride = the number of field variables, entry (node-1)*stride + n for variable n).
+  !> Every node is on from the start with its initial value; OP=NEW returns the values of the components in
+  !> new_comp to rest (their initial values) over the step, like any change (RAMP or STEP), instead of releasing them.
+  pure subroutine load_step_begin(ls, f_now, reaction, list, n, op_new, stride, rest, new_comp)
     type(load_state_t), intent(inout) :: ls  !< load state
     real(dp), intent(in) :: f_now(:)         !< external force at the end of the previous step
     real(dp), intent(in) :: reaction(:)      !< reactions of the boundaries removed at this step's start
@@ -46,7 +48,10 @@ contains
     integer, intent(in) :: n                 !< definitions in use
     logical, intent(in) :: op_new            !< OP=NEW in this step
     integer, intent(in) :: stride            !< entries per node (the model dimension for forces)
+    real(dp), intent(in), optional :: rest(:)    !< values removed entries return to (predefined fields)
+    logical, intent(in), optional :: new_comp(:) !< (stride) the components OP=NEW applies to (all when absent)
     integer :: k, a, i
+    logical :: removed(size(ls%on))
     ! inherited loads hold the value reached
     where (ls%on)
       ls%base = f_now
@@ -55,10 +60,22 @@ contains
     ls%amp = 0
     ls%released = reaction
     if (op_new) then
-      where (ls%on) ls%released = ls%released + f_now
-      ls%on = .false.
-      ls%base = 0.0_dp
-      ls%target = 0.0_dp
+      removed = ls%on
+      if (present(new_comp)) then
+        do i = 1, size(removed)
+          removed(i) = removed(i) .and. new_comp(mod(i - 1, stride) + 1)
+        end do
+      end if
+      if (present(rest)) then
+        where (removed) ls%target = rest
+      else
+        where (removed)
+          ls%released = ls%released + f_now
+          ls%on = .false.
+          ls%base = 0.0_dp
+          ls%target = 0.0_dp
+        end where
+      end if
     end if
     do k = 1, n
       do a = 1, size(list(k)%nodes)

@@ -83,12 +83,24 @@ contains
     type(boundary_t) :: bc, empty_bc
     character(len=flen), allocatable :: f(:)
     integer :: i, n, id, iset, iamp, ir, istep
+    logical :: velocity
     character(len=:), allocatable :: v, word
     call ctx_allow_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP', 'TYPE'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     istep = ctx%istep
-    if (.not. ctx_only_value(ctx, ir, 'TYPE', 'DISPLACEMENT')) return
+    ! TYPE=DISPLACEMENT (the default) or VELOCITY (in a step: the increment of the dof is v dt, v applied as a STEP
+    ! unless an amplitude is given, as Abaqus/Standard does in a static step)
+    v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
+    if (len(v) > 0 .and. v /= 'DISPLACEMENT' .and. v /= 'VELOCITY') then
+      call ctx_fail(ctx, ir, 'TYPE='//v//' is not supported (DISPLACEMENT, VELOCITY)')
+      return
+    end if
+    velocity = v == 'VELOCITY'
+    if (velocity .and. .not. ctx%in_step) then
+      call ctx_fail(ctx, ir, 'TYPE=VELOCITY only inside a step (history data)')
+      return
+    end if
     v = deck_normalize(deck_param_value(ctx%params, 'OP'))
     if (len(v) > 0 .and. v /= 'MOD' .and. v /= 'NEW') then
       call ctx_fail(ctx, ir, 'OP must be MOD or NEW')
@@ -117,6 +129,7 @@ contains
       call ctx_split(ctx, i, f, n)
       bc = empty_bc
       bc%amplitude = iamp
+      bc%velocity = velocity
       bc%pos = ctx_pos(ctx, i)
       if (n < 2) then
         call ctx_fail(ctx, i, 'expected: node or node set, first dof[, last dof[, value]] or a type (XSYMM, ...)')

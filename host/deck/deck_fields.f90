@@ -1,6 +1,7 @@
 !> Initial-state keywords of the deck reader: *INITIAL CONDITIONS, TYPE=STRESS (continuum elements: the stress
 !> components in Abaqus order, constant over the element) and TYPE=SOLUTION (UMAT state variables, all NSTATV
-!> values of an element on one logical data line). Temperatures and fields are not supported (errors).
+!> values of an element on one logical data line), TYPE=TEMPERATURE and TYPE=FIELD, VARIABLE=n (nodal values); the
+!> history keywords *TEMPERATURE and *FIELD, VARIABLE=n (one reader: node or node set, value).
 module deck_fields
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_normalize, deck_has_param
@@ -8,10 +9,10 @@ module deck_fields
     model_find_amplitude
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_continued, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
-    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_need_step
+    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_need_step, ctx_param_int
   implicit none
   private
-  public :: read_initial_conditions, read_temperature
+  public :: read_initial_conditions, read_temperature, read_field
 
 contains
 
@@ -24,19 +25,28 @@ contains
     character(len=:), allocatable :: v
     integer :: i, n, k, kind, id, last, m
     character(len=flen), allocatable :: g(:)
-    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE'])
+    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'VARIABLE'])
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
+    if (v /= 'FIELD' .and. deck_has_param(ctx%params, 'VARIABLE')) then
+      call ctx_fail(ctx, ctx%ir, 'VARIABLE= only with TYPE=FIELD')
+      return
+    end if
     select case (v)
     case ('TEMPERATURE')
-      call read_node_values(ctx, ctx%model%temp_inits, ctx%model%ntemp_init, 0)
+      call read_node_values(ctx, ctx%model%temp_inits, ctx%model%ntemp_init, 0, 1)
+      return
+    case ('FIELD')
+      k = field_variable(ctx)
+      if (ctx%stat /= 0) return
+      call read_node_values(ctx, ctx%model%field_inits, ctx%model%nfield_init, 0, k)
       return
     case ('STRESS')
       kind = init_stress
     case ('SOLUTION')
       kind = init_solution
     case default
-      call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (TEMPERATURE, STRESS, SOLUTION)')
+      call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (TEMPERATURE, FIELD, STRESS, SOLUTION)')
       return
     end select
     i = ctx%ir
@@ -100,21 +110,52 @@ contains
     end do
   end subroutine read_initial_conditions
 
-  !> *TEMPERATURE[, AMPLITUDE=][, OP=MOD] (history data): node or node set, temperature.
+  !> *TEMPERATURE[, AMPLITUDE=][, OP=MOD|NEW] (history data): node or node set, temperature.
   subroutine read_temperature(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical :: op_new
     integer :: iamp
+    call read_predefined_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP'], iamp, op_new)
+    if (ctx%stat /= 0) return
+    if (op_new) ctx%model%steps(ctx%istep)%field_new = [ctx%model%steps(ctx%istep)%field_new, 0]
+    call read_node_values(ctx, ctx%model%steps(ctx%istep)%temps, ctx%model%steps(ctx%istep)%ntemp, iamp, 1)
+  end subroutine read_temperature
+
+  !> *FIELD, VARIABLE=n[, AMPLITUDE=][, OP=MOD|NEW] (history data): node or node set, value of field variable n.
+  !> OP=NEW is recorded per variable (step%field_new; 0 stands for the temperature).
+  subroutine read_field(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical :: op_new
+    integer :: iamp, k
+    call read_predefined_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP', 'VARIABLE'], iamp, op_new)
+    if (ctx%stat /= 0) return
+    k = field_variable(ctx)
+    if (ctx%stat /= 0) return
+    if (op_new) ctx%model%steps(ctx%istep)%field_new = [ctx%model%steps(ctx%istep)%field_new, k]
+    call read_node_values(ctx, ctx%model%steps(ctx%istep)%fields, ctx%model%steps(ctx%istep)%nfielddef, iamp, k)
+  end subroutine read_field
+
+  !> The parameters *TEMPERATURE and *FIELD share: inside a step, AMPLITUDE= (an amplitude defined before), OP=MOD
+  !> (default) or NEW.
+  subroutine read_predefined_params(ctx, allowed, iamp, op_new)
+    type(deck_context_t), intent(inout) :: ctx      !< reader state
+    character(len=*), intent(in) :: allowed(:)      !< parameters the keyword accepts
+    integer, intent(out) :: iamp                    !< amplitude index (0: the step's default)
+    logical, intent(out) :: op_new                  !< OP=NEW
     character(len=:), allocatable :: v
+    iamp = 0
+    op_new = .false.
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP'])
+    call ctx_allow_params(ctx, allowed)
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'OP'))
-    if (len(v) > 0 .and. v /= 'MOD') then
-      call ctx_fail(ctx, ctx%ir, 'only OP=MOD is supported (temperatures stay until re-specified)')
+    if (len(v) > 0 .and. v /= 'MOD' .and. v /= 'NEW') then
+      call ctx_fail(ctx, ctx%ir, 'OP must be MOD or NEW')
       return
     end if
-    iamp = 0
+    op_new = v == 'NEW'
+    if (.not. allocated(ctx%model%steps(ctx%istep)%field_new)) allocate (ctx%model%steps(ctx%istep)%field_new(0))
     if (deck_has_param(ctx%params, 'AMPLITUDE')) then
       iamp = model_find_amplitude(ctx%model, deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE')))
       if (iamp == 0) then
@@ -122,15 +163,33 @@ contains
         return
       end if
     end if
-    call read_node_values(ctx, ctx%model%steps(ctx%istep)%temps, ctx%model%steps(ctx%istep)%ntemp, iamp)
-  end subroutine read_temperature
+  end subroutine read_predefined_params
 
-  !> Data lines "node or node set, value" appended to list (node ids negative until finish_model; dof = 1).
-  subroutine read_node_values(ctx, list, nlist, iamp)
+  !> The required VARIABLE=n (n >= 1) of TYPE=FIELD and *FIELD; the model's field count grows to n.
+  integer function field_variable(ctx) result(k)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    k = 0
+    if (.not. deck_has_param(ctx%params, 'VARIABLE')) then
+      call ctx_fail(ctx, ctx%ir, 'parameter VARIABLE= (the field variable number, 1, 2, ...) is required')
+      return
+    end if
+    k = ctx_param_int(ctx, 'VARIABLE', 0)
+    if (ctx%stat /= 0) return
+    if (k < 1) then
+      call ctx_fail(ctx, ctx%ir, 'VARIABLE must be 1 or more, got '//itoa(k))
+      return
+    end if
+    ctx%model%nfield = max(ctx%model%nfield, k)
+  end function field_variable
+
+  !> Data lines "node or node set, value" appended to list (node ids negative until finish_model; dof = the
+  !> temperature's 1 or the field variable number).
+  subroutine read_node_values(ctx, list, nlist, iamp, dof)
     type(deck_context_t), intent(inout) :: ctx        !< reader state
     type(cload_t), allocatable, intent(inout) :: list(:) !< list
     integer, intent(inout) :: nlist                   !< entries in use
     integer, intent(in) :: iamp                       !< amplitude
+    integer, intent(in) :: dof                        !< 1 (temperature) or the field variable
     type(cload_t) :: cl, empty
     type(cload_t), allocatable :: tmp(:)
     character(len=flen), allocatable :: f(:)
@@ -138,16 +197,16 @@ contains
     do i = ctx%ir + 1, ctx%ir_next - 1
       call ctx_split(ctx, i, f, n)
       cl = empty
-      cl%dof = 1
+      cl%dof = dof
       cl%amplitude = iamp
       cl%pos = ctx_pos(ctx, i)
       if (n < 2) then
-        call ctx_fail(ctx, i, 'expected: node or node set, temperature')
+        call ctx_fail(ctx, i, 'expected: node or node set, value')
         return
       end if
       if (n > 2) then
         if (any(len_trim(f(3:n)) > 0)) then
-          call ctx_fail(ctx, i, 'too many fields (node or node set, temperature; no field variables)')
+          call ctx_fail(ctx, i, 'too many fields (node or node set, value)')
           return
         end if
       end if

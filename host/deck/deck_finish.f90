@@ -140,6 +140,12 @@ contains
         model%temp_inits(ib) = cl
         if (ctx%stat /= 0) return
       end do
+      do ib = 1, model%nfield_init
+        cl = model%field_inits(ib)
+        call resolve_cload(ctx, cl, .true.)
+        model%field_inits(ib) = cl
+        if (ctx%stat /= 0) return
+      end do
       do is = 1, model%nstep
         do ib = 1, model%steps(is)%nbc
           bc = model%steps(is)%bcs(ib)
@@ -157,6 +163,12 @@ contains
           cl = model%steps(is)%temps(ib)
           call resolve_cload(ctx, cl)
           model%steps(is)%temps(ib) = cl
+          if (ctx%stat /= 0) return
+        end do
+        do ib = 1, model%steps(is)%nfielddef
+          cl = model%steps(is)%fields(ib)
+          call resolve_cload(ctx, cl, .true.)
+          model%steps(is)%fields(ib) = cl
           if (ctx%stat /= 0) return
         end do
         if (model%steps(is)%period < 0.0_dp) then
@@ -439,9 +451,10 @@ contains
   end subroutine resolve_dloads
 
   !> Concentrated-load node ids -> indices; a dof beyond the model dimension is an error (no such force exists).
-  subroutine resolve_cload(ctx, cl)
+  subroutine resolve_cload(ctx, cl, any_dof)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(cload_t), intent(inout) :: cl          !< load (a copy, not a part of ctx)
+    logical, intent(in), optional :: any_dof    !< dof is a field variable number, not a displacement dof
     integer :: k, id
     do k = 1, size(cl%nodes)
       if (cl%nodes(k) < 0) then
@@ -457,6 +470,9 @@ contains
         cl%nodes(k) = ctx%model%node_index(id)
       end if
     end do
+    if (present(any_dof)) then
+      if (any_dof) return
+    end if
     if (cl%dof > ctx%model%ndim) call ctx_fail_pos(ctx, cl%pos, 'dof '//itoa(cl%dof)//' does not exist in this '// &
       itoa(ctx%model%ndim)//'D model')
   end subroutine resolve_cload

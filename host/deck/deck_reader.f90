@@ -18,7 +18,7 @@ module deck_reader
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print, &
     read_field_variables, read_el_print, read_monitor
   use deck_loads, only: read_cload, read_dload, read_dsload, read_surface
-  use deck_fields, only: read_initial_conditions, read_temperature
+  use deck_fields, only: read_initial_conditions, read_temperature, read_field
   use deck_constraints, only: read_equation, read_tie, read_mpc
   use deck_finish, only: finish_model
   use deck_parameters, only: apply_parameters
@@ -217,6 +217,8 @@ contains
       call read_initial_conditions(ctx)
     case ('*TEMPERATURE')
       call read_temperature(ctx)
+    case ('*FIELD')
+      call read_field(ctx)
     case ('*EXPANSION')
       call read_expansion(ctx)
     case ('*EQUATION')

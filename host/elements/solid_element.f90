@@ -55,6 +55,7 @@ module solid_element
   real(dp), parameter :: SOLID_PNEWDT_LARGE = 1.0e36_dp  !< PNEWDT handed to each UMAT call ("a large value")
   !> nodes (plus incompatible-mode pseudo-nodes) and integration points at most
   integer, parameter :: maxnode = 20, maxip = 27
+  real(dp), parameter :: no_field(0) = [real(dp) ::]  !< PREDEF/DPRED of a model without field variables
   integer, parameter :: maxalpha = 9             !< incompatible-mode parameters at most (3 modes x 3 components)
   !> hourglass stiffness factor c of the one-point elements: k = c G V sum_(a,j) (dN_a/dX_j)^2 per hourglass
   !> mode and direction (Flanagan-Belytschko stiffness form; c = 1 is 0.56 of the exact bending stiffness of a
@@ -251,7 +252,7 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient)
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient, field_nodes, dfield_nodes)
     character(len=*), intent(in) :: etype             !< element type name (solid_shape: solid_types)
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -286,6 +287,8 @@ contains
     !> hourglass energy of a one-point element (included in energy(1); Abaqus reports it apart, as ALLAE)
     real(dp), intent(out), optional :: energy_hg
     real(dp), intent(in), optional :: orient(:, :, :) !< (3, 3, nip) local material axes T0 (columns) per point
+    real(dp), intent(in), optional :: field_nodes(:, :)  !< (nfield, nnode) field variables at the increment's start
+    real(dp), intent(in), optional :: dfield_nodes(:, :) !< (nfield, nnode) their increments (PREDEF, DPRED at points)
 
     integer, parameter :: max_local_iter = 30      ! element-level Newton on the incompatible modes
     integer :: it, nnode, nne, ndim, nip, ntens, ndi, nshr, nextra, ndof, ndofe, nalpha, nsv, np
@@ -675,8 +678,17 @@ contains
             ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
             coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
           end do
-          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-            ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, dtemp_ip)
+          ! PREDEF, DPRED: the field variables interpolated to the point (start of the increment) and their increments
+          if (present(field_nodes) .and. present(dfield_nodes)) then
+            call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+              nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
+              dtemp_ip, matmul(field_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)), &
+              matmul(dfield_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)))
+          else
+            call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+              nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
+              dtemp_ip, no_field, no_field)
+          end if
           statev_new(1:nsv, ip) = sv(1:nsv)
         end select
         pnewdt = min(pnewdt, pn)
@@ -876,9 +888,11 @@ contains
   !> Call the UMAT through the pointer with contiguous explicit-shape copies of every argument (a user routine
   !> may overwrite any of them; only STRESS, STATEV, DDSDDE, SSE, SPD, SCD and PNEWDT are taken back).
   subroutine call_umat(umat, stress, statev, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, nshr, &
-      ntens, nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, jstep, kinc, temp, dtemp)
+      ntens, nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, jstep, kinc, temp, dtemp, &
+      predef, dpred)
     procedure(umat_interface) :: umat                    !< the UMAT
     real(dp), intent(in) :: temp, dtemp                  !< temperature at the start of the increment, its increment
+    real(dp), intent(in) :: predef(:), dpred(:)          !< field variables at the start of the increment, increments
     integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, kinc, jstep(4)
     real(dp), intent(inout) :: stress(6), statev(:), ddsdde(6, 6), sse, spd, scd, pnewdt
     real(dp), intent(in) :: stran(6), dstran(6), time(2), dtime, coords(3), drot(3, 3), celent
@@ -886,7 +900,8 @@ contains
     character(len=80), intent(in) :: cmname
     real(dp) :: c_stress(ntens), c_ddsdde(ntens, ntens), c_ddsddt(ntens), c_drplde(ntens), c_stran(ntens)
     real(dp) :: c_dstran(ntens), c_statev(size(statev)), c_props(size(props)), c_rpl, c_drpldt
-    real(dp) :: c_time(2), c_dtime, c_temp, c_dtemp, c_predef(1), c_dpred(1)
+    real(dp) :: c_time(2), c_dtime, c_temp, c_dtemp
+    real(dp) :: c_predef(max(1, size(predef))), c_dpred(max(1, size(dpred)))  ! NPREDF entries, at least one (0)
     real(dp) :: c_coords(3), c_drot(3, 3), c_celent, c_f0(3, 3), c_f1(3, 3)
     integer :: c_ndi, c_nshr, c_ntens, c_nstatv, c_nprops, c_noel, c_npt, c_layer, c_kspt, c_jstep(4), c_kinc
     character(len=80) :: c_cmname
@@ -895,6 +910,7 @@ contains
     c_stran = stran(1:ntens); c_dstran = dstran(1:ntens); c_statev = statev; c_props = props
     c_rpl = 0.0_dp; c_drpldt = 0.0_dp
     c_time = time; c_dtime = dtime; c_temp = temp; c_dtemp = dtemp; c_predef = 0.0_dp; c_dpred = 0.0_dp
+    c_predef(1:size(predef)) = predef; c_dpred(1:size(dpred)) = dpred
     c_coords = coords; c_drot = drot; c_celent = celent; c_f0 = dfgrd0; c_f1 = dfgrd1
     c_ndi = ndi; c_nshr = nshr; c_ntens = ntens; c_nstatv = nstatv; c_nprops = nprops; c_noel = noel; c_npt = npt
     c_layer = 1; c_kspt = 1; c_jstep = jstep; c_kinc = kinc; c_cmname = cmname

@@ -154,6 +154,7 @@ module model_types
     integer :: last_dof = 0                !< last dof (1..3)
     real(dp) :: value = 0.0_dp             !< magnitude
     integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
+    logical :: velocity = .false.          !< TYPE=VELOCITY: value is a velocity (increment = v dt)
     type(source_pos_t) :: pos
   end type boundary_t
 
@@ -256,6 +257,9 @@ module model_types
     integer :: ndload = 0
     type(cload_t), allocatable :: temps(:) !< *TEMPERATURE lines (node list, value; dof = 1)
     integer :: ntemp = 0
+    type(cload_t), allocatable :: fields(:) !< *FIELD lines (node list, value; dof = VARIABLE)
+    integer :: nfielddef = 0
+    integer, allocatable :: field_new(:)   !< the VARIABLEs of a *FIELD, OP=NEW in this step
     integer :: max_iter = 16               !< *CONTROLS, PARAMETERS=TIME INCREMENTATION: I_A (here the iteration cap)
     real(dp) :: r_n = 0.005_dp             !< *CONTROLS, PARAMETERS=FIELD: R_n
     real(dp) :: c_n = 0.01_dp              !< *CONTROLS, PARAMETERS=FIELD: C_n
@@ -329,6 +333,9 @@ module model_types
     integer :: ninit = 0
     type(cload_t), allocatable :: temp_inits(:) !< *INITIAL CONDITIONS, TYPE=TEMPERATURE lines (dof = 1)
     integer :: ntemp_init = 0
+    type(cload_t), allocatable :: field_inits(:) !< *INITIAL CONDITIONS, TYPE=FIELD lines (dof = VARIABLE)
+    integer :: nfield_init = 0
+    integer :: nfield = 0                  !< field variables of the model (the highest VARIABLE given)
     type(equation_t), allocatable :: equations(:) !< *EQUATION
     integer :: nequation = 0
     type(tie_t), allocatable :: ties(:)    !< *TIE
