@@ -1,6 +1,6 @@
 !> The discretised model the Newton solver works on: dof numbering (ndim dofs per node, prescribed dofs eliminated),
 !> per-element converged and trial state, the threaded element loop calling UEL/UMAT exactly as Abaqus/Standard
-!> does (CONVENTIONS.md), and the assembly into the sparse system.
+!> does (docs/conventions.md), and the assembly into the sparse system.
 module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp, i8
@@ -541,7 +541,7 @@ contains
       if (size(props) == 0) props = [0.0_dp]
       if (size(jprops) == 0) jprops = [0]
       nsv = model%utypes(iu)%nsvars
-      ! a fresh copy of the converged SVARS and ENERGY on every call (CONVENTIONS.md)
+      ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
       sv = an%conv(ie)%svars
       if (size(sv) == 0) sv = svars
       energy = an%conv(ie)%energy

@@ -4,7 +4,7 @@
 !> the host has already rotated the stress by DROT (Hughes-Winget), then
 !>     sigma_new = DROT sigma_old DROT^T + C : DSTRAN,        DDSDDE = C,
 !> which is exactly what a linear-elastic UMAT does. Without NLGEOM it is ordinary small-strain elasticity.
-!> Voigt order of CONVENTIONS.md (11,22,33,12,13,23 or 11,22,33,12), engineering shear strains.
+!> Voigt order of docs/conventions.md (11,22,33,12,13,23 or 11,22,33,12), engineering shear strains.
 module solid_elastic
   use ldfcz_kinds, only: dp
   implicit none

@@ -922,7 +922,7 @@ contains
     statev = c_statev
   end subroutine call_umat
 
-  !> Spatial tangent A_ijkl (material + geometric, from DDSDDE by the Jaumann correction of CONVENTIONS.md) and the
+  !> Spatial tangent A_ijkl (material + geometric, from DDSDDE by the Jaumann correction of docs/conventions.md) and the
   !> F-bar coefficient q_ij; without NLGEOM A = DDSDDE and q = (1/m) sum_a A_ijaa.
   pure subroutine spatial_tangent(ddsdde, ntens, sig, ndim, nlgeom, a4, q)
     real(dp), intent(in) :: ddsdde(6, 6), sig(3, 3)

@@ -2,7 +2,7 @@
 !>
 !> A procedure pointer of this interface lets the continuum elements call the built-in ldfcz UMAT or a user's own
 !> UMAT (compiled from an Abaqus user file, loaded at run time) exactly as Abaqus/Standard calls it
-!> (../../../shared/CONVENTIONS.md, "Abaqus UMAT"). The 37 arguments are in Abaqus order with the types that
+!> (docs/conventions.md, "Abaqus UMAT"). The 37 arguments are in Abaqus order with the types that
 !> INCLUDE 'ABA_PARAM.INC' gives them (REAL*8 for A-H and O-Z, default INTEGER for I-N, CHARACTER*80 CMNAME).
 !> A C caller would add the hidden length of CMNAME as a 38th argument; Fortran callers do not see it.
 !>

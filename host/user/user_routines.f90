@@ -14,7 +14,7 @@ module user_routines
   public :: user_source_compile_command, user_routines_connect_units
 
   abstract interface
-    !> Abaqus/Standard UEL (CONVENTIONS.md). No INTENT: Abaqus user routines are written without it.
+    !> Abaqus/Standard UEL (docs/conventions.md). No INTENT: Abaqus user routines are written without it.
     subroutine uel_interface(rhs, amatrx, svars, energy, ndofel, nrhs, nsvars, props, nprops, coords, mcrd, nnode, &
         u, du, v, a, jtype, time, dtime, kstep, kinc, jelem, params, ndload, jdltyp, adlmag, predef, npredf, &
         lflags, mlvarx, ddlmag, mdload, pnewdt, jprops, njprop, period)
