@@ -202,7 +202,7 @@ contains
     ! JOB.dat: the *NODE PRINT / *EL PRINT tables, on unit 6, which output_open has pointed at JOB.dat (continued
     ! after a restart): what user routines write there interleaves with the tables as in Abaqus
     dat = -1
-    if (print_tables_any(model)) dat = output_unit
+    if (print_tables_any(model) .and. .not. out%silent) dat = output_unit  ! once: by the writing process
     summarize = .true.
     call stop_signal_install()
 
