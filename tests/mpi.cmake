@@ -59,10 +59,10 @@ ldfcz_add_mpi_restart_test(mpi_restart_cohesive_np2 ${PROJECT_SOURCE_DIR}/decks/
   --np 2 --stop 9 --freq 1 --other-deck ${PROJECT_SOURCE_DIR}/decks/single/cohesive_mode_I.inp)
 ldfcz_add_mpi_restart_test(mpi_restart_umat_np3 ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp
   --np 3 --stop 45 --freq 7)
-# NOT REGISTERED: a SIGTERM to mpirun currently ends the ranks without the graceful stop (no "SIGTERM received" in
-# JOB.log, mpirun status 1, also with OMPI_MCA_odls_base_sigkill_timeout=20). It passed on the MPI branch before the
-# merges of this session; found at the final merge and not resolved (issue 20). The check stays runnable by hand:
-#   ldfcz_add_mpi_restart_test(mpi_sigterm_peel_np2 .../mpi/peel_ps_short.inp --np 2 --stop 20 --freq 100000 --term)
+# the graceful stop of a distributed run: SIGUSR1 to mpirun, which OpenMPI forwards to every process (on SIGTERM
+# mpirun ends the job itself: the processes are killed without a stop)
+ldfcz_add_mpi_restart_test(mpi_sigusr1_peel_np2 ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
+  --np 2 --stop 20 --freq 100000 --term)
 
 # other Newton variants and preconditioning factors distributed (GMRES products summed over the processes, LDL^T
 # factors of the symmetric part from the processes' entries): the full-Newton iterates, so the same counts

@@ -1,4 +1,5 @@
-!> Graceful stop on SIGTERM and SIGINT (docs/host.md, "Stopping a run"). The first signal only records its number;
+!> Graceful stop on SIGTERM, SIGINT and SIGUSR1 (docs/host.md, "Stopping a run"; SIGUSR1 because OpenMPI's mpirun
+!> forwards it to every process, while it ends the job itself on SIGTERM). The first signal only records its number;
 !> the increment loop reads it after each converged increment and ends the run there as a complete one would end:
 !> restart data (when restart data are written), a last field frame, the closing summary with the energy balance,
 !> exit status 128 + the signal number. The handler restores the default action, so that a second signal ends the
@@ -9,7 +10,7 @@ module stop_signal
   private
   public :: stop_signal_install, stop_signal_received, stop_signal_name
 
-  integer(c_int), parameter :: sig_int = 2, sig_term = 15   ! POSIX numbers on Linux
+  integer(c_int), parameter :: sig_int = 2, sig_usr1 = 10, sig_term = 15   ! POSIX numbers on Linux
   !> number of the signal received (0: none); written by the handler only
   integer(c_int), volatile, save :: received = 0
 
@@ -25,12 +26,13 @@ module stop_signal
 
 contains
 
-  !> Catch SIGTERM and SIGINT from now on.
+  !> Catch SIGTERM, SIGINT and SIGUSR1 from now on.
   subroutine stop_signal_install()
     type(c_funptr) :: previous
     received = 0
     previous = c_signal(sig_term, c_funloc(on_signal))
     previous = c_signal(sig_int, c_funloc(on_signal))
+    previous = c_signal(sig_usr1, c_funloc(on_signal))
   end subroutine stop_signal_install
 
   !> The handler: record the signal, give the default action back for the next one (signal() is async-signal-safe).
@@ -55,6 +57,8 @@ contains
       name = 'SIGTERM'
     case (sig_int)
       name = 'SIGINT'
+    case (sig_usr1)
+      name = 'SIGUSR1'
     case default
       name = 'signal'
     end select

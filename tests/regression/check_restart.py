@@ -129,8 +129,10 @@ def main():
     rst = os.path.join(cut, job + ".rst")
     rst_file = rst + (".0of%d" % a.np if a.np else "")   # the file of rank 0 when distributed
     if a.np and a.term:
+        # OpenMPI's mpirun ends the job itself on SIGTERM but forwards SIGUSR1 to every process: the graceful stop
+        # of a distributed run is asked for with SIGUSR1 (docs/host.md)
         cmd = base + ["--out", cut, "--restart-write", str(a.freq), run_deck]
-        print("$ " + " ".join(cmd) + "  (SIGTERM to mpirun after %d rows)" % a.stop)
+        print("$ " + " ".join(cmd) + "  (SIGUSR1 to mpirun after %d rows)" % a.stop)
         p = subprocess.Popen(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         csv = os.path.join(cut, job + ".csv")
         t0 = time.time()
@@ -142,19 +144,19 @@ def main():
             except FileNotFoundError:
                 rows = 0
             if rows >= a.stop:
-                p.send_signal(signal.SIGTERM)
+                p.send_signal(signal.SIGUSR1)
                 break
             time.sleep(0.002)
         p.wait(timeout=300)
         log = open(os.path.join(cut, job + ".log"), errors="replace").read()
-        if "SIGTERM received: stopped after increment" not in log:
-            fail("JOB.log does not report the stop by SIGTERM (did the run end first? choose a smaller --stop)")
+        if "SIGUSR1 received: stopped after increment" not in log:
+            fail("JOB.log does not report the stop by SIGUSR1 (did the run end first? choose a smaller --stop)")
         if not energy_line(os.path.join(cut, job + ".log")):
-            fail("no closing summary (energy balance line) after SIGTERM")
+            fail("no closing summary (energy balance line) after SIGUSR1")
         for r in range(a.np):
             if not os.path.exists(rst + ".%dof%d" % (r, a.np)):
-                fail("no restart file of process %d after SIGTERM" % r)
-        print("all %d processes stopped by SIGTERM with %d CSV rows seen, closing summary written" % (a.np, rows))
+                fail("no restart file of process %d after SIGUSR1" % r)
+        print("all %d processes stopped by SIGUSR1 with %d CSV rows seen, closing summary written" % (a.np, rows))
     elif a.kill or a.term:
         sig = signal.SIGTERM if a.term else signal.SIGKILL
         cmd = base + ["--out", cut, "--restart-write", str(a.freq) if a.term else "1", run_deck]
