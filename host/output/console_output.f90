@@ -6,7 +6,7 @@ module console_output
   use, intrinsic :: iso_fortran_env, only: output_unit
   implicit none
   private
-  public :: console_line, console_text, console_to_dat, console_restore, console_is_terminal
+  public :: console_line, console_text, console_to_dat, console_is_terminal
 
   interface
     function c_stdout_to_file(path, append) bind(c, name='ldfcz_stdout_to_file') result(rc)
@@ -15,8 +15,6 @@ module console_output
       integer(c_int), value :: append
       integer(c_int) :: rc
     end function c_stdout_to_file
-    subroutine c_stdout_restore() bind(c, name='ldfcz_stdout_restore')
-    end subroutine c_stdout_restore
     subroutine c_console_write(text, n, newline) bind(c, name='ldfcz_console_write')
       import :: c_char, c_int
       character(kind=c_char), intent(in) :: text(*)
@@ -51,12 +49,6 @@ contains
     stat = 0
     if (c_stdout_to_file(path//c_null_char, merge(1_c_int, 0_c_int, append)) /= 0) stat = 2
   end subroutine console_to_dat
-
-  !> Standard output back on the console.
-  subroutine console_restore()
-    flush (output_unit)
-    call c_stdout_restore()
-  end subroutine console_restore
 
   !> True when the console is a terminal.
   logical function console_is_terminal()

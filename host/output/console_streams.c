@@ -24,13 +24,6 @@ int ldfcz_stdout_to_file(const char *path, int append)
     return rc < 0 ? -1 : 0;
 }
 
-/* Points descriptor 1 back at the console. */
-void ldfcz_stdout_restore(void)
-{
-    fflush(stdout);
-    if (console_fd >= 0) dup2(console_fd, 1);
-}
-
 /* Writes n bytes of text (and a newline when newline is nonzero) to the console. */
 void ldfcz_console_write(const char *text, int n, int newline)
 {
