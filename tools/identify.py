@@ -960,7 +960,7 @@ def main(argv=None):
     f.add_argument('--bound-factor', type=float, default=10.0,
                    help='the parameters stay within this factor of their start values')
     f.add_argument('--ps3d-ratio', type=float, default=None,
-                   help='measured plane-strain/3D force ratio of this geometry (reports/ps-vs-3d): the measured '
+                   help='measured plane-strain/3D force ratio of this geometry (reports/stmt-3d-fine): the measured '
                    'force is multiplied by it and fitted with the plane-strain scene')
     f.add_argument('--confirm-3d', action='store_true', help='one 3D quarter-model run at the fitted values')
     f.add_argument('--report-dir', default=os.path.join(ROOT, 'reports', 'identify'))

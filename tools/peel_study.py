@@ -4,8 +4,8 @@ collect JOB.csv, compute the steady peel force per unit width, and write reports
 
   peel_study.py main [--scene A]     the main plane-strain scene (reading B; --scene A the 0-degree bridge): prints the
                                      steady peel force per unit width
-  peel_study.py mesh-x|mesh-z|mesh-y|increment|simplifications|ps-vs-3d|dofs|plastic-bound|app-settings|
-                opening-bound|application [--quick]
+  peel_study.py stmt-mesh-x|stmt-mesh-z|stmt-3d|...|mesh-x|mesh-z|simplifications|dofs|plastic-bound|
+                app-settings|opening-bound|application [--quick]   (the whole list: docs/scenes.md)
   peel_study.py list                 the studies and their cases
 
 Steady peel force: tools/steady_force.py (the plateau window after the front has crossed 3 elements of the fine
@@ -59,21 +59,12 @@ def studies(quick):
     s['mesh-x'] = [('le=%g' % le, DEFAULT_PS + ['--le', str(le)], le == les[-1]) for le in les]
     nzs = [1, 2, 3] if quick else [1, 2, 3, 5, 9]
     s['mesh-z'] = [('nz=%d' % nz, DEFAULT_PS + ['--nz', str(nz)], nz == nzs[-1]) for nz in nzs]
-    base3 = DEFAULT_3D + ['--le', '0.02', '--nz', '2', '--u-total', '0.05']
-    nys = [1, 2] if quick else [1, 2, 4, 8]
-    cases = []
-    for b in (0.02, 0.04):
-        for ny in nys:
-            cases.append(('b=%g ny=%d' % (b, ny), base3 + ['--width', str(b), '--ny', str(ny)],
-                          b == 0.04 and ny == nys[-1]))
-    s['mesh-y'] = cases
-    # requested pull per increment (the UMAT's PNEWDT cuts it where the plastic strain increment exceeds 0.05)
-    dus = [0.005, 0.002, 0.001, 0.0005, 0.0003, 0.0001, 0.00005] if not quick else [0.0005, 0.0003]
-    s['increment'] = [('du=%g um' % (du * 1e3), DEFAULT_PS + ['--du', str(du)], du == dus[-1]) for du in dus]
     # the PET model's accuracy bound PROPS(11) on the plastic strain increment (the UMAT's PNEWDT threshold) at the
     # section 8 discretisation through the thickness (l_e = 2 um, n_z = 3), plane strain, up to 1 um/inc; the
     # reference: the default bound 0.05 at 0.1 um/inc
-    psb = DEFAULT_PS + ['--le', '0.002', '--nz', '3', '--fine-length', '0.07', '--bonded', '0.15', '--u-total', '0.06']
+    # pulled 0.1 mm over a 0.16 mm fine region (DEFAULT_PS): reading A's plateau from ~40 um (60 um were too short
+    # for the plateau detection of tools/steady_force.py)
+    psb = DEFAULT_PS + ['--le', '0.002', '--nz', '3']
     gms = [0.05, 0.2, 1.0] if quick else [0.05, 0.1, 0.2, 0.5, 1.0]
     s['plastic-bound'] = [('reference: 0.05, 0.1 um/inc', psb + ['--du', '0.0001'], True,
                            ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', '0.05'])]
@@ -85,29 +76,14 @@ def studies(quick):
                                                                          '--no-extrapolation'], False,
                             ['--newton', 'auto', '--max-opening-increment', '0.33', '--max-plastic-increment', str(g)])
                            for g in (0.05, 1.0)]
+    # every case pulled as the default scene (0.1 mm over a 0.16 mm fine region: reading A's plateau from ~40 um)
+    pull = ['--u-total', '0.1', '--fine-length', '0.16']
     s['simplifications'] = [
-        ('full: steel, uniform mesh', ['--no-coarse'], True),
-        ('steel, coarse far field', [], False),
-        ('rigid, uniform mesh', ['--rigid-substrate', '--no-coarse'], False),
+        ('full: steel, uniform mesh', pull + ['--no-coarse'], True),
+        ('steel, coarse far field', pull, False),
+        ('rigid, uniform mesh', pull + ['--rigid-substrate', '--no-coarse'], False),
         ('rigid, coarse far field (default)', DEFAULT_PS, False),
     ]
-    # Fig. 14: the main scene's discretisation (l_e = 10 um, n_z = 3) in plane strain and in 3D with the width
-    # resolutions of the mesh-y study (n_y = 2 and 4: converged to < 0.1 % there), b = 0.04 mm; the 3D model with
-    # n_y = 4 is the reference. The coarse pair (l_e = 20 um, n_z = 2) shows the speed-up at a smaller size.
-    ps3 = ['--u-total', '0.05']
-    s['ps-vs-3d'] = [('plane strain le=10 nz=3', DEFAULT_PS + ps3, False),
-                     ('3D le=10 nz=3 b=0.04 ny=2', DEFAULT_3D + ps3 + ['--width', '0.04', '--ny', '2'], False,
-                      ['--newton', 'auto']),
-                     ('3D le=10 nz=3 b=0.04 ny=4', DEFAULT_3D + ps3 + ['--width', '0.04', '--ny', '4'], True,
-                      ['--newton', 'auto'])]
-    if not quick:
-        s['ps-vs-3d'].append(('3D le=10 nz=3 b=0.04 ny=8', DEFAULT_3D + ps3 + ['--width', '0.04', '--ny', '8'], False,
-                              ['--newton', 'auto']))
-    if not quick:
-        psc = ['--le', '0.02', '--nz', '2', '--u-total', '0.05']
-        s['ps-vs-3d'] += [('plane strain le=20 nz=2', DEFAULT_PS + psc, False),
-                          ('3D le=20 nz=2 b=0.04 ny=8', DEFAULT_3D + psc + ['--width', '0.04', '--ny', '8'], False,
-                           ['--newton', 'auto'])]
     # ---- the paper's statements against both readings of Fig. 10 (issue 17): A the 0-degree bridge (0.1 mm of pull
     # over a 0.16 mm fine region), B the flap lifted and pulled at 90 degrees (READING_B); plane strain unless said,
     # rigid substrate. Reference per reading (marked *).
@@ -143,6 +119,20 @@ def studies(quick):
     s['stmt-mesh-z-long'] = [('B nz=%d' % nz, bl + ['--nz', str(nz)], nz == nzs[-1]) for nz in nzs]
     s['stmt-3d-long'] = [('B plane strain', bl, False),
                          ('B 3D b=0.04 ny=2', bl + ['--3d', '--width', '0.04', '--ny', '2'], True, ['--newton', 'auto'])]
+    # reading B's l_e, width and increment statements pulled 0.32 mm as well (the 0.16 mm pulls of stmt-mesh-x,
+    # stmt-3d and stmt-increment end before B's plateau); same labels as the short studies, so that the statement
+    # table takes them in their place when they have been run
+    s['stmt-mesh-x-long'] = [('B le=%g' % le, bl + ['--le', str(le)], le == les[-1]) for le in les]
+    # the same with the paper's nine elements through the thickness (n_z = 3 is 3.4 % off in reading B:
+    # stmt-mesh-z-long), so that the l_e error is not mixed with the thickness error
+    s['stmt-mesh-x-long-nz9'] = [('B le=%g nz=9' % le, bl + ['--le', str(le), '--nz', '9'], le == les[-1])
+                                 for le in les[1:]]
+    s['stmt-3d-width-long'] = [('B plane strain', bl + c3, False)]
+    s['stmt-3d-width-long'] += [('B 3D b=0.04 ny=%d' % ny, bl + c3 + ['--3d', '--width', '0.04', '--ny', str(ny)],
+                                 ny == nys[-1], ['--newton', 'auto']) for ny in nys]
+    if not quick:
+        s['stmt-3d-width-long'].append(('B 3D b=0.02 ny=2', bl + c3 + ['--3d', '--width', '0.02', '--ny', '2'], False,
+                                        ['--newton', 'auto']))
     # increments: the PET accuracy bound off (PROPS(11) = 1e6) so that the requested pull per increment is what is
     # taken unless Newton cuts back; reference: the default bound 0.05 at 0.1 um/inc
     dus = [0.0003, 0.001] if quick else [0.0001, 0.0003, 0.001, 0.003, 0.01]
@@ -152,6 +142,10 @@ def studies(quick):
         s['stmt-increment'] += [('%s bound off, %g um/inc' % (k, 1e3 * du), a + ['--du', str(du), '--dgamma-max',
                                                                                 '1e6', '--dt-min-ratio', '1e-4'],
                                  False) for du in dus]
+    s['stmt-increment-long'] = [('B reference: bound 0.05, 0.1 um/inc', bl + ['--du', '0.0001'], True)]
+    s['stmt-increment-long'] += [('B bound off, %g um/inc' % (1e3 * du), bl + ['--du', str(du), '--dgamma-max', '1e6',
+                                                                             '--dt-min-ratio', '1e-4'], False)
+                                 for du in dus]
     # reading B with the fixed grip at 90 degrees (the peel angle falls as the front runs away from the grip's line):
     # the l_e study of the regression test peel_readings' reference
     bf = ['--rigid-substrate', '--reading', 'peel', '--flap', '0.1', '--u-total', '0.1', '--fine-length', '0.16']
@@ -472,6 +466,8 @@ def collect(res, outdir, job, info, p, plateau, progress):
         res['t_inc_s'] = res['wall_s'] / res['attempts'] if res.get('attempts') else res['wall_s'] / res['increments']
     if res.get('iterations') and res.get('wall_s'):
         res['t_iter_s'] = res['wall_s'] / res['iterations']
+    if res.get('attempts') and res.get('cpu_time_s'):
+        res['t_inc_cpu_s'] = res['cpu_time_s'] / res['attempts']
     res['curve'] = (u, fw)
     # the pull per converged increment actually taken (JOB.sta increment column x rate), in um
     dus = sorted(1e3 * x * p.rate for x in sta_increments(os.path.join(outdir, job + '.sta')))
@@ -569,11 +565,6 @@ def write_report(study, results, outdir):
     plot(study, results, outdir)
 
 
-def _key(label):
-    """The 'le=.. nz=..' part of a label (pairs a plane-strain case with its 3D twins)."""
-    return ' '.join(w for w in label.split() if w.startswith(('le=', 'nz=')))
-
-
 def study_extras(study, results, outdir):
     """Study-specific lines under the table of STUDY.md."""
     out = []
@@ -581,37 +572,7 @@ def study_extras(study, results, outdir):
     if 'mesh-x' in study or 'mesh-z' in study:
         for g in sorted(set(group(r['label']) for r in ok)):
             out += richardson_lines(study, [r for r in ok if group(r['label']) == g])
-    if study == 'ps-vs-3d':
-        out += ['', '| pair | F/w plane strain | F/w 3D | plane-strain overestimate | run time PS / 3D (s) | speed-up |',
-                '|---|---|---|---|---|---|']
-        for r3 in (r for r in ok if r['label'].startswith('3D')):
-            ps = [r for r in ok if r['label'].startswith('plane strain') and _key(r['label']) == _key(r3['label'])]
-            if ps:
-                r2 = ps[0]
-                out.append('| %s | %.4f | %.4f | %+.1f %% | %.1f / %.1f | %.1f |' % (
-                    r3['label'], r2['F_w'], r3['F_w'], 100 * (r2['F_w'] / r3['F_w'] - 1), r2['run_time_s'],
-                    r3['run_time_s'], r3['run_time_s'] / r2['run_time_s']))
-        out += ['', 'Paper (Fig. 14, section 9): plane strain overestimates the quasi-static peel force by 4 %, '
-                'and is 15-50 times faster depending on the width discretisation.']
-    elif study == 'mesh-y':
-        widths = sorted(set(w for r in ok for w in r['label'].split() if w.startswith('b=')))
-        nys = sorted(set(int(w[3:]) for r in ok for w in r['label'].split() if w.startswith('ny=')))
-        byl = {r['label']: r for r in ok}
-        out += ['', '| n_y | ' + ' | '.join('F/w %s (error against its n_y = %d)' % (w, nys[-1]) for w in widths)
-                + ' | widths differ |', '|---|' + '---|' * (len(widths) + 1)]
-        for ny in nys:
-            cells, fs = [], []
-            for w in widths:
-                r, rf = byl.get('%s ny=%d' % (w, ny)), byl.get('%s ny=%d' % (w, nys[-1]))
-                if r and rf:
-                    cells.append('%.4f (%.2f %%)' % (r['F_w'], 100 * abs(r['F_w'] / rf['F_w'] - 1)))
-                    fs.append(r['F_w'])
-                else:
-                    cells.append('-')
-            out.append('| %d | %s | %s |' % (ny, ' | '.join(cells), '%.2f %%' % (100 * abs(fs[0] / fs[-1] - 1))
-                                             if len(fs) > 1 else '-'))
-        out += ['', 'Paper (Fig. 11a): 0.5 % error with four elements over the width; both widths almost identical.']
-    elif study == 'dofs':
+    if study == 'dofs':
         out += ['', '| case | DOFs | attempts | Newton iterations | t/attempt (s) | t/iteration (s) | assembly | '
                 'factorization |', '|---|---|---|---|---|---|---|---|']
         for r in results:
@@ -636,7 +597,16 @@ def study_extras(study, results, outdir):
                 '|---|---|---|---|---|'] + fits
         out += ['', 'Fitted t_inc ~ DOFs^n (all cases): n = %.3f (paper Fig. 11d: 1.34).' %
                 fit_exponent([(r['dofs'], r['t_inc_s']) for r in results if r.get('t_inc_s')])]
-    elif study in ('increment', 'opening-bound'):
+        # the CPU time of the process per attempt: on a shared machine the wall time of a run inflates with the
+        # other jobs' load, its CPU time much less (with -t 1 the two agree on an idle machine)
+        cp = [(r['dofs'], r['t_inc_cpu_s']) for r in results if r.get('t_inc_cpu_s')]
+        if len(cp) >= 2:
+            out += ['', 'The same fitted on the CPU time per attempt (all cases): n = %.3f; plane strain %.3f, 3D %.3f.'
+                    % (fit_exponent(cp), fit_exponent([(r['dofs'], r['t_inc_cpu_s']) for r in results
+                                                       if r.get('t_inc_cpu_s') and not r['label'].startswith('3D')]),
+                       fit_exponent([(r['dofs'], r['t_inc_cpu_s']) for r in results
+                                     if r.get('t_inc_cpu_s') and r['label'].startswith('3D')]))]
+    elif study == 'opening-bound':
         out += ['', '| case | largest opening increment / delta | energy balance | Newton iterations |',
                 '|---|---|---|---|']
         for r in results:
@@ -756,6 +726,17 @@ def statements(reports):
     """The paper's statements (sections 7-9) against readings A and B of Fig. 10, from the stmt-* and table1
     reports (no runs): reports/statements/statements.md."""
     mx, mz, m3, mi = (load_rows(reports, x) for x in ('stmt-mesh-x', 'stmt-mesh-z', 'stmt-3d', 'stmt-increment'))
+    # reading B pulled 0.32 mm (on its plateau) replaces B's 0.16 mm rows where that study's reference completed
+    longer = {}
+    for short, rows, lng, ref in (('x', mx, 'stmt-mesh-x-long', 'B le=0.0025'),
+                                  ('3', m3, 'stmt-3d-width-long', 'B 3D b=0.04 ny=4'),
+                                  ('i', mi, 'stmt-increment-long', 'B reference: bound 0.05, 0.1 um/inc')):
+        ml_ = load_rows(reports, lng)
+        if ml_.get(ref, {}).get('completed') == 'True':
+            for lab in [lab for lab in rows if lab.startswith('B ')]:
+                del rows[lab]
+            rows.update(ml_)
+            longer[short] = True
     nm = 'not measured'
 
     def val(rows, label):
@@ -788,9 +769,11 @@ def statements(reports):
             g3, g2 = val(ml, '%s 3D b=0.04 ny=2' % k)
             uf = fnum(ml.get('%s plane strain' % k), 'F_unc') + fnum(ml.get('%s 3D b=0.04 ny=2' % k), 'F_unc')
             c['ps3d'] += '; the same pulled 0.32 mm: ' + pct(gp / g3 - 1, uf) + g1 + g2
-        tps = fnum(m3.get('%s plane strain' % k), 'run_time_s')
-        t3 = [fnum(m3.get('%s 3D b=0.04 ny=%d' % (k, n)), 'run_time_s') for n in (1, 2, 4)]
-        c['speed'] = ', '.join('%.1f' % (t / tps) for t in t3 if t == t) + ' (n_y = 1, 2, 4)' if tps == tps else nm
+        # CPU time of the single-threaded runs (-t 1): the wall time on a shared machine says little
+        tps = fnum(m3.get('%s plane strain' % k), 'cpu_time_s')
+        t3 = [fnum(m3.get('%s 3D b=0.04 ny=%d' % (k, n)), 'cpu_time_s') for n in (1, 2, 4)]
+        c['speed'] = ', '.join('%.1f' % (t / tps) for t in t3 if t == t) + ' (n_y = 1, 2, 4; CPU time)' \
+            if tps == tps else nm
         # reading B: the 0.32 mm pulls (stmt-mesh-z-long, on their plateaus) when they have been run
         mzl = load_rows(reports, 'stmt-mesh-z-long')
         mzk, zlong = (mzl, ' (pulled 0.32 mm)') if k == 'B' and mzl.get('B nz=9', {}).get('completed') == 'True' \
@@ -815,11 +798,13 @@ def statements(reports):
              ' against l_e = 2.5 um (%s)' % why) + '; uncertainties %s' % ', '.join(
                  '%.2f %%' % (100 * ux[le]) for le in good) if good else nm
         fy = {n: val(m3, '%s 3D b=0.04 ny=%d' % (k, n))[0] for n in (1, 2, 4)}
-        c['ny'] = ', '.join('n_y = %d: %.2f %%' % (n, 100 * abs(fy[n] / fy[4] - 1)) for n in (1, 2) if fy[n] == fy[n]) \
-            + ' against n_y = 4' if fy[4] == fy[4] else nm
+        uy = {n: fnum(m3.get('%s 3D b=0.04 ny=%d' % (k, n)), 'F_unc') for n in (1, 2, 4)}
+        c['ny'] = ', '.join('n_y = %d: %.2f %% (+-%.2f)' % (n, 100 * abs(fy[n] / fy[4] - 1), 100 * (uy[n] + uy[4]))
+                            for n in (1, 2) if fy[n] == fy[n]) + ' against n_y = 4' if fy[4] == fy[4] else nm
         fb, _ = val(m3, '%s 3D b=0.02 ny=2' % k)
-        c['widths'] = ('b = 0.02 against 0.04 mm (n_y = 2): %s' % pct(fb / fy[2] - 1)) if fb == fb and fy[2] == fy[2] \
-            else nm
+        ub = fnum(m3.get('%s 3D b=0.02 ny=2' % k), 'F_unc')
+        c['widths'] = ('b = 0.02 against 0.04 mm (n_y = 2): %s' % pct(fb / fy[2] - 1, ub + uy[2])) \
+            if fb == fb and fy[2] == fy[2] else nm
         # CPU time of the ldfcz process (-t 1) per increment attempt: less sensitive to the other jobs on the
         # machine than the wall time
         pts = [(fnum(r, 'dofs'), fnum(r, 'cpu_time_s') / fnum(r, 'attempts')) for rows_ in (mx, mz, m3)
@@ -841,6 +826,12 @@ def statements(reports):
                     100 * abs(fnum(r, 'F_w') / fr[0] - 1) if fr else float('nan'),
                     100 * (fnum(r, 'F_unc') + ufr[0]) if ufr else float('nan'))) if done else 'not completed'))
         c['inc'] = '; '.join(desc) if desc else nm
+        if k == 'B':
+            for key, short in (('le', 'x'), ('ny', '3'), ('widths', '3'), ('inc', 'i'), ('speed', '3')):
+                if longer.get(short) and c[key] != nm:
+                    c[key] += ' (pulled 0.32 mm)'
+            if longer.get('3'):
+                c['ps3d'] = c['ps3d'].replace('n_y = 4: ', 'n_y = 4, pulled 0.32 mm: ', 1)
         cells[k] = c
     table = [
         ('plane strain against 3D (section 9, Fig. 14)', 'plane strain +4 %', 'ps3d'),
@@ -854,9 +845,9 @@ def statements(reports):
         ('load step (section 7)', 'error < 1 % for all steps; stable up to 100 nm/inc (PET model)', 'inc'),
     ]
     out = ['# The paper\'s statements against the two readings of Fig. 10', '',
-           'Written by `tools/peel_study.py statements` on %s from reports/stmt-mesh-x, stmt-mesh-z, stmt-mesh-z-long, '
-           'stmt-3d, stmt-3d-fine, stmt-3d-long and '
-           'stmt-increment (each made by `tools/peel_study.py STUDY --threads 1`; their .md files hold every case, '
+           'Written by `tools/peel_study.py statements` on %s from reports/stmt-mesh-x(-long), stmt-mesh-z(-long), '
+           'stmt-3d, stmt-3d-width-long, stmt-3d-fine, stmt-3d-long and stmt-increment(-long) (reading B from the '
+           '0.32 mm pulls of the -long studies where they have been run; each made by `tools/peel_study.py STUDY --threads 1`; their .md files hold every case, '
            'run times and the machine load). Reading A: the 0-degree bridge (the coating drawn along x); reading B: '
            'the pre-delaminated flap lifted and pulled at 90 degrees (carriage grip, u_x free). Plane strain, rigid substrate, '
            'l_e = 10 um, n_z = 3 unless the statement varies them; 3D: the quarter model at l_e = 20 um, n_z = 2. '
