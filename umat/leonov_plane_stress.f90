@@ -90,12 +90,15 @@ contains
     integer, intent(out) :: stat
     type(leonov_state), intent(out) :: new
     real(dp), intent(out) :: sigma(3, 3), ln_l3, step_factor, ddsdde(3, 3)
+    real(dp) :: c6(6, 6)
     stat = code
     new = old
     sigma = 0.0_dp
     ln_l3 = ln_l3_old
     step_factor = 0.25_dp
-    ddsdde = leonov_plane_stress_tangent(leonov_elastic_tangent(p))
+    ! (a temporary: flang-new-16 crashes on the nested call leonov_plane_stress_tangent(leonov_elastic_tangent(p)))
+    c6 = leonov_elastic_tangent(p)
+    ddsdde = leonov_plane_stress_tangent(c6)
   end subroutine fail_state
 
   !> Static condensation of a 6x6 tangent (11,22,33,12,13,23) to plane stress (11,22,12) with d sigma_33 = 0.
