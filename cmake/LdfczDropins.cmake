@@ -9,7 +9,7 @@ set(_common "${PROJECT_SOURCE_DIR}/common/ldfcz_kinds.f90" "${PROJECT_SOURCE_DIR
 set(_uel "${PROJECT_SOURCE_DIR}/uel/cohesive_law.f90" "${PROJECT_SOURCE_DIR}/uel/cohesive_element.f90"
   "${PROJECT_SOURCE_DIR}/uel/uel.f")
 set(_umat "${PROJECT_SOURCE_DIR}/umat/leonov_parameters.f90" "${PROJECT_SOURCE_DIR}/umat/leonov.f90"
-  "${PROJECT_SOURCE_DIR}/umat/umat.f")
+  "${PROJECT_SOURCE_DIR}/umat/leonov_plane_stress.f90" "${PROJECT_SOURCE_DIR}/umat/umat.f")
 set(_make "${PROJECT_SOURCE_DIR}/tools/make_dropin.py")
 set(LDFCZ_DROPINS "")
 set(_marc "${PROJECT_SOURCE_DIR}/umat/leonov_parameters.f90" "${PROJECT_SOURCE_DIR}/umat/leonov.f90"

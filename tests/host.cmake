@@ -102,6 +102,18 @@ if(TARGET material_point)
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_element_leonov.py --exe $<TARGET_FILE:ldfcz>
     --mp $<TARGET_FILE:material_point> --out ${LDFCZ_RUNS}/element_leonov)
   set_tests_properties(deck_element_leonov PROPERTIES LABELS "deck" TIMEOUT 300)
+  # The 2D cohesive user element with an axisymmetric (JPROPS(3) = 1, totals over 2 pi as CAX4) and a plane-stress
+  # section (PROPS(7) thickness as the CPS4 *SOLID SECTION) between two elastic layers: RF against T(Delta) x area
+  add_test(NAME deck_cohesive_section COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_cohesive_section.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/cohesive_section)
+  set_tests_properties(deck_cohesive_section PROPERTIES LABELS "deck" TIMEOUT 120)
+  # Plane stress under NLGEOM (*ELASTIC: thickness stretch from the plane-stress condition): CPS4, CPS4I, CPS4R
+  # uniaxial stretch to 1.5 against the hypoelastic closed form with the current width and thickness (1e-9)
+  add_test(NAME deck_plane_stress_nlgeom COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_plane_stress_nlgeom.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/plane_stress_nlgeom)
+  set_tests_properties(deck_plane_stress_nlgeom PROPERTIES LABELS "deck" TIMEOUT 120)
 endif()
 if(EXISTS "${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp")
   ldfcz_add_perf_test(deck_c3d8_rotation_uniaxial ${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp rotation_uniaxial)

@@ -21,3 +21,12 @@ if(TARGET ldfcz)
             $<TARGET_FILE:ldfcz> "${CMAKE_CURRENT_BINARY_DIR}/umat_energy_balance")
   set_tests_properties(umat_energy_balance PROPERTIES LABELS "regression;umat" TIMEOUT 300)
 endif()
+
+# The Leonov UMAT's plane-stress branch (NTENS = 3, the UMAT solves sigma_33 = 0) in uniaxial stress against the
+# 3D UMAT in bin/material_point's uniaxial mode, tension / relaxation / unloading with a rotation: 1e-8 of the peak
+if(TARGET material_point)
+  add_test(NAME umat_plane_stress_uniaxial
+    COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_plane_stress_uniaxial.py"
+            --mp $<TARGET_FILE:material_point> --out "${CMAKE_CURRENT_BINARY_DIR}/umat_plane_stress_uniaxial")
+  set_tests_properties(umat_plane_stress_uniaxial PROPERTIES LABELS "regression;umat" TIMEOUT 120)
+endif()

@@ -24,7 +24,12 @@
 !>   rotation     superposed rigid rotation at the end (degrees), growing linearly in time   [0]
 !>   axis         rotation axis 1, 2 or 3                    [3]
 !>   props        10 numbers (PROPS, Table 1 order)          [Table 1, PET]
-!>   nstatv       number of state variables                  [11]
+!>   nstatv       number of state variables                  [11; 12 with plane_stress]
+!>   plane_stress yes: call UMAT as Abaqus does for a plane-stress element (NDI = 2, NSHR = 1, NTENS = 3,
+!>                components 11, 22, 12): the UMAT enforces sigma_33 = 0 itself; the driver controls only
+!>                the in-plane stretches (uniaxial: Newton on lambda_2 alone) and takes the thickness stretch
+!>                for the CSV from SDV12 = ln(lambda_3) (the Leonov UMAT's plane-stress state variable). The
+!>                rotation axis must be 3.                   [no]
 !>   output       CSV file                                   [material_point.csv]
 !>   output_every write every n-th increment                 [1]
 !> CSV columns: time, F11..F33 (row by row), S11 S22 S33 S12 S13 S23 (Cauchy, Abaqus order, global frame),
@@ -45,7 +50,7 @@ program material_point
   real(dp) :: stress(6), stress_trial(6), stran(6), stran_trial(6), ddsdde(6, 6)
   real(dp) :: t, t_total, dt_target, h, f0(3, 3), f1(3, 3), xs(3), xs_trial(3), pnewdt
   integer :: unit, inc, kinc, ncut, iseg, nseg = 0, ctrl
-  logical :: ok
+  logical :: ok, plane_stress = .false.
   integer, parameter :: max_seg = 200
   integer, parameter :: ctrl_strain = 1, ctrl_stress = 2
   character(len=8) :: seg_kind(max_seg)
@@ -57,6 +62,8 @@ program material_point
   props = [1250.0_dp, 0.4_dp, 28.4_dp, 0.486_dp, 0.95_dp, 0.047_dp, 28.2_dp, 0.990_dp, 200.0_dp, -4.0_dp]
   call read_input()
   if (nstatv < 1 .or. steps < 1 .or. output_every < 1) call fail('nstatv, steps and output_every must be >= 1')
+  if (plane_stress .and. (nstatv < 12 .or. (axis /= 3 .and. rotation /= 0.0_dp))) &
+    call fail('plane_stress needs nstatv >= 12 (SDV12 = ln lambda_3) and a rotation about axis 3 only')
   select case (mode)
   case ('uniaxial', 'shear')
     if (nseg == 0) then
@@ -184,6 +191,7 @@ contains
       fm(3, 3) = exp(x(3))
     case ('shear')
       fm(1, 2) = x(1)
+      if (plane_stress) fm(3, 3) = exp(x(3))
     case default
       fm = identity3() + (tt / time_end) * (f_end - identity3())
     end select
@@ -249,7 +257,9 @@ contains
     real(dp), intent(out) :: pnew
     real(dp) :: gmat(3, 3), w(3, 3), drot(3, 3), dstran(6), time(2), sse, spd, scd, rpl, ddsddt(6), drplde(6)
     real(dp) :: drpldt, temp, dtemp, predef(1), dpred(1), coords(3), celent, fa_c(3, 3), fb_c(3, 3), fmid_inv(3, 3)
+    real(dp) :: s3(3), e3(3), de3(3), c3(3, 3), r3(3), q3(3)
     integer :: jstep(4)
+    integer, parameter :: ip(3) = [1, 2, 4]
     character(len=80) :: cmname
     ! Hughes-Winget: G = grad(du) at the mid-point configuration
     fmid_inv = inv3(0.5_dp * (fa + fb))
@@ -278,9 +288,27 @@ contains
     ddsdde = 0.0_dp
     fa_c = fa
     fb_c = fb
-    call umat(stress_trial, statev_trial, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran_trial, dstran, &
-              time, hh, temp, dtemp, predef, dpred, cmname, 3, 3, 6, nstatv, props, 10, coords, drot, pnew, &
-              celent, fa_c, fb_c, 1, 1, 1, 1, jstep, kinc)
+    if (plane_stress) then
+      ! Abaqus' plane-stress call: the in-plane components only; sigma_33 = sigma_13 = sigma_23 = 0
+      s3 = stress_trial(ip)
+      e3 = stran_trial(ip)
+      de3 = dstran(ip)
+      c3 = 0.0_dp
+      call umat(s3, statev_trial, c3, sse, spd, scd, rpl, r3, q3, drpldt, e3, de3, &
+                time, hh, temp, dtemp, predef, dpred, cmname, 2, 1, 3, nstatv, props, 10, coords, drot, pnew, &
+                celent, fa_c, fb_c, 1, 1, 1, 1, jstep, kinc)
+      stress_trial = 0.0_dp
+      stress_trial(ip) = s3
+      ddsdde = 0.0_dp
+      ddsdde(ip, ip) = c3
+      dstran = 0.0_dp
+      dstran(ip) = de3
+      dstran(3) = statev_trial(12) - statev(12)   ! the thickness log strain increment (no rotation out of plane)
+    else
+      call umat(stress_trial, statev_trial, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran_trial, &
+                dstran, time, hh, temp, dtemp, predef, dpred, cmname, 3, 3, 6, nstatv, props, 10, coords, drot, &
+                pnew, celent, fa_c, fb_c, 1, 1, 1, 1, jstep, kinc)
+    end if
     stran_trial = stran_trial + dstran
     if (abaqus_stop_requested()) call fail('UMAT stopped the analysis: ' // abaqus_stop_message())
   end subroutine call_umat
@@ -298,6 +326,7 @@ contains
     if (mode == 'deformation') then
       fb = deformation(tt + hh, x1)
       call call_umat(tt, hh, fa, fb, pnew)
+      if (plane_stress) fb(3, 3) = exp(statev_trial(12))
       success = pnew >= 1.0_dp
       return
     end if
@@ -305,6 +334,10 @@ contains
     if (mode == 'shear') then
       fb = deformation(tt + hh, x1)
       call call_umat(tt, hh, fa, fb, pnew)
+      if (plane_stress) then
+        x1(3) = statev_trial(12)
+        fb = deformation(tt + hh, x1)
+      end if
       success = pnew >= 1.0_dp
       return
     end if
@@ -316,6 +349,10 @@ contains
       fb = deformation(tt + hh, x1)
       call call_umat(tt, hh, fa, fb, pnew)
       if (pnew < 1.0_dp) return
+      if (plane_stress) then
+        x1(3) = statev_trial(12)   ! the UMAT's thickness stretch (it ignores F33)
+        fb = deformation(tt + hh, x1)
+      end if
       jdet = det3(fb)
       sig_m = matmul(transpose(r), matmul(to_tensor(stress_trial, .false.), r))
       ! residuals in Kirchhoff stress: axial tau_11 - J s (stress control), lateral tau_22 = tau_33 = 0
@@ -336,7 +373,14 @@ contains
         jac(:, b) = [col(1, 1) - jdet * st, col(2, 2), col(3, 3)]
       end do
       dx = 0.0_dp
-      if (first == 1) then
+      if (plane_stress) then
+        ! sigma_33 = 0 is the UMAT's: only the in-plane stretches are unknowns here
+        if (first == 1) then
+          dx(1:2) = solve2(jac(1:2, 1:2), -res(1:2))
+        else
+          dx(2) = -res(2) / jac(2, 2)
+        end if
+      else if (first == 1) then
         dx = solve3(jac, -res)
       else
         dx(2:3) = solve2(jac(2:3, 2:3), -res(2:3))
@@ -448,6 +492,10 @@ contains
       read (val, *, iostat=ios) axis
     case ('nstatv')
       read (val, *, iostat=ios) nstatv
+    case ('plane_stress')
+      plane_stress = any(trim(val) == ['yes ', 'YES ', 'true', '1   '])
+      if (.not. plane_stress .and. .not. any(trim(val) == ['no   ', 'NO   ', 'false', '0    '])) &
+        call fail('plane_stress must be yes or no: ' // trim(val))
     case ('output_every')
       read (val, *, iostat=ios) output_every
     case ('props')
@@ -490,6 +538,7 @@ contains
       '  time_end, f_end (9 numbers)  mode deformation: F(t) = I + t/time_end (f_end - I)', &
       '  rotation, axis               superposed rigid rotation (degrees at the end, about axis 1..3)', &
       '  props (10 numbers), nstatv   the UMAT constants (Table 1, PET, by default) and state size', &
+      '  plane_stress = yes           call the UMAT as for a plane-stress element (NTENS = 3; nstatv >= 12)', &
       '  output, output_every         CSV file and output interval', &
       '  examples: decks/material/*.txt (tension, compression, shear, relaxation, creep)'
   end subroutine usage

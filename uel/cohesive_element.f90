@@ -8,6 +8,16 @@
 !> point (exact for any planar quadrilateral, where Eq. 10 uses A0/4). Stiffness K = df/du (Eq. 15) with the tangent M of
 !> Eqs. 26, 29-30 plus, in contact, the linearisation of the normal n w.r.t. the nodal positions, which Eq. 29 omits:
 !> the contact stiffness is then unsymmetric.
+!>
+!> Section of the 2D element (optional arguments; Abaqus gives a user element its section data only through PROPS):
+!> planar with an out-of-plane thickness t (plane strain or plane stress; default 1: per unit thickness), w = t J0;
+!> or axisymmetric about the x2 axis (x1 = r), w = 2 pi R J0 with R = sum_k psi_k X_m,1(k) the radius of the
+!> INITIAL mid-line at the Gauss point: the tractions are first Piola-Kirchhoff tractions per unit initial area
+!> (Eq. 9), and the initial area element of the surface of revolution is dA0 = 2 pi R J0 dxi, so f (Eq. 14) and K
+!> (Eq. 15) keep their form with this weight, which does not depend on u (no extra stiffness term). Forces are
+!> totals over the circumference (2 pi radians), as the axisymmetric continuum elements and Abaqus report them.
+!> The thickness of a plane-stress section is the initial one (the interface does not follow the bulk's thickness
+!> change; the host refuses plane stress under NLGEOM anyway).
 !> Pure and host-free: no SAVE, no module state.
 module cohesive_element
   use ldfcz_finite, only: is_finite
@@ -47,7 +57,7 @@ contains
   !> returned in e_visc (zero otherwise).
   pure subroutine cohesive_element_compute(ndim, coords0, u, props, hist_old, want_stiffness, fint, kmat, hist_new, &
                                            e_stored, e_diss, stat, errmsg, ip_traction, ip_opening, u_start, dtime, &
-                                           e_visc, e_diss_start)
+                                           e_visc, e_diss_start, thickness, axisymmetric)
     integer, intent(in) :: ndim                    !< 3 (8 nodes) or 2 (4 nodes, plane strain)
     real(dp), intent(in) :: coords0(:,:)           !< initial coordinates (>= ndim rows, nnode columns)
     real(dp), intent(in) :: u(:)                   !< current total displacements, node by node (ndim per node)
@@ -67,9 +77,12 @@ contains
     real(dp), intent(in), optional :: dtime              !< time increment (viscous; <= 0: no viscous term)
     real(dp), intent(out), optional :: e_visc            !< viscous dissipation of this increment
     real(dp), intent(out), optional :: e_diss_start      !< dissipated energy of the law at the start of the increment
+    real(dp), intent(in), optional :: thickness          !< 2D planar section: out-of-plane thickness (> 0; default 1)
+    logical, intent(in), optional :: axisymmetric        !< 2D: axisymmetric about x2, x1 = r (default .false.)
     real(dp) :: tr(3,4), op(3,4), up(size(u)), fp(size(u)), fm(size(u)), hdum(size(hist_new)), kdum(1,1), h, ed, es
-    real(dp) :: u0(size(u)), rate_c, ev, eds, evd, edsd
+    real(dp) :: u0(size(u)), rate_c, ev, eds, evd, edsd, sec_t
     integer :: ndof, j, nnode
+    logical :: axi
 
     fint = 0.0_dp
     hist_new = 0.0_dp
@@ -87,6 +100,15 @@ contains
         size(hist_new) /= size(hist_old)) then
       stat = stat_bad_input
       errmsg = proc // ': inconsistent array sizes'
+      return
+    end if
+    sec_t = 1.0_dp
+    if (present(thickness)) sec_t = thickness
+    axi = .false.
+    if (present(axisymmetric)) axi = axisymmetric
+    if (.not. (sec_t > 0.0_dp .and. is_finite(sec_t)) .or. (ndim == 3 .and. (axi .or. sec_t /= 1.0_dp))) then
+      stat = stat_bad_input
+      errmsg = proc // ': the section (thickness > 0, axisymmetric) applies to the 2D element only'
       return
     end if
     if (want_stiffness) then
@@ -108,7 +130,7 @@ contains
     end if
 
     call element_forces(ndim, coords0, u, props, hist_old, want_stiffness .and. props%law == law_ldf, fint, kmat, &
-                        hist_new, e_stored, e_diss, tr, op, stat, errmsg, u0, rate_c, ev, eds)
+                        hist_new, e_stored, e_diss, tr, op, stat, errmsg, u0, rate_c, ev, eds, sec_t, axi)
     if (stat /= stat_ok) return
     if (present(ip_traction)) ip_traction = tr(:, 1:element_nip(ndim))
     if (present(ip_opening)) ip_opening = op(:, 1:element_nip(ndim))
@@ -121,11 +143,11 @@ contains
         up = u
         up(j) = u(j) + h
         call element_forces(ndim, coords0, up, props, hist_old, .false., fp, kdum, hdum, es, ed, tr, op, stat, errmsg, &
-                            u0, rate_c, evd, edsd)
+                            u0, rate_c, evd, edsd, sec_t, axi)
         if (stat /= stat_ok) return
         up(j) = u(j) - h
         call element_forces(ndim, coords0, up, props, hist_old, .false., fm, kdum, hdum, es, ed, tr, op, stat, errmsg, &
-                            u0, rate_c, evd, edsd)
+                            u0, rate_c, evd, edsd, sec_t, axi)
         if (stat /= stat_ok) return
         kmat(:, j) = (fp - fm) / (2.0_dp * h)
       end do
@@ -134,7 +156,7 @@ contains
 
   !> Forces (and for the LDF law the analytic stiffness) of one element; see cohesive_element_compute.
   pure subroutine element_forces(ndim, coords0, u, props, hist_old, want_k, fint, kmat, hist_new, e_stored, e_diss, &
-                                 tr_ip, op_ip, stat, errmsg, u_start, rate_c, e_visc, e_diss_start)
+                                 tr_ip, op_ip, stat, errmsg, u_start, rate_c, e_visc, e_diss_start, sec_t, axi)
     integer, intent(in) :: ndim
     real(dp), intent(in) :: coords0(:,:), u(:)
     type(cohesive_props), intent(in) :: props
@@ -149,6 +171,8 @@ contains
     real(dp), intent(in) :: rate_c          !< eta_v/dtime, 0 = no viscous term
     real(dp), intent(out) :: e_visc         !< viscous dissipation of the increment
     real(dp), intent(out) :: e_diss_start   !< dissipated energy of the law at the start of the increment
+    real(dp), intent(in) :: sec_t           !< planar section thickness (1 in 3D)
+    logical, intent(in) :: axi              !< 2D axisymmetric: weight 2 pi R at the point (R of the initial mid-line)
 
     integer :: nf, nip, nnode, k, l, ip, bot(4), top(4), nodes(2,4), sa, sb, ka, kb
     real(dp) :: x0(3,8), x(3,8), xm0(3,4), xm(3,4), psi(4), dpsi_xi(4), dpsi_eta(4), dxi_c(4), deta_c(4)
@@ -156,6 +180,8 @@ contains
     real(dp) :: dvec(3), tvec(3), mmat(3,3), tcv(3), mc(3,3), tc, dtc, wc, ws, wd, dmax_new, dn, dt
     real(dp) :: proj(3,3), dndx(3,3,4), gmat(3,3), fblk(3,2,4), kblk(3,3,2,2,4,4), rot2(3,3)
     real(dp) :: dt_top(3,3), dt_bot(3,3), xs(3,8), ddel(3), tdum(3), mdum(3,3), hdum, wsd, wdd
+    real(dp), parameter :: two_pi = 2.0_dp * acos(-1.0_dp)
+    real(dp) :: r0
     real(dp), parameter :: eye(3,3) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
                                               [3, 3])
 
@@ -262,6 +288,18 @@ contains
         return
       end if
       w = j0          ! Gauss weights are 1 for both rules
+      if (axi) then
+        ! initial area element of the surface of revolution: 2 pi R J0 dxi (totals over 2 pi)
+        r0 = dot_product(psi(1:nf), xm0(1, 1:nf))
+        if (.not. (r0 > 0.0_dp)) then
+          stat = stat_bad_input
+          errmsg = proc // ': axisymmetric element with r <= 0 at an integration point (x1 is the radius)'
+          return
+        end if
+        w = two_pi * r0 * j0
+      else
+        w = sec_t * j0
+      end if
 
       ! Opening between associated points (Eq. 10 with P of Eq. 11)
       dvec = 0.0_dp

@@ -17,6 +17,13 @@
 !     PROPS(6) eta_v >= 0 (N s/mm^3), optional viscous regularisation
 !       T += eta_v dDelta/DTIME (0 or absent: none, the paper's law);
 !       its dissipation is added to ENERGY(4).
+!     PROPS(7) (2D only) out-of-plane thickness of a plane-strain or
+!       plane-stress section (0 or absent: 1, per unit thickness);
+!       Abaqus passes a user element no *SOLID SECTION data.
+!     JPROPS(3) (2D only) 1: axisymmetric about x2 (x1 = r, as CAX4),
+!       each point weighted by 2 pi R (R of the initial mid-line):
+!       forces, AMATRX and energies are totals over 2 pi radians
+!       like the CAX elements'; 0 or absent: planar.
 !     JPROPS(1) unloading 1 reversible, 2 elastic damage, 3 plastic
 !       (0 or absent: 1). JPROPS(2) law 1 LDF, 2 classical (0 or
 !       absent: 1); the classical law is reversible only.
@@ -51,15 +58,15 @@
      4 PREDEF(2,NPREDF,NNODE),LFLAGS(*),JPROPS(*)
 !
       TYPE(COHESIVE_PROPS) PR
-      INTEGER NDIM, NEED, IUNL, LAW, ISTAT, I, LF
+      INTEGER NDIM, NEED, IUNL, LAW, ISTAT, I, LF, ISEC
       INTEGER INTV(3)
-      DOUBLE PRECISION REALV(2), ESTO, EDIS, EVIS, EDS0
+      DOUBLE PRECISION REALV(2), ESTO, EDIS, EVIS, EDS0, THICK
       DOUBLE PRECISION UST(NDOFEL)
       DOUBLE PRECISION FINT(NDOFEL), AK(NDOFEL,NDOFEL)
       DOUBLE PRECISION HOLD(NSVARS), HNEW(NSVARS)
       CHARACTER*8 CHARV(1)
       CHARACTER*200 EMSG
-      LOGICAL WANTK, WANTF
+      LOGICAL WANTK, WANTF, AXI
 !
       INTV = 0
       REALV = 0.0D0
@@ -91,7 +98,7 @@
         CALL XIT()
         RETURN
       END IF
-      DO I = 1, MIN(NPROPS, 6)
+      DO I = 1, MIN(NPROPS, 7)
         IF (.NOT. IS_FINITE(PROPS(I))) THEN
           INTV(2) = I
           CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(%I) is'
@@ -116,12 +123,13 @@
         CALL XIT()
         RETURN
       END IF
-      DO I = 3, MIN(NPROPS, 6)
+      DO I = 3, MIN(NPROPS, 7)
         IF (PROPS(I) .LT. 0.0D0) THEN
           INTV(2) = I
           REALV(1) = PROPS(I)
           CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(%I)'
-     1     //' (3 k_c, 4 phi_t, 5 delta_t, 6 eta_v) must be >= 0,'
+     1     //' (3 k_c, 4 phi_t, 5 delta_t, 6 eta_v, 7 thickness)'
+     2     //' must be >= 0,'
      2     //' got %R',
      2     INTV, REALV, CHARV)
           CALL XIT()
@@ -180,6 +188,38 @@
       END IF
       PR%UNLOADING = IUNL
       PR%LAW = LAW
+!     --- section of the 2D element: thickness PROPS(7), JPROPS(3)
+      THICK = 1.0D0
+      IF (NPROPS .GE. 7) THEN
+        IF (PROPS(7) .GT. 0.0D0) THICK = PROPS(7)
+      END IF
+      ISEC = 0
+      IF (NJPROP .GE. 3) ISEC = JPROPS(3)
+      IF (ISEC .NE. 0 .AND. ISEC .NE. 1) THEN
+        INTV(2) = ISEC
+        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: JPROPS(3) ='
+     1   //' %I unknown; use 0 planar (thickness PROPS(7)), 1'
+     2   //' axisymmetric', INTV, REALV, CHARV)
+        CALL XIT()
+        RETURN
+      END IF
+      IF (NDIM .EQ. 3 .AND. (ISEC .NE. 0 .OR. THICK .NE. 1.0D0)) THEN
+        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(7)'
+     1   //' (thickness) and JPROPS(3) (axisymmetric) apply to the'
+     2   //' 2D element only; leave them 0 or absent in 3D',
+     3   INTV, REALV, CHARV)
+        CALL XIT()
+        RETURN
+      END IF
+      IF (ISEC .EQ. 1 .AND. THICK .NE. 1.0D0) THEN
+        REALV(1) = THICK
+        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: axisymmetric'
+     1   //' (JPROPS(3) = 1) takes no thickness, PROPS(7) = %R: the'
+     2   //' forces are totals over 2 pi', INTV, REALV, CHARV)
+        CALL XIT()
+        RETURN
+      END IF
+      AXI = ISEC .EQ. 1
 !     --- state variables
       NEED = NSV_PER_IP * ELEMENT_NIP(NDIM)
       IF (NSVARS .LT. NEED) THEN
@@ -231,12 +271,12 @@
         CALL COHESIVE_ELEMENT_COMPUTE(NDIM, COORDS(1:NDIM, 1:NNODE),
      1    U(1:NDOFEL), PR, HOLD, WANTK, FINT, AK, HNEW, ESTO, EDIS,
      2    ISTAT, EMSG, U_START=UST, DTIME=DTIME, E_VISC=EVIS,
-     3    E_DISS_START=EDS0)
+     3    E_DISS_START=EDS0, THICKNESS=THICK, AXISYMMETRIC=AXI)
         EDIS = ENERGY(4) + (EDIS - EDS0) + EVIS
       ELSE
         CALL COHESIVE_ELEMENT_COMPUTE(NDIM, COORDS(1:NDIM, 1:NNODE),
      1    U(1:NDOFEL), PR, HOLD, WANTK, FINT, AK, HNEW, ESTO, EDIS,
-     2    ISTAT, EMSG)
+     2    ISTAT, EMSG, THICKNESS=THICK, AXISYMMETRIC=AXI)
       END IF
       IF (ISTAT .NE. STAT_OK) THEN
         IF (ISTAT .EQ. STAT_BAD_INPUT) THEN

@@ -7,15 +7,24 @@
 !       (MPa s), tau_0 (MPa), mu, G_r (MPa), r0, r1, r2; optional
 !       PROPS(11) (NPROPS = 11): accuracy bound dgamma_max on the
 !       plastic strain increment (default 0.05, see PNEWDT below).
-!     STATEV (NSTATV >= 11; all zero = virgin state):
+!     STATEV (NSTATV >= 11, 12 in plane stress; all zero = virgin):
 !       1-6  Be~ - I, order 11,22,33,12,13,23, spatial frame of the
 !            current configuration (pushed forward with
 !            F_rel = DFGRD1 DFGRD0^-1 here: the host need not rotate)
 !       7    gamma_p, equivalent plastic strain
 !       8    tau_bar (MPa), 9 eta (MPa s), 10 S = S_a R_gamma,
 !       11   plastic rate dgamma_p/dt (1/s)   (8-11 outputs only)
-!     NDI = 3 only: 3D (NSHR = 3, 11,22,33,12,13,23) and plane strain
-!       or axisymmetric (NSHR = 1, 11,22,33,12). Plane stress: XIT.
+!       12   plane stress only: ln(lambda_3), the thickness stretch
+!     3D (NDI = 3, NSHR = 3, 11,22,33,12,13,23), plane strain or
+!       axisymmetric (NDI = 3, NSHR = 1, 11,22,33,12) and plane
+!       stress (NDI = 2, NSHR = 1, NTENS = 3, 11,22,12; NSTATV >= 12):
+!       the UMAT finds the thickness stretch lambda_3 itself by a
+!       local Newton iteration on sigma_33 = 0 (module
+!       leonov_plane_stress), keeps ln(lambda_3) in STATEV(12) and
+!       IGNORES DFGRD0(3,3), DFGRD1(3,3) and the out-of-plane entries
+!       (Abaqus does not compute the thickness strain of a plane-
+!       stress UMAT; see docs/umat.md); DDSDDE is the 3x3 tangent
+!       condensed with d sigma_33 = 0.
 !     Works from DFGRD0, DFGRD1 and DTIME; STRESS (input), STRAN,
 !       DSTRAN, DROT are not used. STRESS = Cauchy stress.
 !     DDSDDE: consistent tangent of the Jaumann rate of Kirchhoff
@@ -53,6 +62,7 @@
       USE LEONOV, ONLY: LEONOV_STATE, LEONOV_UPDATE,
      1 LEONOV_STATE_FROM_STATEV, LEONOV_STATE_TO_STATEV, LEONOV_OK,
      2 LEONOV_STEP_TOO_LARGE, LEONOV_ELASTIC_TANGENT
+      USE LEONOV_PLANE_STRESS, ONLY: LEONOV_PLANE_STRESS_UPDATE
       INCLUDE 'ABA_PARAM.INC'
       CHARACTER*80 CMNAME
       INTEGER NDI, NSHR, NTENS, NSTATV, NPROPS, NOEL, NPT, LAYER
@@ -69,10 +79,14 @@
       TYPE(LEONOV_PROPS) PR
       TYPE(LEONOV_STATE) OLD, ANEW
       DOUBLE PRECISION SIG(3,3), C6(6,6), FACTOR, BT(3,3), DETF, DETF0
-      DOUBLE PRECISION PSI
+      DOUBLE PRECISION PSI, F0(3,3), F1(3,3), C3(3,3), XL3
+      LOGICAL PSTRESS
       INTEGER ISTAT, K, L, INTV(1)
       INTEGER, PARAMETER :: IV(6) = [1, 2, 3, 1, 1, 2]
       INTEGER, PARAMETER :: JV(6) = [1, 2, 3, 2, 3, 3]
+!     plane stress: components 11, 22, 12
+      INTEGER, PARAMETER :: IP(3) = [1, 2, 1]
+      INTEGER, PARAMETER :: JP(3) = [1, 2, 2]
       DOUBLE PRECISION REALV(1)
       CHARACTER(LEN=8) CHARV(1)
       CHARACTER(LEN=256) MSG
@@ -91,10 +105,19 @@
      1   '(*DEPVAR), got ', NSTATV, ''
         GO TO 900
       END IF
-      IF (NDI .NE. 3 .OR. (NSHR .NE. 1 .AND. NSHR .NE. 3)) THEN
-        WRITE (MSG, '(A,I0,A,I0,A)') 'UMAT (Leonov): supports NDI = 3'
-     1   //' with NSHR = 1 or 3 (3D, plane strain, axisymmetric); got'
-     2   //' NDI = ', NDI, ', NSHR = ', NSHR, ' (plane stress?)'
+      PSTRESS = NDI .EQ. 2 .AND. NSHR .EQ. 1 .AND. NTENS .EQ. 3
+      IF (.NOT. PSTRESS .AND. (NDI .NE. 3 .OR. (NSHR .NE. 1 .AND.
+     1 NSHR .NE. 3) .OR. NTENS .NE. NDI + NSHR)) THEN
+        WRITE (MSG, '(A,I0,A,I0,A,I0)') 'UMAT (Leonov): supports NDI'
+     1   //' = 3 with NSHR = 1 or 3 (3D, plane strain, axisymmetric)'
+     2   //' and NDI = 2, NSHR = 1 (plane stress); got NDI = ', NDI,
+     3   ', NSHR = ', NSHR, ', NTENS = ', NTENS
+        GO TO 900
+      END IF
+      IF (PSTRESS .AND. NSTATV .LT. LEONOV_NSTATV + 1) THEN
+        WRITE (MSG, '(A,I0,A)') 'UMAT (Leonov): plane stress needs '//
+     1   'NSTATV >= 12 (*DEPVAR; STATEV(12) = ln of the thickness '//
+     2   'stretch), got ', NSTATV, ''
         GO TO 900
       END IF
       CALL LEONOV_PROPS_FROM_ARRAY(PROPS(1:MIN(NPROPS,
@@ -105,39 +128,58 @@
       END IF
 !
       OLD = LEONOV_STATE_FROM_STATEV(STATEV(1:LEONOV_NSTATV))
-      CALL LEONOV_UPDATE(PR, DFGRD0, DFGRD1, DTIME, OLD, ANEW, SIG,
-     1 ISTAT, FACTOR, C6)
+      IF (PSTRESS) THEN
+        CALL LEONOV_PLANE_STRESS_UPDATE(PR, DFGRD0, DFGRD1,
+     1   STATEV(LEONOV_NSTATV + 1), DTIME, OLD, ANEW, SIG, XL3, ISTAT,
+     2   FACTOR, C3, F0, F1)
+      ELSE
+        F0 = DFGRD0
+        F1 = DFGRD1
+        CALL LEONOV_UPDATE(PR, F0, F1, DTIME, OLD, ANEW, SIG,
+     1   ISTAT, FACTOR, C6)
+      END IF
       IF (ISTAT .NE. LEONOV_OK .AND. ISTAT .NE. LEONOV_STEP_TOO_LARGE)
      1 THEN
 !       core failure: keep STRESS and STATEV, ask for a cutback
         C6 = LEONOV_ELASTIC_TANGENT(PR)
         DO L = 1, NTENS
           DO K = 1, NTENS
-            DDSDDE(K, L) = C6(K, L)
+            IF (PSTRESS) THEN
+              DDSDDE(K, L) = C3(K, L)
+            ELSE
+              DDSDDE(K, L) = C6(K, L)
+            END IF
           END DO
         END DO
         PNEWDT = 0.25D0
         RETURN
       END IF
       DO K = 1, NTENS
-        STRESS(K) = SIG(IV(K), JV(K))
+        IF (PSTRESS) THEN
+          STRESS(K) = SIG(IP(K), JP(K))
+        ELSE
+          STRESS(K) = SIG(IV(K), JV(K))
+        END IF
         DO L = 1, NTENS
-          DDSDDE(K, L) = C6(K, L)
+          IF (PSTRESS) THEN
+            DDSDDE(K, L) = C3(K, L)
+          ELSE
+            DDSDDE(K, L) = C6(K, L)
+          END IF
         END DO
         DDSDDT(K) = 0.0D0
         DRPLDE(K) = 0.0D0
       END DO
       CALL LEONOV_STATE_TO_STATEV(ANEW, STATEV(1:LEONOV_NSTATV))
+      IF (PSTRESS) STATEV(LEONOV_NSTATV + 1) = XL3
 !     energies per unit volume
-      DETF = DFGRD1(1,1)*(DFGRD1(2,2)*DFGRD1(3,3)-DFGRD1(2,3)*
-     1 DFGRD1(3,2)) - DFGRD1(1,2)*(DFGRD1(2,1)*DFGRD1(3,3)-
-     2 DFGRD1(2,3)*DFGRD1(3,1)) + DFGRD1(1,3)*(DFGRD1(2,1)*
-     3 DFGRD1(3,2)-DFGRD1(2,2)*DFGRD1(3,1))
-      DETF0 = DFGRD0(1,1)*(DFGRD0(2,2)*DFGRD0(3,3)-DFGRD0(2,3)*
-     1 DFGRD0(3,2)) - DFGRD0(1,2)*(DFGRD0(2,1)*DFGRD0(3,3)-
-     2 DFGRD0(2,3)*DFGRD0(3,1)) + DFGRD0(1,3)*(DFGRD0(2,1)*
-     3 DFGRD0(3,2)-DFGRD0(2,2)*DFGRD0(3,1))
-      BT = MATMUL(DFGRD1, TRANSPOSE(DFGRD1)) * DETF**(-2.0D0/3.0D0)
+      DETF = F1(1,1)*(F1(2,2)*F1(3,3)-F1(2,3)*F1(3,2))
+     1 - F1(1,2)*(F1(2,1)*F1(3,3)-F1(2,3)*F1(3,1))
+     2 + F1(1,3)*(F1(2,1)*F1(3,2)-F1(2,2)*F1(3,1))
+      DETF0 = F0(1,1)*(F0(2,2)*F0(3,3)-F0(2,3)*F0(3,2))
+     1 - F0(1,2)*(F0(2,1)*F0(3,3)-F0(2,3)*F0(3,1))
+     2 + F0(1,3)*(F0(2,1)*F0(3,2)-F0(2,2)*F0(3,1))
+      BT = MATMUL(F1, TRANSPOSE(F1)) * DETF**(-2.0D0/3.0D0)
       PSI = DETF*(0.5D0*PR%G*(ANEW%BE(1,1)+ANEW%BE(2,2)+ANEW%BE(3,3)
      1 -3.0D0) + 0.5D0*PR%G_R*(BT(1,1)+BT(2,2)+BT(3,3)-3.0D0))
      2 + 0.5D0*PR%KAPPA*(DETF-1.0D0)**2

@@ -115,6 +115,12 @@ contains
             'is not supported: use the LDF cohesive user element, same 4 nodes: '// &
             '"*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=3, I PROPERTIES=2, VARIABLES=8, UNSYMM" '// &
             'and "*ELEMENT, TYPE=U2, ELSET=..." with *UEL PROPERTY (docs/uel.md)')
+        else if (is_hybrid_name(tname)) then
+          ! hybrid (mixed u-p) types are not implemented: the F-bar / B-bar elements are the route for nearly
+          ! incompressible materials (docs/elements.md)
+          call ctx_fail(ctx, ctx%ir, 'hybrid element type '//tname//' is not supported: for nearly '// &
+            'incompressible materials use C3D8 or CPE4 (F-bar under NLGEOM, B-bar without: no volumetric '// &
+            'locking; docs/elements.md)')
         else
           call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, C3D8I, C3D8R, C3D20, C3D20R, '// &
             'C3D4, C3D10, CPE4, CPE4I, CPE4R, CPE8, CPE8R, CPS4, CPS4I, CPS4R, CPS8, CPS8R, CAX4, CAX8, '// &
@@ -389,5 +395,16 @@ contains
     call grow_int(ctx%elem_rec, 2 * n)
     if (allocated(ctx%model%elem_uelprop)) call grow_int(ctx%model%elem_uelprop, 2 * n)
   end subroutine grow_elems
+
+  !> An Abaqus hybrid (mixed displacement-pressure) continuum name: C3D*, CPE*, CAX* ending in H (C3D8H, C3D20RH,
+  !> CPE4H, CAX8RH, ...).
+  pure logical function is_hybrid_name(tname)
+    character(len=*), intent(in) :: tname
+    integer :: n
+    n = len_trim(tname)
+    is_hybrid_name = .false.
+    if (n < 5) return
+    is_hybrid_name = tname(n:n) == 'H' .and. (tname(1:3) == 'C3D' .or. tname(1:3) == 'CPE' .or. tname(1:3) == 'CAX')
+  end function is_hybrid_name
 
 end module deck_mesh

@@ -122,6 +122,7 @@ contains
       if (present(nextra)) then
         nextra = (tp%ndim * tp%nmode + tp%nip - 1) / tp%nip
         if (tp%hourglass) nextra = max(nextra, 1)   ! the hourglass shear modulus, fixed at the first increment
+        if (tp%pstress) nextra = nextra + 1         ! plane stress: ln of the thickness stretch (the last row)
       end if
     end associate
   end subroutine solid_element_info
@@ -368,9 +369,10 @@ contains
       call fail(2, here // 'section thickness must be > 0')
       return
     end if
-    if (solid_types(it)%pstress .and. nlgeom) then
-      call fail(2, here // 'plane stress element ' // trim(etype) // ' under NLGEOM is not supported (the ' // &
-        'thickness change is not implemented): use NLGEOM=NO, or CPE/C3D elements (docs/elements.md)')
+    if (solid_types(it)%pstress .and. nlgeom .and. mat%kind /= SOLID_MAT_ELASTIC) then
+      call fail(2, here // 'plane stress element ' // trim(etype) // ' with a UMAT under NLGEOM is not supported ' // &
+        '(a plane-stress UMAT returns no thickness strain, NTENS = 3, so the current thickness is unknown to the ' // &
+        'element): use NLGEOM=NO, *ELASTIC, or CPE/C3D elements (docs/elements.md)')
       return
     end if
 
@@ -530,13 +532,14 @@ contains
       real(dp) :: bcr(maxnode, 3), trs
       real(dp) :: kl8(8, 3, 3, 8)   ! C3D8: contiguous fixed-size accumulator of the vectorised kernel
       real(dp) :: d8(8, 3), b8(8, 3), r8(8, 3)
-      real(dp) :: hc(maxnode), thk
+      real(dp) :: hc(maxnode), thk, lt1(maxip), f2m(2, 2), g2(2, 2), dt_ip
       real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3), s_unit(6), col_g(6, 6)
       integer :: icol
       logical :: k8, axi, local
       axi = solid_types(it)%axisym
       ! section thickness of plane elements; axisymmetric volumes are per 2 pi radians already (geometry)
       thk = merge(1.0_dp, mat%thickness, axi)
+      lt1 = 0.0_dp
 
       fe = 0.0_dp
       energy = 0.0_dp
@@ -550,6 +553,28 @@ contains
           fg0(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), un(1, 1:nne))
           fg1(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), u1(1, 1:nne))
         end if
+        if (solid_types(it)%pstress .and. nlgeom) then
+          ! plane stress under NLGEOM (*ELASTIC only): the thickness stretch lambda_3 from the plane-stress
+          ! condition of the hypoelastic law, d eps_33 = -nu/(1 - nu) (d eps_11 + d eps_22) + (1 + nu)/(1 - nu)
+          ! alpha dT (sigma_33 = 0 with the mechanical strain), the in-plane increments being the Hughes-Winget
+          ! ones; ln lambda_3 accumulates d eps_33 (a logarithmic strain, like STRAN) in the element's last STATEV
+          ! row. F33 = lambda_3 enters DFGRD0/DFGRD1 and J, so dv = J dV t0 uses the current thickness t0 lambda_3.
+          f2m = 0.5_dp * (fg0(1:2, 1:2, ip) + fg1(1:2, 1:2, ip))
+          j1 = f2m(1, 1) * f2m(2, 2) - f2m(1, 2) * f2m(2, 1)
+          if (.not. (j1 > 0.0_dp)) then
+            call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
+                      // itoa(ip) // ')')
+            return
+          end if
+          g2 = matmul(fg1(1:2, 1:2, ip) - fg0(1:2, 1:2, ip), &
+                      reshape([f2m(2, 2), -f2m(2, 1), -f2m(1, 2), f2m(1, 1)], [2, 2]) / j1)
+          dt_ip = 0.0_dp
+          if (present(dtemp_nodes)) dt_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
+          lt1(ip) = statev_old(nsv + nextra, ip) - mat%nu / (1.0_dp - mat%nu) * (g2(1, 1) + g2(2, 2)) &
+                    + (1.0_dp + mat%nu) / (1.0_dp - mat%nu) * mat%alpha * dt_ip
+          fg0(3, 3, ip) = exp(statev_old(nsv + nextra, ip))
+          fg1(3, 3, ip) = exp(lt1(ip))
+        end if
         j0 = det3(fg0(:, :, ip))
         j1 = det3(fg1(:, :, ip))
         if (.not. (j0 > 0.0_dp .and. j1 > 0.0_dp)) then
@@ -561,7 +586,9 @@ contains
           vol = vol + gp%wdet(ip) * merge(j1 / fg1(3, 3, ip), 1.0_dp, nlgeom) / &
             (2 * acos(-1.0_dp) * dot_product(gp%nfun(1:nnode, ip), xref(1, 1:nnode)))
         else
-          vol = vol + gp%wdet(ip) * merge(j1, 1.0_dp, nlgeom)
+          ! (plane stress: the (x, y) area, without the thickness stretch F33)
+          vol = vol + gp%wdet(ip) * merge(j1 / fg1(3, 3, ip), 1.0_dp, nlgeom .and. ndim == 2) &
+                    * merge(j1, 1.0_dp, nlgeom .and. ndim == 3)
         end if
       end do
       celent = vol**(1.0_dp / m)
@@ -720,6 +747,7 @@ contains
         end if
         if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
         if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
+        if (solid_types(it)%pstress .and. nlgeom) statev_new(nsv + nextra, ip) = lt1(ip)
         stress_new(:, ip) = stress(1:ntens)
         stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
         if (present(energy_ip_new)) then
