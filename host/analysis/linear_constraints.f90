@@ -2,7 +2,8 @@
 !> dependent (slave) dof, u_s = sum_(i>1) (-A_i / A_1) u_i, as Abaqus eliminates the first term. The slave gets no
 !> equation; an element holding slave dofs is assembled through its transformation T (u_e = T u_x), K_x = T^T K T,
 !> on an extended dof list (its own free dofs, then the masters of its slaves), and the residual of a slave is
-!> added to its masters with the same weights.
+!> added to its masters with the same weights. The dofs of a node with a *TRANSFORM are its local components
+!> (node_rotations), so an *EQUATION term there acts in the local system, as in Abaqus.
 module linear_constraints
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
@@ -157,6 +158,26 @@ contains
           snodes = [snodes, s]
         end do
       end do
+      if (allocated(model%node_transform)) then
+        ! the tie's u_s = sum N_a u_a holds between global components
+        do j = 1, size(snodes)
+          if (model%node_transform(snodes(j)) /= 0) then
+            write (b1, '(i0)') model%node_id(snodes(j))
+            call fail('slave node '//trim(b1)//' has a *TRANSFORM: ties between transformed nodes are not supported')
+            return
+          end if
+        end do
+        do j = 1, size(mn)
+          do a = 1, mn(j)
+            if (model%node_transform(mnodes(a, j)) /= 0) then
+              write (b1, '(i0)') model%node_id(mnodes(a, j))
+              call fail('master node '//trim(b1)//' has a *TRANSFORM: ties between transformed nodes are not '// &
+                'supported')
+              return
+            end if
+          end do
+        end do
+      end if
       do j = 1, size(snodes)
         s = snodes(j)
         best = 0
