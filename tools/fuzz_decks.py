@@ -37,7 +37,8 @@ KEYWORDS = ["*NODE", "*ELEMENT, TYPE=C3D8", "*NSET, NSET=A, GENERATE", "*ELSET, 
             "*SOLID SECTION", "*OUTPUT, FIELD", "*NODE PRINT", "*HEADING", "**", "*", "*,", "*STEP, INC=",
             "*INCLUDE, INPUT=/dev/zero", "*INCLUDE, INPUT=/", "*PART, NAME=P", "*END PART", "*ASSEMBLY",
             "*END ASSEMBLY", "*INSTANCE, NAME=I, PART=P", "*END INSTANCE", "*PARAMETER", "<x>", "*NGEN", "*NFILL",
-            "*NCOPY, OLD SET=A, CHANGE NUMBER=5, SHIFT", "*ELGEN", "*ORIENTATION, NAME=O", "*EL PRINT", "*MONITOR"]
+            "*NCOPY, OLD SET=A, CHANGE NUMBER=5, SHIFT", "*ELGEN", "*ORIENTATION, NAME=O", "*EL PRINT", "*MONITOR",
+            "*FIELD, VARIABLE=1", "*TRANSFORM, NSET=A", "*TRANSFORM, NSET=A, TYPE=C", "*TRANSFORM, NSET=A, TYPE=S"]
 
 
 def mutate(lines, rng):

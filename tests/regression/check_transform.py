@@ -26,7 +26,8 @@ Cases (decks written into DIR; E = 1000):
             local system (TYPE=R, turned by Q) against the same force given in global components Q F on a run
             without transform. The free tip nodes' displacements agree within 1e-8 of the largest, the loaded
             node's printed U equals Q^T times the global one, and the root reaction is -Q F (within Newton's force
-            tolerance, 1e-5). A third run ties the
+            tolerance, 1e-5). The same with a TYPE=S system (centre c, polar axis through p) against S F, S its
+            axes at the node (radial, polar angle, azimuth) computed here. A further run ties the
             loaded node's local 1 displacement to another node's global 1 by *EQUATION (local 1 - global 1 = 0)
             and requires the printed local U1 of the loaded node to equal the other node's U1.
 """
@@ -232,17 +233,31 @@ def case_cload(exe, out):
     G = mv(Q, F)
     a, b = mv(Q, [1, 0, 0]), mv(Q, [0, 1, 0])
 
+    # a TYPE=S system at the loaded node: 1 radial from the centre c, 3 along (p - c) x (x - c), 2 = 3 x 1
+    c, p = [-1.0, 0.3, -0.5], [-0.8, 1.3, -0.1]
+    x = nodes[node][1]
+    e1 = [x[k] - c[k] for k in range(3)]
+    ax = [p[k] - c[k] for k in range(3)]
+    e3 = [ax[1] * e1[2] - ax[2] * e1[1], ax[2] * e1[0] - ax[0] * e1[2], ax[0] * e1[1] - ax[1] * e1[0]]
+    e1 = [v / math.sqrt(sum(w * w for w in e1)) for v in e1]
+    e3 = [v / math.sqrt(sum(w * w for w in e3)) for v in e3]
+    e2 = [e3[1] * e1[2] - e3[2] * e1[1], e3[2] * e1[0] - e3[0] * e1[2], e3[0] * e1[1] - e3[1] * e1[0]]
+    S = [[e1[i], e2[i], e3[i]] for i in range(3)]
+
     def deck(local, equation=False):
         lines = ["*Heading", "cantilever, tip force local or global"] + mesh_lines(nodes, 2, 0.3)
         lines += ["*Nset, nset=ROOT", ", ".join(map(str, root))]
         for lab in tip:
             lines += ["*Nset, nset=N%d" % lab, str(lab)]
-        if local:
-            lines += ["*Transform, nset=N%d" % node, ", ".join("%.15g" % c for c in a + b)]
+        if local == "S":
+            lines += ["*Transform, nset=N%d, type=S" % node, ", ".join("%.15g" % v for v in c + p)]
+        elif local is True:
+            lines += ["*Transform, nset=N%d" % node, ", ".join("%.15g" % v for v in a + b)]
         if equation:
             lines += ["*Equation", "2", "%d, 1, 1., %d, 1, -1." % (node, other)]
         lines += ["*Step, nlgeom=YES", "*Static", "0.5, 1.", "*Boundary", "ROOT, 1, 3", "*Cload"]
-        lines += ["%d, %d, %.15g" % (node, k + 1, (F if local else G)[k]) for k in range(3)]
+        force = {True: F, False: G, "S": F, "SG": mv(S, F)}[local]
+        lines += ["%d, %d, %.15g" % (node, k + 1, force[k]) for k in range(3)]
         for lab in tip:
             lines += ["*Node Print, nset=N%d" % lab, "U1, U2, U3"]
         lines += ["*Node Print, nset=ROOT", "RF1, RF2, RF3", "*End Step"]
@@ -269,10 +284,20 @@ def case_cload(exe, out):
     pu = dat_u(os.path.join(out, "local", "cload.dat"), node)
     for k in range(3):
         close("JOB.dat U%d of node %d (local)" % (k + 1, node), pu[k], ul[k], 1e-3, 1e-9)
+    # TYPE=S: the force in the spherical system at the node against S F in global components
+    rs = run(exe, os.path.join(out, "spherical"), "cload", deck("S"))[-1]
+    rg = run(exe, os.path.join(out, "spherical_global"), "cload", deck("SG"))[-1]
+    ug = [rg["N%d.U%d" % (node, k + 1)] for k in range(3)]
+    ul = mtv(S, ug)
+    for k in range(3):
+        key = "N%d.U%d" % (node, k + 1)
+        close("TYPE=S loaded node local " + key, rs[key], ul[k], 0.0, 1e-8 * scale)
+        key = "N%d.U%d" % (other, k + 1)
+        close("TYPE=S free node " + key, rs[key], rg[key], 0.0, 1e-8 * scale)
     rc = run(exe, os.path.join(out, "equation"), "cload", deck(True, True))[-1]
     close("*EQUATION: local U1 of the loaded node = U1 of node %d" % other, rc["N%d.U1" % node],
           rc["N%d.U1" % other], 1e-10, 1e-14)
-    if abs(rc["N%d.U1" % node] - rc["N%d.U1" % node] * 0) < 1e-6:
+    if abs(rc["N%d.U1" % node]) < 1e-6:
         fail("*EQUATION case: no displacement")
 
 

@@ -99,3 +99,32 @@ part2d = ["*PART, NAME=SQ", "*NODE", "1, 0., 0.", "2, 1., 0.", "3, 1., 1.", "4, 
 deck("bad_instance_plane_tilt", "an instance of a plane model turned out of the x-y plane",
      part2d + mat + ["*ASSEMBLY, NAME=A", "*INSTANCE, NAME=C-1, PART=SQ", "0., 0., 0.", "0., 0., 0., 1., 0., 0., 30.",
                      "*END INSTANCE", "*END ASSEMBLY"] + step, "*INSTANCE", "*INSTANCE, NAME=C-1, PART=SQ")
+# *TRANSFORM
+deck("bad_transform_no_nset", "*TRANSFORM without NSET",
+     flat + ["*TRANSFORM", "1., 0., 0., 0., 1., 0."] + mat + fstep, "*TRANSFORM", "*TRANSFORM")
+deck("bad_transform_type", "*TRANSFORM of an unknown TYPE",
+     flat + ["*TRANSFORM, NSET=BOTTOM, TYPE=X", "1., 0., 0., 0., 1., 0."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=BOTTOM, TYPE=X")
+deck("bad_transform_set", "*TRANSFORM of an undefined node set",
+     flat + ["*TRANSFORM, NSET=NOSUCH", "1., 0., 0., 0., 1., 0."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=NOSUCH")
+deck("bad_transform_fields", "*TRANSFORM with five coordinates",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1."] + mat + fstep, "*TRANSFORM", "1., 0., 0., 0., 1.")
+deck("bad_transform_parallel", "*TRANSFORM, TYPE=R with a and b parallel",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 1., 0., 2., 2., 0."] + mat + fstep, "*TRANSFORM", "1., 1., 0., 2., 2., 0.")
+deck("bad_transform_points", "*TRANSFORM, TYPE=C with coinciding axis points",
+     flat + ["*TRANSFORM, NSET=BOTTOM, TYPE=C", "0., 0., 1., 0., 0., 1."] + mat + fstep, "*TRANSFORM",
+     "0., 0., 1., 0., 0., 1.")
+deck("bad_transform_twice", "a node in two *TRANSFORM sets",
+     flat + ["*NSET, NSET=CORNER", "1", "*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1., 0.",
+             "*TRANSFORM, NSET=CORNER, TYPE=C", "5., 5., 0., 5., 5., 1."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=CORNER, TYPE=C")
+deck("bad_transform_axis", "*TRANSFORM, TYPE=C with a node on the axis",
+     flat + ["*TRANSFORM, NSET=BOTTOM, TYPE=C", "0., 0., 0., 0., 0., 1."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=BOTTOM, TYPE=C")
+deck("bad_transform_in_step", "*TRANSFORM inside a step",
+     flat + mat + ["*STEP", "*STATIC", "1., 1.", "*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1., 0.",
+                   "*BOUNDARY", "BOTTOM, ENCASTRE", "*END STEP"], "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
+deck("bad_transform_lines", "*TRANSFORM with two data lines",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1., 0.", "0., 0., 1., 0., 1., 0."] + mat + fstep,
+     "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
