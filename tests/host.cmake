@@ -1,6 +1,7 @@
 # Suites and deck regression tests of the host (host/deck, host/analysis, the program ldfcz).
 if(TARGET ldfcz_deck)
   ldfcz_add_pf_suite(NAME test_deck_reader PF test_deck_reader.pf LINK ldfcz_deck)
+  ldfcz_add_pf_suite(NAME test_deck_generate PF test_deck_generate.pf LINK ldfcz_deck)
 endif()
 if(TARGET ldfcz_control)
   ldfcz_add_pf_suite(NAME test_step_control PF test_step_control.pf LINK ldfcz_control)

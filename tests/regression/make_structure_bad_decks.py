@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the malformed decks of the model-structure, *PARAMETER and mesh-generation keywords into decks/bad/
-(parts, assemblies, instances, qualified names, *PARAMETER, *NGEN, *NFILL, *NCOPY, *ELGEN), each with one defect.
+(parts, assemblies, instances, qualified names, *PARAMETER, *NGEN, *NFILL, *NCOPY, *ELGEN, *SYSTEM, *ORIENTATION,
+*TRANSFORM), each with one defect.
 
 Each deck's first line is `** EXPECT line=N keyword=*KW` (check_run.py --bad reads it). Run from anywhere:
 python3 tests/regression/make_structure_bad_decks.py
@@ -70,9 +71,28 @@ deck("bad_ngen_undefined_end", "*NGEN from a node not defined before",
      flat + ["*NGEN", "1, 30, 1"] + mat + fstep, "*NGEN", "1, 30, 1")
 deck("bad_nfill_sizes", "*NFILL between node sets of different sizes",
      flat + ["*NSET, NSET=TOP", "5, 6, 7", "*NFILL", "BOTTOM, TOP, 2, 10"] + mat + fstep, "*NFILL", "BOTTOM, TOP, 2, 10")
-deck("bad_ncopy_reflect", "*NCOPY with REFLECT",
-     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=LINE"] + mat + fstep, "*NCOPY",
-     "*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=LINE")
+deck("bad_ncopy_pole", "*NCOPY with POLE (not supported)",
+     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, POLE"] + mat + fstep, "*NCOPY",
+     "*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, POLE")
+deck("bad_ncopy_reflect_line", "*NCOPY, REFLECT=LINE through two coinciding points",
+     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=LINE", "1., 1., 1., 1., 1., 1."] + mat + fstep,
+     "*NCOPY", "1., 1., 1., 1., 1., 1.")
+deck("bad_ncopy_reflect_fields", "*NCOPY, REFLECT=MIRROR with six coordinates",
+     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=MIRROR", "0., 0., 0., 1., 0., 0."] + mat + fstep,
+     "*NCOPY", "0., 0., 0., 1., 0., 0.")
+deck("bad_ngen_arc_half", "*NGEN, LINE=C over 180 degrees without a normal",
+     flat + ["*NODE", "20, 2., 0., 0.", "24, -2., 0., 0.", "30, 0., 0., 0.", "*NGEN, LINE=C", "20, 24, 1, 30"]
+     + mat + fstep, "*NGEN", "20, 24, 1, 30")
+deck("bad_ngen_line", "*NGEN with an unknown LINE",
+     flat + ["*NGEN, LINE=S", "1, 2, 1"] + mat + fstep, "*NGEN", "*NGEN, LINE=S")
+deck("bad_nfill_bias", "*NFILL with a negative BIAS",
+     flat + ["*NSET, NSET=TOP", "5, 6, 7, 8", "*NFILL, BIAS=-2.", "BOTTOM, TOP, 2, 10"] + mat + fstep, "*NFILL",
+     "*NFILL, BIAS=-2.")
+deck("bad_system_fields", "*SYSTEM with a and b but no c",
+     ["*SYSTEM", "0., 0., 0., 1., 0., 0."] + flat + mat + fstep, "*SYSTEM", "0., 0., 0., 1., 0., 0.")
+deck("bad_system_in_step", "*SYSTEM inside a step",
+     flat + mat + ["*STEP", "*STATIC", "1., 1.", "*SYSTEM", "*BOUNDARY", "BOTTOM, ENCASTRE", "*END STEP"], "*SYSTEM",
+     "*SYSTEM")
 deck("bad_elgen_master", "*ELGEN of an undefined master element",
      flat + ["*ELGEN, ELSET=ALL", "7, 2, 4, 1"] + mat + fstep, "*ELGEN", "7, 2, 4, 1")
 ori_flat = flat[:-1]
