@@ -287,3 +287,8 @@ foreach(case roller roller_nlgeom cylinder cload)
     --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/transform_${case} --case ${case})
   set_tests_properties(deck_transform_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
+# *BOUNDARY, USER: prescribed values from the user subroutine DISP (--user), every argument against the documented
+# values and the response against the closed form (tests/regression/check_boundary_user.py)
+add_test(NAME deck_boundary_user COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_boundary_user.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/boundary_user --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_disp.f)
+set_tests_properties(deck_boundary_user PROPERTIES LABELS "deck" TIMEOUT 300)

@@ -164,6 +164,7 @@ module model_types
     real(dp) :: value = 0.0_dp             !< magnitude
     integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
     logical :: velocity = .false.          !< TYPE=VELOCITY: value is a velocity (increment = v dt)
+    logical :: user = .false.              !< USER: the value is what the user subroutine DISP returns
     type(source_pos_t) :: pos
   end type boundary_t
 

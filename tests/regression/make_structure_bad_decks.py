@@ -148,3 +148,5 @@ deck("bad_transform_in_step", "*TRANSFORM inside a step",
 deck("bad_transform_lines", "*TRANSFORM with two data lines",
      flat + ["*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1., 0.", "0., 0., 1., 0., 1., 0."] + mat + fstep,
      "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
+deck("bad_boundary_user_model", "*BOUNDARY, USER in model data",
+     flat + mat + ["*BOUNDARY, USER", "BOTTOM, 3, 3, 0.1"] + fstep, "*BOUNDARY", "*BOUNDARY, USER")
