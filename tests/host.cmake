@@ -282,7 +282,7 @@ endforeach()
 # *TRANSFORM: boundary conditions, concentrated loads, *EQUATION terms and printed nodal output in local node systems
 # (a skewed roller, a cylinder with a prescribed radial displacement against Lame, a local CLOAD against the rotated
 # global one) (tests/regression/check_transform.py)
-foreach(case roller roller_nlgeom cylinder cload)
+foreach(case roller roller_nlgeom instance cylinder cload)
   add_test(NAME deck_transform_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_transform.py
     --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/transform_${case} --case ${case})
   set_tests_properties(deck_transform_${case} PROPERTIES LABELS "deck" TIMEOUT 300)

@@ -16,12 +16,16 @@ Cases (decks written into DIR; E = 1000):
             the unturned block without transform within 1e-9 (transformed directions are fixed in space, so the
             turned problem is the same problem), and near E ln(1 + d/L) A (2e-3: the hypoelastic material's
             midpoint strain increments approximate the logarithmic strain to O(increment^2)).
+  instance  the roller block as a *PART holding its *TRANSFORM (local x = part x), instanced translated and turned
+            by 35 degrees about (1, 2, 3): the transform turns with the instance, the step-1 closed form holds.
   cylinder  a quarter of a thick cylinder (a = 1, b = 2), CPE4 8 x 24, plane strain, nu = 0.3: the inner nodes carry a
             TYPE=C transform and a prescribed radial displacement u_a = 0.01 (local 1) with local 2 = 0; the outer
             nodes another TYPE=C transform (no boundary at the inner ones); the symmetry edges global (and local 2 at
             the outer corners). Lame's plane-strain solution with a traction-free outer surface: the outer radial
             displacement (OUTER.U1, local) within 0.3 %, the tangential one (OUTER.U2) below 1e-9 u_a, the inner
-            radial reaction (INNER.RF1, summed) against -sigma_r(a) a pi/2 within 0.5 % (straight-edged elements).
+            radial reaction (INNER.RF1, summed) against -sigma_r(a) a pi/2 within 0.5 % (straight-edged elements). The
+            VTU frame stays global: U of every outer node is OUTER.U1 times (cos, sin), RF of every inner node
+            but the two on the symmetry planes radial (1e-6).
   cload     a 2 x 1 x 1 C3D8 cantilever under NLGEOM with a concentrated force at a tip node: given in the node's
             local system (TYPE=R, turned by Q) against the same force given in global components Q F on a run
             without transform. The free tip nodes' displacements agree within 1e-8 of the largest, the loaded
@@ -166,6 +170,41 @@ def case_roller(exe, out, nlgeom):
         fail("expected %d increments, got %d" % (4 * len(steps), len(rows)))
 
 
+def case_instance(exe, out):
+    """The roller block as a part holding its *TRANSFORM (local x = part x), instanced translated by (1, 2, 3) and
+    turned by 35 degrees about the axis through the origin along (1, 2, 3): the transform turns with the instance
+    (Abaqus: a part-level transformation is rotated with the part's positioning data), so the local results are the
+    unturned closed form."""
+    L, nu, d = 2.0, 0.3, 0.01
+    nodes = block_nodes(2, L, None)
+    roll = sorted(l for l, (xi, _) in nodes.items() if xi[0] == 0.0)
+    end = sorted(l for l, (xi, _) in nodes.items() if xi[0] == L)
+    origin = [l for l in roll if nodes[l][0] == (0.0, 0.0, 0.0)][0]
+    side = [l for l in roll if nodes[l][0] == (0.0, 1.0, 0.0)][0]
+    mesh = mesh_lines(nodes, 2, nu)
+    mat = mesh[mesh.index("*Material, name=M"):]
+    part = mesh[:mesh.index("*Material, name=M")]
+    lines = ["*Heading", "skewed roller in a part instance (tests/regression/check_transform.py)", "*Part, name=BLOCK"]
+    lines += part + ["*Nset, nset=ROLL", ", ".join(map(str, roll)), "*Nset, nset=END", ", ".join(map(str, end)),
+                     "*Nset, nset=TR", "ROLL, END", "*Transform, nset=TR", "1., 0., 0., 0., 1., 0.", "*End Part"]
+    lines += ["*Assembly, name=A", "*Instance, name=B-1, part=BLOCK", "1., 2., 3.", "0., 0., 0., 1., 2., 3., 35.",
+              "*End Instance", "*End Assembly"] + mat
+    lines += ["*Step", "*Static", "0.5, 1.", "*Boundary", "B-1.ROLL, 1, 1", "B-1.%d, 2, 3" % origin,
+              "B-1.%d, 3, 3" % side, "B-1.END, 1, 1, %g" % d, "*Node Print, nset=B-1.END", "U1, U2, U3, RF1",
+              "*End Step"]
+    rows = run(exe, out, "instance", lines)
+    for r in rows:
+        t = r["step_time"]
+        dd = d * t
+        tag = "instance t %.2f" % t
+        close(tag + " END.RF1", r["B-1.END.RF1"], E * dd / L, 1e-9, 1e-12)
+        close(tag + " END.U1", r["B-1.END.U1"], dd, 1e-9, 1e-14)
+        close(tag + " END.U2", r["B-1.END.U2"], -nu * dd / L / 2, 1e-9, 1e-14)
+        close(tag + " END.U3", r["B-1.END.U3"], -nu * dd / L / 2, 1e-9, 1e-14)
+    if len(rows) != 2:
+        fail("expected 2 increments, got %d" % len(rows))
+
+
 def case_cylinder(exe, out):
     a, b, nr, nt, nu, ua = 1.0, 2.0, 8, 24, 0.3, 0.01
     lab = lambda i, j: 1 + i + (nr + 1) * j
@@ -193,7 +232,7 @@ def case_cylinder(exe, out):
               "*Transform, nset=OUTER, type=C", "0., 0., -1., 0., 0., 3."]
     lines += ["*Step", "*Static", "1., 1.", "*Boundary", "INNER, 1, 1, %g" % ua, "INNER, 2, 2", "EDGE0, 2, 2",
               "EDGE90, 1, 1", "OCORNER, 2, 2", "*Node Print, nset=OUTER", "U1, U2", "*Node Print, nset=INNER", "RF1",
-              "*End Step"]
+              "*Output, field", "*End Step"]
     rows = run(exe, out, "cylinder", lines)
     lam = E * nu / ((1 + nu) * (1 - 2 * nu))
     mu = E / (2 * (1 + nu))
@@ -205,6 +244,33 @@ def case_cylinder(exe, out):
     close("OUTER.U1 (radial, mean)", r["OUTER.U1"], ub, 3e-3)
     close("OUTER.U2 (tangential, mean)", r["OUTER.U2"], 0.0, 0.0, 1e-9 * ua)
     close("INNER.RF1 (radial reaction, sum)", r["INNER.RF1"], -sr_a * a * math.pi / 2, 5e-3)
+    # the VTU frame stays global: U of each outer node = its radial displacement along (cos, sin), RF of each inner
+    # node radial; the point order is the deck's node order (j outer, i inner)
+    u, rf = last_frame(out, "cylinder")
+    worst_u = worst_rf = 0.0
+    for j in range(nt + 1):
+        th = 0.5 * math.pi * j / nt
+        e = (math.cos(th), math.sin(th))
+        po, pi_ = lab(nr, j) - 1, lab(0, j) - 1
+        worst_u = max(worst_u, abs(u[po][0] - r["OUTER.U1"] * e[0]), abs(u[po][1] - r["OUTER.U1"] * e[1]))
+        if 0 < j < nt:  # (the corner nodes carry the symmetry planes' tangential reaction too)
+            worst_rf = max(worst_rf, abs(rf[pi_][0] * e[1] - rf[pi_][1] * e[0]))
+    close("VTU U of the outer nodes = U1 (r, theta)", worst_u, 0.0, 0.0, 1e-6 * ua)
+    close("VTU RF of the inner nodes radial (cross product)", worst_rf, 0.0, 0.0, 1e-6 * abs(r["INNER.RF1"]))
+
+
+def last_frame(out, job):
+    """Point arrays U and RF of the last VTU frame of JOB.pvd."""
+    import xml.etree.ElementTree as ET
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    pvd = ET.parse(os.path.join(out, job + ".pvd")).getroot()
+    path = [d.get("file") for d in pvd.iter("DataSet")][-1]
+    rd = vtkXMLUnstructuredGridReader()
+    rd.SetFileName(os.path.join(out, path))
+    rd.Update()
+    pd = rd.GetOutput().GetPointData()
+    return vtk_to_numpy(pd.GetArray("U")), vtk_to_numpy(pd.GetArray("RF"))
 
 
 def dat_u(path, label):
@@ -305,7 +371,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
-    ap.add_argument("--case", required=True, choices=["roller", "roller_nlgeom", "cylinder", "cload"])
+    ap.add_argument("--case", required=True, choices=["roller", "roller_nlgeom", "instance", "cylinder", "cload"])
     o = ap.parse_args()
     exe = os.path.abspath(o.exe)
     out = os.path.abspath(o.out)
@@ -314,6 +380,8 @@ def main():
         case_roller(exe, out, False)
     elif o.case == "roller_nlgeom":
         case_roller(exe, out, True)
+    elif o.case == "instance":
+        case_instance(exe, out)
     elif o.case == "cylinder":
         case_cylinder(exe, out)
     else:

@@ -150,3 +150,7 @@ deck("bad_transform_lines", "*TRANSFORM with two data lines",
      "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
 deck("bad_boundary_user_model", "*BOUNDARY, USER in model data",
      flat + mat + ["*BOUNDARY, USER", "BOTTOM, 3, 3, 0.1"] + fstep, "*BOUNDARY", "*BOUNDARY, USER")
+deck("bad_transform_plane", "a *TRANSFORM of a plane model whose local 3 is not global Z",
+     ["*NODE", "1, 0., 0.", "2, 1., 0.", "3, 1., 1.", "4, 0., 1.", "*ELEMENT, TYPE=CPE4, ELSET=ALL", "1, 1, 2, 3, 4",
+      "*NSET, NSET=BOTTOM", "1, 2", "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL",
+      "*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 0., 1."] + mat + fstep, "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
