@@ -69,6 +69,15 @@ contains
             call fail('the first coefficient (of the eliminated dof) is zero')
             return
           end if
+          if (eqn%mpc .and. allocated(model%node_transform)) then
+            ! an MPC ties global components; with a node's *TRANSFORM its dofs would be local ones
+            if (any([(model%node_transform(eqn%terms(t)%nodes(c)) /= 0, t = 1, size(eqn%terms))])) then
+              stat = 2
+              errmsg = eqn%pos%file//':'//trim(b)//': *MPC: a node of the constraint has a *TRANSFORM: MPCs on '// &
+                'transformed nodes are not supported'
+              return
+            end if
+          end if
           do t = 2, size(eqn%terms)
             i = cs%ptr(nc + 1)
             cs%mdof(i) = dof_of(eqn%terms(t)%nodes(c), eqn%terms(t)%dof)

@@ -9,8 +9,8 @@ module node_rotations
   use model_types, only: model_t, etype_user, orientation_axes, model_label_text
   implicit none
   private
-  public :: node_rotation_t, node_rotations_build, rotations_to_global, rotations_to_local, &
-    element_to_global, element_to_local, element_matrix_to_local, node_vector_global
+  public :: node_rotation_t, node_rotations_build, element_to_global, element_to_local, element_matrix_to_local, &
+    node_vector_global
 
   type :: node_rotation_t
     integer :: n = 0                         !< transformed nodes
@@ -75,32 +75,6 @@ contains
       return
     end do
   end subroutine node_rotations_build
-
-  !> v (ndof, system components) -> global components at the transformed nodes.
-  pure subroutine rotations_to_global(nr, v)
-    type(node_rotation_t), intent(in) :: nr  !< rotations
-    real(dp), intent(inout) :: v(:)          !< (ndof) vector
-    integer :: i, d, k
-    d = nr%ndim
-    do i = 1, size(nr%of_node)
-      k = nr%of_node(i)
-      if (k == 0) cycle
-      v((i - 1) * d + 1:i * d) = matmul(nr%t(1:d, 1:d, k), v((i - 1) * d + 1:i * d))
-    end do
-  end subroutine rotations_to_global
-
-  !> v (ndof, global components) -> system components (local at the transformed nodes).
-  pure subroutine rotations_to_local(nr, v)
-    type(node_rotation_t), intent(in) :: nr  !< rotations
-    real(dp), intent(inout) :: v(:)          !< (ndof) vector
-    integer :: i, d, k
-    d = nr%ndim
-    do i = 1, size(nr%of_node)
-      k = nr%of_node(i)
-      if (k == 0) cycle
-      v((i - 1) * d + 1:i * d) = matmul(v((i - 1) * d + 1:i * d), nr%t(1:d, 1:d, k))
-    end do
-  end subroutine rotations_to_local
 
   !> Global components of node i's vector in v (ndof, system components).
   pure function node_vector_global(nr, v, i) result(w)

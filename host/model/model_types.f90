@@ -202,6 +202,7 @@ module model_types
   !> One *EQUATION: terms (node list, dof, coefficient in value); node sets expand into one equation per member.
   type :: equation_t
     type(cload_t), allocatable :: terms(:)
+    logical :: mpc = .false.               !< written by *MPC (TIE): global components, not a node's *TRANSFORM
     type(source_pos_t) :: pos
   end type equation_t
 

@@ -154,3 +154,6 @@ deck("bad_transform_plane", "a *TRANSFORM of a plane model whose local 3 is not 
      ["*NODE", "1, 0., 0.", "2, 1., 0.", "3, 1., 1.", "4, 0., 1.", "*ELEMENT, TYPE=CPE4, ELSET=ALL", "1, 1, 2, 3, 4",
       "*NSET, NSET=BOTTOM", "1, 2", "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL",
       "*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 0., 1."] + mat + fstep, "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
+deck("bad_transform_mpc", "an *MPC tie on a node with a *TRANSFORM",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 1., 0., -1., 1., 0.", "*MPC", "TIE, 5, 1"] + mat + fstep, "*MPC",
+     "TIE, 5, 1")
