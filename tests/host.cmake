@@ -1,6 +1,7 @@
 # Suites and deck regression tests of the host (host/deck, host/analysis, the program ldfcz).
 if(TARGET ldfcz_deck)
   ldfcz_add_pf_suite(NAME test_deck_reader PF test_deck_reader.pf LINK ldfcz_deck)
+  ldfcz_add_pf_suite(NAME test_deck_generate PF test_deck_generate.pf LINK ldfcz_deck)
 endif()
 if(TARGET ldfcz_control)
   ldfcz_add_pf_suite(NAME test_step_control PF test_step_control.pf LINK ldfcz_control)
@@ -290,3 +291,16 @@ foreach(case small nlgeom rigid instance)
     --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_ortho.f90)
   set_tests_properties(deck_orientation_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
+# *TRANSFORM: boundary conditions, concentrated loads, *EQUATION terms and printed nodal output in local node systems
+# (a skewed roller, a cylinder with a prescribed radial displacement against Lame, a local CLOAD against the rotated
+# global one) (tests/regression/check_transform.py)
+foreach(case roller roller_nlgeom instance cylinder cload)
+  add_test(NAME deck_transform_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_transform.py
+    --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/transform_${case} --case ${case})
+  set_tests_properties(deck_transform_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+# *BOUNDARY, USER: prescribed values from the user subroutine DISP (--user), every argument against the documented
+# values and the response against the closed form (tests/regression/check_boundary_user.py)
+add_test(NAME deck_boundary_user COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_boundary_user.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/boundary_user --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_disp.f)
+set_tests_properties(deck_boundary_user PROPERTIES LABELS "deck" TIMEOUT 300)

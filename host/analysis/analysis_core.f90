@@ -19,6 +19,8 @@ module analysis_core
     parallel_lowest
   use element_partition, only: partition_elements
   use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
+  use node_rotations, only: node_rotation_t, node_rotations_build, element_to_global, element_to_local, &
+    element_matrix_to_local
   implicit none
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
@@ -73,6 +75,8 @@ module analysis_core
     real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
     type(dload_state_t) :: dl                   !< distributed loads of the current step (distributed_loads)
     type(constraint_set_t) :: cs                !< *EQUATION constraints (linear_constraints), eliminated
+    type(node_rotation_t) :: nr                 !< *TRANSFORM local node systems (node_rotations): u, u_conv, fint,
+                                                !< fext, fdl and the system are in their components at those nodes
     real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
     type(sparse_system_t) :: sys                !< sparse tangent
     logical :: sys_ready = .false.
@@ -252,6 +256,8 @@ contains
     call apply_initial_conditions(an, model, stat, errmsg)
     if (stat /= 0) return
     call partition(an, model, stat, errmsg)
+    if (stat /= 0) return
+    call node_rotations_build(an%nr, model, stat, errmsg)
     if (stat /= 0) return
     call constraints_build(an%cs, model, an%used, stat, errmsg)
     if (stat /= 0) return
@@ -514,6 +520,11 @@ contains
     nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
     ue = an%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
     due(:, 1) = ue - an%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    if (an%nr%elem_has(ie)) then
+      ! *TRANSFORM: the element works in global components
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ue)
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(:, 1))
+    end if
     if (model%elem_kind(ie) == etype_user) then
       iu = model%elem_utype(ie)
       mcrd = model%utypes(iu)%mcrd
@@ -610,6 +621,15 @@ contains
         an%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
         if (want_k) ke = ke + kl
       end if
+    end if
+    if (an%nr%elem_has(ie)) then
+      ! back to the system components of the transformed nodes (T_e^T f, T_e^T K T_e)
+      associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
+        call element_to_local(an%nr, nodes, fel)
+        if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
+          an%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+        if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
+      end associate
     end if
 
   contains

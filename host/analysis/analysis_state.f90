@@ -34,6 +34,7 @@ module analysis_state
     integer, allocatable :: bc_amp(:)     !< (ndof) amplitude of the prescribed value (0: step ramp)
     logical, allocatable :: bc_vel(:)     !< (ndof) the prescribed value is a velocity (*BOUNDARY, TYPE=VELOCITY)
     real(dp), allocatable :: bc_rate(:)   !< (ndof) that velocity in the last converged increment (next step's)
+    logical, allocatable :: bc_user(:)    !< (ndof) the value comes from the user subroutine DISP (*BOUNDARY, USER)
   end type analysis_state_t
 
 contains
@@ -43,8 +44,10 @@ contains
     type(analysis_state_t), intent(out) :: s  !< state
     integer, intent(in) :: ndof               !< dofs of the model
     allocate (s%u_start(ndof), s%rf_old(ndof), s%du_prev(ndof), s%fext_old(ndof), s%fcl_old(ndof), &
-      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), s%bc_vel(ndof), s%bc_rate(ndof))
+      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), s%bc_vel(ndof), s%bc_rate(ndof), &
+      s%bc_user(ndof))
     s%bc_vel = .false.
+    s%bc_user = .false.
     s%bc_rate = 0.0_dp
     s%u_start = 0.0_dp
     s%rf_old = 0.0_dp
@@ -70,7 +73,8 @@ contains
       s%sc%total_cutbacks
     if (ios == 0) write (u, iostat=ios, iomsg=iomsg) size(s%u_start)
     if (ios == 0) write (u, iostat=ios, iomsg=iomsg) s%u_start, s%rf_old, s%du_prev, s%fext_old, s%fcl_old, &
-      s%bc_val, merge(1, 0, s%bc_on), merge(1, 0, s%bc_init), s%bc_amp, merge(1, 0, s%bc_vel), s%bc_rate
+      s%bc_val, merge(1, 0, s%bc_on), merge(1, 0, s%bc_init), s%bc_amp, merge(1, 0, s%bc_vel), s%bc_rate, &
+      merge(1, 0, s%bc_user)
   end subroutine analysis_state_write
 
   !> Read a state written by analysis_state_write for ndof dofs (ios = -2: another number of dofs).
@@ -80,7 +84,7 @@ contains
     type(analysis_state_t), intent(out) :: s    !< state read
     integer, intent(out) :: ios                 !< iostat (-2: the dofs differ)
     integer :: idirect, n
-    integer, allocatable :: ion(:), iinit(:), ivel(:)
+    integer, allocatable :: ion(:), iinit(:), ivel(:), iuser(:)
     read (u, iostat=ios) s%step, s%kinc, s%kinc_total, s%csv_rows, s%last_frame_inc, s%reuse_count, &
       s%t_total0, s%q_sum, s%next_mark, s%dt_prev
     if (ios == 0) read (u, iostat=ios) s%sc%period, s%sc%dt_min, s%sc%dt_max, idirect, s%sc%easy_iterations, &
@@ -95,12 +99,13 @@ contains
     end if
     allocate (s%u_start(ndof), s%rf_old(ndof), s%du_prev(ndof), s%fext_old(ndof), s%fcl_old(ndof), &
       s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), s%bc_vel(ndof), s%bc_rate(ndof), ion(ndof), &
-      iinit(ndof), ivel(ndof))
+      iinit(ndof), ivel(ndof), s%bc_user(ndof), iuser(ndof))
     read (u, iostat=ios) s%u_start, s%rf_old, s%du_prev, s%fext_old, s%fcl_old, s%bc_val, ion, iinit, s%bc_amp, &
-      ivel, s%bc_rate
+      ivel, s%bc_rate, iuser
     s%bc_on = ion == 1
     s%bc_init = iinit == 1
     s%bc_vel = ivel == 1
+    s%bc_user = iuser == 1
   end subroutine analysis_state_read
 
 end module analysis_state

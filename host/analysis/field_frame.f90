@@ -8,6 +8,7 @@ module field_frame
     etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
+  use node_rotations, only: node_vector_global
   use output_files, only: output_t, output_vtu_frame, output_vtu_t
   implicit none
   private
@@ -25,9 +26,10 @@ contains
     real(dp), intent(in) :: ttot                   !< total time of the frame
     type(step_t), intent(in) :: step               !< the step whose field request applies
     type(output_vtu_t) :: fr
-    integer :: ie, nn, k, ncell, nip, ip, nsv, h, nt, i, c
+    integer :: ie, nn, k, ncell, nip, ip, nsv, nt, c
     integer, allocatable :: cells(:)
     real(dp) :: s(6), e(6), p(3)
+    real(dp), allocatable :: rf(:)
     logical :: want_strain
     ! the cells of this process's elements (every element in a one-process run): an MPI run writes one piece per
     ! process and rank 0 the .pvtu listing them (output_vtu_frame)
@@ -37,13 +39,12 @@ contains
     fr%x = model%x
     fr%u = 0.0_dp
     fr%rf = 0.0_dp
+    ! reaction = internal minus applied (concentrated and distributed) force on a prescribed dof
+    rf = merge(an%fint - an%fext - an%fdl, 0.0_dp, an%prescribed)
     do k = 1, model%nnode
-      fr%u(1:model%ndim, k) = an%u_conv((k - 1) * model%ndim + 1:k * model%ndim)
-      do h = 1, model%ndim
-        i = (k - 1) * model%ndim + h
-        ! reaction = internal minus applied (concentrated and distributed) force on a prescribed dof
-        if (an%prescribed(i)) fr%rf(h, k) = an%fint(i) - an%fext(i) - an%fdl(i)
-      end do
+      ! global components also at *TRANSFORM nodes (the frames show the deformed shape)
+      fr%u(1:model%ndim, k) = node_vector_global(an%nr, an%u_conv, k)
+      fr%rf(1:model%ndim, k) = node_vector_global(an%nr, rf, k)
     end do
     allocate (fr%cell_type(ncell), fr%cell_ptr(ncell + 1), fr%cell_id(ncell))
     fr%cell_ptr(1) = 1
@@ -184,7 +185,7 @@ contains
     type(analysis_t), intent(in) :: an     !< converged state
     integer, intent(in) :: ie, nn          !< element index and node count
     real(dp), intent(out) :: op(3)         !< mean opening
-    integer :: k, nb, nt, d
+    integer :: k, nb, nt
     op = 0.0_dp
     do k = 1, nn / 2
       nb = model%conn(model%conn_ptr(ie) + k - 1)
@@ -193,9 +194,8 @@ contains
       else
         nt = model%conn(model%conn_ptr(ie) + 4 - k)
       end if
-      do d = 1, model%ndim
-        op(d) = op(d) + (an%u_conv((nt - 1) * model%ndim + d) - an%u_conv((nb - 1) * model%ndim + d)) / (nn / 2)
-      end do
+      op(1:model%ndim) = op(1:model%ndim) + (node_vector_global(an%nr, an%u_conv, nt) - &
+        node_vector_global(an%nr, an%u_conv, nb)) / (nn / 2)
     end do
   end subroutine cell_opening
 

@@ -2,7 +2,8 @@
 !> dependent (slave) dof, u_s = sum_(i>1) (-A_i / A_1) u_i, as Abaqus eliminates the first term. The slave gets no
 !> equation; an element holding slave dofs is assembled through its transformation T (u_e = T u_x), K_x = T^T K T,
 !> on an extended dof list (its own free dofs, then the masters of its slaves), and the residual of a slave is
-!> added to its masters with the same weights.
+!> added to its masters with the same weights. The dofs of a node with a *TRANSFORM are its local components
+!> (node_rotations), so an *EQUATION term there acts in the local system, as in Abaqus.
 module linear_constraints
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
@@ -67,6 +68,15 @@ contains
           if (eqn%terms(1)%value == 0.0_dp) then
             call fail('the first coefficient (of the eliminated dof) is zero')
             return
+          end if
+          if (eqn%mpc .and. allocated(model%node_transform)) then
+            ! an MPC ties global components; with a node's *TRANSFORM its dofs would be local ones
+            if (any([(model%node_transform(eqn%terms(t)%nodes(c)) /= 0, t = 1, size(eqn%terms))])) then
+              stat = 2
+              errmsg = eqn%pos%file//':'//trim(b)//': *MPC: a node of the constraint has a *TRANSFORM: MPCs on '// &
+                'transformed nodes are not supported'
+              return
+            end if
           end if
           do t = 2, size(eqn%terms)
             i = cs%ptr(nc + 1)
@@ -157,6 +167,26 @@ contains
           snodes = [snodes, s]
         end do
       end do
+      if (allocated(model%node_transform)) then
+        ! the tie's u_s = sum N_a u_a holds between global components
+        do j = 1, size(snodes)
+          if (model%node_transform(snodes(j)) /= 0) then
+            write (b1, '(i0)') model%node_id(snodes(j))
+            call fail('slave node '//trim(b1)//' has a *TRANSFORM: ties between transformed nodes are not supported')
+            return
+          end if
+        end do
+        do j = 1, size(mn)
+          do a = 1, mn(j)
+            if (model%node_transform(mnodes(a, j)) /= 0) then
+              write (b1, '(i0)') model%node_id(mnodes(a, j))
+              call fail('master node '//trim(b1)//' has a *TRANSFORM: ties between transformed nodes are not '// &
+                'supported')
+              return
+            end if
+          end do
+        end do
+      end if
       do j = 1, size(snodes)
         s = snodes(j)
         best = 0

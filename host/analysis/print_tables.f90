@@ -7,6 +7,7 @@ module print_tables
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user, etype_c3d8, etype_cpe4
   use analysis_core, only: analysis_t
+  use node_rotations, only: node_vector_global
   use stress_measures, only: mises_stress
   use solid_element, only: polar_rotation
   implicit none
@@ -253,7 +254,7 @@ contains
     type(analysis_t), intent(in) :: an      !< converged state
     integer, intent(in) :: ie               !< element
     integer, intent(in) :: ip               !< integration point
-    real(dp) :: f(3, 3)
+    real(dp) :: f(3, 3), ug(model%ndim)
     integer :: a, i, j, node
     f = 0.0_dp
     do i = 1, 3
@@ -262,9 +263,10 @@ contains
     associate (g => an%geo(an%elem_geo(ie)))
       do a = 1, model%conn_ptr(ie + 1) - model%conn_ptr(ie)
         node = model%conn(model%conn_ptr(ie) + a - 1)
+        ug = node_vector_global(an%nr, an%u_conv, node)
         do j = 1, model%ndim
           do i = 1, model%ndim
-            f(i, j) = f(i, j) + an%u_conv((node - 1) * model%ndim + i) * g%dndx_ref(a, j, ip)
+            f(i, j) = f(i, j) + ug(i) * g%dndx_ref(a, j, ip)
           end do
         end do
       end do

@@ -72,6 +72,14 @@ contains
       if (allocated(model%elem_section)) call hia(model%elem_section)
       if (allocated(model%elem_uelprop)) call hia(model%elem_uelprop)
       if (allocated(model%elem_utype)) call hia(model%elem_utype(1:model%nelem))
+      ! *TRANSFORM: the solution vector holds local components at those nodes
+      if (allocated(model%node_transform)) then
+        if (any(model%node_transform /= 0)) call hia(model%node_transform)
+        do k = 1, model%ntransform
+          call hra([model%transforms(k)%axes%a, model%transforms(k)%axes%b, model%transforms(k)%axes%c])
+          call hi(model%transforms(k)%axes%system)
+        end do
+      end if
     end if
     do k = 1, model%nsection
       call hr(model%sections(k)%thickness)

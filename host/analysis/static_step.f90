@@ -8,6 +8,7 @@ module static_step
   use step_loads, only: load_state_t, load_state_init, load_step_begin, load_vector
   use distributed_loads, only: dload_step_begin
   use linear_constraints, only: constraints_apply
+  use node_rotations, only: node_vector_global
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
   use step_control, only: step_control_t, step_control_init, step_control_cutback, step_control_converged, &
     step_control_done, step_control_dt, step_control_accuracy, step_control_exhausted, max_cutbacks
@@ -112,6 +113,20 @@ contains
       if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
+    end if
+    if (.not. associated(routines%disp)) then
+      ! *BOUNDARY, USER needs the user subroutine DISP
+      do i = 1, model%nstep
+        do k = 1, model%steps(i)%nbc
+          if (.not. model%steps(i)%bcs(k)%user) cycle
+          errmsg = model%steps(i)%bcs(k)%pos%file//':'//itoa(model%steps(i)%bcs(k)%pos%line)//': *BOUNDARY: '// &
+            'USER needs the user subroutine DISP: give a file defining it with --user FILE'
+          call output_log(out, 'ldfcz: error: '//errmsg)
+          if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+          exit_code = exit_input
+          return
+        end do
+      end do
     end if
     msg = ''
     if (an%sym_factors .and. .not. an%symmetric) msg = ' (LDL^T factors of (K+K^T)/2 precondition GMRES)'
@@ -579,6 +594,7 @@ contains
             s%bc_val(dof) = list(k)%value
             s%bc_amp(dof) = list(k)%amplitude
             s%bc_vel(dof) = list(k)%velocity
+            s%bc_user(dof) = list(k)%user
             if (initial) s%bc_init(dof) = .true.
           end do
         end do
@@ -601,7 +617,31 @@ contains
       else
         v = s%u_start(dof) + (t / model%steps(is)%period) * (s%bc_val(dof) - s%u_start(dof))
       end if
+      if (s%bc_user(dof)) v = user_disp(dof, t, v)
     end function prescribed_value
+
+    !> *BOUNDARY, USER: the value of DISP for dof at step time t (the end of the increment), U(1) passed in as v;
+    !> COORDS the node's coordinates at the start of the increment (current ones under NLGEOM); JDOF in the node's
+    !> *TRANSFORM system where it has one. NOEL = 0 (a node's boundary).
+    real(dp) function user_disp(dof, t, v) result(w)
+      integer, intent(in) :: dof
+      real(dp), intent(in) :: t, v
+      real(dp) :: c_u(3), c_time(3), c_coords(3)
+      integer :: c_kstep, c_kinc, c_node, c_noel, c_jdof, nd
+      nd = (dof - 1) / model%ndim + 1
+      c_u = [v, 0.0_dp, 0.0_dp]
+      c_time = [t, s%t_total0 + t, dt]
+      c_coords = model%x(:, nd)
+      if (model%steps(is)%nlgeom) c_coords(1:model%ndim) = c_coords(1:model%ndim) + &
+        node_vector_global(an%nr, an%u_conv, nd)
+      c_kstep = is
+      c_kinc = s%kinc
+      c_node = model%node_id(nd)
+      c_noel = 0
+      c_jdof = dof - (nd - 1) * model%ndim
+      call routines%disp(c_u, c_kstep, c_kinc, c_time, c_node, c_noel, c_jdof, c_coords)
+      w = c_u(1)
+    end function user_disp
 
     !> Prescribed velocity of dof at step time t: amplitude * value, else the value (Abaqus' default for velocity
     !> boundaries in a static step is a STEP function whatever *STEP, AMPLITUDE says).

@@ -21,7 +21,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', '*SOLID SECTION', '*UEL PROPERTY', '*NGEN', &
-          '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*ORIENTATION')
+          '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*ORIENTATION', '*TRANSFORM', '*SYSTEM')
       allowed_in_part = .true.
     case default
       allowed_in_part = .false.
@@ -33,7 +33,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*INSTANCE', '*END INSTANCE', '*END ASSEMBLY', '*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', &
-          '*EQUATION', '*TIE', '*MPC', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER')
+          '*EQUATION', '*TIE', '*MPC', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*TRANSFORM', '*SYSTEM')
       allowed_in_assembly = .true.
     case default
       allowed_in_assembly = .false.
@@ -45,7 +45,7 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', '*SOLID SECTION', '*NGEN', '*NFILL', '*NCOPY', &
-          '*ELGEN', '*UEL PROPERTY', '*ORIENTATION')
+          '*ELGEN', '*UEL PROPERTY', '*ORIENTATION', '*TRANSFORM', '*SYSTEM')
       mesh_keyword = .true.
     case default
       mesh_keyword = .false.
@@ -96,7 +96,8 @@ contains
           call ctx_fail(ctx, ctx%ir, 'part '//name//' has no *END PART before '//kw)
         else
           call ctx_fail_kw(ctx, i, kw, 'not supported inside *PART '//trim(name)//' (ldfcz reads *NODE, *ELEMENT, '// &
-            '*NSET, *ELSET, *SURFACE, *SOLID SECTION, *ORIENTATION, *UEL PROPERTY, *NGEN, *NFILL, *NCOPY, *ELGEN '// &
+            '*NSET, *ELSET, *SURFACE, *SOLID SECTION, *ORIENTATION, *TRANSFORM, *SYSTEM, *UEL PROPERTY, *NGEN, *NFILL, '// &
+            '*NCOPY, *ELGEN '// &
             'in a part), '// &
             'or *END PART missing before it')
         end if
@@ -254,6 +255,7 @@ contains
     ctx%scope = scope_part
     ctx%def_prefix = name//'.'
     ctx%ref_prefix = name//'.'
+    ctx%system_on = .false.   ! a part's *SYSTEM is its own (set within the part)
   end subroutine begin_instance
 
   !> After a part was read for the current instance: its label range recorded, the assembly scope restored.
@@ -276,6 +278,7 @@ contains
     ctx%node_off = 0
     ctx%elem_off = 0
     ctx%placed = .false.
+    ctx%system_on = .false.
   end subroutine end_instance
 
   !> Data lines of *INSTANCE: the placement of the part's nodes.

@@ -83,12 +83,18 @@ contains
     type(boundary_t) :: bc, empty_bc
     character(len=flen), allocatable :: f(:)
     integer :: i, n, id, iset, iamp, ir, istep
-    logical :: velocity
+    logical :: velocity, user
     character(len=:), allocatable :: v, word
-    call ctx_allow_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP', 'TYPE'])
+    call ctx_allow_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP', 'TYPE', 'USER'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     istep = ctx%istep
+    ! USER: the magnitudes come from the user subroutine DISP (history data only)
+    user = deck_has_param(ctx%params, 'USER')
+    if (user .and. .not. ctx%in_step) then
+      call ctx_fail(ctx, ir, 'USER only inside a step (history data)')
+      return
+    end if
     ! TYPE=DISPLACEMENT (the default) or VELOCITY (in a step: the increment of the dof is v dt, v applied as a STEP
     ! unless an amplitude is given, as Abaqus/Standard does in a static step)
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
@@ -130,6 +136,7 @@ contains
       bc = empty_bc
       bc%amplitude = iamp
       bc%velocity = velocity
+      bc%user = user
       bc%pos = ctx_pos(ctx, i)
       if (n < 2) then
         call ctx_fail(ctx, i, 'expected: node or node set, first dof[, last dof[, value]] or a type (XSYMM, ...)')

@@ -208,6 +208,7 @@ contains
         if (allocated(eqn%terms)) deallocate (eqn%terms)
         allocate (eqn%terms(2))
         eqn%pos = ctx_pos(ctx, i)
+        eqn%mpc = .true.
         eqn%terms(1)%nodes = nodes(:, 1)
         eqn%terms(1)%dof = d
         eqn%terms(1)%value = 1.0_dp

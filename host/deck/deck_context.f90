@@ -60,6 +60,9 @@ module deck_context
     logical :: placed = .false.                       !< coordinates are placed: x = place_r x + place_c
     real(dp) :: place_r(3, 3) = 0.0_dp                !< instance rotation
     real(dp) :: place_c(3) = 0.0_dp                   !< instance shift
+    logical :: system_on = .false.                    !< *SYSTEM in effect: *NODE coordinates are local
+    real(dp) :: system_r(3, 3) = 0.0_dp               !< its axes (columns): x = system_c + system_r x_local
+    real(dp) :: system_c(3) = 0.0_dp                  !< its origin
     integer :: top_node = 0                           !< largest model node label so far (instance offsets)
     integer :: top_elem = 0                           !< largest model element label so far
     type(part_def_t), allocatable :: parts(:)         !< *PART definitions

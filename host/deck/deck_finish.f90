@@ -4,7 +4,7 @@ module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where
   use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
-    etype_user, model_find_elset, model_find_material, model_label_text
+    etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -180,6 +180,8 @@ contains
       end do
       call resolve_orientations(ctx)
       if (ctx%stat /= 0) return
+      call resolve_transforms(ctx)
+      if (ctx%stat /= 0) return
       if (model%monitor_node > 0) then
         id = model%monitor_node
         k = 0
@@ -311,6 +313,47 @@ contains
       end do
     end associate
   end subroutine resolve_orientations
+
+  !> *TRANSFORM: the transform of each node (at most one per node, as Abaqus requires); its axes must be defined at
+  !> the node (not on a cylinder's axis, at a sphere's centre or on its polar axis).
+  subroutine resolve_transforms(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: k, j, nd
+    real(dp) :: t(3, 3)
+    logical :: ok
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      allocate (model%node_transform(model%nnode))
+      model%node_transform = 0
+      do k = 1, model%ntransform
+        pos = model%transforms(k)%pos
+        associate (set => model%nsets(model%transforms(k)%nset))
+          do j = 1, size(set%nodes)
+            nd = set%nodes(j)
+            if (model%node_transform(nd) /= 0) then
+              call ctx_fail_pos(ctx, pos, 'node '//model_label_text(model, model%node_id(nd), .true.)// &
+                ' already has a *TRANSFORM (line '//itoa(model%transforms(model%node_transform(nd))%pos%line)// &
+                '): one transformation per node')
+              return
+            end if
+            call orientation_axes(model%transforms(k)%axes, model%x(:, nd), t, ok)
+            if (.not. ok) then
+              call ctx_fail_pos(ctx, pos, 'the local directions are undefined at node '// &
+                model_label_text(model, model%node_id(nd), .true.)//' (on the axis or at the centre of TYPE='// &
+                model%transforms(k)%kind//')')
+              return
+            end if
+            if (model%ndim == 2 .and. abs(t(3, 3) - 1.0_dp) > 1.0e-9_dp) then
+              call ctx_fail_pos(ctx, pos, 'in a 2D model the local system must keep local 3 along global Z (a '// &
+                'rotation in the plane); it does not at node '//model_label_text(model, model%node_id(nd), .true.))
+              return
+            end if
+            model%node_transform(nd) = k
+          end do
+        end associate
+      end do
+    end associate
+  end subroutine resolve_transforms
 
   !> Element-based surfaces: element sets and ids expanded into (element index, face) pairs.
   subroutine resolve_surfaces(ctx)

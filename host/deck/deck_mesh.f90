@@ -10,7 +10,7 @@ module deck_mesh
     ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued
   implicit none
   private
-  public :: read_node, read_element, read_set
+  public :: read_node, read_element, read_set, read_system
   public :: get_nset, get_elset, grow_nodes, grow_elems
 
   !> The continuum element types: nodes and dimension per etype_* of model_types (0: the user kind)
@@ -72,12 +72,67 @@ contains
           if (.not. ctx_get_real(ctx, i, f(k), c)) return
           model%x(k - 1, model%nnode) = c
         end do
+        ! *SYSTEM: local coordinates to the scope's
+        if (ctx%system_on) model%x(:, model%nnode) = matmul(ctx%system_r, model%x(:, model%nnode)) + ctx%system_c
         ! a part's node placed by its instance (translation, then rotation)
         if (ctx%placed) model%x(:, model%nnode) = matmul(ctx%place_r, model%x(:, model%nnode)) + ctx%place_c
         if (iset > 0) call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -id)
       end do
     end associate
   end subroutine read_node
+
+  !> *SYSTEM: the coordinates of the following *NODE data lines (of this part or of the model) are given in a local
+  !> rectangular system: one data line with its origin a[, a point b on local x and a point c in the local x-y
+  !> plane]. Only a: a translation. No data line: back to the global system.
+  subroutine read_system(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=flen), allocatable :: f(:)
+    real(dp) :: v(9), e1(3), e2(3), e3(3)
+    integer :: n, k
+    call ctx_allow_params(ctx, [character(len=1) :: ' '])  ! no parameters
+    if (ctx%stat /= 0) return
+    if (ctx%ir_next == ctx%ir + 1) then
+      ctx%system_on = .false.
+      return
+    end if
+    if (ctx%ir_next - ctx%ir - 1 > 1) then
+      call ctx_fail(ctx, ctx%ir, 'one data line expected: a1, a2, a3[, b1, b2, b3, c1, c2, c3]')
+      return
+    end if
+    call ctx_split(ctx, ctx%ir + 1, f, n)
+    if (n /= 3 .and. n /= 9) then
+      call ctx_fail(ctx, ctx%ir + 1, 'expected the origin a (3 coordinates) or a, b, c (9): a point b on local x '// &
+        'without c is not supported')
+      return
+    end if
+    v = 0.0_dp
+    do k = 1, n
+      if (len_trim(f(k)) == 0) cycle
+      if (.not. ctx_get_real(ctx, ctx%ir + 1, f(k), v(k))) return
+    end do
+    ctx%system_r = 0.0_dp
+    do k = 1, 3
+      ctx%system_r(k, k) = 1.0_dp
+    end do
+    ctx%system_c = v(1:3)
+    if (n == 9) then
+      e1 = v(4:6) - v(1:3)
+      e3 = [e1(2) * (v(9) - v(3)) - e1(3) * (v(8) - v(2)), e1(3) * (v(7) - v(1)) - e1(1) * (v(9) - v(3)), &
+        e1(1) * (v(8) - v(2)) - e1(2) * (v(7) - v(1))]
+      if (norm2(e1) <= 1.0e-12_dp * max(1.0_dp, norm2(v)) .or. &
+          norm2(e3) <= 1.0e-12_dp * max(1.0_dp, norm2(v))**2) then
+        call ctx_fail(ctx, ctx%ir + 1, 'the points a, b, c do not define a system (coinciding or on one line)')
+        return
+      end if
+      e1 = e1 / norm2(e1)
+      e3 = e3 / norm2(e3)
+      e2 = [e3(2) * e1(3) - e3(3) * e1(2), e3(3) * e1(1) - e3(1) * e1(3), e3(1) * e1(2) - e3(2) * e1(1)]
+      ctx%system_r(:, 1) = e1
+      ctx%system_r(:, 2) = e2
+      ctx%system_r(:, 3) = e3
+    end if
+    ctx%system_on = .true.
+  end subroutine read_system
 
   !> *ELEMENT, TYPE=, ELSET=: element number and its nodes (a continuum type of etype_names or a user type Un
   !> defined before).

@@ -10,7 +10,7 @@ module deck_reader
     scope_model, scope_assembly
   use deck_assembly, only: prescan_assembly, read_part_def, begin_assembly, end_assembly, begin_instance, &
     end_instance, allowed_in_assembly, mesh_keyword
-  use deck_mesh, only: read_node, read_element, read_set
+  use deck_mesh, only: read_node, read_element, read_set, read_system
   use deck_materials, only: read_material, read_elastic, read_density, read_expansion, read_user_material, &
     read_depvar, read_solid_section
   use deck_user_elements, only: read_user_element, read_uel_property
@@ -23,7 +23,7 @@ module deck_reader
   use deck_finish, only: finish_model
   use deck_parameters, only: apply_parameters
   use deck_generate, only: read_ngen, read_nfill, read_ncopy, read_elgen
-  use deck_orientation, only: read_orientation
+  use deck_orientation, only: read_orientation, read_transform
   use deck_declarations, only: read_ldfcz_declaration
   implicit none
   private
@@ -111,7 +111,7 @@ contains
       end if
       if (ctx%scope == scope_assembly .and. .not. allowed_in_assembly(ctx%kw)) then
         call ctx_fail(ctx, ir, 'not supported inside *ASSEMBLY (ldfcz reads *INSTANCE, *NODE, *ELEMENT, *NSET, '// &
-          '*ELSET, *SURFACE, *EQUATION, *TIE, *MPC there)')
+          '*ELSET, *SURFACE, *EQUATION, *TIE, *MPC, *TRANSFORM, *SYSTEM there)')
         return
       end if
       if (ctx%scope == scope_model .and. ctx%has_assembly .and. mesh_keyword(ctx%kw)) then
@@ -165,6 +165,10 @@ contains
       call ctx_fail(ctx, ctx%ir, '*END INSTANCE without *INSTANCE')
     case ('*ORIENTATION')
       call read_orientation(ctx)
+    case ('*TRANSFORM')
+      call read_transform(ctx)
+    case ('*SYSTEM')
+      call read_system(ctx)
     case ('*NGEN')
       call read_ngen(ctx)
     case ('*NFILL')
@@ -268,7 +272,8 @@ contains
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
           '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
           '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
-          '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION')
+          '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION', &
+          '*TRANSFORM', '*SYSTEM')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

@@ -13,7 +13,7 @@ module model_types
   public :: etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_names
   public :: etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, etype_is_axisymmetric
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
-  public :: amplitude_value, amplitude_factor
+  public :: amplitude_value, amplitude_factor, transform_t
   public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
@@ -101,7 +101,7 @@ module model_types
   !> *ORIENTATION: local material axes (docs/host.md). Points in model coordinates (an instance's placement applied).
   type :: orientation_t
     character(len=name_len) :: name = ''   !< upper-case name
-    integer :: system = 1                  !< 1 RECTANGULAR, 2 CYLINDRICAL
+    integer :: system = 1                  !< 1 RECTANGULAR, 2 CYLINDRICAL, 3 SPHERICAL (*TRANSFORM, TYPE=S only)
     logical :: by_nodes = .false.          !< DEFINITION=NODES: a, b, c are nodes (nodes(:), model labels)
     real(dp) :: a(3) = 0.0_dp              !< RECTANGULAR: point on local 1; CYLINDRICAL: first point on the axis
     real(dp) :: b(3) = 0.0_dp              !< RECTANGULAR: point in the 1-2 plane; CYLINDRICAL: second axis point
@@ -111,6 +111,15 @@ module model_types
     real(dp) :: extra_angle = 0.0_dp       !< its angle [degrees]
     type(source_pos_t) :: pos
   end type orientation_t
+
+  !> A *TRANSFORM: the local node system (axes from orientation_axes at the node's reference position) of the nodes
+  !> of a node set. TYPE=R: system 1 with c = the origin; TYPE=C: system 2; TYPE=S: system 3.
+  type :: transform_t
+    type(orientation_t) :: axes            !< the system (a, b, c; no additional rotation)
+    integer :: nset = 0                    !< node set index
+    character(len=1) :: kind = 'R'         !< TYPE= as given (R, C, S)
+    type(source_pos_t) :: pos
+  end type transform_t
 
   type :: user_element_type_t
     character(len=name_len) :: name = ''   !< e.g. U1
@@ -155,6 +164,7 @@ module model_types
     real(dp) :: value = 0.0_dp             !< magnitude
     integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
     logical :: velocity = .false.          !< TYPE=VELOCITY: value is a velocity (increment = v dt)
+    logical :: user = .false.              !< USER: the value is what the user subroutine DISP returns
     type(source_pos_t) :: pos
   end type boundary_t
 
@@ -192,6 +202,7 @@ module model_types
   !> One *EQUATION: terms (node list, dof, coefficient in value); node sets expand into one equation per member.
   type :: equation_t
     type(cload_t), allocatable :: terms(:)
+    logical :: mpc = .false.               !< written by *MPC (TIE): global components, not a node's *TRANSFORM
     type(source_pos_t) :: pos
   end type equation_t
 
@@ -348,6 +359,9 @@ module model_types
     integer :: ninstance = 0
     type(orientation_t), allocatable :: orientations(:) !< *ORIENTATION definitions
     integer :: norient = 0
+    type(transform_t), allocatable :: transforms(:) !< *TRANSFORM definitions
+    integer :: ntransform = 0
+    integer, allocatable :: node_transform(:) !< (nnode) the *TRANSFORM of a node (0: global system)
     integer :: monitor_node = 0            !< *MONITOR, NODE= (model label while reading, node index after; 0: none)
     integer :: monitor_dof = 0             !< *MONITOR, DOF=
     type(source_pos_t) :: monitor_pos      !< where *MONITOR is
@@ -383,7 +397,8 @@ contains
 
   !> Local axes (columns, unit, right-handed) of orientation o at point x (model coordinates); a, b, c resolved.
   !> RECTANGULAR: 1 along a - c, 3 normal to the plane of a, b, c, 2 = 3 x 1. CYLINDRICAL: 3 along the axis a -> b,
-  !> 1 radial from the axis through x, 2 = 3 x 1. Then the additional rotation about local axis extra_axis.
+  !> 1 radial from the axis through x, 2 = 3 x 1. SPHERICAL (system 3): 1 radial from the centre a, 3 along
+  !> (b - a) x (x - a) (azimuthal), 2 = 3 x 1. Then the additional rotation about local axis extra_axis.
   !> ok = .false. when the axes are undefined (coinciding points, x on the cylinder axis).
   pure subroutine orientation_axes(o, x, t, ok)
     type(orientation_t), intent(in) :: o  !< the orientation
@@ -398,6 +413,15 @@ contains
     if (o%system == 1) then
       e1 = o%a - o%c
       e3 = cross(e1, o%b - o%c)
+    else if (o%system == 3) then
+      ! SPHERICAL (centre a, polar axis a -> b): 1 radial, 3 = azimuthal (about the polar axis), 2 = 3 x 1 (the
+      ! polar-angle direction); undefined at the centre and on the polar axis
+      r = x - o%a
+      e3 = o%b - o%a
+      if (norm2(e3) <= tiny_len * max(1.0_dp, norm2(o%a)) .or. norm2(r) <= tiny_len * max(1.0_dp, norm2(x))) return
+      e1 = r
+      e3 = cross(e3 / norm2(e3), r / norm2(r))
+      if (norm2(e3) <= tiny_len) return
     else
       e3 = o%b - o%a
       if (norm2(e3) <= tiny_len * max(1.0_dp, norm2(o%a))) return

@@ -9,7 +9,8 @@ module user_routines
   use solid_umat_interface, only: umat_interface
   implicit none
   private
-  public :: uel_interface, umat_interface, uexternaldb_interface, user_routines_t, user_routines_builtin
+  public :: uel_interface, umat_interface, uexternaldb_interface, disp_interface, user_routines_t, &
+    user_routines_builtin
   public :: user_routines_load
   public :: user_source_compile_command, user_routines_connect_units
 
@@ -35,6 +36,15 @@ module user_routines
       integer :: lop, lrestart, kstep, kinc
       real(dp) :: time(2), dtime
     end subroutine uexternaldb_interface
+
+    !> Abaqus/Standard DISP(U, KSTEP, KINC, TIME, NODE, NOEL, JDOF, COORDS): U(1) the total prescribed value of dof
+    !> JDOF of node NODE (passed in as the magnitude times the amplitude), TIME step time, total time and time
+    !> increment, COORDS the node's coordinates.
+    subroutine disp_interface(u, kstep, kinc, time, node, noel, jdof, coords)
+      import :: dp
+      integer :: kstep, kinc, node, noel, jdof
+      real(dp) :: u(3), time(3), coords(3)
+    end subroutine disp_interface
   end interface
 
   !> The routines in use.
@@ -42,6 +52,7 @@ module user_routines
     procedure(uel_interface), pointer, nopass :: uel => null()    !< UEL (null: none available)
     procedure(umat_interface), pointer, nopass :: umat => null()  !< UMAT (null: none available)
     procedure(uexternaldb_interface), pointer, nopass :: uexternaldb => null() !< UEXTERNALDB of a user library
+    procedure(disp_interface), pointer, nopass :: disp => null()  !< DISP of a user library (*BOUNDARY, USER)
     character(len=:), allocatable :: uel_origin                   !< 'built-in', the user file, or 'none'
     character(len=:), allocatable :: umat_origin
     type(c_ptr) :: handle = c_null_ptr                            !< dlopen handle of a user library
@@ -144,6 +155,7 @@ contains
     procedure(uel_interface), pointer :: pu
     procedure(umat_interface), pointer :: pm
     procedure(uexternaldb_interface), pointer :: px
+    procedure(disp_interface), pointer :: pd
 
     stat = 0
     errmsg = ''
@@ -273,9 +285,14 @@ contains
       call c_f_procpointer(f, px)
       r%uexternaldb => px
     end if
-    if (r%uel_origin /= source .and. r%umat_origin /= source) then
+    f = c_dlsym(r%handle, 'disp_'//c_null_char)
+    if (c_associated(f)) then
+      call c_f_procpointer(f, pd)
+      r%disp => pd
+    end if
+    if (r%uel_origin /= source .and. r%umat_origin /= source .and. .not. associated(r%disp)) then
       stat = 2
-      errmsg = '--user: '//source//' defines neither SUBROUTINE UEL nor SUBROUTINE UMAT'
+      errmsg = '--user: '//source//' defines none of SUBROUTINE UEL, UMAT and DISP'
     end if
   end subroutine user_routines_load
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the malformed decks of the model-structure, *PARAMETER and mesh-generation keywords into decks/bad/
-(parts, assemblies, instances, qualified names, *PARAMETER, *NGEN, *NFILL, *NCOPY, *ELGEN), each with one defect.
+(parts, assemblies, instances, qualified names, *PARAMETER, *NGEN, *NFILL, *NCOPY, *ELGEN, *SYSTEM, *ORIENTATION,
+*TRANSFORM), each with one defect.
 
 Each deck's first line is `** EXPECT line=N keyword=*KW` (check_run.py --bad reads it). Run from anywhere:
 python3 tests/regression/make_structure_bad_decks.py
@@ -70,9 +71,28 @@ deck("bad_ngen_undefined_end", "*NGEN from a node not defined before",
      flat + ["*NGEN", "1, 30, 1"] + mat + fstep, "*NGEN", "1, 30, 1")
 deck("bad_nfill_sizes", "*NFILL between node sets of different sizes",
      flat + ["*NSET, NSET=TOP", "5, 6, 7", "*NFILL", "BOTTOM, TOP, 2, 10"] + mat + fstep, "*NFILL", "BOTTOM, TOP, 2, 10")
-deck("bad_ncopy_reflect", "*NCOPY with REFLECT",
-     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=LINE"] + mat + fstep, "*NCOPY",
-     "*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=LINE")
+deck("bad_ncopy_pole", "*NCOPY with POLE (not supported)",
+     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, POLE"] + mat + fstep, "*NCOPY",
+     "*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, POLE")
+deck("bad_ncopy_reflect_line", "*NCOPY, REFLECT=LINE through two coinciding points",
+     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=LINE", "1., 1., 1., 1., 1., 1."] + mat + fstep,
+     "*NCOPY", "1., 1., 1., 1., 1., 1.")
+deck("bad_ncopy_reflect_fields", "*NCOPY, REFLECT=MIRROR with six coordinates",
+     flat + ["*NCOPY, OLD SET=BOTTOM, CHANGE NUMBER=10, REFLECT=MIRROR", "0., 0., 0., 1., 0., 0."] + mat + fstep,
+     "*NCOPY", "0., 0., 0., 1., 0., 0.")
+deck("bad_ngen_arc_half", "*NGEN, LINE=C over 180 degrees without a normal",
+     flat + ["*NODE", "20, 2., 0., 0.", "24, -2., 0., 0.", "30, 0., 0., 0.", "*NGEN, LINE=C", "20, 24, 1, 30"]
+     + mat + fstep, "*NGEN", "20, 24, 1, 30")
+deck("bad_ngen_line", "*NGEN with an unknown LINE",
+     flat + ["*NGEN, LINE=S", "1, 2, 1"] + mat + fstep, "*NGEN", "*NGEN, LINE=S")
+deck("bad_nfill_bias", "*NFILL with a negative BIAS",
+     flat + ["*NSET, NSET=TOP", "5, 6, 7, 8", "*NFILL, BIAS=-2.", "BOTTOM, TOP, 2, 10"] + mat + fstep, "*NFILL",
+     "*NFILL, BIAS=-2.")
+deck("bad_system_fields", "*SYSTEM with a and b but no c",
+     ["*SYSTEM", "0., 0., 0., 1., 0., 0."] + flat + mat + fstep, "*SYSTEM", "0., 0., 0., 1., 0., 0.")
+deck("bad_system_in_step", "*SYSTEM inside a step",
+     flat + mat + ["*STEP", "*STATIC", "1., 1.", "*SYSTEM", "*BOUNDARY", "BOTTOM, ENCASTRE", "*END STEP"], "*SYSTEM",
+     "*SYSTEM")
 deck("bad_elgen_master", "*ELGEN of an undefined master element",
      flat + ["*ELGEN, ELSET=ALL", "7, 2, 4, 1"] + mat + fstep, "*ELGEN", "7, 2, 4, 1")
 ori_flat = flat[:-1]
@@ -99,3 +119,41 @@ part2d = ["*PART, NAME=SQ", "*NODE", "1, 0., 0.", "2, 1., 0.", "3, 1., 1.", "4, 
 deck("bad_instance_plane_tilt", "an instance of a plane model turned out of the x-y plane",
      part2d + mat + ["*ASSEMBLY, NAME=A", "*INSTANCE, NAME=C-1, PART=SQ", "0., 0., 0.", "0., 0., 0., 1., 0., 0., 30.",
                      "*END INSTANCE", "*END ASSEMBLY"] + step, "*INSTANCE", "*INSTANCE, NAME=C-1, PART=SQ")
+# *TRANSFORM
+deck("bad_transform_no_nset", "*TRANSFORM without NSET",
+     flat + ["*TRANSFORM", "1., 0., 0., 0., 1., 0."] + mat + fstep, "*TRANSFORM", "*TRANSFORM")
+deck("bad_transform_type", "*TRANSFORM of an unknown TYPE",
+     flat + ["*TRANSFORM, NSET=BOTTOM, TYPE=X", "1., 0., 0., 0., 1., 0."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=BOTTOM, TYPE=X")
+deck("bad_transform_set", "*TRANSFORM of an undefined node set",
+     flat + ["*TRANSFORM, NSET=NOSUCH", "1., 0., 0., 0., 1., 0."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=NOSUCH")
+deck("bad_transform_fields", "*TRANSFORM with five coordinates",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1."] + mat + fstep, "*TRANSFORM", "1., 0., 0., 0., 1.")
+deck("bad_transform_parallel", "*TRANSFORM, TYPE=R with a and b parallel",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 1., 0., 2., 2., 0."] + mat + fstep, "*TRANSFORM", "1., 1., 0., 2., 2., 0.")
+deck("bad_transform_points", "*TRANSFORM, TYPE=C with coinciding axis points",
+     flat + ["*TRANSFORM, NSET=BOTTOM, TYPE=C", "0., 0., 1., 0., 0., 1."] + mat + fstep, "*TRANSFORM",
+     "0., 0., 1., 0., 0., 1.")
+deck("bad_transform_twice", "a node in two *TRANSFORM sets",
+     flat + ["*NSET, NSET=CORNER", "1", "*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1., 0.",
+             "*TRANSFORM, NSET=CORNER, TYPE=C", "5., 5., 0., 5., 5., 1."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=CORNER, TYPE=C")
+deck("bad_transform_axis", "*TRANSFORM, TYPE=C with a node on the axis",
+     flat + ["*TRANSFORM, NSET=BOTTOM, TYPE=C", "0., 0., 0., 0., 0., 1."] + mat + fstep, "*TRANSFORM",
+     "*TRANSFORM, NSET=BOTTOM, TYPE=C")
+deck("bad_transform_in_step", "*TRANSFORM inside a step",
+     flat + mat + ["*STEP", "*STATIC", "1., 1.", "*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1., 0.",
+                   "*BOUNDARY", "BOTTOM, ENCASTRE", "*END STEP"], "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
+deck("bad_transform_lines", "*TRANSFORM with two data lines",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 1., 0.", "0., 0., 1., 0., 1., 0."] + mat + fstep,
+     "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
+deck("bad_boundary_user_model", "*BOUNDARY, USER in model data",
+     flat + mat + ["*BOUNDARY, USER", "BOTTOM, 3, 3, 0.1"] + fstep, "*BOUNDARY", "*BOUNDARY, USER")
+deck("bad_transform_plane", "a *TRANSFORM of a plane model whose local 3 is not global Z",
+     ["*NODE", "1, 0., 0.", "2, 1., 0.", "3, 1., 1.", "4, 0., 1.", "*ELEMENT, TYPE=CPE4, ELSET=ALL", "1, 1, 2, 3, 4",
+      "*NSET, NSET=BOTTOM", "1, 2", "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL",
+      "*TRANSFORM, NSET=BOTTOM", "1., 0., 0., 0., 0., 1."] + mat + fstep, "*TRANSFORM", "*TRANSFORM, NSET=BOTTOM")
+deck("bad_transform_mpc", "an *MPC tie on a node with a *TRANSFORM",
+     flat + ["*TRANSFORM, NSET=BOTTOM", "1., 1., 0., -1., 1., 0.", "*MPC", "TIE, 5, 1"] + mat + fstep, "*MPC",
+     "TIE, 5, 1")
