@@ -826,6 +826,22 @@ def statements(reports):
                     100 * abs(fnum(r, 'F_w') / fr[0] - 1) if fr else float('nan'),
                     100 * (fnum(r, 'F_unc') + ufr[0]) if ufr else float('nan'))) if done else 'not completed'))
         c['inc'] = '; '.join(desc) if desc else nm
+        m9 = load_rows(reports, 'stmt-mesh-x-long-nz9')
+        if k == 'B' and m9.get('B le=0.0025 nz=9', {}).get('completed') == 'True':
+            l9 = [0.01, 0.005, 0.0025]
+            f9 = {le: val(m9, 'B le=%g nz=9' % le)[0] for le in l9}
+            u9 = {le: fnum(m9.get('B le=%g nz=9' % le), 'F_unc') for le in l9}
+            f9_inf, p9, why9 = sfe.richardson(l9, [f9[le] for le in l9])
+            if f9_inf is not None:
+                c['le'] += ' (n_z = 3); with n_z = 9: ' + '; '.join(
+                    '%g um: %.2f %%' % (1e3 * le, 100 * abs(f9[le] / f9_inf - 1)) for le in l9) + \
+                    ' against Richardson F_inf = %.4f N/mm (observed order %.2f); uncertainties %s' % (
+                        f9_inf, p9, ', '.join('%.2f %%' % (100 * u9[le]) for le in l9))
+            else:
+                c['le'] += ' (n_z = 3); with n_z = 9: ' + '; '.join(
+                    '%g um: %.2f %% (+-%.2f)' % (1e3 * le, 100 * abs(f9[le] / f9[0.0025] - 1),
+                                                 100 * (u9[le] + u9[0.0025])) for le in l9[:-1]) + \
+                    ' against l_e = 2.5 um (%s)' % why9
         if k == 'B':
             for key, short in (('le', 'x'), ('ny', '3'), ('widths', '3'), ('inc', 'i'), ('speed', '3')):
                 if longer.get(short) and c[key] != nm:
