@@ -26,13 +26,18 @@ import subprocess
 import sys
 
 
+OUT = ['']  # the test's output directory (main)
+
+
 def fail(msg):
     print("FAIL: " + msg)
     sys.exit(1)
 
 
 def sh(cmd):
-    p = subprocess.run(cmd, capture_output=True, text=True)
+    # run from the test's own directory: gfortran and flang look for module files in the working directory first,
+    # and a stale .mod of another build there would hide the drop-in's own modules
+    p = subprocess.run(cmd, capture_output=True, text=True, cwd=OUT[0] or None)
     if p.returncode != 0:
         fail("%s\n%s" % (" ".join(cmd), p.stdout + p.stderr))
 
@@ -49,8 +54,11 @@ def main():
     ap.add_argument("--fflags", default="")
     ap.add_argument("--exact", action="store_true")
     a = ap.parse_args()
+    for k in ("exe", "dropins", "include", "marc_include", "marc_stubs", "deck", "out"):
+        setattr(a, k, os.path.abspath(getattr(a, k)))
     shutil.rmtree(a.out, ignore_errors=True)
     os.makedirs(a.out)
+    OUT[0] = a.out
     objs = {}
     for name in ("ldfcz_abaqus_uel", "ldfcz_abaqus_umat", "ldfcz_abaqus"):
         src = os.path.join(a.dropins, name + ".f")
