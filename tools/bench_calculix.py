@@ -23,6 +23,7 @@ CCX_NPROC_EQUATION_SOLVER, which ccx 2.20 reads before OMP_NUM_THREADS).
 import argparse
 import os
 import re
+import shlex
 import resource
 import shutil
 import statistics
@@ -219,7 +220,7 @@ def write_md(a, rows):
         return statistics.median(xs)
     out = ['# ldfcz against CalculiX 2.20: the 40x40x10 C3D8 elastic NLGEOM block', '',
            'Written by `/usr/bin/python3 tools/bench_calculix.py %s` (see the tool\'s docstring for the deck).'
-           % ' '.join(sys.argv[1:]), '',
+           % shlex.join(sys.argv[1:]), '',
            'Per increment: the wall time between the increment\'s line in JOB.sta and the previous one (the first '
            'increment from the program\'s start: it includes reading the deck and the set-up). "later" is the median '
            'over increments 2..n. Median of %d repeats, [min-max] in brackets. CPU: user + system of the whole run.'
