@@ -21,6 +21,7 @@ Not a test: a run takes minutes. Threads: ldfcz -t N, CalculiX OMP_NUM_THREADS=N
 CCX_NPROC_EQUATION_SOLVER, which ccx 2.20 reads before OMP_NUM_THREADS).
 """
 import argparse
+import json
 import os
 import re
 import shlex
@@ -167,10 +168,17 @@ def main():
     ap.add_argument('--increments', type=int, default=4)
     ap.add_argument('--du', type=float, default=0.1, help='pull per increment (mm)')
     ap.add_argument('--work', default='out/bench-calculix')
-    ap.add_argument('--programs', nargs='+', default=['ldfcz', 'ccx'])
-    ap.add_argument('--ldfcz-args', default='', help='extra ldfcz options')
+    ap.add_argument('--programs', nargs='+', default=['ldfcz', 'ccx'],
+                    help="ccx, ldfcz, or the label of an --ldfcz-config")
+    ap.add_argument('--ldfcz-config', action='append', default=[],
+                    help="LABEL=ldfcz options: a further ldfcz configuration, run when LABEL is in --programs "
+                         "(e.g. 'auto=--newton auto')")
     ap.add_argument('--md', default='', help='write the report here (markdown)')
     a = ap.parse_args()
+    a.ldfcz = dict(ldfcz='')
+    for c in a.ldfcz_config:
+        label, opts = c.split('=', 1)
+        a.ldfcz[label] = opts
     os.makedirs(a.work, exist_ok=True)
     deck = os.path.join(a.work, 'block.inp')
     with open(deck, 'w') as f:
@@ -188,8 +196,8 @@ def main():
                 shutil.copy(deck, os.path.join(wd, 'block.inp'))
                 env = dict(os.environ, OMP_NUM_THREADS=str(nt))
                 la0 = load_avg()
-                if prog == 'ldfcz':
-                    cmd = [exe, '-q', '-t', str(nt)] + a.ldfcz_args.split() + ['block.inp']
+                if prog in a.ldfcz:
+                    cmd = [exe, '-q', '-t', str(nt)] + a.ldfcz[prog].split() + ['block.inp']
                     wall, cpu, stamps, _ = run_timed(cmd, wd, env, os.path.join(wd, 'block.sta'))
                     incs = ldfcz_increments(stamps)
                     with open(os.path.join(wd, 'block.log')) as f:
@@ -211,6 +219,8 @@ def main():
                 print('%-5s -t %d rep %d: wall %.1f s, cpu %.1f s, load %.1f, per increment %s s, iterations %s %s'
                       % (prog, nt, rep, wall, cpu, row['load'], ' '.join('%.2f' % x for x in tinc), row['its'],
                          ' '.join('%s %.1f' % kv for kv in split.items())), flush=True)
+    with open(os.path.join(a.work, 'runs.json'), 'w') as f:
+        json.dump(rows, f, indent=1)
     if a.md:
         write_md(a, rows)
 
@@ -237,19 +247,25 @@ def write_md(a, rows):
             first = [r['t_inc'][0] for r in rs]
             later = [med(r['t_inc'][1:]) if len(r['t_inc']) > 1 else float('nan') for r in rs]
             walls = [r['wall'] for r in rs]
-            summary[(prog, nt)] = (med(walls), med(later), walls)
+            summary[(prog, nt)] = (med(walls), med(later), med([r['cpu'] for r in rs]))
             split = ''
-            if prog == 'ldfcz':
+            if prog in a.ldfcz:
                 split = '%.1f / %.1f / %.1f' % tuple(med([r[k] for r in rs]) for k in ('assembly', 'factorization', 'solve'))
             out.append('| %s | %d | %s | %.1f [%.1f-%.1f] | %.1f | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %.1f-%.1f |' % (
                 prog, nt, ' '.join(map(str, rs[0]['its'])), med(walls), min(walls), max(walls),
                 med([r['cpu'] for r in rs]), med(first), min(first), max(first), med(later), min(later), max(later),
                 split, min(r['load'] for r in rs), max(r['load'] for r in rs)))
-    out += ['', '| threads | CalculiX / ldfcz, wall of the run | CalculiX / ldfcz, later increment |', '|---|---|---|']
+    out += ['', 'ldfcz configurations: ' + ', '.join('%s = `ldfcz -q -t N %s`' % (k, v) for k, v in a.ldfcz.items()
+                                                  if k in a.programs), '',
+            '| threads | CalculiX / ldfcz, wall of the run | CalculiX / ldfcz, later increment | CalculiX / ldfcz, CPU '
+            'of the run |', '|---|---|---|---|']
     for nt in a.threads:
-        if ('ldfcz', nt) in summary and ('ccx', nt) in summary:
-            l, c = summary[('ldfcz', nt)], summary[('ccx', nt)]
-            out.append('| %d | %.2f | %.2f |' % (nt, c[0] / l[0], c[1] / l[1]))
+        for prog in a.programs:
+            if prog in a.ldfcz and (prog, nt) in summary and ('ccx', nt) in summary:
+                l, c = summary[(prog, nt)], summary[('ccx', nt)]
+                out.append('| %d | %.2f | %.2f | %.2f |' % (nt, c[0] / l[0], c[1] / l[1], c[2] / l[2])
+                           if prog == 'ldfcz' else '| %d, ldfcz %s (`%s`) | %.2f | %.2f | %.2f |'
+                           % (nt, prog, a.ldfcz[prog], c[0] / l[0], c[1] / l[1], c[2] / l[2]))
     out += ['', 'Every run:', '', '| program | threads | repeat | wall (s) | CPU (s) | per increment (s) | iterations |'
             ' load average |', '|---|---|---|---|---|---|---|---|']
     for r in rows:

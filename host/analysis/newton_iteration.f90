@@ -40,10 +40,12 @@ module newton_iteration
   real(dp), parameter :: skip_margin = 10.0_dp          !< skip when r_k^2 / r_(k-1) < skip_margin R_n q_avg
   ! The first iteration of an increment evaluates the elements at the start of the increment, the prescribed dofs
   ! at their start values, and carries the prescribed increment du_p through that tangent: it solves
-  ! K_ff du_f = r_f - K_fp du_p (r = f_ext - f_int), then sets u_p to its end value (Abaqus and CalculiX do so; the
-  ! alternative, u_p at its end value before the first element loop, strains the layer beside a loaded face by the
-  ! whole increment and costs Newton iterations: docs/performance.md). A change below carry_negligible of the
-  ! largest displacement (round-off of an extrapolated start on a linear ramp) is applied directly instead.
+  ! K_ff du_f = r_f - K_fp du_p (r = f_ext - f_int), then sets u_p to its end value (as CalculiX does; that Abaqus
+  ! does so is inferred, docs/host.md "Analysis"; the alternative, u_p at its end value before the first element
+  ! loop, strains the layer beside a loaded face by the whole increment and costs Newton iterations:
+  ! docs/performance.md). A change below carry_negligible of the largest displacement (round-off of an extrapolated
+  ! start on a linear ramp) is applied directly instead. Modified Newton reusing its factors in the first iteration
+  ! has no tangent to carry with: it applies u_p before the element loop.
   real(dp), parameter :: carry_negligible = 1.0e-10_dp
 
   !> What the variants carry from one iteration, attempt and increment to the next.
