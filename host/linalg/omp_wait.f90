@@ -4,7 +4,7 @@
 !> Measured on the 40x40x10 C3D8 block of tools/bench_calculix.py (docs/performance.md "Idle OpenMP threads beside
 !> the factorization"): with libgomp's default policy an idle worker sleeps after a few milliseconds and takes no
 !> CPU during a factorization, with OMP_WAIT_POLICY=passive likewise; with OMP_WAIT_POLICY=active it spins through
-!> every factorization and, on 2 cores shared with other work, the factorizations took 2.3x longer. The policy is
+!> every factorization and, on 2 cores shared with other work, the factorizations took 2.2x longer. The policy is
 !> read by the runtime when the program loads, before any of ldfcz's code runs, so ldfcz cannot change it: it says
 !> so in JOB.log instead.
 module omp_wait
@@ -28,7 +28,7 @@ contains
     call get_environment_variable('GOMP_SPINCOUNT', v, status=status)
     if (status == 0 .and. (upper(v) == 'INFINITE' .or. upper(v) == 'INFINITY')) what = 'GOMP_SPINCOUNT='//trim(v)
     if (len(what) > 0) what = 'warning: '//what//': the idle threads of the element loop spin through every '// &
-      'factorization and solve, taking a core from MUMPS (factorizations 2.3x slower on 2 shared cores, '// &
+      'factorization and solve, taking a core from MUMPS (factorizations 2.2x slower on 2 shared cores, '// &
       'docs/performance.md); unset it, or use OMP_WAIT_POLICY=passive'
   end subroutine omp_wait_note
 
