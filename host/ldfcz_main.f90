@@ -13,14 +13,15 @@ program ldfcz
     newton_krylov, newton_auto
   use abaqus_host_state, only: abaqus_set_job, abaqus_flush_repeats, abaqus_set_processes
   use blas_threads, only: blas_threads_default
+  use omp_wait, only: omp_wait_note
   use parallel_context, only: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed, &
     parallel_file
   use heap_reuse, only: heap_reuse_default
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
-  !$ use omp_lib, only: omp_set_num_threads
+  !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
   implicit none
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc, fflags
-  integer :: i, n, stat, threads, exit_code, k
+  integer :: i, n, stat, threads, exit_code, k, nthreads
   logical :: quiet, verbose, exists, reorient, orient_error
   type(interface_check_t) :: orient
   character(len=:), allocatable :: orient_text
@@ -29,7 +30,7 @@ program ldfcz
   type(output_t) :: out
   type(run_summary_t) :: summary
   type(solver_options_t) :: options
-  character(len=:), allocatable :: restart_from, blas_note, heap_note, user_dir
+  character(len=:), allocatable :: restart_from, blas_note, heap_note, user_dir, wait_note
   type(parallel_t) :: par
 
   interface
@@ -224,6 +225,10 @@ program ldfcz
   call user_routines_connect_units(routines, outdir//'/'//job//'.msg')
   call blas_threads_default(blas_note)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
+  nthreads = 1
+  !$ nthreads = omp_get_max_threads()
+  call omp_wait_note(nthreads, wait_note)
+  if (len(wait_note) > 0) call output_log(out, 'ldfcz: '//wait_note)
   call heap_reuse_default(heap_note)
   if (len(heap_note) > 0) call output_log(out, 'ldfcz: '//heap_note)
   call run_analysis(model, routines, out, verbose, summary, exit_code, options, par)

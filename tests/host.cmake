@@ -124,6 +124,13 @@ ldfcz_add_perf_test(deck_opening_control ${LDFCZ_DECKS}/single/cohesive_block.in
 # *STEP, EXTRAPOLATION=LINEAR (the default) against NO: exact start on a linear ramp, same answers when nonlinear
 ldfcz_add_perf_test(deck_extrapolation_linear ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp extrapolation_linear)
 ldfcz_add_perf_test(deck_extrapolation ${LDFCZ_DECKS}/single/cohesive_block.inp extrapolation)
+# the first Newton iteration carries the prescribed increment through the tangent: a linear block converges in one
+# iteration (residual at round-off), a nonlinear one's residual falls from the first iteration on
+# (tests/regression/check_first_iteration.py)
+add_test(NAME deck_first_iteration COMMAND Python3::Interpreter
+  ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_first_iteration.py --exe $<TARGET_FILE:ldfcz>
+  --out ${LDFCZ_RUNS}/first_iteration)
+set_tests_properties(deck_first_iteration PROPERTIES LABELS "deck" TIMEOUT 300)
 
 # restart from the last converged increment (docs/host.md, "Restart"; tests/regression/check_restart.py): the run
 # interrupted (--stop-after-increments or SIGKILL) and restarted with --restart-from must give the uninterrupted run's

@@ -1,10 +1,17 @@
 #!/usr/bin/env bash
 # Install what is missing (Debian 12 packages), then configure and build ldfcz.
 #   tools/setup.sh [Release|Debug]     build directory: build/ (Release) or build-debug/ (Debug), or $LDFCZ_BUILD_DIR
+#   tools/setup.sh bench               the Release build and what the benchmarks compare against (CalculiX 2.20,
+#                                      Debian's calculix-ccx: tools/bench_calculix.py); the tests never need it
 # Extra CMake options may be passed in $LDFCZ_CMAKE_ARGS (e.g. -DCMAKE_PREFIX_PATH=/path/to/pfunit).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_type=${1:-Release}
+bench_packages=()
+if [ "$build_type" = bench ]; then
+  build_type=Release
+  bench_packages=(calculix-ccx)
+fi
 case "$build_type" in
   Release) default_dir="$root/build" ;;
   Debug) default_dir="$root/build-debug" ;;
@@ -19,7 +26,7 @@ packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-
 packages+=(openmpi-bin libopenmpi-dev libmumps-dev)
 # More packages for a particular use (tools/test.sh adds LLVM flang for the portability check).
 read -r -a extra <<< "${LDFCZ_EXTRA_PACKAGES:-}"
-packages+=("${extra[@]}")
+packages+=("${extra[@]}" "${bench_packages[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -368,7 +368,7 @@ contains
   !> converged state; internal forces into an%fint, tangents into an%sys when want_k. pnewdt_min is the smallest
   !> PNEWDT requested; stat /= 0 when an element failed (errmsg names it).
   subroutine analysis_assemble(an, model, kstep, kinc, time, dtime, period, nlgeom, want_k, pnewdt_min, stat, errmsg, &
-      pnewdt_who)
+      pnewdt_who, carry, k_carry)
     type(analysis_t), intent(inout) :: an                !< analysis data
     type(model_t), intent(in) :: model                   !< the model
     integer, intent(in) :: kstep                         !< step number
@@ -383,12 +383,18 @@ contains
     character(len=:), allocatable, intent(out) :: errmsg !< message of the first failure
     !> which element asked for the smallest PNEWDT < 1 (label, routine, value), '' when none did
     character(len=:), allocatable, intent(out), optional :: pnewdt_who
+    !> (ndof) a displacement change to carry through the tangent (the first iteration's prescribed increment,
+    !> newton_iteration); with it (and want_k) k_carry = K carry, K the element tangents as the solver assembles them
+    !> (symmetrised for LDL^T) over all dofs, prescribed ones included
+    real(dp), intent(in), optional :: carry(:)
+    real(dp), intent(out), optional :: k_carry(:)          !< (ndof) K carry
     integer :: ie, ic, c, n, k, fail_elem, st, m, pn_elem
-    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :)
+    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :), fk(:)
     real(dp) :: pn, pn_worst, comm0
     character(len=256) :: msg, first_msg
     character(len=:), allocatable :: who, fail_text
     integer(i8) :: c0, c1, rate
+    logical :: with_carry
 
     call system_clock(c0, rate)
     comm0 = an%par%t_comm
@@ -401,6 +407,11 @@ contains
     pn_elem = 0
     if (want_k .and. an%neq > 0) call sparse_zero(an%sys)
     an%fdle = 0.0_dp
+    with_carry = present(carry) .and. present(k_carry) .and. want_k
+    if (with_carry) then
+      allocate (fk(size(an%elem_dof)))
+      fk = 0.0_dp
+    end if
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
     !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, m)
@@ -438,6 +449,8 @@ contains
         an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
         if (want_k .and. an%neq > 0) then
           if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
+          if (with_carry) fk(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
+            matmul(ke(1:n, 1:n), carry(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)))
           if (an%cs%n > 0) then
             ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
             call constraints_transform(an%cs, ie, ke(1:n, 1:n), m, kx)
@@ -466,6 +479,14 @@ contains
       an%fint(an%elem_dof(k)) = an%fint(an%elem_dof(k)) + an%fe(k)
       an%fdl(an%elem_dof(k)) = an%fdl(an%elem_dof(k)) + an%fdle(k)
     end do
+    if (present(k_carry)) then
+      k_carry = 0.0_dp
+      if (with_carry) then
+        do k = 1, size(an%elem_dof)
+          k_carry(an%elem_dof(k)) = k_carry(an%elem_dof(k)) + fk(k)
+        end do
+      end if
+    end if
     who = ''
     if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
       trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
@@ -475,6 +496,7 @@ contains
       ! asked to stop (lowest label or index over the processes), so that every process decides alike
       call parallel_sum(an%par, an%fint)
       call parallel_sum(an%par, an%fdl)
+      if (with_carry) call parallel_sum(an%par, k_carry)
       pnewdt_min = parallel_min(an%par, pnewdt_min)
       if (parallel_min(an%par, pn_worst) < pn_worst) pn_elem = 0
       call parallel_lowest(an%par, pn_elem, who)

@@ -38,6 +38,15 @@ module newton_iteration
   ! solution), and the next iteration assembles it anew. Late in the application scene about one skip per
   ! increment, few of them not converged (docs/performance.md, fifth pass).
   real(dp), parameter :: skip_margin = 10.0_dp          !< skip when r_k^2 / r_(k-1) < skip_margin R_n q_avg
+  ! The first iteration of an increment evaluates the elements at the start of the increment, the prescribed dofs
+  ! at their start values, and carries the prescribed increment du_p through that tangent: it solves
+  ! K_ff du_f = r_f - K_fp du_p (r = f_ext - f_int), then sets u_p to its end value (as CalculiX does; that Abaqus
+  ! does so is inferred, docs/host.md "Analysis"; the alternative, u_p at its end value before the first element
+  ! loop, strains the layer beside a loaded face by the whole increment and costs Newton iterations:
+  ! docs/performance.md). A change below carry_negligible of the largest displacement (round-off of an extrapolated
+  ! start on a linear ramp) is applied directly instead. Modified Newton reusing its factors in the first iteration
+  ! has no tangent to carry with: it applies u_p before the element loop.
+  real(dp), parameter :: carry_negligible = 1.0e-10_dp
 
   !> What the variants carry from one iteration, attempt and increment to the next.
   type :: newton_state_t
@@ -58,11 +67,13 @@ contains
     ns%reuse_count = modified_max_reuse
   end subroutine newton_forget_factors
 
-  !> Newton iterations from the prescribed start an%u of the increment (time, dt of step is, increment kinc) until
-  !> convergence, a cutback reason (outcome) or a stop asked by a user routine (stopped; nothing else is set then
-  !> but iter). ratios(1:iter + 1) are r_max / q_avg of the iterations, for the status file.
+  !> Newton iterations from the start an%u of the increment (time, dt of step is, increment kinc; prescribed dofs at
+  !> their end values) until convergence, a cutback reason (outcome) or a stop asked by a user routine (stopped;
+  !> nothing else is set then but iter). carry: the part of an%u's change that the first iteration carries through
+  !> the tangent (the prescribed increment, see carry_negligible above). ratios(1:iter + 1) are r_max / q_avg of the
+  !> iterations, for the status file.
   subroutine newton_solve(an, model, is, kinc, time, dt, newton, verbose, out, ns, summary, r, ratios, q_sum, &
-      converged, stopped, iter, q_now, pnewdt_min, outcome)
+      converged, stopped, iter, q_now, pnewdt_min, outcome, carry)
     type(analysis_t), intent(inout) :: an                !< analysis data, an%u updated
     type(model_t), intent(in) :: model                   !< the model
     integer, intent(in) :: is                            !< step number
@@ -83,12 +94,13 @@ contains
     real(dp), intent(out) :: q_now                       !< typical force of the last residual
     real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
     character(len=*), intent(out) :: outcome             !< cutback reason ('' when converged)
+    real(dp), intent(in) :: carry(:)                     !< (ndof) change of an%u carried through the first tangent
     integer :: i, stat, kit, kbudget
     character(len=:), allocatable :: errmsg, pnewdt_who
     character(len=256) :: smsg
     real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s, r_norm, r_norm_prev, eta, eta_prev, tol
-    real(dp), allocatable :: r_copy(:)
-    logical :: want_k, k_fresh, k_skip, k_stale
+    real(dp), allocatable :: r_copy(:), k_carry(:)
+    logical :: want_k, k_fresh, k_skip, k_stale, carrying
 
     associate (st => model%steps(is))
       converged = .false.
@@ -131,8 +143,19 @@ contains
           r_prev2 = r_prev
           r_prev = r_max
         end if
-        call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
-          pnewdt_min, stat, errmsg, pnewdt_who)
+        ! the first iteration carries the prescribed increment through the tangent, when it assembles one
+        carrying = .false.
+        if (iter == 0 .and. want_k .and. an%neq > 0) &
+          carrying = maxval(abs(carry)) > carry_negligible * maxval(abs(an%u))
+        if (carrying) then
+          an%u = an%u - carry
+          if (.not. allocated(k_carry)) allocate (k_carry(an%ndof))
+          call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
+            pnewdt_min, stat, errmsg, pnewdt_who, carry=carry, k_carry=k_carry)
+        else
+          call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
+            pnewdt_min, stat, errmsg, pnewdt_who)
+        end if
         an%extrapolated = .false.  ! only the first call of an increment sees the extrapolated start
         if (an%stop_asked) then
           stopped = .true.
@@ -152,22 +175,43 @@ contains
         do i = 1, an%ndof
           if (an%eq(i) > 0) r(an%eq(i)) = an%fext(i) + an%fdl(i) - an%fint(i)
         end do
+        if (carrying) then
+          ! the residual predicted at the end values of the prescribed dofs: r - K carry
+          do i = 1, an%ndof
+            if (an%eq(i) > 0) r(an%eq(i)) = r(an%eq(i)) - k_carry(i)
+          end do
+        end if
         ! *EQUATION: the residual of an eliminated dof acts on its masters
-        if (an%cs%n > 0 .and. an%neq > 0) call constraints_residual(an%cs, an%eq, an%fext + an%fdl - an%fint, r)
+        if (an%cs%n > 0 .and. an%neq > 0) then
+          if (carrying) then
+            call constraints_residual(an%cs, an%eq, an%fext + an%fdl - an%fint - k_carry, r)
+          else
+            call constraints_residual(an%cs, an%eq, an%fext + an%fdl - an%fint, r)
+          end if
+        end if
         r_max = 0.0_dp
         if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))
         r_norm = 0.0_dp
         if (an%neq > 0) r_norm = norm2(r(1:an%neq))
         ! typical force: of the internal forces, or of the applied loads where they are larger (the first iteration
         ! of a load-controlled increment starts from zero internal force; Abaqus counts the applied loads in q)
-        q_now = max(typical_force(an%fint), typical_force(an%fext + an%fdl))
+        ! (a carried increment: of the internal forces predicted at its end, f_int + K carry)
+        if (carrying) then
+          q_now = max(typical_force(an%fint + k_carry), typical_force(an%fext + an%fdl))
+        else
+          q_now = max(typical_force(an%fint), typical_force(an%fext + an%fdl))
+        end if
         q_avg = (q_sum + q_now) / real(kinc, dp)
         du_max = maxval(abs(an%u - an%u_conv))
-        ratios(iter + 1) = r_max / max(q_avg, tiny(1.0_dp))
+        if (carrying) du_max = maxval(abs(an%u + carry - an%u_conv))
+        ratios(iter + 1) = 0.0_dp
+        if (q_avg > 1.0e-300_dp * r_max) ratios(iter + 1) = r_max / q_avg   ! (no overflow when q_avg ~ 0)
         if (verbose) call output_log(out, '    step '//itoa(is)//' inc '//itoa(kinc)//' iter '//itoa(iter)// &
           ': r_max '//rtoa(r_max)//' q_avg '//rtoa(q_avg)//' c_max '//rtoa(c_max)//' du_max '//rtoa(du_max)// &
           merge(' (tangent)      ', ' (reused LU/LDL)', want_k))
-        if (an%neq == 0 .or. newton_converged(r_max, q_avg, c_max, du_max, st%r_n, st%c_n, iter)) then
+        ! (a carried increment is not applied yet: never converged before it is)
+        if (an%neq == 0 .or. (.not. carrying .and. newton_converged(r_max, q_avg, c_max, du_max, st%r_n, st%c_n, &
+            iter))) then
           converged = .true.
           q_sum = q_sum + q_now
           exit newton_loop
@@ -269,6 +313,7 @@ contains
         iter = iter + 1
         r_norm_prev = r_norm
         c_max = maxval(abs(r(1:max(an%neq, 1))))
+        if (carrying) an%u = an%u + carry
         do i = 1, an%ndof
           if (an%eq(i) > 0) an%u(i) = an%u(i) + r(an%eq(i))
         end do

@@ -59,6 +59,7 @@ contains
     real(dp), allocatable :: temp_init(:), field_init(:)
     logical :: field_comp(max(1, model%nfield))
     real(dp), allocatable :: zero_nodes(:)
+    real(dp), allocatable :: u_carry(:)  !< (ndof) the prescribed change the first iteration carries (newton_iteration)
     real(dp) :: time(2), dt, pnewdt_min, q_now, t_end
     real(dp) :: open_inc, plastic_inc
     integer(i8) :: c1, rate, cs0
@@ -343,23 +344,28 @@ contains
             time = [s%sc%t, s%t_total0 + s%sc%t]
             t_end = s%sc%t + dt
             call external_db(1, 0, time, dt, is, s%kinc)
-            ! prescribed displacements at the end of the increment, applied at its start
+            ! the start of the increment: the converged state, or extrapolated
             an%u = an%u_conv
             an%extrapolated = st%extrapolate .and. s%dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts
             if (an%extrapolated) then
-              ! *STEP, EXTRAPOLATION=LINEAR (Abaqus' default): the free dofs start from the last converged
-              ! increment's change scaled to this increment; a failed start is retried once, then from u_conv
-              where (.not. an%prescribed) an%u = an%u_conv + (dt / s%dt_prev) * s%du_prev
+              ! *STEP, EXTRAPOLATION=LINEAR (Abaqus' default): every dof starts from the last converged increment's
+              ! change scaled to this increment; a failed start is retried once, then from u_conv
+              an%u = an%u_conv + (dt / s%dt_prev) * s%du_prev
             end if
+            if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
+            ! the prescribed values at the end of the increment; what they add to the start (all of the prescribed
+            ! increment, or what the extrapolation missed) the first Newton iteration carries through the tangent
+            u_carry = an%u
             do i = 1, an%ndof
               if (an%prescribed(i)) an%u(i) = prescribed_value(i, t_end)
             end do
             if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
+            u_carry = an%u - u_carry
             call load_vector(ls, model, is, t_end, s%t_total0, an%fext)
             call load_vector(ls_temp, model, is, t_end, s%t_total0, an%temp_end)
             call load_vector(ls_field, model, is, t_end, s%t_total0, an%field_end)
             call newton_solve(an, model, is, s%kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, s%q_sum, &
-              converged, stopped, iter, q_now, pnewdt_min, outcome)
+              converged, stopped, iter, q_now, pnewdt_min, outcome, u_carry)
             if (stopped) then
               call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
               msg = 'ldfcz: error: '//stop_message(model, an%stop_elem, an%stop_text, is, s%kinc)

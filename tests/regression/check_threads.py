@@ -9,7 +9,9 @@ sum is taken in the same order on any number of threads and the results must be 
 default; before the colouring, atomic additions in a run-dependent order gave ~3e-15). A data race (a static
 local array, a SAVEd variable written by two threads) gives O(1) differences or, in the Debug build, a "Recursive
 call to nonrecursive procedure" stop. Checks: both runs exit alike, same increments (step, inc, step time), every
-CSV value within --rel relative. Use a deck with the default full Newton: `--newton auto` sizes its GMRES budget
+CSV value within --rel relative. Then the warning of host/linalg/omp_wait.f90 in JOB.log: present with 2 threads
+and OMP_WAIT_POLICY=active or GOMP_SPINCOUNT=infinite, absent with 1 thread, the passive or the default policy.
+Use a deck with the default full Newton: `--newton auto` sizes its GMRES budget
 from measured times, which may take another path to the same tolerance.
 """
 import argparse
@@ -65,6 +67,23 @@ def main():
     print("%d increments, largest relative difference 1 vs 2 threads %.2e (bound %.0e)" % (len(r1) - 1, worst, a.rel))
     if worst > a.rel or (a.rel == 0.0 and any(x != y for x, y in zip(r1, r2))):
         fail("results depend on the thread count beyond round-off")
+    # idle threads told to spin (host/linalg/omp_wait.f90): a warning in JOB.log with 2 threads, none with 1 thread
+    # or the default policy
+    for t, env, want in ((2, {"OMP_WAIT_POLICY": "active"}, True), (1, {"OMP_WAIT_POLICY": "Active"}, False),
+                         (2, {"GOMP_SPINCOUNT": "infinite"}, True), (2, {"OMP_WAIT_POLICY": "passive"}, False),
+                         (2, {}, False)):
+        d = os.path.join(a.out, "wait")
+        e = {k: v for k, v in os.environ.items() if k not in ("OMP_WAIT_POLICY", "GOMP_SPINCOUNT")}
+        e.update(env)
+        p = subprocess.run([a.exe, "--quiet", "--threads", str(t), "--out", d, "--stop-after-increments", "1", a.deck],
+                           capture_output=True, text=True, errors="replace", timeout=600, env=e)
+        if p.returncode not in (0, 3):
+            fail("threads %d %s: exit %d" % (t, env, p.returncode))
+        with open(os.path.join(d, job + ".log")) as f:
+            has = "the idle threads of the element loop spin" in f.read()
+        print("threads %d %s: spin warning %s" % (t, env, "yes" if has else "no"))
+        if has != want:
+            fail("spin warning %s expected with %d threads and %s" % ("" if want else "not", t, env))
     print("ok")
 
 

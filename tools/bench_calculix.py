@@ -1,0 +1,282 @@
+#!/usr/bin/env python3
+"""ldfcz against CalculiX 2.20 on the same deck: a 40x40x10 C3D8 elastic NLGEOM block (issue 20).
+
+The block is 40 x 40 x 10 mm with 1 mm elements (18 491 nodes, 16 000 C3D8); the face x = 0 is clamped, the face
+x = 40 gets u1 = the pull, u2 = u3 = 0 (55 473 dofs, 52 767 equations); steel-like elasticity (E = 210 GPa,
+nu = 0.3), NLGEOM, fixed increments (*STATIC, DIRECT) of 0.1 mm of pull, i.e. 10 % strain of the element layer
+beside the loaded face if the increment were applied to the boundary nodes alone. The same deck text is read
+by both programs (Abaqus keywords that CalculiX 2.20 reads alike).
+
+Each configuration (program x threads) runs --repeat times. Per run: the wall time of each increment (the time at
+which the program appended the increment's line to JOB.sta, polled every 10 ms), the Newton iterations per
+increment (JOB.sta), the program's CPU time (user + system of the child), the load average before and after; for
+ldfcz also the closing summary's assembly / factorization / solve split. The report lists the median and the
+spread of the repeats, so the noise of a shared machine shows.
+
+  tools/setup.sh bench      (Release build and calculix-ccx)
+  /usr/bin/python3 tools/bench_calculix.py --exe build/bin/ldfcz --threads 1 2 --repeat 3 \\
+      --md reports/bench/calculix.md
+
+Not a test: a run takes minutes. Threads: ldfcz -t N, CalculiX OMP_NUM_THREADS=N (and CCX_NPROC_STIFFNESS /
+CCX_NPROC_EQUATION_SOLVER, which ccx 2.20 reads before OMP_NUM_THREADS).
+"""
+import argparse
+import json
+import os
+import re
+import shlex
+import resource
+import shutil
+import statistics
+import subprocess
+import sys
+import threading
+import time
+
+NX, NY, NZ = 40, 40, 10     # elements along x, y, z (1 mm each) of the benchmark block
+
+
+def block_deck(increments, du, nx=NX, ny=NY, nz=NZ, nlgeom=True, extrapolation=None):
+    """The deck text: an nx x ny x nz block of 1 mm C3D8 elements, clamped at x = 0, increments fixed increments of
+    du mm of pull on the face x = nx (u2 = u3 = 0 there). extrapolation: None (the default, LINEAR) or 'NO'.
+    (Also the deck of the test deck_first_iteration, tests/regression/check_first_iteration.py.)"""
+    def node_id(i, j, k):
+        return 1 + i + (nx + 1) * (j + (ny + 1) * k)
+    lines = ['*HEADING', '%dx%dx%d C3D8 elastic block, clamped at x=0, pulled at x=%d (tools/bench_calculix.py)'
+             % (nx, ny, nz, nx), '*NODE, NSET=NALL']
+    for k in range(nz + 1):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                lines.append('%d, %.1f, %.1f, %.1f' % (node_id(i, j, k), i, j, k))
+    lines.append('*ELEMENT, TYPE=C3D8, ELSET=EALL')
+    e = 0
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                e += 1
+                n = [node_id(i, j, k), node_id(i + 1, j, k), node_id(i + 1, j + 1, k), node_id(i, j + 1, k),
+                     node_id(i, j, k + 1), node_id(i + 1, j, k + 1), node_id(i + 1, j + 1, k + 1),
+                     node_id(i, j + 1, k + 1)]
+                lines.append('%d, %s' % (e, ', '.join(map(str, n))))
+
+    def nset(name, i):
+        ids = [node_id(i, j, k) for k in range(nz + 1) for j in range(ny + 1)]
+        out = ['*NSET, NSET=%s' % name]
+        for a in range(0, len(ids), 16):
+            out.append(', '.join(map(str, ids[a:a + 16])))
+        return out
+    lines += nset('FIXED', 0) + nset('LOAD', nx)
+    step = '*STEP, NLGEOM=%s, INC=%d' % ('YES' if nlgeom else 'NO', increments + 10)
+    if extrapolation:
+        step += ', EXTRAPOLATION=%s' % extrapolation
+    lines += ['*MATERIAL, NAME=STEEL', '*ELASTIC', '210000., 0.3', '*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL',
+              '*BOUNDARY', 'FIXED, 1, 3, 0.', 'LOAD, 2, 3, 0.', step, '*STATIC, DIRECT',
+              '1.0, %d.0' % increments, '*BOUNDARY', 'LOAD, 1, 1, %.6g' % (du * increments),
+              '*NODE PRINT, NSET=LOAD, TOTALS=YES', 'RF', '*END STEP']
+    return '\n'.join(lines) + '\n'
+
+
+class StaWatch:
+    """Polls a .sta file and stamps the wall time (since start) at which each line appeared."""
+
+    def __init__(self, path, t0):
+        self.path, self.t0, self.stamps, self.stop = path, t0, [], False
+        self.thread = threading.Thread(target=self.run, daemon=True)
+        self.thread.start()
+
+    def run(self):
+        seen = 0
+        while not self.stop:
+            try:
+                with open(self.path) as f:
+                    lines = f.read().splitlines()
+            except OSError:
+                lines = []
+            now = time.monotonic() - self.t0
+            for ln in lines[seen:]:
+                self.stamps.append((now, ln))
+            seen = max(seen, len(lines))
+            time.sleep(0.01)
+
+    def finish(self):
+        self.stop = True
+        self.thread.join()
+
+
+def run_timed(cmd, cwd, env, sta):
+    """Run cmd; returns (wall, cpu user+sys of the child, sta stamps, stdout)."""
+    if os.path.exists(sta):
+        os.remove(sta)
+    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.monotonic()
+    w = StaWatch(sta, t0)
+    p = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    wall = time.monotonic() - t0
+    time.sleep(0.05)
+    w.finish()
+    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+    if p.returncode != 0:
+        sys.exit('bench_calculix: %s failed (exit %d):\n%s' % (' '.join(cmd), p.returncode, p.stdout[-3000:]))
+    return wall, cpu, w.stamps, p.stdout
+
+
+def ldfcz_increments(stamps):
+    """(time, iterations) of each converged increment from ldfcz's JOB.sta lines (attempts that failed are part of
+    the next converged line's time)."""
+    out = []
+    for t, ln in stamps:
+        f = ln.split()
+        if len(f) >= 6 and f[0].isdigit() and 'converged' in ln:
+            out.append((t, int(f[3])))
+    return out
+
+
+def ccx_increments(stamps):
+    """(time, iterations) per increment from CalculiX's .sta lines: STEP INC ATT ITRS TOT TIME STEP TIME INC TIME."""
+    out = []
+    for t, ln in stamps:
+        f = ln.split()
+        if len(f) >= 7 and all(x.isdigit() for x in f[:4]):
+            out.append((t, int(f[3])))
+    return out
+
+
+def summary_split(log_text):
+    """Assembly, factorization, solve and set-up seconds, factorizations and CPU time from ldfcz's closing summary."""
+    vals = {}
+    m = re.search(r'wall time split: assembly\s+([0-9.]+) s, factorization\s+([0-9.]+) s, solve\s+([0-9.]+) s',
+                  log_text)
+    vals['assembly'], vals['factorization'], vals['solve'] = (float(x) for x in m.groups())
+    m = re.search(r'solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([0-9.]+) s', log_text)
+    vals['setup'] = float(m.group(1))
+    m = re.search(r'factorizations (\d+)', log_text)
+    vals['factorizations'] = int(m.group(1))
+    return vals
+
+
+def load_avg():
+    return os.getloadavg()[0]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('--exe', default='build/bin/ldfcz', help='ldfcz executable (a Release build)')
+    ap.add_argument('--ccx', default='ccx', help='CalculiX executable')
+    ap.add_argument('--threads', type=int, nargs='+', default=[1, 2])
+    ap.add_argument('--repeat', type=int, default=3)
+    ap.add_argument('--increments', type=int, default=4)
+    ap.add_argument('--du', type=float, default=0.1, help='pull per increment (mm)')
+    ap.add_argument('--work', default='out/bench-calculix')
+    ap.add_argument('--programs', nargs='+', default=['ldfcz', 'ccx'],
+                    help="ccx, ldfcz, or the label of an --ldfcz-config")
+    ap.add_argument('--ldfcz-config', action='append', default=[],
+                    help="LABEL=ldfcz options: a further ldfcz configuration, run when LABEL is in --programs "
+                         "(e.g. 'auto=--newton auto')")
+    ap.add_argument('--md', default='', help='write the report here (markdown)')
+    a = ap.parse_args()
+    a.ldfcz = dict(ldfcz='')
+    for c in a.ldfcz_config:
+        label, opts = c.split('=', 1)
+        a.ldfcz[label] = opts
+    os.makedirs(a.work, exist_ok=True)
+    deck = os.path.join(a.work, 'block.inp')
+    with open(deck, 'w') as f:
+        f.write(block_deck(a.increments, a.du))
+    exe = os.path.abspath(a.exe)
+    ccx = shutil.which(a.ccx) if 'ccx' in a.programs else None
+    if 'ccx' in a.programs and not ccx:
+        sys.exit('bench_calculix: %s not found (tools/setup.sh bench installs calculix-ccx)' % a.ccx)
+    rows = []
+    for rep in range(a.repeat):
+        for nt in a.threads:
+            for prog in a.programs:
+                wd = os.path.join(a.work, '%s_t%d_r%d' % (prog, nt, rep))
+                os.makedirs(wd, exist_ok=True)
+                shutil.copy(deck, os.path.join(wd, 'block.inp'))
+                env = dict(os.environ, OMP_NUM_THREADS=str(nt))
+                la0 = load_avg()
+                if prog in a.ldfcz:
+                    cmd = [exe, '-q', '-t', str(nt)] + a.ldfcz[prog].split() + ['block.inp']
+                    wall, cpu, stamps, _ = run_timed(cmd, wd, env, os.path.join(wd, 'block.sta'))
+                    incs = ldfcz_increments(stamps)
+                    with open(os.path.join(wd, 'block.log')) as f:
+                        split = summary_split(f.read())
+                else:
+                    env.update(CCX_NPROC_STIFFNESS=str(nt), CCX_NPROC_EQUATION_SOLVER=str(nt),
+                               CCX_NPROC_RESULTS=str(nt))
+                    wall, cpu, stamps, _ = run_timed([ccx, '-i', 'block'], wd, env, os.path.join(wd, 'block.sta'))
+                    incs = ccx_increments(stamps)
+                    split = {}
+                la1 = load_avg()
+                if len(incs) != a.increments:
+                    sys.exit('bench_calculix: %s -t %d: %d increments seen in the .sta file, %d expected'
+                             % (prog, nt, len(incs), a.increments))
+                tinc = [incs[0][0]] + [incs[i][0] - incs[i - 1][0] for i in range(1, len(incs))]
+                row = dict(prog=prog, threads=nt, rep=rep, wall=wall, cpu=cpu, load=(la0 + la1) / 2,
+                           t_inc=tinc, its=[i for _, i in incs], **split)
+                rows.append(row)
+                print('%-5s -t %d rep %d: wall %.1f s, cpu %.1f s, load %.1f, per increment %s s, iterations %s %s'
+                      % (prog, nt, rep, wall, cpu, row['load'], ' '.join('%.2f' % x for x in tinc), row['its'],
+                         ' '.join('%s %.1f' % kv for kv in split.items())), flush=True)
+    with open(os.path.join(a.work, 'runs.json'), 'w') as f:
+        json.dump(rows, f, indent=1)
+    if a.md:
+        write_md(a, rows)
+
+
+def write_md(a, rows):
+    def med(xs):
+        return statistics.median(xs)
+    out = ['# ldfcz against CalculiX 2.20: the 40x40x10 C3D8 elastic NLGEOM block', '',
+           'Written by `/usr/bin/python3 tools/bench_calculix.py %s` (see the tool\'s docstring for the deck).'
+           % shlex.join(sys.argv[1:]), '',
+           'Per increment: the wall time between the increment\'s line in JOB.sta and the previous one (the first '
+           'increment from the program\'s start: it includes reading the deck and the set-up). "later" is the median '
+           'over increments 2..n. Median of %d repeats, [min-max] in brackets. CPU: user + system of the whole run.'
+           % a.repeat, '',
+           '| program | threads | iterations per increment | wall (s) | CPU (s) | first increment (s) | later increment (s) | '
+           'assembly / factorization / solve (s) | load average |',
+           '|---|---|---|---|---|---|---|---|---|']
+    summary = {}
+    for nt in a.threads:
+        for prog in a.programs:
+            rs = [r for r in rows if r['prog'] == prog and r['threads'] == nt]
+            if not rs:
+                continue
+            first = [r['t_inc'][0] for r in rs]
+            later = [med(r['t_inc'][1:]) if len(r['t_inc']) > 1 else float('nan') for r in rs]
+            walls = [r['wall'] for r in rs]
+            summary[(prog, nt)] = (med(walls), med(later), med([r['cpu'] for r in rs]))
+            split = ''
+            if prog in a.ldfcz:
+                split = '%.1f / %.1f / %.1f' % tuple(med([r[k] for r in rs]) for k in ('assembly', 'factorization', 'solve'))
+            out.append('| %s | %d | %s | %.1f [%.1f-%.1f] | %.1f | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %.1f-%.1f |' % (
+                prog, nt, ' '.join(map(str, rs[0]['its'])), med(walls), min(walls), max(walls),
+                med([r['cpu'] for r in rs]), med(first), min(first), max(first), med(later), min(later), max(later),
+                split, min(r['load'] for r in rs), max(r['load'] for r in rs)))
+    out += ['', 'ldfcz configurations: ' + ', '.join('%s = `ldfcz -q -t N %s`' % (k, v) for k, v in a.ldfcz.items()
+                                                  if k in a.programs), '',
+            '| threads | CalculiX / ldfcz, wall of the run | CalculiX / ldfcz, later increment | CalculiX / ldfcz, CPU '
+            'of the run |', '|---|---|---|---|']
+    for nt in a.threads:
+        for prog in a.programs:
+            if prog in a.ldfcz and (prog, nt) in summary and ('ccx', nt) in summary:
+                l, c = summary[(prog, nt)], summary[('ccx', nt)]
+                out.append('| %d | %.2f | %.2f | %.2f |' % (nt, c[0] / l[0], c[1] / l[1], c[2] / l[2])
+                           if prog == 'ldfcz' else '| %d, ldfcz %s (`%s`) | %.2f | %.2f | %.2f |'
+                           % (nt, prog, a.ldfcz[prog], c[0] / l[0], c[1] / l[1], c[2] / l[2]))
+    out += ['', 'Every run:', '', '| program | threads | repeat | wall (s) | CPU (s) | per increment (s) | iterations |'
+            ' load average |', '|---|---|---|---|---|---|---|---|']
+    for r in rows:
+        out.append('| %s | %d | %d | %.1f | %.1f | %s | %s | %.1f |' % (
+            r['prog'], r['threads'], r['rep'], r['wall'], r['cpu'], ' '.join('%.2f' % x for x in r['t_inc']),
+            ' '.join(map(str, r['its'])), r['load']))
+    os.makedirs(os.path.dirname(a.md) or '.', exist_ok=True)
+    with open(a.md, 'w') as f:
+        f.write('\n'.join(out) + '\n')
+    print('wrote', a.md)
+
+
+if __name__ == '__main__':
+    main()
