@@ -74,7 +74,8 @@ program ldfcz
       verbose = .true.
     case ('--reorient-interfaces')
       reorient = .true.
-    case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment')
+    case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment', &
+          '--element-weights')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
       select case (arg)
@@ -87,6 +88,14 @@ program ldfcz
         options%single_factors = arg == 'single' .or. arg == 'symmetric-single'
         if (.not. (options%symmetric_factors .or. options%single_factors .or. arg == 'exact')) &
           call die('--factors needs exact, symmetric, single or symmetric-single')
+      case ('--element-weights')
+        ! METIS vertex weights of the classes UMAT continuum, *ELASTIC continuum, user element (a distributed
+        ! run's partition; the closing summary prints the measured ones)
+        arg = get_arg(i)
+        read (arg, *, iostat=stat) options%element_weights
+        if (stat /= 0 .or. any(options%element_weights < 1) .or. any(options%element_weights > 1000000)) &
+          call die('--element-weights needs three integers 1..1000000 separated by commas (UMAT continuum, '// &
+            'elastic continuum, user element), e.g. 20,2,1')
       case ('--max-opening-increment')
         arg = get_arg(i)
         read (arg, *, iostat=stat) options%max_opening
@@ -352,6 +361,9 @@ contains
       '  --max-opening-increment F  limit increments so that the cohesive opening changes by at most F*delta', &
       '                     per increment (element types that declare **LDFCZ SVARS OPENING=, LENGTH', &
       '                     PROPERTY=; paper section 7: F <= 1/3 -> >= 99% of phi)', &
+      '  --element-weights U,E,C  partition weights of a distributed run (mpirun): cost of a UMAT continuum,', &
+      '                     an *ELASTIC continuum and a user element (default 20,2,1; the closing summary', &
+      '                     of any run prints the measured ones); a restart needs the same', &
       '  --plastic-statev N report the largest increment of STATEV(N) (default: the STATEV a material', &
       '                     declares by **LDFCZ STATEV, PLASTIC STRAIN=n; 0: none)', &
       '  --max-plastic-increment X  choose the next increment so that STATEV(N) changes by about 0.8 X', &

@@ -27,6 +27,9 @@ module solver_options
     integer :: stop_after = 0                   !< > 0: stop after so many converged increments (restart tests)
     logical :: symmetric_factors = .false.      !< unsymmetric systems: LDL^T of (K + K^T)/2 as GMRES preconditioner
     logical :: single_factors = .false.         !< factors in single precision as GMRES preconditioner
+    !> METIS vertex weights of a distributed run's partition (analysis_core, cost classes): UMAT continuum,
+    !> *ELASTIC continuum, user element (estimates; --element-weights sets measured ones)
+    integer :: element_weights(3) = [20, 2, 1]
   end type solver_options_t
 
 contains

@@ -46,6 +46,7 @@ contains
     exit_code = exit_ok
     call abaqus_clear_stop()
     if (present(par)) an%par = par
+    an%cost_weight = opt%element_weights
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)

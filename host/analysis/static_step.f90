@@ -82,7 +82,8 @@ contains
       fp%nnode = model%nnode
       fp%nelem = model%nelem
       fp%ndof = an%ndof
-      fp%checksum = restart_checksum(model)
+      ! a distributed run: the partition too (a restart needs the same, else elements' states are elsewhere)
+      fp%checksum = ieor(restart_checksum(model), an%partition_sig)
       call restart_read(parallel_file(an%par, opt%restart_from), fp, rs, an%conv, stat, errmsg)
       if (nint(parallel_max(an%par, real(stat, dp))) /= 0 .and. stat == 0) then
         ! another process could not read its restart file (distributed run): all stop alike
@@ -545,7 +546,7 @@ contains
       w%nnode = model%nnode
       w%nelem = model%nelem
       w%ndof = an%ndof
-      if (fp%checksum == 0) fp%checksum = restart_checksum(model)
+      if (fp%checksum == 0) fp%checksum = ieor(restart_checksum(model), an%partition_sig)
       w%checksum = fp%checksum
       s%reuse_count = ns%reuse_count
       w%state = s

@@ -10,7 +10,7 @@ module parallel_context
   private
   public :: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed
   public :: parallel_sum, parallel_max, parallel_min, parallel_any, parallel_lowest, parallel_bcast
-  public :: parallel_file, parallel_barrier, parallel_first_error, parallel_build_is_mpi
+  public :: parallel_file, parallel_barrier, parallel_first_error, parallel_gather_pieces, parallel_build_is_mpi
 
   !> Where this process stands among the processes of the run.
   type :: parallel_t
@@ -145,6 +145,35 @@ contains
     end if
     par%t_comm = par%t_comm + since(c0)
   end subroutine parallel_lowest
+
+  !> v <- the pieces of the processes: each process holds v(rows) of its own (disjoint pieces that together
+  !> cover what it needs); on return every process holds every piece (the same bits: copies, no sums).
+  !> One MPI_Allgatherv of the rows and one of the values, no process in between.
+  subroutine parallel_gather_pieces(par, rows, v)
+    type(parallel_t), intent(inout) :: par  !< context
+    integer, intent(in) :: rows(:)          !< this process's entries of v
+    real(dp), intent(inout) :: v(:)         !< v(rows) in, every process's pieces out (other entries kept)
+    integer, allocatable :: counts(:), displs(:), all_rows(:)
+    real(dp), allocatable :: mine(:), all_vals(:)
+    integer :: ierr, p, total
+    integer(i8) :: c0
+    if (par%nranks <= 1) return
+    c0 = clock()
+    allocate (counts(par%nranks), displs(par%nranks))
+    call MPI_Allgather(size(rows), 1, MPI_INTEGER, counts, 1, MPI_INTEGER, par%comm, ierr)
+    displs(1) = 0
+    do p = 2, par%nranks
+      displs(p) = displs(p - 1) + counts(p - 1)
+    end do
+    total = displs(par%nranks) + counts(par%nranks)
+    allocate (all_rows(max(1, total)), all_vals(max(1, total)), mine(max(1, size(rows))))
+    mine(1:size(rows)) = v(rows)
+    call MPI_Allgatherv(rows, size(rows), MPI_INTEGER, all_rows, counts, displs, MPI_INTEGER, par%comm, ierr)
+    call MPI_Allgatherv(mine, size(rows), MPI_DOUBLE_PRECISION, all_vals, counts, displs, MPI_DOUBLE_PRECISION, &
+      par%comm, ierr)
+    v(all_rows(1:total)) = all_vals(1:total)
+    par%t_comm = par%t_comm + since(c0)
+  end subroutine parallel_gather_pieces
 
   !> v <- v of rank 0.
   subroutine parallel_bcast(par, v)
