@@ -130,6 +130,10 @@ contains
       if (ms%host) then
         allocate(ms%id%PERM_IN(n))
         ms%id%PERM_IN = pivot_position
+        if (.not. ms%dist_vectors) then
+          allocate(ms%id%RHS(n))
+          ms%id%RHS = 0.0_dp
+        end if
       end if
     else
       ms%id%NNZ = int(size(irn), i8)
