@@ -47,10 +47,12 @@ ldfcz_add_mpi_test(mpi_xit ${PROJECT_SOURCE_DIR}/decks/bad/runtime/uel_phi_zero.
 ldfcz_add_mpi_test(mpi_xit_remote ${CMAKE_CURRENT_SOURCE_DIR}/mpi/xit_first_element.inp --xit --remote-at 2)
 
 # start-up errors (a malformed deck, an unknown option, a missing --user file, found by every process; a restart file
-# missing on the last rank only, JOB.sta not writable on rank 0 only) under -np 2 and -np 3: exit status 2, the message
-# once, no MPI_Abort, no hang (tests/mpi/check_mpi_errors.py)
+# missing on the last rank only, JOB.sta not writable on rank 0 only; a restart with other --element-weights, found when
+# the restart files are read) under -np 2 and -np 3: exit status 2, the message once, no MPI_Abort, no hang
+# (tests/mpi/check_mpi_errors.py)
 add_test(NAME mpi_startup_errors COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/mpi/check_mpi_errors.py
-  --exe $<TARGET_FILE:ldfcz> --decks ${PROJECT_SOURCE_DIR}/decks --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/startup_errors)
+  --exe $<TARGET_FILE:ldfcz> --decks ${PROJECT_SOURCE_DIR}/decks --peel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
+  --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/startup_errors)
 set_tests_properties(mpi_startup_errors PROPERTIES LABELS "mpi" TIMEOUT 600 ENVIRONMENT "${LDFCZ_MPI_ENV}")
 
 # restart from per-process restart files (JOB.rst.RofN) and SIGTERM to the launcher (tests/regression/check_restart.py

@@ -45,6 +45,7 @@ PATTERNS = {
     'split': r'^wall time split: assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s, '
              r'output\s+([\d.]+) s',
     'setup': r'^solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([\d.]+) s',
+    'entries': r'^solver setup .*entries in the last factors (\d+)',
     'comm': r'^MPI processes (\d+), communication of the host\s+([\d.]+) s.*peak memory of a process (\d+) kB',
     'memory': r'^peak memory \(VmHWM\) (\d+) kB',
     'balance': r'^element loop per process: max\s+([\d.]+) s, mean\s+([\d.]+) s, max/mean\s+([\d.]+)',
@@ -198,9 +199,9 @@ def main():
         configs.insert(0, ('serial build, %d threads' % args.threads, 'serial', 1,
                            [args.serial_exe, '--threads', str(args.threads)], {}))
     lines = ['| scene | DOFs | run | increments / iterations | t/iteration (s) | element loop | communication | '
-             'factorization | solve | element loop max/mean | CPU/iteration rank 0 (s) | CPU/iteration all (s) | '
-             'peak memory of a process (MB) | load average before |',
-             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+             'factorization | solve | factor entries (M) | element loop max/mean | CPU/iteration rank 0 (s) | '
+             'CPU/iteration all (s) | peak memory of a process (MB) | load average before |',
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     scenes = [('peel %g' % f, f, False) for f in args.fine]
     if args.application:
         scenes.append(('application', 1.05, True))
@@ -243,9 +244,10 @@ def main():
             cores = args.threads if kind in ('base', 'serial') else nranks
             results.append(dict(scene=label, kind=kind, ranks=nranks, cores=cores, dofs=int(s['dofs'][0]), elem=asm / its,
                                 comm=comm / its, fact=fact / its, solve=solve / its, mem_mb=mem_mb))
-            row = '| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %.3f | %.3f | %.0f | %s |' % (
+            entries = '%.2f' % (s['entries'][0] / 1e6) if s['entries'] else '-'
+            row = '| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %s | %.3f | %.3f | %.0f | %s |' % (
                 label, int(s['dofs'][0]), name, inc, its, per, asm / its, comm / its, fact / its, solve / its,
-                balance, s['wall'][1] / its, cpu_all, mem_mb, load)
+                entries, balance, s['wall'][1] / its, cpu_all, mem_mb, load)
             lines.append(row)
             print(row, flush=True)
     full_dofs = 2 * (app_dofs or max(r['dofs'] for r in results))

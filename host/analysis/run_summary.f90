@@ -1,11 +1,11 @@
 !> Counters and measures of a run, the closing summary of the log (with the energy balance) and the accuracy
 !> indicators measured per increment: the cohesive opening increment (paper section 7) and a material STATEV increment.
 module run_summary
-  use ldfcz_kinds, only: dp
+  use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, etype_user
   use analysis_core, only: analysis_t, n_cost_class
   use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count, &
-    sparse_time_comm
+    sparse_time_comm, sparse_factor_entries
   use output_files, only: output_t, output_log
   use parallel_context, only: parallel_t, parallel_max, parallel_sum
   use solver_options, only: newton_full, newton_mode_name
@@ -36,6 +36,7 @@ module run_summary
     real(dp) :: class_time(n_cost_class) = 0    !< seconds in the element routines per cost class, all processes
     real(dp) :: class_calls(n_cost_class) = 0   !< element calls per cost class, all processes
     integer :: class_weight(n_cost_class) = 0   !< the partition's weights (MPI)
+    integer(i8) :: factor_entries = 0           !< entries in the last factors (MUMPS INFOG(29); 0: none)
   end type run_summary_t
 
 contains
@@ -85,6 +86,7 @@ contains
       summary%t_solve = summary%t_solve + sparse_time_solve(an%sys)
       summary%t_analysis = summary%t_analysis + sparse_time_analysis(an%sys)
       summary%factorizations = summary%factorizations + sparse_factor_count(an%sys)
+      summary%factor_entries = sparse_factor_entries(an%sys)
     end if
     summary%t_assembly = an%t_assembly
     summary%t_output = t_output
@@ -154,7 +156,8 @@ contains
     write (line, '(a,4(f10.3,a))') 'wall time split: assembly ', summary%t_assembly, ' s, factorization ', &
       summary%t_factor, ' s, solve ', summary%t_solve, ' s, output ', summary%t_output, ' s'
     call output_log(out, trim(line))
-    write (line, '(a,f10.3,a)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, ' s'
+    write (line, '(a,f10.3,a,i0)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, &
+      ' s, entries in the last factors ', summary%factor_entries
     call output_log(out, trim(line))
     if (summary%nranks > 1) then
       write (line, '(a,i0,a,f10.3,a,i0,a)') 'MPI processes ', summary%nranks, ', communication of the host ', &

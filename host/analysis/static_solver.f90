@@ -50,7 +50,7 @@ contains
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if

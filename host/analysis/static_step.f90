@@ -97,7 +97,7 @@ contains
       end if
       if (stat /= 0) then
         call output_log(out, 'ldfcz: error: '//errmsg)
-        if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+        if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
         exit_code = exit_input
         return
       end if
@@ -110,7 +110,7 @@ contains
       errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE, *FIELD, '// &
         '*BOUNDARY, TYPE=VELOCITY or *BOUNDARY, OP=NEW is not supported'
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if
@@ -144,7 +144,7 @@ contains
       errmsg = '--max-plastic-increment needs a UMAT material that declares its equivalent plastic strain '// &
         '(**LDFCZ STATEV, PLASTIC STRAIN=n; docs/umat.md) or --plastic-statev N'
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if
@@ -153,7 +153,7 @@ contains
       errmsg = '--max-opening-increment needs a user element type that declares its opening and length scale '// &
         '(**LDFCZ SVARS, ..., OPENING=, LENGTH PROPERTY=; docs/uel.md)'
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if
@@ -191,7 +191,7 @@ contains
       call output_csv_resume(out, colnames(1:ncol), rs%state%csv_rows, fresh_csv, stat, errmsg)
       if (stat /= 0) then
         call output_log(out, 'ldfcz: error: '//errmsg)
-        if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+        if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
         exit_code = exit_input
         return
       end if
@@ -281,7 +281,7 @@ contains
           call dload_step_begin(an%dl, model, is, s%t_total0, stat, errmsg)
           if (stat /= 0) then
             call output_log(out, 'ldfcz: error: '//errmsg)
-            if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+            if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
             exit_code = exit_input
             exit steps
           end if
@@ -350,7 +350,7 @@ contains
               call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
               msg = 'ldfcz: error: '//stop_message(model, an%stop_elem, an%stop_text, is, s%kinc)
               call output_log(out, msg)
-              if (out%quiet) write (error_unit, '(a)') msg
+              if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') msg
               if (parallel_distributed(an%par)) call output_log(out, 'ldfcz: the element is computed by process '// &
                 itoa(an%stop_rank)//' of '//itoa(an%par%nranks)//'; every process stopped')
               exit_code = exit_input

@@ -2,8 +2,9 @@
 """Errors of the start-up end a distributed run cleanly (mpirun -np N, the LDFCZ_MPI build).
 
 Each case runs `mpirun -np N ldfcz ...` with something wrong, found by every process (a malformed deck, an unknown
-option, a missing --user file) or by one process only (its own restart file JOB.rst.RofN missing; JOB.sta not
-writable, which only rank 0, the writer, opens). Each must:
+option, a missing --user file; a restart with other --element-weights than the run that wrote the restart files,
+i.e. another partition, found when the restart files are read) or by one process only (its own restart file
+JOB.rst.RofN missing; JOB.sta not writable, which only rank 0, the writer, opens). Each must:
   - end within the time limit (a process that gave up while the others wait in a collective call would hang);
   - end with exit status 2 (mpirun passes on the processes' status);
   - print the expected message (file, line and keyword for a deck error) exactly once, from whichever process
@@ -33,6 +34,7 @@ def main():
     ap.add_argument("--decks", required=True, help="the project's decks/ directory")
     ap.add_argument("--out", required=True)
     ap.add_argument("--np", type=int, nargs="+", default=[2, 3])
+    ap.add_argument("--peel", required=True, help="tests/mpi/peel_ps_short.inp (UMAT coating, cohesive UEL)")
     args = ap.parse_args()
     args.exe = os.path.abspath(args.exe)
     args.decks = os.path.abspath(args.decks)
@@ -57,7 +59,20 @@ def main():
         # one process only: rank 0's JOB.sta cannot be created (a directory of that name)
         writer_dir = os.path.join(out, "writer")
         os.makedirs(os.path.join(writer_dir, "cohesive_block.sta"))
+        # restart files of a run partitioned with the default weights, then a restart with others
+        rdir = os.path.join(out, "restart")
+        os.makedirs(rdir)
+        cmd = ["mpirun", "-np", str(np), "--oversubscribe", "--bind-to", "none", args.exe, "-q", "--threads", "1",
+               "--out", rdir, "--restart-write", "1", "--stop-after-increments", "2", args.peel]
+        p = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=LIMIT_S, cwd=out)
+        if p.returncode != 3:
+            fail("np %d: the run writing restart files ended with %d, want 3:\n%s" % (np, p.returncode,
+                                                                                   (p.stdout + p.stderr)[-2000:]))
+        peel_rst = os.path.join(rdir, "peel_ps_short.rst")
         cases = [
+            ("restart with another partition", ["--out", rdir, "--restart-from", peel_rst, "--element-weights",
+                                                "1,1,1", args.peel],
+             "another partition"),
             ("malformed deck", [bad], re.escape("bad_bad_number.inp:10: *NODE: not a number")),
             ("unknown option", ["--no-such-option", good], re.escape("unknown option --no-such-option")),
             ("missing deck", [os.path.join(out, "absent.inp")], re.escape("absent.inp: file not found")),
