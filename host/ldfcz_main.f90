@@ -95,7 +95,7 @@ program ldfcz
         read (arg, *, iostat=stat) options%element_weights
         if (stat /= 0 .or. any(options%element_weights < 1) .or. any(options%element_weights > 1000000)) &
           call die('--element-weights needs three integers 1..1000000 separated by commas (UMAT continuum, '// &
-            'elastic continuum, user element), e.g. 20,2,1')
+            'elastic continuum, user element), e.g. 6,5,1')
       case ('--max-opening-increment')
         arg = get_arg(i)
         read (arg, *, iostat=stat) options%max_opening
@@ -362,7 +362,7 @@ contains
       '                     per increment (element types that declare **LDFCZ SVARS OPENING=, LENGTH', &
       '                     PROPERTY=; paper section 7: F <= 1/3 -> >= 99% of phi)', &
       '  --element-weights U,E,C  partition weights of a distributed run (mpirun): cost of a UMAT continuum,', &
-      '                     an *ELASTIC continuum and a user element (default 20,2,1; the closing summary', &
+      '                     an *ELASTIC continuum and a user element (default 6,5,1; the closing summary', &
       '                     of any run prints the measured ones); a restart needs the same', &
       '  --plastic-statev N report the largest increment of STATEV(N) (default: the STATEV a material', &
       '                     declares by **LDFCZ STATEV, PLASTIC STRAIN=n; 0: none)', &

@@ -24,6 +24,11 @@ memory per process against ranks and DOFs, with its prediction for the full-widt
 
   cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DLDFCZ_MPI=ON && cmake --build build-mpi -j2 --target ldfcz
   tools/bench_mpi.py --fine 0.02 0.05 --increments 3 --yield-idle --application --orderings pord amf
+
+With --ordering-study instead: the first increment of the peel member --fine (last value) and of the application
+mesh, on 1 process with every ordering (the host's METIS, MUMPS' PORD, AMF, AMD, QAMD) and on R processes with
+METIS and PORD: entries in the factors (deterministic), factorizations and their wall and rank-0 CPU seconds;
+table to OUT/bench_mpi_orderings.md.
 """
 import argparse
 import json
@@ -154,6 +159,36 @@ def cost_model(results, ranks, full_dofs, cluster_ranks):
     return out
 
 
+def ordering_study(args, env, work):
+    mpirun = ['mpirun', '--oversubscribe', '--bind-to', 'none']
+    lines = ['| scene | DOFs | processes | ordering | factorizations | entries in the factors (M) | factorization '
+             '(s, wall) | per factorization (s) | CPU rank 0 (s) | load average before |', '|---|---|---|---|---|---|---|---|---|---|']
+    for label, fine, application in (('peel %g' % args.fine[-1], args.fine[-1], False), ('application', 1.05, True)):
+        tag = 'app' if application else '%g' % fine
+        path = os.path.join(work, 'order_%s.inp' % tag)
+        deck(args, fine, path, application)
+        for np_, orders in ((1, ['metis', 'pord', 'amf', 'amd', 'qamd']), (args.ranks, ['metis', 'pord'])):
+            for o in orders:
+                rdir = os.path.join(work, 'order_%s_%d_%s' % (tag, np_, o))
+                os.makedirs(rdir, exist_ok=True)
+                cmd = mpirun + ['-np', str(np_), args.exe, '--threads', '1', '-q', '--newton', 'full',
+                                '--stop-after-increments', '1', '--out', rdir, path]
+                load = open('/proc/loadavg').read().split()[0]
+                extra = {} if o == 'metis' else {'LDFCZ_MUMPS_ORDERING': o}
+                res = subprocess.run(cmd, capture_output=True, text=True, env=dict(env, **extra))
+                if res.returncode not in (0, 3):
+                    sys.exit('bench_mpi.py: %s failed (exit %d)' % (' '.join(cmd), res.returncode))
+                s = parse(os.path.join(rdir, 'order_%s.log' % tag))
+                nf = int(s['counts'][4])
+                row = '| %s | %d | %d | %s | %d | %.2f | %.2f | %.2f | %.2f | %s |' % (
+                    label, int(s['dofs'][0]), np_, 'host METIS' if o == 'metis' else 'MUMPS ' + o.upper(), nf,
+                    s['entries'][0] / 1e6, s['split'][1], s['split'][1] / max(nf, 1), s['wall'][1], load)
+                lines.append(row)
+                print(row, flush=True)
+    with open(os.path.join(args.out, 'bench_mpi_orderings.md'), 'w') as f:
+        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('--exe', default=os.path.join(ROOT, 'build-mpi', 'bin', 'ldfcz'), help='LDFCZ_MPI ldfcz')
@@ -172,6 +207,7 @@ def main():
     ap.add_argument('--application', action='store_true', help='also the paper\'s application mesh (section 8)')
     ap.add_argument('--orderings', nargs='*', default=[], help='MUMPS built-in orderings to compare with the host\'s '
                     'METIS on R ranks (pord, amd, amf, qamd)')
+    ap.add_argument('--ordering-study', action='store_true', help='first increment per ordering (see above)')
     ap.add_argument('--cluster-ranks', type=int, nargs='+', default=[1, 2, 8, 32, 128])
     ap.add_argument('--yield-idle', action='store_true', help='OMPI_MCA_mpi_yield_when_idle=1: a waiting process '
                     'gives its core away instead of polling (a machine shared with other jobs)')
@@ -182,6 +218,9 @@ def main():
                OMPI_MCA_rmaps_base_oversubscribe='1')
     if args.yield_idle:
         env['OMPI_MCA_mpi_yield_when_idle'] = '1'
+    if args.ordering_study:
+        ordering_study(args, env, work)
+        return
     mpirun = ['mpirun', '--oversubscribe', '--bind-to', 'none']
     R = str(args.ranks)
     # (name, kind, ranks, command, extra environment)

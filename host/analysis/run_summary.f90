@@ -120,7 +120,7 @@ contains
     where (summary%class_calls > 0.0_dp) us = 1.0e6_dp * summary%class_time / summary%class_calls
     cheapest = minval(us, mask=summary%class_calls > 0.0_dp .and. us > 0.0_dp)
     w = summary%class_weight
-    where (w <= 0) w = [20, 2, 1]
+    where (w <= 0) w = [6, 5, 1]
     do k = 1, n_cost_class
       if (summary%class_calls(k) > 0.0_dp .and. us(k) > 0.0_dp .and. cheapest > 0.0_dp .and. &
           cheapest < huge(1.0_dp)) w(k) = max(1, nint(us(k) / cheapest))
