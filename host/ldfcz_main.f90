@@ -222,7 +222,7 @@ program ldfcz
   call interface_check_messages(orient, orient_text, orient_error)
   if (len(orient_text) > 0) then
     call output_log(out, orient_text)
-    if (quiet .or. orient_error) write (error_unit, '(a)') orient_text
+    if ((quiet .or. orient_error) .and. parallel_writer(par)) write (error_unit, '(a)') orient_text
   end if
   ! (every process finds the same: the message is already in the log)
   if (orient_error) call stop_all(exit_input, '')

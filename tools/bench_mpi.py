@@ -162,7 +162,8 @@ def cost_model(results, ranks, full_dofs, cluster_ranks):
 def ordering_study(args, env, work):
     mpirun = ['mpirun', '--oversubscribe', '--bind-to', 'none']
     lines = ['| scene | DOFs | processes | ordering | factorizations | entries in the factors (M) | factorization '
-             '(s, wall) | per factorization (s) | CPU rank 0 (s) | load average before |', '|---|---|---|---|---|---|---|---|---|---|']
+             '(s, wall) | per factorization (s) | CPU rank 0 (s) | load average before |',
+             '|---|---|---|---|---|---|---|---|---|---|']
     for label, fine, application in (('peel %g' % args.fine[-1], args.fine[-1], False), ('application', 1.05, True)):
         tag = 'app' if application else '%g' % fine
         path = os.path.join(work, 'order_%s.inp' % tag)
@@ -281,10 +282,11 @@ def main():
             if application:
                 app_dofs = int(s['dofs'][0])
             cores = args.threads if kind in ('base', 'serial') else nranks
-            results.append(dict(scene=label, kind=kind, ranks=nranks, cores=cores, dofs=int(s['dofs'][0]), elem=asm / its,
-                                comm=comm / its, fact=fact / its, solve=solve / its, mem_mb=mem_mb))
+            results.append(dict(scene=label, kind=kind, ranks=nranks, cores=cores, dofs=int(s['dofs'][0]),
+                                elem=asm / its, comm=comm / its, fact=fact / its, solve=solve / its, mem_mb=mem_mb))
             entries = '%.2f' % (s['entries'][0] / 1e6) if s['entries'] else '-'
-            row = '| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %s | %.3f | %.3f | %.0f | %s |' % (
+            row = ('| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %s | %.3f | %.3f | %.0f | '
+                   '%s |') % (
                 label, int(s['dofs'][0]), name, inc, its, per, asm / its, comm / its, fact / its, solve / its,
                 entries, balance, s['wall'][1] / its, cpu_all, mem_mb, load)
             lines.append(row)
