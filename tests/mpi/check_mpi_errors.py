@@ -71,7 +71,7 @@ def main():
         peel_rst = os.path.join(rdir, "peel_ps_short.rst")
         cases = [
             ("restart with another partition", ["--out", rdir, "--restart-from", peel_rst, "--element-weights",
-                                                "1,1,1", args.peel],
+                                                "1,1,100", args.peel],
              "another partition"),
             ("malformed deck", [bad], re.escape("bad_bad_number.inp:10: *NODE: not a number")),
             ("unknown option", ["--no-such-option", good], re.escape("unknown option --no-such-option")),
