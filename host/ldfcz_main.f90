@@ -15,7 +15,7 @@ program ldfcz
   use blas_threads, only: blas_threads_default
   use omp_wait, only: omp_wait_note
   use parallel_context, only: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed, &
-    parallel_file
+    parallel_file, parallel_first_error
   use heap_reuse, only: heap_reuse_default
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
   !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
@@ -23,6 +23,7 @@ program ldfcz
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc, fflags
   integer :: i, n, stat, threads, exit_code, k, nthreads
   logical :: quiet, verbose, exists, reorient, orient_error
+  logical :: out_open    !< JOB.log is open (an error is logged there too)
   type(interface_check_t) :: orient
   character(len=:), allocatable :: orient_text
   type(model_t) :: model
@@ -44,6 +45,7 @@ program ldfcz
   end interface
 
   call parallel_init(par)   ! MPI_Init in the LDFCZ_MPI build (mpirun -np N ldfcz ...); nothing in a serial one
+  out_open = .false.
   deck = ''
   outdir = '.'
   user_file = ''
@@ -60,10 +62,12 @@ program ldfcz
     arg = get_arg(i)
     select case (arg)
     case ('-h', '--help')
-      call usage()
+      if (parallel_writer(par)) call usage()
+      call parallel_finalize(par)
       stop
     case ('-V', '--version')
-      write (output_unit, '(a)') 'ldfcz '//ldfcz_version
+      if (parallel_writer(par)) write (output_unit, '(a)') 'ldfcz '//ldfcz_version
+      call parallel_finalize(par)
       stop
     case ('-q', '--quiet')
       quiet = .true.
@@ -71,7 +75,8 @@ program ldfcz
       verbose = .true.
     case ('--reorient-interfaces')
       reorient = .true.
-    case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment')
+    case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment', &
+          '--element-weights')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
       select case (arg)
@@ -84,6 +89,14 @@ program ldfcz
         options%single_factors = arg == 'single' .or. arg == 'symmetric-single'
         if (.not. (options%symmetric_factors .or. options%single_factors .or. arg == 'exact')) &
           call die('--factors needs exact, symmetric, single or symmetric-single')
+      case ('--element-weights')
+        ! METIS vertex weights of the classes UMAT continuum, *ELASTIC continuum, user element (a distributed
+        ! run's partition; the closing summary prints the measured ones)
+        arg = get_arg(i)
+        read (arg, *, iostat=stat) options%element_weights
+        if (stat /= 0 .or. any(options%element_weights < 1) .or. any(options%element_weights > 1000000)) &
+          call die('--element-weights needs three integers 1..1000000 separated by commas (UMAT continuum, '// &
+            'elastic continuum, user element), e.g. 6,5,1')
       case ('--max-opening-increment')
         arg = get_arg(i)
         read (arg, *, iostat=stat) options%max_opening
@@ -169,8 +182,9 @@ program ldfcz
   k = index(job, '.', back=.true.)
   if (k > 1) job = job(1:k - 1)
   if (len(restart_from) > 0) then
+    ! an MPI run reads one file per process (JOB.rst.RofN): a process may miss its own
     inquire (file=parallel_file(par, restart_from), exist=exists)
-    if (.not. exists) call die('--restart-from: '//restart_from//': file not found')
+    if (.not. exists) call die('--restart-from: '//parallel_file(par, restart_from)//': file not found')
     options%restart_from = restart_from
   end if
   call make_directories(outdir)
@@ -179,8 +193,10 @@ program ldfcz
   call abaqus_set_job(job, outdir)
   call abaqus_set_processes(par%rank, par%nranks, par%comm)
 
+  call checkpoint()   ! the options, the deck's and restart file's presence, the output directory
   call read_deck(deck, model, stat, errmsg)
   if (stat /= 0) call die(errmsg)
+  call checkpoint()
 
   call user_routines_builtin(routines)
   ! an MPI run writes its log, CSV, status and frames once, from rank 0
@@ -188,6 +204,7 @@ program ldfcz
     silent=.not. parallel_writer(par))
   out%npieces = par%nranks   ! VTU frames: one piece per process (JOB_NNNN.pvtu)
   if (stat /= 0) call die(errmsg)
+  out_open = .true.
   call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
     ! each process of an MPI run compiles into a directory of its own (no two compilers writing one file)
@@ -198,24 +215,18 @@ program ldfcz
     end if
     call user_routines_load(routines, user_file, user_dir, include_dir(), stat, errmsg, &
       merge(-1, out%log, quiet .or. .not. parallel_writer(par)), fc, fflags)
-    if (stat /= 0) then
-      call output_log(out, 'ldfcz: error: '//errmsg)
-      call output_close(out)
-      write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-      call exit(exit_input)
-    end if
+    if (stat /= 0) call die(errmsg)
   end if
+  call checkpoint()   ! the output files opened, the user library compiled and loaded on every process
   ! interface elements meshed the wrong way round read opening as penetration: refuse them (or reorder them)
   call check_interface_orientation(model, reorient, orient)
   call interface_check_messages(orient, orient_text, orient_error)
   if (len(orient_text) > 0) then
     call output_log(out, orient_text)
-    if (quiet .or. orient_error) write (error_unit, '(a)') orient_text
+    if ((quiet .or. orient_error) .and. parallel_writer(par)) write (error_unit, '(a)') orient_text
   end if
-  if (orient_error) then
-    call output_close(out)
-    call exit(exit_input)
-  end if
+  ! (every process finds the same: the message is already in the log)
+  if (orient_error) call stop_all(exit_input, '')
   ! as in Abaqus, a user routine's WRITE(7, ...) goes to JOB.msg (and unit 6 to JOB.dat: output_open)
   if (len(restart_from) > 0) then
     open (unit=7, file=outdir//'/'//job//'.msg', position='append', action='write', iostat=stat)
@@ -296,11 +307,39 @@ contains
     if (l > 0) call get_command_argument(j, s)
   end function get_arg
 
+  !> An input error found by this process: every process ends with status 2 and the message, written once
+  !> (an MPI run: by rank 0, after the next checkpoint of the others; docs/host.md).
   subroutine die(msg)
     character(len=*), intent(in) :: msg
-    write (error_unit, '(a)') 'ldfcz: error: '//msg
-    call exit(exit_input)
+    call stop_all(exit_input, msg)
   end subroutine die
+
+  !> A point of the start-up that every process passes: if a process found an error before it (die), every
+  !> process ends here with that error.
+  subroutine checkpoint()
+    call stop_all(0, '')
+  end subroutine checkpoint
+
+  !> The first error of the processes (this one's: code /= 0 and msg; none: code = 0) ends every process: the
+  !> message once on standard error (and in JOB.log when open: rank 0's) unless it is '' (already reported), MPI ended
+  !> normally (no MPI_Abort), exit status code. Returns when no process reported an error.
+  subroutine stop_all(code, msg)
+    integer, intent(in) :: code
+    character(len=*), intent(in) :: msg
+    integer :: first
+    character(len=:), allocatable :: text
+    first = code
+    text = msg
+    call parallel_first_error(par, first, text)
+    if (first == 0) return
+    if (len(text) > 0 .and. parallel_writer(par)) then
+      if (out_open .and. out%log /= -1) write (out%log, '(a)') 'ldfcz: error: '//text
+      write (error_unit, '(a)') 'ldfcz: error: '//text
+    end if
+    if (out_open) call output_close(out)
+    call parallel_finalize(par)
+    call exit(first)
+  end subroutine stop_all
 
   subroutine usage()
     write (output_unit, '(a)') 'usage: ldfcz [options] JOB.inp', &
@@ -327,6 +366,9 @@ contains
       '  --max-opening-increment F  limit increments so that the cohesive opening changes by at most F*delta', &
       '                     per increment (element types that declare **LDFCZ SVARS OPENING=, LENGTH', &
       '                     PROPERTY=; paper section 7: F <= 1/3 -> >= 99% of phi)', &
+      '  --element-weights U,E,C  partition weights of a distributed run (mpirun): cost of a UMAT continuum,', &
+      '                     an *ELASTIC continuum and a user element (default 6,5,1; the closing summary', &
+      '                     of any run prints the measured ones); a restart needs the same', &
       '  --plastic-statev N report the largest increment of STATEV(N) (default: the STATEV a material', &
       '                     declares by **LDFCZ STATEV, PLASTIC STRAIN=n; 0: none)', &
       '  --max-plastic-increment X  choose the next increment so that STATEV(N) changes by about 0.8 X', &

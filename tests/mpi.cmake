@@ -42,9 +42,20 @@ ldfcz_add_mpi_test(mpi_peel_3d ${PROJECT_SOURCE_DIR}/decks/peel/peel_3d_quarter.
 ldfcz_add_mpi_test(mpi_user_uel ${PROJECT_SOURCE_DIR}/decks/single/user_uel.inp
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_elastic.f)
 ldfcz_add_mpi_test(mpi_xit ${PROJECT_SOURCE_DIR}/decks/bad/runtime/uel_phi_zero.inp --xit)
-# the first cohesive element of a row calls XIT; with 2 processes it is rank 1's (the log says whose): the stop and
-# the message come from another process than the one that writes the output
-ldfcz_add_mpi_test(mpi_xit_remote ${CMAKE_CURRENT_SOURCE_DIR}/mpi/xit_first_element.inp --xit --remote-at 2)
+# the first cohesive element of a row calls XIT; with 2 processes and the weights 20,2,1 it is rank 1's (the log says
+# whose; the test fails if the partition puts it on rank 0): the stop and the message come from another process than
+# the one that writes the output
+ldfcz_add_mpi_test(mpi_xit_remote ${CMAKE_CURRENT_SOURCE_DIR}/mpi/xit_first_element.inp --xit --remote-at 2
+  -- --element-weights 20,2,1)
+
+# start-up errors (a malformed deck, an unknown option, a missing --user file, found by every process; a restart file
+# missing on the last rank only, JOB.sta not writable on rank 0 only; a restart with other --element-weights, found when
+# the restart files are read) under -np 2 and -np 3: exit status 2, the message once, no MPI_Abort, no hang
+# (tests/mpi/check_mpi_errors.py)
+add_test(NAME mpi_startup_errors COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/mpi/check_mpi_errors.py
+  --exe $<TARGET_FILE:ldfcz> --decks ${PROJECT_SOURCE_DIR}/decks --peel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
+  --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/startup_errors)
+set_tests_properties(mpi_startup_errors PROPERTIES LABELS "mpi" TIMEOUT 600 ENVIRONMENT "${LDFCZ_MPI_ENV}")
 
 # restart from per-process restart files (JOB.rst.RofN) and SIGTERM to the launcher (tests/regression/check_restart.py
 # --np): the continuation reproduces the uninterrupted distributed run to 1e-9 (observed 1e-12: two distributed runs

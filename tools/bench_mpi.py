@@ -1,24 +1,42 @@
 #!/usr/bin/env python3
 """Distributed against threaded on this machine: the 3D quarter peel scene of tools/peel_deck.py (the family of
 tools/bench_host.py: PET coating C3D8 + Leonov UMAT on a C3D8 steel substrate, LDF cohesive layer, l_e = 2 um, 10
-elements over the width, 3 over the coating) run for a few increments by the LDFCZ_MPI build of ldfcz as
+elements over the width, 3 over the coating) and, with --application, the paper's application mesh (section 8:
+rigid substrate, fine region over 1.05 mm; docs/performance.md), run for a few increments by the LDFCZ_MPI build
+of ldfcz as
 
-  1 rank x T threads   (mpirun -np 1 ldfcz --threads T: the serial code path, one MUMPS process)
-  R ranks x 1 thread   (mpirun -np R ldfcz --threads 1: elements partitioned, MUMPS distributed)
+  1 rank x T threads          (mpirun -np 1 ldfcz --threads T: the serial code path, one MUMPS process)
+  R ranks x 1 thread, central (right-hand side and solution through MUMPS' host, LDFCZ_MUMPS_CENTRAL_RHS=1: the
+                               path before the distributed one, for the communication before/after)
+  R ranks x 1 thread          (elements partitioned with the default weights, MUMPS distributed, distributed
+                               right-hand side and solution)
+  R ranks x 1 thread, measured weights  (--element-weights from the measured costs of the run above)
+  R ranks, ORDERING           (--orderings: MUMPS' own PORD/AMF/... instead of the host's METIS; Debian's
+                               MUMPS 5.5 links neither PT-Scotch nor ParMETIS, so no parallel ordering)
 
 and, with --serial-exe, the default (sequential MUMPS) build with T threads. Prints per configuration the Newton
 iterations and the wall time per iteration split into element loop (assembly), communication of the host
-(reductions of forces and flags, broadcasts of solutions: rank 0's), factorization and solve (MUMPS' own
-communication is inside those two), rank 0's CPU time per iteration (less sensitive than the wall time to other
-jobs on the machine) and the largest peak memory of a process; writes the table to OUT/bench_mpi.md.
+(reductions of forces and flags, gathers of solutions: rank 0's), factorization and solve (MUMPS' own
+communication is inside those two), the element loop's balance over the processes (slowest / mean), rank 0's
+CPU time per iteration, the CPU time of all processes per iteration (getrusage of the children), the largest
+peak memory of a process and the load average before the run; writes the table and a fitted cost model (time and
+memory per process against ranks and DOFs, with its prediction for the full-width specimen) to OUT/bench_mpi.md.
 
   cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DLDFCZ_MPI=ON && cmake --build build-mpi -j2 --target ldfcz
-  tools/bench_mpi.py --exe build-mpi/bin/ldfcz --serial-exe build/bin/ldfcz --fine 0.02 0.05 --increments 3
+  tools/bench_mpi.py --fine 0.02 0.05 --increments 3 --yield-idle --application --orderings pord amf
+
+With --ordering-study instead: the first increment of the peel member --fine (last value) and of the application
+mesh, on 1 process with every ordering (the host's METIS, MUMPS' PORD, AMF, AMD, QAMD) and on R processes with
+METIS and PORD: entries in the factors (deterministic), factorizations and their wall and rank-0 CPU seconds;
+table to OUT/bench_mpi_orderings.md.
 """
 import argparse
 import json
+import math
 import os
 import re
+import resource
+import time
 import subprocess
 import sys
 
@@ -32,15 +50,25 @@ PATTERNS = {
     'split': r'^wall time split: assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s, '
              r'output\s+([\d.]+) s',
     'setup': r'^solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([\d.]+) s',
+    'entries': r'^solver setup .*entries in the last factors (\d+)',
     'comm': r'^MPI processes (\d+), communication of the host\s+([\d.]+) s.*peak memory of a process (\d+) kB',
     'memory': r'^peak memory \(VmHWM\) (\d+) kB',
+    'balance': r'^element loop per process: max\s+([\d.]+) s, mean\s+([\d.]+) s, max/mean\s+([\d.]+)',
+    'weights': r'as partition weights: --element-weights (\d+),(\d+),(\d+)',
 }
 
 
-def deck(args, fine, out):
+def deck(args, fine, out, application=False):
     cmd = [sys.executable, os.path.join(HERE, 'peel_deck.py'), '--3d', '--le', str(args.le), '--ny', str(args.ny),
            '--nz', str(args.nz), '--fine-length', str(fine), '--bonded', str(fine + args.margin), '--du',
            str(args.du), '--u-total', str(args.du * args.increments), '--field-frequency', '0', '--info', '-o', out]
+    if application:
+        # tools/peel_study.py application (paper section 8): rigid substrate, fine region 1.05 mm, bonded 1.2 mm,
+        # up to 1 um per increment, PET accuracy bound 1.0
+        cmd = [sys.executable, os.path.join(HERE, 'peel_deck.py'), '--3d', '--rigid-substrate', '--le', '0.002',
+               '--ny', '10', '--nz', '3', '--fine-length', '1.05', '--bonded', '1.2', '--du', '0.001',
+               '--dgamma-max', '1.0', '--u-total', str(0.001 * args.increments), '--field-frequency', '0',
+               '--info', '-o', out]
     res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode != 0:
         sys.exit('bench_mpi.py: peel_deck.py failed: ' + res.stderr)
@@ -54,6 +82,112 @@ def parse(path):
         m = re.search(pat, text, re.M)
         r[key] = [float(g) for g in m.groups()] if m else None
     return r
+
+
+def fit_power(xs, ys):
+    """y = a x^b by least squares on logarithms (two or more points)."""
+    lx = [math.log(x) for x in xs]
+    ly = [math.log(max(y, 1e-12)) for y in ys]
+    n = len(lx)
+    mx, my = sum(lx) / n, sum(ly) / n
+    sxx = sum((x - mx) ** 2 for x in lx)
+    b = sum((x - mx) * (y - my) for x, y in zip(lx, ly)) / sxx if sxx > 0 else 1.0
+    return math.exp(my - b * mx), b
+
+
+def lstsq3(rows, ys):
+    """Least squares for y = c0 r0 + c1 r1 + c2 r2 (normal equations, Gauss elimination)."""
+    a = [[sum(r[i] * r[j] for r in rows) for j in range(3)] for i in range(3)]
+    v = [sum(r[i] * y for r, y in zip(rows, ys)) for i in range(3)]
+    for k in range(3):
+        p = max(range(k, 3), key=lambda i: abs(a[i][k]))
+        a[k], a[p], v[k], v[p] = a[p], a[k], v[p], v[k]
+        if abs(a[k][k]) < 1e-30:
+            return None
+        for i in range(k + 1, 3):
+            f = a[i][k] / a[k][k]
+            a[i] = [x - f * y for x, y in zip(a[i], a[k])]
+            v[i] -= f * v[k]
+    c = [0.0] * 3
+    for k in (2, 1, 0):
+        c[k] = (v[k] - sum(a[k][j] * c[j] for j in range(k + 1, 3))) / a[k][k]
+    return c
+
+
+def cost_model(results, ranks, full_dofs, cluster_ranks):
+    """Per Newton iteration: element loop t_e = a_e N / R (N DOFs, R cores: ranks, or threads of one rank),
+    factorization t_f(N, 1) = a_f N^b_f (fitted on the 1-rank runs) and t_f(N, R) = t_f(N, 1) (s + (1 - s) / R)
+    with the serial fraction s from the measured R-rank/1-rank ratio (Amdahl), solve likewise; memory per process
+    m = m_0 + m_1 N / R + m_2 N (the model and whole dof vectors are on every process). Returns text lines."""
+    one = [r for r in results if r['ranks'] == 1 and r['kind'] == 'base']
+    many = [r for r in results if r['ranks'] == ranks and r['kind'] == 'dist']
+    if len(one) < 2 or not many:
+        return ['(cost model: needs 1-rank runs at two sizes or more and the %d-rank runs)' % ranks]
+    a_e = sum(r['elem'] * r['cores'] / r['dofs'] for r in one + many) / len(one + many)
+    af, bf = fit_power([r['dofs'] for r in one], [r['fact'] for r in one])
+    asv, bsv = fit_power([r['dofs'] for r in one], [r['solve'] for r in one])
+    ratios = []
+    for r in many:
+        base = [o for o in one if o['dofs'] == r['dofs']]
+        if base and base[0]['fact'] > 0:
+            ratios.append(r['fact'] / base[0]['fact'])
+    s_f = min(1.0, max(0.0, 2.0 * sum(ratios) / len(ratios) - 1.0)) if ratios else 1.0
+    mem_rows = [[1.0, r['dofs'] / r['ranks'], r['dofs']] for r in results if r['kind'] in ('base', 'dist')]
+    mem = lstsq3(mem_rows, [r['mem_mb'] for r in results if r['kind'] in ('base', 'dist')])
+    out = ['Cost model per Newton iteration, fitted to the runs above (N: DOFs, R: ranks; the fit is as noisy as '
+           'the wall times it comes from):', '',
+           '- element loop: t_e = %.3g N / R s (R cores: ranks, or the threads of the 1-rank run; mean over the '
+           'runs of t_e R / N)' % a_e,
+           '- factorization on one rank: t_f = %.3g N^%.2f s; on R ranks t_f (s + (1 - s)/R) with the serial fraction '
+           's = %.2f from the measured %d-rank/1-rank ratio (%s)' % (af, bf, s_f, ranks,
+                                                                   ', '.join('%.2f' % x for x in ratios)),
+           '- solve: t_s = %.3g N^%.2f s' % (asv, bsv)]
+    if mem:
+        out.append('- memory per process: m = %.0f MB + %.3g MB N / R + %.3g MB N' % tuple(mem))
+    out.append('')
+    out.append('Prediction for the full-width specimen (`--full-width`: twice the quarter model\'s width, about %d '
+               'DOFs) per Newton iteration:' % full_dofs)
+    out.append('')
+    out.append('| ranks | element loop (s) | factorization (s) | solve (s) | total (s) | memory per process (MB) |')
+    out.append('|---|---|---|---|---|---|')
+    for R in cluster_ranks:
+        te = a_e * full_dofs / R
+        tf = af * full_dofs ** bf * (s_f + (1 - s_f) / R)
+        ts = asv * full_dofs ** bsv * (s_f + (1 - s_f) / R)
+        m = (mem[0] + mem[1] * full_dofs / R + mem[2] * full_dofs) if mem else float('nan')
+        out.append('| %d | %.2f | %.2f | %.2f | %.2f | %.0f |' % (R, te, tf, ts, te + tf + ts, m))
+    return out
+
+
+def ordering_study(args, env, work):
+    mpirun = ['mpirun', '--oversubscribe', '--bind-to', 'none']
+    lines = ['| scene | DOFs | processes | ordering | factorizations | entries in the factors (M) | factorization '
+             '(s, wall) | per factorization (s) | CPU rank 0 (s) | load average before |',
+             '|---|---|---|---|---|---|---|---|---|---|']
+    for label, fine, application in (('peel %g' % args.fine[-1], args.fine[-1], False), ('application', 1.05, True)):
+        tag = 'app' if application else '%g' % fine
+        path = os.path.join(work, 'order_%s.inp' % tag)
+        deck(args, fine, path, application)
+        for np_, orders in ((1, ['metis', 'pord', 'amf', 'amd', 'qamd']), (args.ranks, ['metis', 'pord'])):
+            for o in orders:
+                rdir = os.path.join(work, 'order_%s_%d_%s' % (tag, np_, o))
+                os.makedirs(rdir, exist_ok=True)
+                cmd = mpirun + ['-np', str(np_), args.exe, '--threads', '1', '-q', '--newton', 'full',
+                                '--stop-after-increments', '1', '--out', rdir, path]
+                load = open('/proc/loadavg').read().split()[0]
+                extra = {} if o == 'metis' else {'LDFCZ_MUMPS_ORDERING': o}
+                res = subprocess.run(cmd, capture_output=True, text=True, env=dict(env, **extra))
+                if res.returncode not in (0, 3):
+                    sys.exit('bench_mpi.py: %s failed (exit %d)' % (' '.join(cmd), res.returncode))
+                s = parse(os.path.join(rdir, 'order_%s.log' % tag))
+                nf = int(s['counts'][4])
+                row = '| %s | %d | %d | %s | %d | %.2f | %.2f | %.2f | %.2f | %s |' % (
+                    label, int(s['dofs'][0]), np_, 'host METIS' if o == 'metis' else 'MUMPS ' + o.upper(), nf,
+                    s['entries'][0] / 1e6, s['split'][1], s['split'][1] / max(nf, 1), s['wall'][1], load)
+                lines.append(row)
+                print(row, flush=True)
+    with open(os.path.join(args.out, 'bench_mpi_orderings.md'), 'w') as f:
+        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
 
 
 def main():
@@ -71,6 +205,11 @@ def main():
     ap.add_argument('--du', type=float, default=0.0003)
     ap.add_argument('--increments', type=int, default=3)
     ap.add_argument('--out', default=os.path.join(ROOT, 'reports', 'bench'))
+    ap.add_argument('--application', action='store_true', help='also the paper\'s application mesh (section 8)')
+    ap.add_argument('--orderings', nargs='*', default=[], help='MUMPS built-in orderings to compare with the host\'s '
+                    'METIS on R ranks (pord, amd, amf, qamd)')
+    ap.add_argument('--ordering-study', action='store_true', help='first increment per ordering (see above)')
+    ap.add_argument('--cluster-ranks', type=int, nargs='+', default=[1, 2, 8, 32, 128])
     ap.add_argument('--yield-idle', action='store_true', help='OMPI_MCA_mpi_yield_when_idle=1: a waiting process '
                     'gives its core away instead of polling (a machine shared with other jobs)')
     args = ap.parse_args()
@@ -80,41 +219,88 @@ def main():
                OMPI_MCA_rmaps_base_oversubscribe='1')
     if args.yield_idle:
         env['OMPI_MCA_mpi_yield_when_idle'] = '1'
+    if args.ordering_study:
+        ordering_study(args, env, work)
+        return
     mpirun = ['mpirun', '--oversubscribe', '--bind-to', 'none']
-    configs = [('1 rank x %d threads' % args.threads, mpirun + ['-np', '1', args.exe, '--threads', str(args.threads)]),
-               ('%d ranks x 1 thread' % args.ranks, mpirun + ['-np', str(args.ranks), args.exe, '--threads', '1'])]
+    R = str(args.ranks)
+    # (name, kind, ranks, command, extra environment)
+    configs = [('1 rank x %d threads' % args.threads, 'base', 1,
+                mpirun + ['-np', '1', args.exe, '--threads', str(args.threads)], {}),
+               ('%s ranks x 1 thread, central RHS' % R, 'central', args.ranks,
+                mpirun + ['-np', R, args.exe, '--threads', '1'], {'LDFCZ_MUMPS_CENTRAL_RHS': '1'}),
+               ('%s ranks x 1 thread' % R, 'dist', args.ranks, mpirun + ['-np', R, args.exe, '--threads', '1'], {}),
+               ('%s ranks x 1 thread, measured weights' % R, 'weights', args.ranks,
+                mpirun + ['-np', R, args.exe, '--threads', '1'], {})]
+    for o in args.orderings:
+        configs.append(('%s ranks x 1 thread, MUMPS %s ordering' % (R, o.upper()), 'order', args.ranks,
+                        mpirun + ['-np', R, args.exe, '--threads', '1'], {'LDFCZ_MUMPS_ORDERING': o}))
     if args.serial_exe:
-        configs.insert(0, ('serial build, %d threads' % args.threads, [args.serial_exe, '--threads', str(args.threads)]))
-    lines = ['| fine (mm) | DOFs | run | increments / iterations | t/iteration (s) | element loop | communication | '
-             'factorization | solve | CPU/iteration rank 0 (s) | peak memory of a process (MB) |',
-             '|---|---|---|---|---|---|---|---|---|---|---|']
-    for fine in args.fine:
-        path = os.path.join(work, 'peel_%g.inp' % fine)
-        deck(args, fine, path)
-        for k, (name, cmd) in enumerate(configs):
-            rdir = os.path.join(work, 'run_%g_%d' % (fine, k))
+        configs.insert(0, ('serial build, %d threads' % args.threads, 'serial', 1,
+                           [args.serial_exe, '--threads', str(args.threads)], {}))
+    lines = ['| scene | DOFs | run | increments / iterations | t/iteration (s) | element loop | communication | '
+             'factorization | solve | factor entries (M) | element loop max/mean | CPU/iteration rank 0 (s) | '
+             'CPU/iteration all (s) | peak memory of a process (MB) | load average before |',
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+    scenes = [('peel %g' % f, f, False) for f in args.fine]
+    if args.application:
+        scenes.append(('application', 1.05, True))
+    results = []
+    app_dofs = None
+    for label, fine, application in scenes:
+        tag = 'app' if application else '%g' % fine
+        path = os.path.join(work, 'peel_%s.inp' % tag)
+        deck(args, fine, path, application)
+        measured = None
+        for k, (name, kind, nranks, cmd, extra_env) in enumerate(configs):
+            rdir = os.path.join(work, 'run_%s_%d' % (tag, k))
             os.makedirs(rdir, exist_ok=True)
-            full = cmd + ['-q', '--newton', args.newton, '--out', rdir, path]
-            res = subprocess.run(full, capture_output=True, text=True, env=env)
+            full = list(cmd)
+            if kind == 'weights':
+                if not measured:
+                    continue
+                full += ['--element-weights', ','.join(measured)]
+                name += ' (%s)' % ','.join(measured)
+            full += ['-q', '--newton', args.newton, '--out', rdir, path]
+            load = open('/proc/loadavg').read().split()[0] if os.path.exists('/proc/loadavg') else '?'
+            ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+            res = subprocess.run(full, capture_output=True, text=True, env=dict(env, **extra_env))
+            ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
             if res.returncode != 0:
                 sys.exit('bench_mpi.py: %s failed (exit %d):\n%s' % (' '.join(full), res.returncode,
                                                                     (res.stdout + res.stderr)[-2000:]))
-            s = parse(os.path.join(rdir, 'peel_%g.log' % fine))
+            s = parse(os.path.join(rdir, 'peel_%s.log' % tag))
             inc, its = int(s['counts'][0]), int(s['counts'][3])
             asm, fact, solve = s['split'][0], s['split'][1], s['split'][2]
             comm = s['comm'][1] if s['comm'] else 0.0
             per = s['wall'][0] / its
-            row = '| %g | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.0f |' % (
-                fine, int(s['dofs'][0]), name, inc, its, per, asm / its, comm / its, fact / its, solve / its,
-                s['wall'][1] / its, (s['comm'][2] if s['comm'] else s['memory'][0]) / 1024.0)
+            cpu_all = (ru1.ru_utime + ru1.ru_stime - ru0.ru_utime - ru0.ru_stime) / its
+            mem_mb = (s['comm'][2] if s['comm'] else s['memory'][0]) / 1024.0
+            balance = '%.3f' % s['balance'][2] if s['balance'] else '-'
+            if kind == 'dist' and s['weights']:
+                measured = ['%d' % w for w in s['weights']]
+            if application:
+                app_dofs = int(s['dofs'][0])
+            cores = args.threads if kind in ('base', 'serial') else nranks
+            results.append(dict(scene=label, kind=kind, ranks=nranks, cores=cores, dofs=int(s['dofs'][0]),
+                                elem=asm / its, comm=comm / its, fact=fact / its, solve=solve / its, mem_mb=mem_mb))
+            entries = '%.2f' % (s['entries'][0] / 1e6) if s['entries'] else '-'
+            row = ('| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %s | %.3f | %.3f | %.0f | '
+                   '%s |') % (
+                label, int(s['dofs'][0]), name, inc, its, per, asm / its, comm / its, fact / its, solve / its,
+                entries, balance, s['wall'][1] / its, cpu_all, mem_mb, load)
             lines.append(row)
             print(row, flush=True)
+    full_dofs = 2 * (app_dofs or max(r['dofs'] for r in results))
+    model = cost_model(results, args.ranks, full_dofs,
+                       args.cluster_ranks)
     load = open('/proc/loadavg').read().split()[:3] if os.path.exists('/proc/loadavg') else ['?']
     with open(os.path.join(args.out, 'bench_mpi.md'), 'w') as f:
         f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\nLoad average at the end: ' +
                 ' '.join(load) + ' (other jobs share the cores: wall times inflate, CPU time does not)\n\n' +
-                '\n'.join(lines) + '\n')
+                '\n'.join(lines) + '\n\n' + '\n'.join(model) + '\n')
     print('\n'.join(lines))
+    print('\n'.join(model))
 
 
 if __name__ == '__main__':

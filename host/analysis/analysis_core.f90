@@ -24,9 +24,10 @@ module analysis_core
   implicit none
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
-  public :: analysis_restore, pnewdt_large, elem_type_name
+  public :: analysis_restore, pnewdt_large, elem_type_name, n_cost_class
 
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
+  integer, parameter :: n_cost_class = 3  !< cost classes of elements (cost_class)
   integer, parameter :: mdload = 8   !< MDLOAD: distributed loads of a user element at most (Un on one element)
 
   !> State of one element (integration-point arrays of continuum elements, SVARS and ENERGY of user elements).
@@ -100,6 +101,11 @@ module analysis_core
     character(len=:), allocatable :: stop_text  !< the routine's message
     integer :: stop_rank = 0                    !< the process whose element asked (distributed run)
     integer :: n_assembly = 0
+    !> METIS vertex weight of each cost class (cost_class: UMAT continuum, *ELASTIC continuum, user element)
+    integer :: cost_weight(n_cost_class) = [6, 5, 1]
+    real(dp) :: class_time(n_cost_class) = 0.0_dp     !< wall seconds in element routines, per cost class
+    integer(i8) :: class_calls(n_cost_class) = 0      !< element calls per cost class (this process)
+    integer(i8) :: partition_sig = 0                  !< signature of the partition (0: one process)
   end type analysis_t
 
 contains
@@ -388,8 +394,11 @@ contains
     !> (symmetrised for LDL^T) over all dofs, prescribed ones included
     real(dp), intent(in), optional :: carry(:)
     real(dp), intent(out), optional :: k_carry(:)          !< (ndof) K carry
-    integer :: ie, ic, c, n, k, fail_elem, st, m, pn_elem
+    integer :: ie, ic, c, n, k, fail_elem, st, m, pn_elem, kc
     real(dp), allocatable :: ke(:, :), fel(:), kx(:, :), fk(:)
+    real(dp) :: ctime(n_cost_class)        !< seconds in the element routines per cost class (this loop)
+    integer(i8) :: ccalls(n_cost_class)    !< calls per cost class
+    integer(i8) :: e0, e1
     real(dp) :: pn, pn_worst, comm0
     character(len=256) :: msg, first_msg
     character(len=:), allocatable :: who, fail_text
@@ -412,21 +421,28 @@ contains
       allocate (fk(size(an%elem_dof)))
       fk = 0.0_dp
     end if
+    ctime = 0.0_dp
+    ccalls = 0
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
-    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, m)
+    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, m, kc, e0, e1)
     allocate (ke(an%max_ndofel, an%max_ndofel), fel(an%max_ndofel))
     allocate (kx(max(1, an%cs%max_x), max(1, an%cs%max_x)))
     do c = 1, an%ncolor
-      !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min)
+      !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min) reduction(+: ctime, ccalls)
       do ic = an%color_ptr(c), an%color_ptr(c + 1) - 1
         ie = an%color_elem(ic)
         if (.not. an%owned(ie)) cycle   ! another process's element (distributed run)
         n = an%elem_ptr(ie + 1) - an%elem_ptr(ie)
         pn = pnewdt_large
         call abaqus_set_caller(ie)
+        call system_clock(e0)
         call element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel(1:n), &
           ke(1:n, 1:n), pn, st, msg)
+        call system_clock(e1)
+        kc = cost_class(an, model, ie)
+        ctime(kc) = ctime(kc) + real(e1 - e0, dp)
+        ccalls(kc) = ccalls(kc) + 1
         if (st /= 0) then
           !$omp critical (analysis_fail)
           if (model%elem_id(ie) < fail_elem) then
@@ -465,6 +481,8 @@ contains
     call abaqus_set_caller(0)
     deallocate (ke, fel, kx)
     !$omp end parallel
+    an%class_time = an%class_time + ctime / real(rate, dp)
+    an%class_calls = an%class_calls + ccalls
     ! a stop asked by a user routine, with the element recorded when it asked
     an%stop_asked = abaqus_stop_requested()
     an%stop_elem = 0
@@ -707,9 +725,11 @@ contains
   end subroutine element_axes
 
   !> The elements this process computes: all of them in a one-process run; with several processes the METIS
-  !> partition of the element graph (element_partition), each element weighted by an estimate of its cost in the
-  !> element loop (user elements 1, *ELASTIC continuum elements 2, UMAT continuum elements 20: the Leonov UMAT
-  !> dominates the profile of the peel scenes, docs/performance.md; an estimate, not a measurement per element).
+  !> partition of the element graph (element_partition), each element weighted by the cost of its class in the
+  !> element loop (an%cost_weight: by default 6, 5, 1 for UMAT continuum, *ELASTIC continuum, user element, as
+  !> measured on the 3D peel family; --element-weights sets others: every run measures its classes' costs and
+  !> run_summary prints them).
+  !> The owner map's signature goes into the restart fingerprint: a restart needs the same partition.
   subroutine partition(an, model, stat, errmsg)
     type(analysis_t), intent(inout) :: an                !< analysis data (an%par set)
     type(model_t), intent(in) :: model                   !< the model
@@ -725,13 +745,7 @@ contains
     if (.not. parallel_distributed(an%par)) return
     allocate (weight(model%nelem))
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) == etype_user) then
-        weight(ie) = 1
-      else if (an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT) then
-        weight(ie) = 20
-      else
-        weight(ie) = 2
-      end if
+      weight(ie) = an%cost_weight(cost_class(an, model, ie))
     end do
     call partition_elements(model%nnode, model%conn_ptr, model%conn(1:model%conn_ptr(model%nelem + 1) - 1), &
       weight, an%par%nranks, owner, stat, msg)
@@ -741,7 +755,28 @@ contains
       return
     end if
     an%owned = owner == an%par%rank
+    ! the same on every process (the same owner map): part of the restart fingerprint
+    an%partition_sig = 1
+    do ie = 1, model%nelem
+      an%partition_sig = mod(an%partition_sig * 131_i8 + int(owner(ie) + 1, i8), 1000000007_i8)
+    end do
   end subroutine partition
+
+  !> Cost class of an element for the partition weights and the measured costs: 1 continuum element with a UMAT,
+  !> 2 continuum element with *ELASTIC, 3 user element (UEL).
+  pure integer function cost_class(an, model, ie) result(k)
+    type(analysis_t), intent(in) :: an                   !< analysis data (materials)
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(in) :: ie                            !< element
+    if (model%elem_kind(ie) == etype_user) then
+      k = 3
+    else if (an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT) then
+      k = 1
+    else
+      k = 2
+    end if
+  end function cost_class
+
 
   !> *INITIAL CONDITIONS, TYPE=STRESS (every integration point of the element gets the given stress; not in
   !> equilibrium, it is equilibrated by the first increment as in Abaqus without *GEOSTATIC) and TYPE=SOLUTION (the

@@ -278,7 +278,7 @@ contains
     integer :: u, ios, ie, version
     character(len=8) :: magic
     character(len=256) :: iom
-    character(len=160) :: line
+    character(len=200) :: line
     logical :: shape_ok
     stat = 2
     errmsg = ''
@@ -314,7 +314,8 @@ contains
       write (line, '(3(a,i0,a,i0),a)') ' (file: ', rs%nnode, ' nodes, deck: ', expect%nnode, '; ', rs%nelem, &
         ' elements vs ', expect%nelem, '; ', rs%ndof, ' dofs vs ', expect%ndof, ')'
       if (rs%nnode == expect%nnode .and. rs%nelem == expect%nelem .and. rs%ndof == expect%ndof) &
-        line = ' (same sizes, but the checksum of the numbers differs)'
+        line = ' (same sizes, but the checksum of the numbers differs; a distributed run: or another partition, '// &
+        'i.e. other --element-weights)'
       errmsg = path//': the restart file was written for a different model than this deck'//trim(line)// &
         '; restart with the deck that wrote it'
       close (u)

@@ -1,11 +1,11 @@
 !> Counters and measures of a run, the closing summary of the log (with the energy balance) and the accuracy
 !> indicators measured per increment: the cohesive opening increment (paper section 7) and a material STATEV increment.
 module run_summary
-  use ldfcz_kinds, only: dp
+  use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, etype_user
-  use analysis_core, only: analysis_t
+  use analysis_core, only: analysis_t, n_cost_class
   use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count, &
-    sparse_time_comm
+    sparse_time_comm, sparse_factor_entries
   use output_files, only: output_t, output_log
   use parallel_context, only: parallel_t, parallel_max, parallel_sum
   use solver_options, only: newton_full, newton_mode_name
@@ -31,6 +31,12 @@ module run_summary
     integer :: nranks = 1                       !< processes of the run (MPI)
     real(dp) :: t_comm = 0                      !< wall seconds in the host's reductions and broadcasts (MPI)
     integer :: peak_kb_max = 0                  !< largest VmHWM over the processes (MPI)
+    real(dp) :: t_assembly_max = 0              !< element loop: the slowest process's seconds (MPI)
+    real(dp) :: t_assembly_mean = 0             !< element loop: the mean over the processes (MPI)
+    real(dp) :: class_time(n_cost_class) = 0    !< seconds in the element routines per cost class, all processes
+    real(dp) :: class_calls(n_cost_class) = 0   !< element calls per cost class, all processes
+    integer :: class_weight(n_cost_class) = 0   !< the partition's weights (MPI)
+    integer(i8) :: factor_entries = 0           !< entries in the last factors (MUMPS INFOG(29); 0: none)
   end type run_summary_t
 
 contains
@@ -80,13 +86,51 @@ contains
       summary%t_solve = summary%t_solve + sparse_time_solve(an%sys)
       summary%t_analysis = summary%t_analysis + sparse_time_analysis(an%sys)
       summary%factorizations = summary%factorizations + sparse_factor_count(an%sys)
+      summary%factor_entries = sparse_factor_entries(an%sys)
     end if
     summary%t_assembly = an%t_assembly
     summary%t_output = t_output
     summary%nranks = an%par%nranks
+    ! load balance of the element loop and the measured cost of each element class (sums over the processes)
+    summary%t_assembly_max = parallel_max(an%par, an%t_assembly)
+    e(1) = an%t_assembly
+    call parallel_sum(an%par, e)
+    summary%t_assembly_mean = e(1) / real(an%par%nranks, dp)
+    summary%class_time = an%class_time
+    call parallel_sum(an%par, summary%class_time)
+    summary%class_calls = real(an%class_calls, dp)
+    call parallel_sum(an%par, summary%class_calls)
+    summary%class_weight = an%cost_weight
     summary%t_comm = an%par%t_comm
     if (an%sys_ready) summary%t_comm = summary%t_comm + sparse_time_comm(an%sys)
   end subroutine run_summary_collect
+
+  !> The measured cost of an element call per class (UMAT continuum, *ELASTIC continuum, user element: wall
+  !> microseconds per call, summed over the processes' calls) and the weights they give for the partition of a
+  !> distributed run (relative to the cheapest class present, at least 1; a class without elements keeps the
+  !> weight of the run), to pass as --element-weights.
+  subroutine cost_line(out, summary)
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(in) :: summary     !< counters and measures
+    character(len=300) :: line
+    real(dp) :: us(n_cost_class), cheapest
+    integer :: w(n_cost_class), k
+    if (all(summary%class_calls <= 0.0_dp)) return
+    us = 0.0_dp
+    where (summary%class_calls > 0.0_dp) us = 1.0e6_dp * summary%class_time / summary%class_calls
+    cheapest = minval(us, mask=summary%class_calls > 0.0_dp .and. us > 0.0_dp)
+    w = summary%class_weight
+    where (w <= 0) w = [6, 5, 1]
+    do k = 1, n_cost_class
+      if (summary%class_calls(k) > 0.0_dp .and. us(k) > 0.0_dp .and. cheapest > 0.0_dp .and. &
+          cheapest < huge(1.0_dp)) w(k) = max(1, nint(us(k) / cheapest))
+    end do
+    write (line, '(a,3(f10.2,a,es9.2,a),3(i0,a))') 'element cost measured (us per call, calls): UMAT continuum ', &
+      us(1), ' (', summary%class_calls(1), '), elastic continuum ', us(2), ' (', summary%class_calls(2), &
+      '), user element ', us(3), ' (', summary%class_calls(3), '); as partition weights: --element-weights ', &
+      w(1), ',', w(2), ',', w(3), ''
+    call output_log(out, trim(line))
+  end subroutine cost_line
 
   !> The closing summary of the log: counters, times, memory, energy balance and accuracy indicators.
   subroutine run_summary_write(out, summary)
@@ -112,7 +156,8 @@ contains
     write (line, '(a,4(f10.3,a))') 'wall time split: assembly ', summary%t_assembly, ' s, factorization ', &
       summary%t_factor, ' s, solve ', summary%t_solve, ' s, output ', summary%t_output, ' s'
     call output_log(out, trim(line))
-    write (line, '(a,f10.3,a)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, ' s'
+    write (line, '(a,f10.3,a,i0)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, &
+      ' s, entries in the last factors ', summary%factor_entries
     call output_log(out, trim(line))
     if (summary%nranks > 1) then
       write (line, '(a,i0,a,f10.3,a,i0,a)') 'MPI processes ', summary%nranks, ', communication of the host ', &
@@ -120,6 +165,14 @@ contains
         summary%peak_kb_max, ' kB'
       call output_log(out, trim(line))
     end if
+    if (summary%nranks > 1) then
+      write (line, '(a,f10.3,a,f10.3,a,f6.3,a,3(i0,a))') 'element loop per process: max ', &
+        summary%t_assembly_max, ' s, mean ', summary%t_assembly_mean, ' s, max/mean ', &
+        summary%t_assembly_max / max(summary%t_assembly_mean, tiny(1.0_dp)), ' (partition weights ', &
+        summary%class_weight(1), ',', summary%class_weight(2), ',', summary%class_weight(3), ')'
+      call output_log(out, trim(line))
+    end if
+    call cost_line(out, summary)
     write (line, '(a,i0,a)') 'peak memory (VmHWM) ', summary%peak_kb, ' kB'
     call output_log(out, trim(line))
     ! energy balance: external work of the reactions against stored + dissipated energy, relative difference

@@ -27,6 +27,10 @@ module solver_options
     integer :: stop_after = 0                   !< > 0: stop after so many converged increments (restart tests)
     logical :: symmetric_factors = .false.      !< unsymmetric systems: LDL^T of (K + K^T)/2 as GMRES preconditioner
     logical :: single_factors = .false.         !< factors in single precision as GMRES preconditioner
+    !> METIS vertex weights of a distributed run's partition (analysis_core, cost classes): UMAT continuum,
+    !> *ELASTIC continuum, user element; measured on the 3D peel family (docs/performance.md, "Distributed runs":
+    !> a Leonov C3D8 75-100 us per call, an elastic C3D8 70-90 us, a cohesive U1 12 us); --element-weights
+    integer :: element_weights(3) = [6, 5, 1]
   end type solver_options_t
 
 contains

@@ -46,10 +46,11 @@ contains
     exit_code = exit_ok
     call abaqus_clear_stop()
     if (present(par)) an%par = par
+    an%cost_weight = opt%element_weights
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if

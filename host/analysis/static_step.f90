@@ -84,7 +84,8 @@ contains
       fp%nnode = model%nnode
       fp%nelem = model%nelem
       fp%ndof = an%ndof
-      fp%checksum = restart_checksum(model)
+      ! a distributed run: the partition too (a restart needs the same, else elements' states are elsewhere)
+      fp%checksum = ieor(restart_checksum(model), an%partition_sig)
       call restart_read(parallel_file(an%par, opt%restart_from), fp, rs, an%conv, stat, errmsg)
       if (nint(parallel_max(an%par, real(stat, dp))) /= 0 .and. stat == 0) then
         ! another process could not read its restart file (distributed run): all stop alike
@@ -98,7 +99,7 @@ contains
       end if
       if (stat /= 0) then
         call output_log(out, 'ldfcz: error: '//errmsg)
-        if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+        if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
         exit_code = exit_input
         return
       end if
@@ -111,7 +112,7 @@ contains
       errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE, *FIELD, '// &
         '*BOUNDARY, TYPE=VELOCITY or *BOUNDARY, OP=NEW is not supported'
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if
@@ -159,7 +160,7 @@ contains
       errmsg = '--max-plastic-increment needs a UMAT material that declares its equivalent plastic strain '// &
         '(**LDFCZ STATEV, PLASTIC STRAIN=n; docs/umat.md) or --plastic-statev N'
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if
@@ -168,7 +169,7 @@ contains
       errmsg = '--max-opening-increment needs a user element type that declares its opening and length scale '// &
         '(**LDFCZ SVARS, ..., OPENING=, LENGTH PROPERTY=; docs/uel.md)'
       call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return
     end if
@@ -206,7 +207,7 @@ contains
       call output_csv_resume(out, colnames(1:ncol), rs%state%csv_rows, fresh_csv, stat, errmsg)
       if (stat /= 0) then
         call output_log(out, 'ldfcz: error: '//errmsg)
-        if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+        if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
         exit_code = exit_input
         return
       end if
@@ -296,7 +297,7 @@ contains
           call dload_step_begin(an%dl, model, is, s%t_total0, stat, errmsg)
           if (stat /= 0) then
             call output_log(out, 'ldfcz: error: '//errmsg)
-            if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
+            if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
             exit_code = exit_input
             exit steps
           end if
@@ -370,7 +371,7 @@ contains
               call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
               msg = 'ldfcz: error: '//stop_message(model, an%stop_elem, an%stop_text, is, s%kinc)
               call output_log(out, msg)
-              if (out%quiet) write (error_unit, '(a)') msg
+              if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') msg
               if (parallel_distributed(an%par)) call output_log(out, 'ldfcz: the element is computed by process '// &
                 itoa(an%stop_rank)//' of '//itoa(an%par%nranks)//'; every process stopped')
               exit_code = exit_input
@@ -566,7 +567,7 @@ contains
       w%nnode = model%nnode
       w%nelem = model%nelem
       w%ndof = an%ndof
-      if (fp%checksum == 0) fp%checksum = restart_checksum(model)
+      if (fp%checksum == 0) fp%checksum = ieor(restart_checksum(model), an%partition_sig)
       w%checksum = fp%checksum
       s%reuse_count = ns%reuse_count
       w%state = s

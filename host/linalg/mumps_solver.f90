@@ -17,12 +17,21 @@
 !> Distributed (the LDFCZ_MPI build, several processes; mumps_analyse with comm): the parallel MUMPS on that
 !> communicator, PAR = 1 (the host works too), the matrix in distributed assembled form (ICNTL(18) = 3: each
 !> process gives IRN_loc, JCN_loc, A_loc of the entries its own elements touch; MUMPS sums the entries given on
-!> several processes), the user ordering (PERM_IN) and the dense right-hand side and solution on the host
-!> (ICNTL(20) = 0, ICNTL(21) = 0): after a solve only rank 0's rhs holds the solution (sparse_system broadcasts
-!> it). Every call is collective: all processes call the same phases in the same order.
+!> several processes), the user ordering (PERM_IN), and in double precision the right-hand side and solution
+!> distributed (ICNTL(20) = 10: each process gives a block of rows, IRHS_loc, of the right-hand side that every
+!> process holds; ICNTL(21) = 1: each process receives the solution entries MUMPS leaves on it, ISOL_loc, known
+!> after the factorization): after a solve a process's rhs holds its own solution entries, zero elsewhere, and
+!> mumps_solution_rows names them (sparse_system gathers the pieces on every process). Nothing goes through the
+!> host. Single-precision factors keep the right-hand side and solution on the host (ICNTL(20) = 0,
+!> ICNTL(21) = 0; only rank 0's rhs holds the solution). Every call is collective: all processes call the same
+!> phases in the same order.
 !>
 !> Output of MUMPS is silenced (ICNTL(1:4)) unless the environment variable LDFCZ_MUMPS_VERBOSE is set to a value
-!> other than '' or '0'.
+!> other than '' or '0'. Two switches for measurements only (tools/bench_mpi.py, docs/performance.md):
+!> LDFCZ_MUMPS_ORDERING = pord, amd, amf or qamd replaces the host's METIS ordering by that built-in ordering of
+!> MUMPS (ICNTL(7) = 4, 0, 2, 6); LDFCZ_MUMPS_CENTRAL_RHS = 1 keeps a distributed run's right-hand side and
+!> solution on the host (ICNTL(20) = 0, ICNTL(21) = 0, the solution broadcast: the path before the distributed
+!> one). Neither changes the solution beyond rounding.
 module mumps_solver
   use ldfcz_kinds, only: dp, i8
   use, intrinsic :: iso_fortran_env, only: sp => real32
@@ -30,6 +39,7 @@ module mumps_solver
   private
   public :: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy
   public :: mumps_factor_entries, mumps_pivot_order, mumps_is_analysed, mumps_is_factored
+  public :: mumps_solution_rows, mumps_solution_distributed
 
   include 'mpif.h'
   include 'dmumps_struc.h'
@@ -51,6 +61,7 @@ module mumps_solver
     integer :: n = 0                                 !< order of the matrix
     logical :: distributed = .false.                 !< ICNTL(18) = 3 on a communicator of several processes
     logical :: host = .true.                         !< this process is MUMPS' host (rank 0 of the communicator)
+    logical :: dist_vectors = .false.                !< distributed right-hand side and solution (ICNTL(20/21))
   end type mumps_solver_t
 
 contains
@@ -94,19 +105,35 @@ contains
       return
     end if
     ms%initialised = .true.
-    call set_controls(ms%id%ICNTL, ms%distributed)
+    ms%dist_vectors = ms%distributed .and. .not. env_set('LDFCZ_MUMPS_CENTRAL_RHS')
+    call set_controls(ms%id%ICNTL, ms%distributed, ms%dist_vectors)
     ms%n = n
     ms%id%N = n
     if (ms%distributed) then
+      ! this process's block of right-hand side rows (any disjoint cover of 1..n serves: every process holds the
+      ! whole right-hand side); an empty block still gets an associated array
+      block
+        integer :: lo, hi, i
+        lo = int(int(n, i8) * ms%id%MYID / ms%id%NPROCS) + 1
+        hi = int(int(n, i8) * (ms%id%MYID + 1) / ms%id%NPROCS)
+        ms%id%Nloc_RHS = hi - lo + 1
+        ms%id%LRHS_loc = max(1, hi - lo + 1)
+        allocate (ms%id%IRHS_loc(max(1, hi - lo + 1)), ms%id%RHS_loc(max(1, hi - lo + 1)))
+        ms%id%IRHS_loc = [(i, i = lo, lo + size(ms%id%IRHS_loc) - 1)]
+        ms%id%RHS_loc = 0.0_dp
+      end block
       ms%id%NNZ_loc = int(size(irn), i8)
       allocate(ms%id%IRN_loc(size(irn)), ms%id%JCN_loc(size(jcn)), ms%id%A_loc(size(irn)))
       ms%id%IRN_loc = irn
       ms%id%JCN_loc = jcn
       ms%id%A_loc = 0.0_dp
       if (ms%host) then
-        allocate(ms%id%PERM_IN(n), ms%id%RHS(n))
+        allocate(ms%id%PERM_IN(n))
         ms%id%PERM_IN = pivot_position
-        ms%id%RHS = 0.0_dp
+        if (.not. ms%dist_vectors) then
+          allocate(ms%id%RHS(n))
+          ms%id%RHS = 0.0_dp
+        end if
       end if
     else
       ms%id%NNZ = int(size(irn), i8)
@@ -180,10 +207,21 @@ contains
       call describe(here, ms%id%INFOG(1), ms%id%INFOG(2), errmsg)
       return
     end if
+    if (ms%dist_vectors) then
+      ! the solution entries MUMPS leaves on this process: INFO(23) of them (ISOL_loc filled by the solve)
+      if (associated(ms%id%SOL_loc)) then
+        if (size(ms%id%SOL_loc) /= max(1, ms%id%INFO(23))) deallocate (ms%id%SOL_loc, ms%id%ISOL_loc)
+      end if
+      if (.not. associated(ms%id%SOL_loc)) &
+        allocate (ms%id%SOL_loc(max(1, ms%id%INFO(23))), ms%id%ISOL_loc(max(1, ms%id%INFO(23))))
+      ms%id%LSOL_loc = max(1, ms%id%INFO(23))
+    end if
     ms%factored = .true.
   end subroutine mumps_factorize
 
-  !> Solve with the last factors: rhs in, solution out (distributed: rank 0's rhs only; the others' is untouched).
+  !> Solve with the last factors: rhs in, solution out. Distributed (mumps_solution_distributed): every process
+  !> gives the same rhs; out, its rhs holds its own solution entries (mumps_solution_rows), zero elsewhere.
+  !> Distributed with single-precision factors: rank 0's rhs only holds the solution (the others' is untouched).
   subroutine mumps_solve(ms, rhs, stat, errmsg)
     type(mumps_solver_t), intent(inout) :: ms        !< factored instance
     real(dp), intent(inout) :: rhs(:)                !< right-hand side in, solution out (size n)
@@ -207,9 +245,13 @@ contains
       call solve_single(ms, rhs, stat, errmsg)
       return
     end if
-    if (ms%host) ms%id%RHS = rhs
     ms%id%NRHS = 1
-    ms%id%LRHS = ms%n
+    if (ms%dist_vectors) then
+      if (ms%id%Nloc_RHS > 0) ms%id%RHS_loc(1:ms%id%Nloc_RHS) = rhs(ms%id%IRHS_loc(1:ms%id%Nloc_RHS))
+    else
+      if (ms%host) ms%id%RHS = rhs
+      ms%id%LRHS = ms%n
+    end if
     ms%id%JOB = job_solve
     call dmumps(ms%id)
     if (ms%id%INFOG(1) < 0) then
@@ -217,7 +259,12 @@ contains
       call describe(here, ms%id%INFOG(1), ms%id%INFOG(2), errmsg)
       return
     end if
-    if (ms%host) rhs = ms%id%RHS
+    if (ms%dist_vectors) then
+      rhs = 0.0_dp
+      if (ms%id%INFO(23) > 0) rhs(ms%id%ISOL_loc(1:ms%id%INFO(23))) = ms%id%SOL_loc(1:ms%id%INFO(23))
+    else if (ms%host) then
+      rhs = ms%id%RHS
+    end if
   end subroutine mumps_solve
 
   !> Terminate the instance (JOB = -2) and free the arrays given to it.
@@ -245,8 +292,13 @@ contains
       if (associated(ms%id%IRN_loc)) deallocate(ms%id%IRN_loc)
       if (associated(ms%id%JCN_loc)) deallocate(ms%id%JCN_loc)
       if (associated(ms%id%A_loc)) deallocate(ms%id%A_loc)
+      if (associated(ms%id%IRHS_loc)) deallocate(ms%id%IRHS_loc)
+      if (associated(ms%id%RHS_loc)) deallocate(ms%id%RHS_loc)
+      if (associated(ms%id%ISOL_loc)) deallocate(ms%id%ISOL_loc)
+      if (associated(ms%id%SOL_loc)) deallocate(ms%id%SOL_loc)
     end if
     ms%single = .false.
+    ms%dist_vectors = .false.
     ms%initialised = .false.
     ms%analysed = .false.
     ms%factored = .false.
@@ -288,6 +340,24 @@ contains
     end if
   end subroutine mumps_pivot_order
 
+  !> True when a solve leaves each process its own solution entries (distributed double-precision instance).
+  logical function mumps_solution_distributed(ms)
+    type(mumps_solver_t), intent(in) :: ms           !< instance
+    mumps_solution_distributed = ms%dist_vectors
+  end function mumps_solution_distributed
+
+  !> The solution entries a solve leaves on this process (ISOL_loc; empty unless mumps_solution_distributed and
+  !> solved once with the current factors).
+  subroutine mumps_solution_rows(ms, rows)
+    type(mumps_solver_t), intent(in) :: ms           !< factored and solved instance
+    integer, allocatable, intent(out) :: rows(:)     !< equation numbers
+    if (ms%dist_vectors .and. ms%factored .and. associated(ms%id%ISOL_loc)) then
+      rows = ms%id%ISOL_loc(1:ms%id%INFO(23))
+    else
+      allocate (rows(0))
+    end if
+  end subroutine mumps_solution_rows
+
   logical function mumps_is_analysed(ms)
     type(mumps_solver_t), intent(in) :: ms           !< instance
     mumps_is_analysed = ms%analysed
@@ -299,9 +369,10 @@ contains
   end function mumps_is_factored
 
   !> Controls: streams and print level, centralized assembled input, user ordering, workspace relaxation.
-  subroutine set_controls(icntl, distributed)
+  subroutine set_controls(icntl, distributed, dist_vectors)
     integer, intent(inout) :: icntl(:)               !< ICNTL of an instance after JOB = -1
     logical, intent(in) :: distributed               !< distributed assembled input (ICNTL(18) = 3)
+    logical, intent(in) :: dist_vectors              !< distributed right-hand side and solution
     character(len=16) :: val
     integer :: length, status
 
@@ -321,10 +392,36 @@ contains
     icntl(18) = 0       ! centralized on the host
     if (distributed) icntl(18) = 3  ! distributed assembled entries, summed by MUMPS
     icntl(7) = 1        ! user ordering in PERM_IN (the host's METIS nested dissection)
+    call get_environment_variable('LDFCZ_MUMPS_ORDERING', val, length, status)
+    if (status == 0 .and. length > 0) then
+      select case (trim(val))   ! measurements only: a built-in ordering of MUMPS instead (PERM_IN ignored)
+      case ('amd')
+        icntl(7) = 0
+      case ('amf')
+        icntl(7) = 2
+      case ('pord')
+        icntl(7) = 4
+      case ('qamd')
+        icntl(7) = 6
+      end select
+    end if
     icntl(14) = icntl14_start
-    icntl(20) = 0       ! dense right-hand side
+    icntl(20) = 0       ! dense right-hand side on the host
     icntl(21) = 0       ! centralized solution (overwrites RHS)
+    if (dist_vectors) then
+      icntl(20) = 10    ! dense right-hand side distributed by rows (IRHS_loc, RHS_loc)
+      icntl(21) = 1     ! solution distributed as MUMPS holds it (ISOL_loc, SOL_loc)
+    end if
   end subroutine set_controls
+
+  !> True when the environment variable name is set to a value other than '' or '0'.
+  logical function env_set(name)
+    character(len=*), intent(in) :: name             !< variable
+    character(len=16) :: val
+    integer :: length, status
+    call get_environment_variable(name, val, length, status)
+    env_set = status == 0 .and. length > 0 .and. trim(val) /= '0'
+  end function env_set
 
   !> mumps_analyse for single-precision factors (SMUMPS): same pattern, ordering and controls.
   subroutine analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, comm)
@@ -351,7 +448,7 @@ contains
       return
     end if
     ms%initialised = .true.
-    call set_controls(ms%sid%ICNTL, ms%distributed)
+    call set_controls(ms%sid%ICNTL, ms%distributed, .false.)
     ms%n = n
     ms%sid%N = n
     if (ms%distributed) then

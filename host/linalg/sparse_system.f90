@@ -24,16 +24,19 @@
 !>
 !> Distributed (sparse_setup with a parallel context of several processes and the elements this process owns):
 !> every process keeps the whole pattern but adds only its own elements, and hands MUMPS (distributed assembled
-!> input, mumps_solver) only the entries its elements touch; MUMPS sums what several processes give. Solutions
-!> come back on rank 0 and are broadcast, products A x sum the processes' parts (parallel_context), so every
-!> process holds the same vectors and the Newton decisions built on them agree.
+!> input, mumps_solver) only the entries its elements touch; MUMPS sums what several processes give. Each process
+!> gives MUMPS a block of the right-hand side's rows and receives its piece of the solution, and the pieces are
+!> gathered on every process (one all-gather; with single-precision factors the solution comes back on rank 0 and
+!> is broadcast); products A x sum the processes' parts (parallel_context), so every process holds the same
+!> vectors and the Newton decisions built on them agree.
 module sparse_system
   use ldfcz_kinds, only: dp, i8
   use sparse_pattern, only: build_pattern, build_slot_map, find_in_row
   use metis_ordering, only: node_graph_from_elements, metis_node_order, equation_order_from_nodes, is_permutation
-  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_bcast
+  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_bcast, parallel_gather_pieces
   use mumps_solver, only: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy, &
-                          mumps_factor_entries, mumps_pivot_order, mumps_is_factored
+                          mumps_factor_entries, mumps_pivot_order, mumps_is_factored, mumps_solution_rows, &
+                          mumps_solution_distributed
   implicit none
   private
   public :: sparse_system_t
@@ -326,14 +329,22 @@ contains
     if (stat == 0) sys%n_solve = sys%n_solve + 1
   end subroutine sparse_solve
 
-  !> Solve with the factors; distributed: rank 0's solution broadcast to every process.
+  !> Solve with the factors; distributed: each process's piece of the solution (MUMPS' distributed solution)
+  !> gathered on every process, or with single-precision factors rank 0's solution broadcast.
   subroutine factor_solve(sys, rhs, stat, errmsg)
     type(sparse_system_t), intent(inout) :: sys     !< factored system
     real(dp), intent(inout) :: rhs(:)               !< right-hand side in, solution out
     integer, intent(out) :: stat                    !< 0 on success (the same on every process: MUMPS INFOG)
     character(len=*), intent(out) :: errmsg         !< reason on failure
+    integer, allocatable :: rows(:)
     call mumps_solve(sys%solver, rhs, stat, errmsg)
-    if (sys%distributed .and. stat == 0) call parallel_bcast(sys%par, rhs)
+    if (.not. sys%distributed .or. stat /= 0) return
+    if (mumps_solution_distributed(sys%solver)) then
+      call mumps_solution_rows(sys%solver, rows)
+      call parallel_gather_pieces(sys%par, rows, rhs)
+    else
+      call parallel_bcast(sys%par, rhs)
+    end if
   end subroutine factor_solve
 
   !> y = A x with the current values (the stored triangle mirrored when symmetric; distributed: the processes'

@@ -10,7 +10,7 @@ module parallel_context
   private
   public :: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed
   public :: parallel_sum, parallel_max, parallel_min, parallel_any, parallel_lowest, parallel_bcast
-  public :: parallel_file, parallel_barrier, parallel_abort, parallel_build_is_mpi
+  public :: parallel_file, parallel_barrier, parallel_first_error, parallel_gather_pieces, parallel_build_is_mpi
 
   !> Where this process stands among the processes of the run.
   type :: parallel_t
@@ -146,6 +146,35 @@ contains
     par%t_comm = par%t_comm + since(c0)
   end subroutine parallel_lowest
 
+  !> v <- the pieces of the processes: each process holds v(rows) of its own (disjoint pieces that together
+  !> cover what it needs); on return every process holds every piece (the same bits: copies, no sums).
+  !> One MPI_Allgatherv of the rows and one of the values, no process in between.
+  subroutine parallel_gather_pieces(par, rows, v)
+    type(parallel_t), intent(inout) :: par  !< context
+    integer, intent(in) :: rows(:)          !< this process's entries of v
+    real(dp), intent(inout) :: v(:)         !< v(rows) in, every process's pieces out (other entries kept)
+    integer, allocatable :: counts(:), displs(:), all_rows(:)
+    real(dp), allocatable :: mine(:), all_vals(:)
+    integer :: ierr, p, total
+    integer(i8) :: c0
+    if (par%nranks <= 1) return
+    c0 = clock()
+    allocate (counts(par%nranks), displs(par%nranks))
+    call MPI_Allgather(size(rows), 1, MPI_INTEGER, counts, 1, MPI_INTEGER, par%comm, ierr)
+    displs(1) = 0
+    do p = 2, par%nranks
+      displs(p) = displs(p - 1) + counts(p - 1)
+    end do
+    total = displs(par%nranks) + counts(par%nranks)
+    allocate (all_rows(max(1, total)), all_vals(max(1, total)), mine(max(1, size(rows))))
+    mine(1:size(rows)) = v(rows)
+    call MPI_Allgatherv(rows, size(rows), MPI_INTEGER, all_rows, counts, displs, MPI_INTEGER, par%comm, ierr)
+    call MPI_Allgatherv(mine, size(rows), MPI_DOUBLE_PRECISION, all_vals, counts, displs, MPI_DOUBLE_PRECISION, &
+      par%comm, ierr)
+    v(all_rows(1:total)) = all_vals(1:total)
+    par%t_comm = par%t_comm + since(c0)
+  end subroutine parallel_gather_pieces
+
   !> v <- v of rank 0.
   subroutine parallel_bcast(par, v)
     type(parallel_t), intent(inout) :: par  !< context
@@ -179,14 +208,38 @@ contains
     if (par%nranks > 1) call MPI_Barrier(par%comm, ierr)
   end subroutine parallel_barrier
 
-  !> End every process of the run with the exit status code (after an error found on one process only).
-  subroutine parallel_abort(par, code)
-    type(parallel_t), intent(in) :: par  !< context
-    integer, intent(in) :: code          !< exit status
-    integer :: ierr
-    if (par%nranks > 1) call MPI_Abort(par%comm, code, ierr)
-    call exit(code)
-  end subroutine parallel_abort
+  !> The first error of the processes: every process calls it at the same point of the start-up (a checkpoint),
+  !> or in place of the next checkpoint when it has found an error itself (its one collective call then matches
+  !> the others' checkpoint, so no process waits for one that has given up). In: this process's exit status (0:
+  !> no error) and message. Out: the status and message of the lowest rank that reported an error, the same on
+  !> every process (0 and '' when none did). No MPI_Abort: the caller ends every process alike.
+  subroutine parallel_first_error(par, code, text)
+    type(parallel_t), intent(inout) :: par                 !< context
+    integer, intent(inout) :: code                         !< this process's status in, the first error's out
+    character(len=:), allocatable, intent(inout) :: text   !< this process's message in, the first error's out
+    integer :: ierr, mine, first, n
+    integer(i8) :: c0
+    if (.not. allocated(text)) text = ''
+    if (par%nranks <= 1) return
+    c0 = clock()
+    mine = huge(1)
+    if (code /= 0) mine = par%rank
+    call MPI_Allreduce(mine, first, 1, MPI_INTEGER, MPI_MIN, par%comm, ierr)
+    if (first == huge(1)) then
+      code = 0
+      text = ''
+    else
+      call MPI_Bcast(code, 1, MPI_INTEGER, first, par%comm, ierr)
+      n = len(text)
+      call MPI_Bcast(n, 1, MPI_INTEGER, first, par%comm, ierr)
+      if (par%rank /= first) then
+        deallocate (text)
+        allocate (character(len=n) :: text)
+      end if
+      if (n > 0) call MPI_Bcast(text, n, MPI_CHARACTER, first, par%comm, ierr)
+    end if
+    par%t_comm = par%t_comm + since(c0)
+  end subroutine parallel_first_error
 
   integer(i8) function clock() result(c)
     call system_clock(c)

@@ -8,7 +8,7 @@ module parallel_context
   private
   public :: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed
   public :: parallel_sum, parallel_max, parallel_min, parallel_any, parallel_lowest, parallel_bcast
-  public :: parallel_file, parallel_barrier, parallel_abort, parallel_build_is_mpi
+  public :: parallel_file, parallel_barrier, parallel_first_error, parallel_gather_pieces, parallel_build_is_mpi
 
   !> Where this process stands among the processes of the run.
   type :: parallel_t
@@ -112,18 +112,28 @@ contains
     end if
   end function parallel_file
 
+  !> The pieces of the processes gathered on every process (MPI build): here the one process holds them all.
+  subroutine parallel_gather_pieces(par, rows, v)
+    type(parallel_t), intent(inout) :: par  !< context
+    integer, intent(in) :: rows(:)          !< this process's entries of v
+    real(dp), intent(inout) :: v(:)         !< unchanged
+    if (.false.) par%t_comm = real(size(rows) + size(v), dp)
+  end subroutine parallel_gather_pieces
+
   !> Wait for every process.
   subroutine parallel_barrier(par)
     type(parallel_t), intent(inout) :: par  !< context
     if (.false.) par%t_comm = 0.0_dp
   end subroutine parallel_barrier
 
-  !> End every process of the run with the exit status code (after an error on one process only).
-  subroutine parallel_abort(par, code)
-    type(parallel_t), intent(in) :: par  !< context
-    integer, intent(in) :: code          !< exit status
-    if (.false.) print *, par%rank
-    call exit(code)
-  end subroutine parallel_abort
+  !> The first error of the processes (MPI build: collective, the lowest failing rank's status and message on
+  !> every process): here this process's own.
+  subroutine parallel_first_error(par, code, text)
+    type(parallel_t), intent(inout) :: par                 !< context
+    integer, intent(inout) :: code                         !< this process's status (unchanged)
+    character(len=:), allocatable, intent(inout) :: text   !< this process's message (unchanged)
+    if (.not. allocated(text)) text = ''
+    if (.false.) par%t_comm = 0.0_dp   ! par unused: one process
+  end subroutine parallel_first_error
 
 end module parallel_context
