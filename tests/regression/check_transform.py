@@ -163,9 +163,11 @@ def case_roller(exe, out, nlgeom):
             # step 3: END is no longer prescribed (its released reaction ramps down as an applied force)
             close(tag + " END.RF1", r["END.RF1"], E * A * dd / L if step < 3 else 0.0, 1e-9, 1e-9 * E * A * d / L)
             close(tag + " ROLL.RF1", r["ROLL.RF1"], -E * A * dd / L, 1e-9, 1e-9 * E * A * d / L)
-            close(tag + " END.U2", r["END.U2"], -nu * dd / L * W / 2, 1e-9, 1e-14)
-            close(tag + " END.U3", r["END.U3"], -nu * dd / L * H / 2, 1e-9, 1e-14)
-        close(tag + " END.U1", r["END.U1"], dd, 1e-9, 1e-14)
+            # displacements to 1e-9 of the applied one (the forces likewise): a zero value carries the linear
+            # solve's round-off, ~1e-14 here
+            close(tag + " END.U2", r["END.U2"], -nu * dd / L * W / 2, 1e-9, 1e-9 * d)
+            close(tag + " END.U3", r["END.U3"], -nu * dd / L * H / 2, 1e-9, 1e-9 * d)
+        close(tag + " END.U1", r["END.U1"], dd, 1e-9, 1e-9 * d)
     if not nlgeom and len(rows) != 4 * len(steps):
         fail("expected %d increments, got %d" % (4 * len(steps), len(rows)))
 
