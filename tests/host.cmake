@@ -115,6 +115,13 @@ if(TARGET material_point)
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_plane_stress_nlgeom.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/plane_stress_nlgeom)
   set_tests_properties(deck_plane_stress_nlgeom PROPERTIES LABELS "deck" TIMEOUT 120)
+  # Plane stress with a UMAT under NLGEOM (thickness t0 / det F_2D, inferred Abaqus behaviour): the neo-Hookean user
+  # UMAT (own thickness stretch) in CPS4, CPS4I, CPS4R, uniaxial stretch to 1.5 against the exact answer (1e-9) and
+  # the incompressible closed form (mu / lambda), then a rigid 90 degree rotation (reactions rotated, 1e-9)
+  add_test(NAME deck_plane_stress_umat COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_plane_stress_umat.py --exe $<TARGET_FILE:ldfcz>
+    --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90 --out ${LDFCZ_RUNS}/plane_stress_umat)
+  set_tests_properties(deck_plane_stress_umat PROPERTIES LABELS "deck" TIMEOUT 180)
 endif()
 if(EXISTS "${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp")
   ldfcz_add_perf_test(deck_c3d8_rotation_uniaxial ${LDFCZ_DECKS}/single/c3d8_rotation_uniaxial.inp rotation_uniaxial)

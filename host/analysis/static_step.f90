@@ -24,6 +24,7 @@ module static_step
   use field_frame, only: write_field_frame
   use print_tables, only: print_tables_any, print_tables_write
   use stop_report, only: stop_message
+  use plane_stress_notice, only: plane_stress_umat_warnings
   use solver_text, only: itoa, rtoa
   use parallel_context, only: parallel_file, parallel_max, parallel_distributed
   use stop_signal, only: stop_signal_install, stop_signal_received, stop_signal_name
@@ -51,6 +52,7 @@ contains
     integer :: stat, is, attempt, iter, i, j, k, ncol, ic
     character(len=:), allocatable :: errmsg, msg
     character(len=96), allocatable :: colnames(:)
+    character(len=512), allocatable :: notes(:)
     integer, allocatable :: col_set(:), col_var(:)
     real(dp), allocatable :: r(:), ratios(:), colv(:)
     logical, allocatable :: bc_was_on(:)
@@ -136,6 +138,12 @@ contains
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
       itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver'//msg// &
       '; UEL: '//routines%uel_origin//'; UMAT: '//routines%umat_origin)
+    ! plane-stress elements with a UMAT under NLGEOM: the inferred thickness, said loudly (log and standard error)
+    call plane_stress_umat_warnings(model, an, notes)
+    do k = 1, size(notes)
+      call output_log(out, trim(notes(k)))
+      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') trim(notes(k))
+    end do
     ! the label map of flattened part instances (output and messages use the model labels)
     do k = 1, model%ninstance
       associate (in => model%instances(k))

@@ -369,12 +369,6 @@ contains
       call fail(2, here // 'section thickness must be > 0')
       return
     end if
-    if (solid_types(it)%pstress .and. nlgeom .and. mat%kind /= SOLID_MAT_ELASTIC) then
-      call fail(2, here // 'plane stress element ' // trim(etype) // ' with a UMAT under NLGEOM is not supported ' // &
-        '(a plane-stress UMAT returns no thickness strain, NTENS = 3, so the current thickness is unknown to the ' // &
-        'element): use NLGEOM=NO, *ELASTIC, or CPE/C3D elements (docs/elements.md)')
-      return
-    end if
 
     eye = identity()
     m = real(ndim, dp)
@@ -553,8 +547,25 @@ contains
           fg0(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), un(1, 1:nne))
           fg1(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), u1(1, 1:nne))
         end if
-        if (solid_types(it)%pstress .and. nlgeom) then
-          ! plane stress under NLGEOM (*ELASTIC only): the thickness stretch lambda_3 from the plane-stress
+        if (solid_types(it)%pstress .and. nlgeom .and. mat%kind /= SOLID_MAT_ELASTIC) then
+          ! plane stress with a UMAT under NLGEOM (**inferred** Abaqus behaviour, docs/elements.md): the NTENS = 3
+          ! contract returns no thickness strain, so DFGRD0/DFGRD1 get F33 = 1 / det(F_2D) (J = 1, the value a
+          ! user report gives for Abaqus), off-plane terms 0, and the element's thickness follows the same F33:
+          ! t = t0 F33, so dv = J dV t0 = dV t0 (J = 1) and d(dv)/du = 0 in the tangent, which is then exact for
+          ! a DDSDDE that is the Jaumann tangent of the Cauchy stress ((1/J) tau^J with J = det DFGRD1 = 1).
+          do i = 0, 1
+            f2m = merge(fg1(1:2, 1:2, ip), fg0(1:2, 1:2, ip), i == 1)
+            j1 = f2m(1, 1) * f2m(2, 2) - f2m(1, 2) * f2m(2, 1)
+            if (.not. (j1 > 0.0_dp)) then
+              call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')')
+              return
+            end if
+            if (i == 1) fg1(3, 3, ip) = 1.0_dp / j1
+            if (i == 0) fg0(3, 3, ip) = 1.0_dp / j1
+          end do
+          lt1(ip) = log(fg1(3, 3, ip))
+        else if (solid_types(it)%pstress .and. nlgeom) then
+          ! plane stress under NLGEOM (*ELASTIC): the thickness stretch lambda_3 from the plane-stress
           ! condition of the hypoelastic law, d eps_33 = -nu/(1 - nu) (d eps_11 + d eps_22) + (1 + nu)/(1 - nu)
           ! alpha dT (sigma_33 = 0 with the mechanical strain), the in-plane increments being the Hughes-Winget
           ! ones; ln lambda_3 accumulates d eps_33 (a logarithmic strain, like STRAN) in the element's last STATEV
