@@ -5,6 +5,9 @@
 !> F-bar (C3D8, CPE4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
 !> incompatible modes (condensed pseudo-nodes, element-level Newton), one point with Flanagan-Belytschko hourglass
 !> stiffness, plane stress (NTENS = 3) and axisymmetry (hoop strain u_r / r, totals over 2 pi). docs/elements.md.
+!> Plane stress under NLGEOM: *ELASTIC keeps its thickness stretch lambda_3 (plane-stress condition of the hypoelastic
+!> law); a UMAT gets F33 = 1 / det(F_2D) in DFGRD0/DFGRD1 and the element follows that thickness (J = 1; inferred
+!> Abaqus behaviour from a user report, docs/elements.md "Plane stress").
 !>
 !> Kinematics at Gauss point p (updated Lagrange, NLGEOM):
 !>   F = dx/dX at t_n (F0, from u - du) and t_n+1 (F1, from u); J = det F; J_c = det F at the element centre.
