@@ -38,6 +38,7 @@ def main():
     ap.add_argument("--out", default="locking_study")
     ap.add_argument("--nu", type=float, default=0.4999)
     a = ap.parse_args()
+    a.exe = os.path.abspath(a.exe)   # the runs are made in --out
     cases = []
     for t in ("CPE4", "CPE4I", "CPE4R"):
         cases.append((t, "8 x 24", lambda d: cl.ring_deck(d, A, B, 8, 24, P), "CPE4"))

@@ -174,7 +174,7 @@ contains
           ! hybrid (mixed u-p) types are not implemented: the F-bar / B-bar elements are the route for nearly
           ! incompressible materials (docs/elements.md)
           call ctx_fail(ctx, ctx%ir, 'hybrid element type '//tname//' is not supported: for nearly '// &
-            'incompressible materials use C3D8 or CPE4 (F-bar under NLGEOM, B-bar without: no volumetric '// &
+            'incompressible materials use C3D8, CPE4 or CAX4 (F-bar under NLGEOM, B-bar without: no volumetric '// &
             'locking; docs/elements.md)')
         else
           call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, C3D8I, C3D8R, C3D20, C3D20R, '// &

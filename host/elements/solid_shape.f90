@@ -60,7 +60,7 @@ module solid_shape
     solid_type_t('C3D8R', FAM_HEX8, 8, 3, 1, 1, 3, 3, .false., 0, .false., .true.), &
     solid_type_t('CPE4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true.), &
     solid_type_t('CPS4R', FAM_QUAD4, 4, 2, 1, 1, 2, 1, .false., 0, .true., .true.), &
-    solid_type_t('CAX4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.), &
+    solid_type_t('CAX4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0, .false., .false., .true.), &
     solid_type_t('CAX8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0, .false., .false., .true.), &
     solid_type_t('CAX8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.)]
 
