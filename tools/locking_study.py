@@ -116,7 +116,7 @@ def main():
         cases.append((t, "8 x 24 x 1", lambda d: cl.ring_deck(d, A, B, 8, 24, P, three_d=True), "C3D8"))
     for t in ("CPE8", "CPE8R", "C3D20", "C3D20R"):
         cases.append((t, "4 x 8", (lambda tt: lambda d: cl.quadratic_ring_deck(d, tt, A, B, 4, 8, P))(t), None))
-    for t, n in (("CAX4", 16), ("CAX8", 8), ("CAX8R", 8)):
+    for t, n in (("CAX4", 16), ("CAX4R", 16), ("CAX8", 8), ("CAX8R", 8)):
         cases.append((t, "%d" % n, (lambda tt, nn: lambda d: cl.axisymmetric_cylinder_deck(d, tt, A, B, nn, P))(t, n),
                       None))
     for t, mesh, nr, nt in (("C3D4", "8 x 24 x 1 x 6", 8, 24), ("C3D10", "4 x 8 x 1 x 6", 4, 8)):

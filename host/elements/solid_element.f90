@@ -1,10 +1,11 @@
 !> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the library in
 !> solid_shape.f90 (C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, CPE4/CPE4I/CPE4R/CPE8/CPE8R, CPS4/CPS4I/CPS4R/
-!> CPS8/CPS8R, CAX4/CAX8/CAX8R), calling their material exactly as Abaqus/Standard calls a UMAT
+!> CPS8/CPS8R, CAX4/CAX4R/CAX8/CAX8R), calling their material exactly as Abaqus/Standard calls a UMAT
 !> (docs/conventions.md). Types differ only by data: shape functions, integration rule, and the switches
 !> F-bar (C3D8, CPE4, CAX4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
 !> incompatible modes (condensed pseudo-nodes, element-level Newton), one point with Flanagan-Belytschko hourglass
-!> stiffness, plane stress (NTENS = 3) and axisymmetry (hoop strain u_r / r, totals over 2 pi). docs/elements.md.
+!> stiffness (CAX4R: with the 2 pi R weighted means and a hoop-variation stiffness), plane stress (NTENS = 3) and
+!> axisymmetry (hoop strain u_r / r, totals over 2 pi). docs/elements.md.
 !>
 !> Kinematics at Gauss point p (updated Lagrange, NLGEOM):
 !>   F = dx/dX at t_n (F0, from u - du) and t_n+1 (F1, from u); J = det F; J_c = det F at the element centre.
@@ -100,6 +101,9 @@ module solid_element
     real(dp), allocatable :: hoop_0m(:)        !< (nnode+nmode) volume mean of N_a / R (axisymmetric B-bar)
     integer :: nhg = 0                         !< hourglass vectors (0: none)
     real(dp) :: hg_vsum = 0.0_dp               !< reference volume x sum_(a,j) (dN_a/dX_j)^2 at the point
+    !> (nnode, 4) one-point axisymmetric types: sqrt(w_q) (N_a/R - <N_a/R>) at the 2x2 points q, w_q = 2 pi R_q x
+    !> Gauss weight x det: sum_q (hoop_fl(:, q) . u_r)^2 = int (hoop strain - its element mean)^2 dV
+    real(dp), allocatable :: hoop_fl(:, :)
   end type solid_geometry_t
 
 contains
@@ -200,23 +204,44 @@ contains
       if (tp%hourglass) then
         ! the one point's gradient operator is the element mean (Flanagan-Belytschko's uniform gradient,
         ! integrated with the 2x2(x2) rule, exact), and its weight the element volume: the centre derivatives
-        ! alone fail the patch test of a distorted hexahedron
+        ! alone fail the patch test of a distorted hexahedron. Axisymmetric (CAX4R): the means and the volume
+        ! weighted by 2 pi R (exact with 2x2 points: the integrands R dN/dR detj and N detj are at most cubic per
+        ! direction), the hoop operator the mean of N_a / R = (2 pi / V) int N_a dA, so that f = V (B_m^T sigma +
+        ! hoop_m sigma_tt) is the exact integral for a uniform stress and a linear field (u_r = a R: hoop strain a)
+        ! has its exact strains
         block
-          real(dp) :: nq(maxnode), dq(maxnode, 3), vq, wq, xq(3)
+          real(dp) :: nq(maxnode), dq(maxnode, 3), vq, wq, xq(3), rq, hq(maxnode), wall(8)
           integer :: iq
           geo%dndx_ref(:, :, 1) = 0.0_dp
           vq = 0.0_dp
+          hq = 0.0_dp
+          if (tp%axisym) allocate (geo%hoop_fl(nnode, 2**ndim))
           do iq = 1, 2**ndim
             call solid_gauss_point(2, ndim, iq, xq, wq)
             call solid_reference_derivatives(tp%family, nnode, ndim, coords0, xq, nq(1:nnode), dq(1:nnode, :), detj, &
               jinv)
             if (.not. (detj > 0.0_dp)) return
-            geo%dndx_ref(1:nnode, :, 1) = geo%dndx_ref(1:nnode, :, 1) + wq * detj * dq(1:nnode, :)
-            vq = vq + wq * detj
+            wq = wq * detj
+            if (tp%axisym) then
+              rq = dot_product(nq(1:nnode), coords0(1, :))
+              if (.not. (rq > 0.0_dp)) return
+              wq = 2 * acos(-1.0_dp) * rq * wq
+              hq(1:nnode) = hq(1:nnode) + wq * nq(1:nnode) / rq
+              geo%hoop_fl(:, iq) = nq(1:nnode) / rq
+              wall(iq) = wq
+            end if
+            geo%dndx_ref(1:nnode, :, 1) = geo%dndx_ref(1:nnode, :, 1) + wq * dq(1:nnode, :)
+            vq = vq + wq
           end do
           geo%dndx_ref(:, :, 1) = geo%dndx_ref(:, :, 1) / vq
           geo%wdet(1) = vq
           geo%dndx_0m = geo%dndx_ref(:, :, 1)
+          if (tp%axisym) then
+            geo%hoop(1:nnode, 1) = hq(1:nnode) / vq
+            do iq = 1, 2**ndim
+              geo%hoop_fl(:, iq) = sqrt(wall(iq)) * (geo%hoop_fl(:, iq) - geo%hoop(1:nnode, 1))
+            end do
+          end if
         end block
         ! Flanagan-Belytschko (1981): gamma_m = (h_m - sum_j (h_m . X_j) b_j) / nnode with b_j = dN/dX_j at the
         ! single (centre) point, orthogonal to every linear field (gamma_m . X_j = 0): no hourglass force in a
@@ -475,7 +500,8 @@ contains
           if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
         end if
         statev_new(nsv + 1, 1) = ghg
-        khg = hourglass_factor * ghg * gp%hg_vsum * mat%thickness
+        ! (axisymmetric: hg_vsum has the 2 pi R weighted volume; no section thickness)
+        khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, solid_types(it)%axisym)
         do mh = 1, gp%nhg
           qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
           do a = 1, nnode
@@ -493,6 +519,29 @@ contains
           energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
           if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
         end do
+        if (allocated(gp%hoop_fl)) then
+          ! axisymmetric one point (CAX4R): the mean hoop strain at the point misses the variation of u_r / R over
+          ! the element, and u_r = Z - c, u_z = -R (c = <Z/R> / <1/R>) is a zero-energy mode that the
+          ! Flanagan-Belytschko vectors (orthogonal to every linear field) cannot see. Stabilisation: the shear
+          ! part of the energy of that variation, (1/2) 2 G int (u_r/R - <u_r/R>)^2 dV (the bulk part would lock),
+          ! zero for u_r = a R (constant hoop strain): the patch test is kept
+          khg = hourglass_factor * 2 * ghg
+          do mh = 1, size(gp%hoop_fl, 2)
+            qhg(1) = dot_product(gp%hoop_fl(:, mh), u1(1, 1:nnode))
+            do a = 1, nnode
+              r = ndim * (a - 1) + 1
+              f_int(r) = f_int(r) + khg * gp%hoop_fl(a, mh) * qhg(1)
+              if (want_k) then
+                do b = 1, nnode
+                  c = ndim * (b - 1) + 1
+                  k_e(r, c) = k_e(r, c) + khg * gp%hoop_fl(a, mh) * gp%hoop_fl(b, mh)
+                end do
+              end if
+            end do
+            energy(1) = energy(1) + 0.5_dp * khg * qhg(1)**2
+            if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * qhg(1)**2
+          end do
+        end if
       end if
     else
       ! ---- incompatible modes: Newton on the internal parameters alpha (f_alpha = 0) from the converged alpha_n,

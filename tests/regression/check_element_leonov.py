@@ -11,7 +11,7 @@ every point calls the UMAT with the F of the driver's mode=deformation. The host
 Piola-Kirchhoff stress: sum_a RF_a (x) X_a = P V0 with P = J sigma F^-T, compared at every increment with the
 driver's Cauchy stress: max |P_host - P_driver| <= 1e-8 of the peak (the two differ only by round-off).
 
-Axisymmetric types (CAX4, CAX8, CAX8R): the element on 1 <= r <= 2, 0 <= z <= 1 with r = a R, z = c Z + d R, a
+Axisymmetric types (CAX4, CAX4R, CAX8, CAX8R): the element on 1 <= r <= 2, 0 <= z <= 1 with r = a R, z = c Z + d R, a
 homogeneous F = [[a, 0, 0], [d, c, 0], [0, 0, a]] in (r, z, theta) whose hoop stretch r/R = a is the radial one.
 The reactions are totals over 2 pi; the same virtual-work identity with the virtual fields X_j e_i, whose hoop
 strain is delta u_r / R, gives sum_a RF_a,i X_a,j = int (P_iJ + delta_ir P_tt X_j / R) dV0: V0 (P_rR + P_tt) for
@@ -140,7 +140,8 @@ def plane_stress_case(a):
     for i in range(len(x)):
         out += ["*NSET, NSET=N%d" % (i + 1), "%d," % (i + 1)]
     out += amplitude("L1", times, [v - 1.0 for v in lam[0]]) + amplitude("L2", times, [v - 1.0 for v in lam[1]])
-    out += ["*SOLID SECTION, ELSET=E, MATERIAL=PET", "1.", "*MATERIAL, NAME=PET", "*USER MATERIAL, CONSTANTS=10, UNSYMM",
+    out += ["*SOLID SECTION, ELSET=E, MATERIAL=PET", "1.", "*MATERIAL, NAME=PET",
+            "*USER MATERIAL, CONSTANTS=10, UNSYMM",
             PROPS, "*DEPVAR", "12", "**LDFCZ STATEV, MATERIAL=PET, PLASTIC STRAIN=7",
             "*STEP, NLGEOM=NO, INC=1000", "*STATIC, DIRECT", "%g, %g" % (T / STEPS, T), "*BOUNDARY"]
     for i, p in enumerate(x):
@@ -188,8 +189,8 @@ def main():
     ap.add_argument("--mp", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--types",
-                    default="C3D8,C3D8I,C3D8R,C3D20,C3D20R,C3D4,C3D10,CPE4,CPE4I,CPE4R,CPE8,CPE8R,CAX4,CAX8,CAX8R,"
-                            "CPS4")
+                    default="C3D8,C3D8I,C3D8R,C3D20,C3D20R,C3D4,C3D10,CPE4,CPE4I,CPE4R,CPE8,CPE8R,CAX4,CAX4R,"
+                            "CAX8,CAX8R,CPS4")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     drivers = {}

@@ -444,6 +444,7 @@ def case_lame_axisymmetric(exe, out):
     half the displacement, docs/elements.md "Volumetric locking")."""
     a, b, p = 1.0, 2.0, 1.0
     for etype, meshes, tol, nu in (("CAX4", (8, 16), 3e-3, 0.3), ("CAX4", (8, 16), 3e-3, 0.4999),
+                                   ("CAX4R", (8, 16), 3e-3, 0.3), ("CAX4R", (8, 16), 3e-3, 0.4999),
                                    ("CAX8", (4, 8), 1e-4, 0.3), ("CAX8R", (4, 8), 1e-4, 0.3)):
         want_u = lame(a, a, b, p, 1000.0, nu)
         want_f = -2.0 * nu * p * math.pi * a * a
