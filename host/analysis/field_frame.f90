@@ -5,7 +5,8 @@ module field_frame
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, &
     etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, &
-    etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r
+    etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, &
+    etype_cax4r
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use node_rotations, only: node_vector_global
@@ -94,7 +95,8 @@ contains
         fr%cell_type(c) = 10
       case (etype_c3d10)
         fr%cell_type(c) = 24
-      case (etype_cpe4, etype_cpe4i, etype_cpe4r, etype_cps4, etype_cps4i, etype_cps4r, etype_cax4, etype_cax4i)
+      case (etype_cpe4, etype_cpe4i, etype_cpe4r, etype_cps4, etype_cps4i, etype_cps4r, etype_cax4, etype_cax4i, &
+            etype_cax4r)
         fr%cell_type(c) = 9
       case (etype_cpe8, etype_cpe8r, etype_cps8, etype_cps8r, etype_cax8, etype_cax8r)
         fr%cell_type(c) = 23

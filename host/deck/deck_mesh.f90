@@ -15,8 +15,8 @@ module deck_mesh
 
   !> The continuum element types: nodes and dimension per etype_* of model_types (0: the user kind)
   ! (CAX4I, kind 20, is not available: its incompatible modes would need the radius weighting of the patch test)
-  integer, parameter :: etype_nnode(22) = [8, 4, 0, 8, 20, 20, 4, 10, 4, 8, 8, 4, 4, 8, 8, 8, 4, 4, 4, 0, 8, 8]
-  integer, parameter :: etype_dim(22) = [3, 2, 0, 3, 3, 3, 3, 3, 2, 2, 2, 2, 2, 2, 2, 3, 2, 2, 2, 2, 2, 2]
+  integer, parameter :: etype_nnode(23) = [8, 4, 0, 8, 20, 20, 4, 10, 4, 8, 8, 4, 4, 8, 8, 8, 4, 4, 4, 0, 8, 8, 4]
+  integer, parameter :: etype_dim(23) = [3, 2, 0, 3, 3, 3, 3, 3, 2, 2, 2, 2, 2, 2, 2, 3, 2, 2, 2, 2, 2, 2, 2]
 
 contains
 
@@ -174,12 +174,12 @@ contains
           ! hybrid (mixed u-p) types are not implemented: the F-bar / B-bar elements are the route for nearly
           ! incompressible materials (docs/elements.md)
           call ctx_fail(ctx, ctx%ir, 'hybrid element type '//tname//' is not supported: for nearly '// &
-            'incompressible materials use C3D8 or CPE4 (F-bar under NLGEOM, B-bar without: no volumetric '// &
+            'incompressible materials use C3D8, CPE4 or CAX4 (F-bar under NLGEOM, B-bar without: no volumetric '// &
             'locking; docs/elements.md)')
         else
           call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, C3D8I, C3D8R, C3D20, C3D20R, '// &
-            'C3D4, C3D10, CPE4, CPE4I, CPE4R, CPE8, CPE8R, CPS4, CPS4I, CPS4R, CPS8, CPS8R, CAX4, CAX8, '// &
-            'CAX8R and user types Un; '// &
+            'C3D4, C3D10, CPE4, CPE4I, CPE4R, CPE8, CPE8R, CPS4, CPS4I, CPS4R, CPS8, CPS8R, CAX4, CAX4R, '// &
+            'CAX8, CAX8R and user types Un; '// &
             'docs/elements.md)')
         end if
         return

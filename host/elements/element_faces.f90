@@ -8,7 +8,7 @@
 module element_faces
   use model_types, only: etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, etype_c3d20r, etype_c3d4, etype_c3d10, &
     etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, &
-    etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r
+    etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, etype_cax4r
   implicit none
   private
   public :: element_face_nodes
@@ -53,7 +53,7 @@ contains
       nfn = merge(6, 3, kind == etype_c3d10)
       local(1:nfn) = tet_faces(1:nfn, face)
     case (etype_cpe4, etype_cpe4i, etype_cpe4r, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, etype_cps4r, &
-          etype_cps8, etype_cps8r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r)
+          etype_cps8, etype_cps8r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, etype_cax4r)
       if (face < 1 .or. face > 4) return
       nfn = merge(3, 2, any(kind == [etype_cpe8, etype_cpe8r, etype_cps8, etype_cps8r, etype_cax8, etype_cax8r]))
       local(1:nfn) = quad_faces(1:nfn, face)

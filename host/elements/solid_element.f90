@@ -1,22 +1,25 @@
 !> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the library in
 !> solid_shape.f90 (C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, CPE4/CPE4I/CPE4R/CPE8/CPE8R, CPS4/CPS4I/CPS4R/
-!> CPS8/CPS8R, CAX4/CAX8/CAX8R), calling their material exactly as Abaqus/Standard calls a UMAT
+!> CPS8/CPS8R, CAX4/CAX4R/CAX8/CAX8R), calling their material exactly as Abaqus/Standard calls a UMAT
 !> (docs/conventions.md). Types differ only by data: shape functions, integration rule, and the switches
-!> F-bar (C3D8, CPE4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
+!> F-bar (C3D8, CPE4, CAX4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
 !> incompatible modes (condensed pseudo-nodes, element-level Newton), one point with Flanagan-Belytschko hourglass
-!> stiffness, plane stress (NTENS = 3) and axisymmetry (hoop strain u_r / r, totals over 2 pi). docs/elements.md.
+!> stiffness (CAX4R: with the 2 pi R weighted means and a hoop-variation stiffness), plane stress (NTENS = 3) and
+!> axisymmetry (hoop strain u_r / r, totals over 2 pi). docs/elements.md.
 !> Plane stress under NLGEOM: *ELASTIC keeps its thickness stretch lambda_3 (plane-stress condition of the hypoelastic
 !> law); a UMAT gets F33 = 1 / det(F_2D) in DFGRD0/DFGRD1 and the element follows that thickness (J = 1; inferred
 !> Abaqus behaviour from a user report, docs/elements.md "Plane stress").
 !>
 !> Kinematics at Gauss point p (updated Lagrange, NLGEOM):
 !>   F = dx/dX at t_n (F0, from u - du) and t_n+1 (F1, from u); J = det F; J_c = det F at the element centre.
-!>   F-bar:  Fbar = (J_c / J)^(1/m) F  on the in-plane block, m = 3 (C3D8) or m = 2 (CPE4, F33 = 1), so det Fbar = J_c.
+!>   F-bar:  Fbar = (J_c / J)^(1/m) F  on the in-plane block, m = 3 (C3D8) or m = 2 (CPE4, F33 = 1), so det Fbar = J_c;
+!>           CAX4: the whole 3x3 F with its hoop stretch r/R, m = 3, J_c = det F at the centre with r_c / R_c.
 !>   Hughes-Winget mid-point increment: G = (Fbar1 - Fbar0) ((Fbar0 + Fbar1) / 2)^-1 = grad(du) w.r.t. x_mid,
 !>   DSTRAN = sym G (engineering shears), W = skw G, DROT = (I - W/2)^-1 (I + W/2).
 !>   STRESS and STRAN are rotated by DROT before the call; DFGRD0 = Fbar0, DFGRD1 = Fbar1.
 !> Without NLGEOM: DSTRAN = sym of grad(du) w.r.t. X with its trace replaced by the element's volume mean (B-bar of
-!>   Hughes 1980, the mean-dilatation small-strain counterpart of F-bar), DROT = I, f_int and K on the reference
+!>   Hughes 1980, the mean-dilatation small-strain counterpart of F-bar; CAX4: the trace includes the hoop strain
+!>   u_r / R and the mean is weighted by 2 pi R dA), DROT = I, f_int and K on the reference
 !>   configuration with the B-bar virtual strain as well: f = int Bbar^T sigma dV, K = int Bbar^T DDSDDE Bbar dV,
 !>   symmetric for a symmetric DDSDDE (one Newton correction for a linear elastic problem with the symmetric solve).
 !> Local orientation (*ORIENTATION on the section; optional argument orient = T0, local axes as columns): the
@@ -97,8 +100,13 @@ module solid_element
     real(dp), allocatable :: dndx_0m(:, :)     !< (nnode+nmode, 3) volume mean of dN_a/dX_j (B-bar, small strain)
     real(dp), allocatable :: gamma(:, :)       !< (nnode, nhg) Flanagan-Belytschko hourglass vectors (one-point types)
     real(dp), allocatable :: hoop(:, :)        !< (nnode+nmode, nip) N_a / R at the points (axisymmetric types)
+    real(dp), allocatable :: hoop_0c(:)        !< (nnode+nmode) N_a / R at the element centre (axisymmetric)
+    real(dp), allocatable :: hoop_0m(:)        !< (nnode+nmode) volume mean of N_a / R (axisymmetric B-bar)
     integer :: nhg = 0                         !< hourglass vectors (0: none)
     real(dp) :: hg_vsum = 0.0_dp               !< reference volume x sum_(a,j) (dN_a/dX_j)^2 at the point
+    !> (nnode, 4) one-point axisymmetric types: sqrt(w_q) (N_a/R - <N_a/R>) at the 2x2 points q, w_q = 2 pi R_q x
+    !> Gauss weight x det: sum_q (hoop_fl(:, q) . u_r)^2 = int (hoop strain - its element mean)^2 dV
+    real(dp), allocatable :: hoop_fl(:, :)
   end type solid_geometry_t
 
 contains
@@ -172,40 +180,71 @@ contains
       if (tp%axisym) then
         ! axisymmetric: wdet becomes the reference volume weight 2 pi R x (Gauss weight x det), so that volumes,
         ! forces and energies are totals around the circumference (Abaqus); hoop operator N_a / R
-        allocate (geo%hoop(nne, nip))
+        allocate (geo%hoop(nne, nip), geo%hoop_0c(nne), geo%hoop_0m(nne))
         geo%hoop = 0.0_dp
+        geo%hoop_0c = 0.0_dp
+        geo%hoop_0m = 0.0_dp
+        ! the centre's hoop operator (F-bar: J_c includes the hoop stretch r_c / R_c)
+        w = dot_product(nc(1:nnode), coords0(1, :))
+        if (.not. (w > 0.0_dp)) return
+        geo%hoop_0c(1:nnode) = nc(1:nnode) / w
         do ip = 1, nip
           w = dot_product(geo%nfun(1:nnode, ip), coords0(1, :))
           if (.not. (w > 0.0_dp)) return
           geo%hoop(1:nnode, ip) = geo%nfun(1:nnode, ip) / w
           geo%wdet(ip) = 2 * acos(-1.0_dp) * w * geo%wdet(ip)
         end do
+        ! volume means weighted by the axisymmetric volume 2 pi R dA (B-bar: the mean dilatation includes the
+        ! hoop strain u_r / R)
         geo%dndx_0m = 0.0_dp
         do ip = 1, nip
           geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
+          geo%hoop_0m = geo%hoop_0m + geo%wdet(ip) * geo%hoop(:, ip)
         end do
+        geo%hoop_0m = geo%hoop_0m / sum(geo%wdet)
       end if
       geo%dndx_0m = geo%dndx_0m / sum(geo%wdet)
       if (tp%hourglass) then
         ! the one point's gradient operator is the element mean (Flanagan-Belytschko's uniform gradient,
         ! integrated with the 2x2(x2) rule, exact), and its weight the element volume: the centre derivatives
-        ! alone fail the patch test of a distorted hexahedron
+        ! alone fail the patch test of a distorted hexahedron. Axisymmetric (CAX4R): the means and the volume
+        ! weighted by 2 pi R (exact with 2x2 points: the integrands R dN/dR detj and N detj are at most cubic per
+        ! direction), the hoop operator the mean of N_a / R = (2 pi / V) int N_a dA, so that f = V (B_m^T sigma +
+        ! hoop_m sigma_tt) is the exact integral for a uniform stress and a linear field (u_r = a R: hoop strain a)
+        ! has its exact strains
         block
-          real(dp) :: nq(maxnode), dq(maxnode, 3), vq, wq, xq(3)
+          real(dp) :: nq(maxnode), dq(maxnode, 3), vq, wq, xq(3), rq, hq(maxnode), wall(8)
           integer :: iq
           geo%dndx_ref(:, :, 1) = 0.0_dp
           vq = 0.0_dp
+          hq = 0.0_dp
+          if (tp%axisym) allocate (geo%hoop_fl(nnode, 2**ndim))
           do iq = 1, 2**ndim
             call solid_gauss_point(2, ndim, iq, xq, wq)
             call solid_reference_derivatives(tp%family, nnode, ndim, coords0, xq, nq(1:nnode), dq(1:nnode, :), detj, &
               jinv)
             if (.not. (detj > 0.0_dp)) return
-            geo%dndx_ref(1:nnode, :, 1) = geo%dndx_ref(1:nnode, :, 1) + wq * detj * dq(1:nnode, :)
-            vq = vq + wq * detj
+            wq = wq * detj
+            if (tp%axisym) then
+              rq = dot_product(nq(1:nnode), coords0(1, :))
+              if (.not. (rq > 0.0_dp)) return
+              wq = 2 * acos(-1.0_dp) * rq * wq
+              hq(1:nnode) = hq(1:nnode) + wq * nq(1:nnode) / rq
+              geo%hoop_fl(:, iq) = nq(1:nnode) / rq
+              wall(iq) = wq
+            end if
+            geo%dndx_ref(1:nnode, :, 1) = geo%dndx_ref(1:nnode, :, 1) + wq * dq(1:nnode, :)
+            vq = vq + wq
           end do
           geo%dndx_ref(:, :, 1) = geo%dndx_ref(:, :, 1) / vq
           geo%wdet(1) = vq
           geo%dndx_0m = geo%dndx_ref(:, :, 1)
+          if (tp%axisym) then
+            geo%hoop(1:nnode, 1) = hq(1:nnode) / vq
+            do iq = 1, 2**ndim
+              geo%hoop_fl(:, iq) = sqrt(wall(iq)) * (geo%hoop_fl(:, iq) - geo%hoop(1:nnode, 1))
+            end do
+          end if
         end block
         ! Flanagan-Belytschko (1981): gamma_m = (h_m - sum_j (h_m . X_j) b_j) / nnode with b_j = dN/dX_j at the
         ! single (centre) point, orthogonal to every linear field (gamma_m . X_j = 0): no hourglass force in a
@@ -302,6 +341,11 @@ contains
     type(solid_geometry_t), target :: gl          ! reference data computed here when the host has none
     type(solid_geometry_t), pointer :: gp         ! the reference data in use (no per-call copy of the host's)
     real(dp) :: fc0(3, 3), fc1(3, 3), jc0, jc1, celent, eye(3, 3), m, finv(3, 3), dndx_c(maxnode, 3)
+    ! F-bar / B-bar block: nf = 3 in 3D and axisymmetry (the hoop stretch is part of J), 2 in plane strain (F33 = 1);
+    ! hcc: the centre's (mean's) hoop operator N_a / r of an axisymmetric F-bar type, the column k = 1 of its
+    ! dilatation operator beside dndx_c
+    integer :: nf
+    real(dp) :: mf, hcc(maxnode)
     real(dp) :: fe(3 * maxnode), ke(3 * maxnode, 3 * maxnode), kl(maxnode, 3, 3, maxnode)
     real(dp) :: alpha_n(maxalpha), alpha(maxalpha), dalpha(maxalpha), kaa(maxalpha, maxalpha)
     real(dp) :: rhs(maxalpha, 3 * maxnode + 1), scale, g_shear, ghg, khg, qhg(3)
@@ -375,6 +419,8 @@ contains
 
     eye = identity()
     m = real(ndim, dp)
+    nf = merge(3, ndim, solid_types(it)%axisym)
+    mf = real(nf, dp)
     xref = 0.0_dp
     un = 0.0_dp
     u1 = 0.0_dp
@@ -406,6 +452,11 @@ contains
     ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
     fc0 = def_grad(un, gp%dndx_0c)
     fc1 = def_grad(u1, gp%dndx_0c)
+    if (solid_types(it)%axisym) then
+      ! hoop stretch at the centre r_c / R_c: J_c is the 3D volume ratio there
+      fc0(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), un(1, 1:nne))
+      fc1(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), u1(1, 1:nne))
+    end if
     jc0 = det3(fc0)
     jc1 = det3(fc1)
     if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
@@ -413,12 +464,15 @@ contains
       return
     end if
     dndx_c = 0.0_dp
+    hcc = 0.0_dp
     if (fbar) then
       if (nlgeom) then
         finv = inv3(fc1)
         dndx_c(1:nne, 1:ndim) = matmul(gp%dndx_0c(1:nne, 1:ndim), finv(1:ndim, 1:ndim))
+        if (solid_types(it)%axisym) hcc(1:nne) = gp%hoop_0c(1:nne) / fc1(3, 3)   ! N_a / r_c, current
       else
         dndx_c(1:nne, :) = gp%dndx_0m
+        if (solid_types(it)%axisym) hcc(1:nne) = gp%hoop_0m(1:nne)
       end if
     end if
 
@@ -443,7 +497,8 @@ contains
           if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
         end if
         statev_new(nsv + 1, 1) = ghg
-        khg = hourglass_factor * ghg * gp%hg_vsum * mat%thickness
+        ! (axisymmetric: hg_vsum has the 2 pi R weighted volume; no section thickness)
+        khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, solid_types(it)%axisym)
         do mh = 1, gp%nhg
           qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
           do a = 1, nnode
@@ -461,6 +516,29 @@ contains
           energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
           if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
         end do
+        if (allocated(gp%hoop_fl)) then
+          ! axisymmetric one point (CAX4R): the mean hoop strain at the point misses the variation of u_r / R over
+          ! the element, and u_r = Z - c, u_z = -R (c = <Z/R> / <1/R>) is a zero-energy mode that the
+          ! Flanagan-Belytschko vectors (orthogonal to every linear field) cannot see. Stabilisation: the shear
+          ! part of the energy of that variation, (1/2) 2 G int (u_r/R - <u_r/R>)^2 dV (the bulk part would lock),
+          ! zero for u_r = a R (constant hoop strain): the patch test is kept
+          khg = hourglass_factor * 2 * ghg
+          do mh = 1, size(gp%hoop_fl, 2)
+            qhg(1) = dot_product(gp%hoop_fl(:, mh), u1(1, 1:nnode))
+            do a = 1, nnode
+              r = ndim * (a - 1) + 1
+              f_int(r) = f_int(r) + khg * gp%hoop_fl(a, mh) * qhg(1)
+              if (want_k) then
+                do b = 1, nnode
+                  c = ndim * (b - 1) + 1
+                  k_e(r, c) = k_e(r, c) + khg * gp%hoop_fl(a, mh) * gp%hoop_fl(b, mh)
+                end do
+              end if
+            end do
+            energy(1) = energy(1) + 0.5_dp * khg * qhg(1)**2
+            if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * qhg(1)**2
+          end do
+        end if
       end if
     else
       ! ---- incompatible modes: Newton on the internal parameters alpha (f_alpha = 0) from the converged alpha_n,
@@ -622,8 +700,9 @@ contains
         fb0 = fg0(:, :, ip)
         fb1 = fg1(:, :, ip)
         if (fbar) then
-          fb0(1:ndim, 1:ndim) = (jc0 / j0)**(1.0_dp / m) * fb0(1:ndim, 1:ndim)
-          fb1(1:ndim, 1:ndim) = (jc1 / j1)**(1.0_dp / m) * fb1(1:ndim, 1:ndim)
+          ! (axisymmetric: the whole 3x3 F with its hoop stretch, m = 3, so that det Fbar = J_c)
+          fb0(1:nf, 1:nf) = (jc0 / j0)**(1.0_dp / mf) * fb0(1:nf, 1:nf)
+          fb1(1:nf, 1:nf) = (jc1 / j1)**(1.0_dp / mf) * fb1(1:nf, 1:nf)
         end if
 
         if (nlgeom) then
@@ -646,14 +725,16 @@ contains
           if (axi) g(3, 3) = dot_product(gp%hoop(:, ip), dun(1, 1:nne))   ! hoop strain increment du_r / R
           if (fbar) then
             gc = def_grad(dun, gp%dndx_0m) - eye
+            ! axisymmetric: the mean dilatation includes the mean hoop strain (2 pi R weighted)
+            if (axi) gc(3, 3) = dot_product(gp%hoop_0m(1:nne), dun(1, 1:nne))
             trg = 0.0_dp
             trc = 0.0_dp
-            do i = 1, ndim
+            do i = 1, nf
               trg = trg + g(i, i)
               trc = trc + gc(i, i)
             end do
-            do i = 1, ndim
-              g(i, i) = g(i, i) + (trc - trg) / m
+            do i = 1, nf
+              g(i, i) = g(i, i) + (trc - trg) / mf
             end do
           end if
           drot = eye
@@ -789,11 +870,13 @@ contains
         ! dilatation operator (0 for the other element types)
         bc = 0.0_dp
         if (fbar) bc(1:nne, 1:ndim) = dndx_c(1:nne, 1:ndim) - dndx(1:nne, 1:ndim)
+        ! axisymmetric: the dilatation of a radial nodal motion includes its hoop strain N_b / r
+        if (fbar .and. axi) bc(1:nne, 1) = bc(1:nne, 1) + hcc(1:nne) - hc(1:nne)
         ! without NLGEOM the virtual strain is the B-bar one too (f = int Bbar^T sigma dV), so that
         ! K = int Bbar^T C Bbar is symmetric for a symmetric DDSDDE; under NLGEOM f = int B^T sigma dv
         ! (de Souza Neto et al., 1996)
         trs = 0.0_dp
-        if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, ndim == 3)) / m
+        if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, nf == 3)) / mf
         bcr = 0.0_dp
         if (.not. nlgeom) bcr(1:nne, 1:ndim) = bc(1:nne, 1:ndim)
         do a = 1, nne
@@ -819,7 +902,7 @@ contains
           if (k8) then
             d8 = dndx(1:8, :)
             b8 = bc(1:8, :)
-            r8 = bcr(1:8, :) / m
+            r8 = bcr(1:8, :) / mf
             call k_point_c3d8(a4, q, d8, b8, r8, dv, kl8)
           else
             do b = 1, nne
@@ -828,7 +911,7 @@ contains
                      + a4(:, :, k, 3) * dndx(b, 3)) * dv
                 ! axisymmetric: the column's hoop gradient L_33 = N_b / r for k = 1
                 if (axi .and. k == 1) t = t + a4(:, :, 3, 3) * hc(b) * dv
-                trs = (t(1, 1) + t(2, 2) + t(3, 3)) / m
+                trs = (t(1, 1) + t(2, 2) + t(3, 3)) / mf
                 do i = 1, ndim
                   kl(1:nne, i, k, b) = kl(1:nne, i, k, b) + t(i, 1) * dndx(1:nne, 1) &
                     + t(i, 2) * dndx(1:nne, 2) + t(i, 3) * dndx(1:nne, 3) + trs * bcr(1:nne, i)

@@ -42,7 +42,7 @@ module solid_shape
     logical :: axisym = .false.    !< axisymmetric (r, z): hoop strain u_r / r, volumes and forces over 2 pi
   end type solid_type_t
 
-  type(solid_type_t), parameter :: solid_types(20) = [ &
+  type(solid_type_t), parameter :: solid_types(21) = [ &
     solid_type_t('C3D8', FAM_HEX8, 8, 3, 2, 8, 3, 3, .true., 0), &
     solid_type_t('C3D8I', FAM_HEX8, 8, 3, 2, 8, 3, 3, .false., 3), &
     solid_type_t('C3D20', FAM_HEX20, 20, 3, 3, 27, 3, 3, .false., 0), &
@@ -60,9 +60,10 @@ module solid_shape
     solid_type_t('C3D8R', FAM_HEX8, 8, 3, 1, 1, 3, 3, .false., 0, .false., .true.), &
     solid_type_t('CPE4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true.), &
     solid_type_t('CPS4R', FAM_QUAD4, 4, 2, 1, 1, 2, 1, .false., 0, .true., .true.), &
-    solid_type_t('CAX4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.), &
+    solid_type_t('CAX4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0, .false., .false., .true.), &
     solid_type_t('CAX8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0, .false., .false., .true.), &
-    solid_type_t('CAX8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.)]
+    solid_type_t('CAX8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.), &
+    solid_type_t('CAX4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true., .true.)]
 
   real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &

@@ -11,7 +11,7 @@ module model_types
   public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
   public :: etype_c3d8i, etype_c3d20, etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r
   public :: etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_names
-  public :: etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, etype_is_axisymmetric
+  public :: etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, etype_cax4r, etype_is_axisymmetric
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor, transform_t
   public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes
@@ -39,10 +39,11 @@ module model_types
   integer, parameter :: etype_cax4i = 20   !< 4-node axisymmetric quadrilateral, incompatible modes
   integer, parameter :: etype_cax8 = 21    !< 8-node axisymmetric quadrilateral, 9 points
   integer, parameter :: etype_cax8r = 22   !< 8-node axisymmetric quadrilateral, 4 points
+  integer, parameter :: etype_cax4r = 23   !< 4-node axisymmetric quadrilateral, 1 point, hourglass stiffness
   !> Abaqus name of each continuum element kind (index = etype_*; the user kind is 'U')
-  character(len=8), parameter :: etype_names(22) = [character(len=8) :: 'C3D8', 'CPE4', 'U', 'C3D8I', 'C3D20', &
+  character(len=8), parameter :: etype_names(23) = [character(len=8) :: 'C3D8', 'CPE4', 'U', 'C3D8I', 'C3D20', &
     'C3D20R', 'C3D4', 'C3D10', 'CPE4I', 'CPE8', 'CPE8R', 'CPS4', 'CPS4I', 'CPS8', 'CPS8R', 'C3D8R', 'CPE4R', 'CPS4R', &
-    'CAX4', 'CAX4I', 'CAX8', 'CAX8R']
+    'CAX4', 'CAX4I', 'CAX8', 'CAX8R', 'CAX4R']
   integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
   integer, parameter :: init_stress = 1    !< *INITIAL CONDITIONS, TYPE=STRESS
   integer, parameter :: init_solution = 2  !< *INITIAL CONDITIONS, TYPE=SOLUTION
@@ -460,7 +461,7 @@ contains
   !> True for the axisymmetric element kinds (CAX*: x1 = r, x2 = z, loads and forces per 2 pi radians).
   pure logical function etype_is_axisymmetric(kind)
     integer, intent(in) :: kind  !< etype_*
-    etype_is_axisymmetric = kind >= etype_cax4 .and. kind <= etype_cax8r
+    etype_is_axisymmetric = kind >= etype_cax4 .and. kind <= etype_cax4r
   end function etype_is_axisymmetric
 
   !> Index of a node set by (upper-case) name, 0 if absent.

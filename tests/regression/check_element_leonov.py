@@ -11,7 +11,7 @@ every point calls the UMAT with the F of the driver's mode=deformation. The host
 Piola-Kirchhoff stress: sum_a RF_a (x) X_a = P V0 with P = J sigma F^-T, compared at every increment with the
 driver's Cauchy stress: max |P_host - P_driver| <= 1e-8 of the peak (the two differ only by round-off).
 
-Axisymmetric types (CAX4, CAX8, CAX8R): the element on 1 <= r <= 2, 0 <= z <= 1 with r = a R, z = c Z + d R, a
+Axisymmetric types (CAX4, CAX4R, CAX8, CAX8R): the element on 1 <= r <= 2, 0 <= z <= 1 with r = a R, z = c Z + d R, a
 homogeneous F = [[a, 0, 0], [d, c, 0], [0, 0, a]] in (r, z, theta) whose hoop stretch r/R = a is the radial one.
 The reactions are totals over 2 pi; the same virtual-work identity with the virtual fields X_j e_i, whose hoop
 strain is delta u_r / R, gives sum_a RF_a,i X_a,j = int (P_iJ + delta_ir P_tt X_j / R) dV0: V0 (P_rR + P_tt) for
@@ -22,6 +22,15 @@ Plane-stress types (CPS4, CPS4I, CPS4R, CPS8, CPS8R; DEPVAR 12) against the driv
 (plane_stress=yes, the UMAT's own thickness stretch lambda_3): under NLGEOM the element's thickness is t0 / det F_2D
 (J = 1; the inferred Abaqus behaviour, docs/elements.md), so sum_a RF_a (x) X_a = sigma F_2D^-T V0 = P_driver / J_m
 with J_m = det F_2D lambda_3 the Leonov's own volume ratio; asked to 1e-8 of the peak, and J_m - 1 is reported.
+
+Plane stress in uniaxial stress (type name CPS4-uniaxial: a CPS4, NLGEOM=NO): the driver in mode=uniaxial with
+plane_stress=yes (NTENS = 3, SDV12 = ln lambda_3, the UMAT's own sigma_33 = 0 iteration) gives the uniaxial
+stress history with its lateral stretch lambda_2(t) (sigma_22 = 0 to the driver's tolerance); the host's unit
+square, thickness 1, has every node on u = diag(lambda_1 - 1, lambda_2 - 1) X through two tabular *AMPLITUDEs
+holding the driver's stretches at each increment time (exact there, 15 digits), so the UMAT sees the same DFGRD0,
+DFGRD1 in-plane blocks (the Leonov UMAT works from them; DFGRD(3,3) is ignored in plane stress). Without NLGEOM the
+forces are f = int B^T sigma dV0, so sum_a RF_a (x) X_a = sigma V0 with the Cauchy stress: compared with the
+driver's (sigma_11 and sigma_22 = 0 included) to 1e-8 of the peak, the same round-off rationale.
 """
 import argparse
 import csv
@@ -113,14 +122,80 @@ def inv3(a):
     return [[c[i][j] / d for j in range(3)] for i in range(3)]
 
 
+def amplitude(name, times, values):
+    pairs = ["%.15g, %.15g" % tv for tv in zip(times, values)]
+    return ["*AMPLITUDE, NAME=%s, DEFINITION=TABULAR" % name] + [", ".join(pairs[i:i + 4])
+                                                                  for i in range(0, len(pairs), 4)]
+
+
+def plane_stress_case(a):
+    """CPS4, NLGEOM=NO, uniaxial stress against material_point plane_stress=yes (module docstring)."""
+    csv_path = os.path.join(a.out, "mp_cps.csv")
+    res = subprocess.run([a.mp, "mode=uniaxial", "plane_stress=yes", "nstatv=12", "rate=%.15g" % (0.3 / T),
+                          "strain_end=0.3", "steps=%d" % STEPS, "output=" + csv_path], capture_output=True, text=True)
+    if res.returncode != 0:
+        fail("material_point (plane stress) failed: " + res.stderr)
+    drv = list(csv.DictReader(open(csv_path)))
+    times = [float(r["time"]) for r in drv]
+    lam = [[float(r["F11"]) for r in drv], [float(r["F22"]) for r in drv]]
+    x = list(CORNERS2)
+    out = ["*HEADING", "Leonov UMAT, one CPS4 in uniaxial stress, NLGEOM=NO (tests/regression/check_element_leonov.py)",
+           "*NODE, NSET=ALL"] + ["%d, %g, %g" % (i + 1, p[0], p[1]) for i, p in enumerate(x)]
+    out += ["*ELEMENT, TYPE=CPS4, ELSET=E", "1, 1, 2, 3, 4"]
+    for i in range(len(x)):
+        out += ["*NSET, NSET=N%d" % (i + 1), "%d," % (i + 1)]
+    out += amplitude("L1", times, [v - 1.0 for v in lam[0]]) + amplitude("L2", times, [v - 1.0 for v in lam[1]])
+    out += ["*SOLID SECTION, ELSET=E, MATERIAL=PET", "1.", "*MATERIAL, NAME=PET",
+            "*USER MATERIAL, CONSTANTS=10, UNSYMM",
+            PROPS, "*DEPVAR", "12", "**LDFCZ STATEV, MATERIAL=PET, PLASTIC STRAIN=7",
+            "*STEP, NLGEOM=NO, INC=1000", "*STATIC, DIRECT", "%g, %g" % (T / STEPS, T), "*BOUNDARY"]
+    for i, p in enumerate(x):
+        for d in range(2):
+            if p[d] == 0:
+                out.append("%d, %d, %d, 0." % (i + 1, d + 1, d + 1))
+    out += ["*BOUNDARY, AMPLITUDE=L1"] + ["%d, 1, 1, 1." % (i + 1) for i, p in enumerate(x) if p[0] == 1]
+    out += ["*BOUNDARY, AMPLITUDE=L2"] + ["%d, 2, 2, 1." % (i + 1) for i, p in enumerate(x) if p[1] == 1]
+    for i in range(len(x)):
+        out += ["*NODE PRINT, NSET=N%d, TOTALS=YES" % (i + 1), "RF1, RF2"]
+    out += ["*END STEP"]
+    path = os.path.join(a.out, "cps4.inp")
+    with open(path, "w") as fh:
+        fh.write("\n".join(out) + "\n")
+    res = subprocess.run([a.exe, "-q", path], cwd=a.out, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if res.returncode != 0:
+        print(res.stdout)
+        fail("ldfcz exited with %d on %s" % (res.returncode, path))
+    by_time = {round(t, 6): r for t, r in zip(times, drv)}
+    worst, peak, n = 0.0, 0.0, 0
+    for r in csv.DictReader(open(os.path.join(a.out, "cps4.csv"))):
+        mp = by_time.get(round(float(r["step_time"]), 6))
+        if mp is None:
+            continue
+        s = [float(mp[k]) for k in ("S11", "S22", "S12")]
+        sig = [[s[0], s[2]], [s[2], s[1]]]
+        # V0 = 1 (unit square, thickness 1)
+        s_host = [[sum(float(r["N%d.RF%d" % (k + 1, i + 1)]) * x[k][j] for k in range(len(x))) for j in range(2)]
+                  for i in range(2)]
+        for i in range(2):
+            for j in range(2):
+                worst = max(worst, abs(s_host[i][j] - sig[i][j]))
+                peak = max(peak, abs(sig[i][j]))
+        n += 1
+    ok = n == STEPS and peak > 25.0 and worst <= 1e-8 * peak
+    print("%-7s increments %d, peak |sigma| %.3f MPa, max |sigma_host - sigma_driver| / peak %.2e %s"
+          % ("CPS4", n, peak, worst / max(peak, 1e-300), "ok" if ok else "FAIL"))
+    if not ok:
+        fail("CPS4 (plane stress, NLGEOM=NO)")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--mp", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--types",
-                    default="C3D8,C3D8I,C3D8R,C3D20,C3D20R,C3D4,C3D10,CPE4,CPE4I,CPE4R,CPE8,CPE8R,CAX4,CAX8,CAX8R,"
-                    "CPS4,CPS4I,CPS4R,CPS8,CPS8R")
+                    default="C3D8,C3D8I,C3D8R,C3D20,C3D20R,C3D4,C3D10,CPE4,CPE4I,CPE4R,CPE8,CPE8R,CAX4,CAX4R,"
+                    "CAX8,CAX8R,CPS4,CPS4I,CPS4R,CPS8,CPS8R,CPS4-uniaxial")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     drivers = {}
@@ -134,6 +209,9 @@ def main():
             fail("material_point failed: " + res.stderr)
         drivers[nd] = {round(float(r["time"]), 6): r for r in csv.DictReader(open(csv_path))}
     for etype in a.types.split(","):
+        if etype == "CPS4-uniaxial":
+            plane_stress_case(a)
+            continue
         job = etype.lower()
         path = os.path.join(a.out, job + ".inp")
         x, f_end = deck(path, etype)

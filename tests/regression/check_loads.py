@@ -400,9 +400,10 @@ def case_lame_quadratic(exe, out):
             fail("%s: error does not converge (%.2e -> %.2e)" % (etype, errs[0], errs[1]))
 
 
-def axisymmetric_cylinder_deck(path, etype, a, b, nr, p, h=0.2):
+def axisymmetric_cylinder_deck(path, etype, a, b, nr, p, h=0.2, nu=0.3):
     """Axisymmetric thick cylinder a < r < b, one element layer 0 < z < h (CAX4, CAX8, CAX8R; mid-side nodes of
-    CAX8 at the edge midpoints), *DSLOAD pressure p on the bore (S4), u_z = 0 everywhere (plane strain)."""
+    CAX8 at the edge midpoints), *DSLOAD pressure p on the bore (S4), u_z = 0 everywhere (plane strain);
+    *ELASTIC E = 1000 with Poisson's ratio nu."""
     quad = etype.startswith("CAX8")
     ids = {}
     out = ["*HEADING", "axisymmetric thick cylinder, %s (tests/regression/check_loads.py)" % etype, "*NODE, NSET=ALL"]
@@ -425,7 +426,7 @@ def axisymmetric_cylinder_deck(path, etype, a, b, nr, p, h=0.2):
         out.append("%d, %s" % (e + 1, ", ".join(str(n) for n in c)))
     out += ["*ELSET, ELSET=INNER", "1,", "*NSET, NSET=RIN", "%d," % ids[(0, 0)], "*NSET, NSET=ROUT",
             "%d," % ids[(ni, 0)], "*NSET, NSET=BOTTOM"] + ["%d," % v for (i, k), v in sorted(ids.items()) if k == 0]
-    out += ["*SOLID SECTION, ELSET=TUBE, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.3",
+    out += ["*SOLID SECTION, ELSET=TUBE, MATERIAL=M", "*MATERIAL, NAME=M", "*ELASTIC", "1000., %r" % nu,
             "*SURFACE, NAME=BORE", "INNER, S4", "*BOUNDARY", "ALL, 2, 2",
             "*STEP, NLGEOM=NO", "*STATIC", "1., 1.", "*DSLOAD", "BORE, P, %.15g" % p,
             "*NODE PRINT, NSET=RIN", "U1", "*NODE PRINT, NSET=ROUT", "U1", "*NODE PRINT, NSET=BOTTOM, TOTALS=YES",
@@ -437,18 +438,23 @@ def case_lame_axisymmetric(exe, out):
     """CAX4, CAX8, CAX8R thick cylinder under bore pressure with u_z = 0 against plane-strain Lame, and the axial
     reaction on the bottom nodes as the total around the circumference (Abaqus' convention for axisymmetric
     elements): sigma_zz = nu (sigma_rr + sigma_tt) = 2 nu p a^2 / (b^2 - a^2), so sum RF2 = -2 nu p pi a^2 (the
-    bottom holds the tube's axial tension). Radial mesh convergence: CAX4 O(h^2), the quadratic ones faster."""
-    a, b, p, nu = 1.0, 2.0, 1.0, 0.3
-    want_u = lame(a, a, b, p, 1000.0, nu)
-    want_f = -2.0 * nu * p * math.pi * a * a
-    for etype, meshes, tol in (("CAX4", (8, 16), 3e-3), ("CAX8", (4, 8), 1e-4), ("CAX8R", (4, 8), 1e-4)):
+    bottom holds the tube's axial tension). Radial mesh convergence: CAX4 O(h^2), the quadratic ones faster.
+    CAX4 also at nu = 0.4999 (bulk modulus 1700 x the shear modulus): with its B-bar (the mean dilatation including
+    the hoop strain u_r / r) it does not lock, the same 3e-3 as at nu = 0.3 (3e-4 measured; a locking CAX4 gave
+    half the displacement, docs/elements.md "Volumetric locking")."""
+    a, b, p = 1.0, 2.0, 1.0
+    for etype, meshes, tol, nu in (("CAX4", (8, 16), 3e-3, 0.3), ("CAX4", (8, 16), 3e-3, 0.4999),
+                                   ("CAX4R", (8, 16), 3e-3, 0.3), ("CAX4R", (8, 16), 3e-3, 0.4999),
+                                   ("CAX8", (4, 8), 1e-4, 0.3), ("CAX8R", (4, 8), 1e-4, 0.3)):
+        want_u = lame(a, a, b, p, 1000.0, nu)
+        want_f = -2.0 * nu * p * math.pi * a * a
         errs = []
         for nr in meshes:
-            rows = run(exe, out, "axi_%s_%d" % (etype.lower(), nr),
-                       lambda d: axisymmetric_cylinder_deck(d, etype, a, b, nr, p))
+            rows = run(exe, out, "axi_%s_%d_%s" % (etype.lower(), nr, str(nu).replace(".", "p")),
+                       lambda d: axisymmetric_cylinder_deck(d, etype, a, b, nr, p, nu=nu))
             errs.append(abs(rows[-1]["RIN.U1"] - want_u) / want_u)
-        print("%s: relative error of the bore displacement %.2e (%d elements), %.2e (%d)" %
-              (etype, errs[0], meshes[0], errs[1], meshes[1]))
+        print("%s, nu = %g: relative error of the bore displacement %.2e (%d elements), %.2e (%d)" %
+              (etype, nu, errs[0], meshes[0], errs[1], meshes[1]))
         close(etype + " bore displacement (Lame)", errs[1], 0.0, 0.0, tol)
         if not (errs[1] < errs[0] or errs[1] < 1e-10):   # (CAX8R reproduces this Lame field to round-off)
             fail("%s: no convergence (%.2e -> %.2e)" % (etype, errs[0], errs[1]))
