@@ -7,6 +7,8 @@ collect JOB.csv, compute the steady peel force per unit width, and write reports
   peel_study.py stmt-mesh-x|stmt-mesh-z|stmt-3d|...|mesh-x|mesh-z|simplifications|dofs|plastic-bound|
                 app-settings|opening-bound|application [--quick]   (the whole list: docs/scenes.md)
   peel_study.py list                 the studies and their cases
+  ... --ranks N --threads T --ldfcz build-mpi/bin/ldfcz    every case under `mpirun -np N` (the LDFCZ_MPI build),
+                                     T threads per process; --reports DIR keeps these reports apart
 
 Steady peel force: tools/steady_force.py (the plateau window after the front has crossed 3 elements of the fine
 region, its uncertainty, refused or flagged outside the fine region or before the plateau); the mean over the last
