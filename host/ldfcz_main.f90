@@ -234,10 +234,10 @@ program ldfcz
     open (unit=7, file=outdir//'/'//job//'.msg', status='replace', action='write', iostat=stat)
   end if
   call user_routines_connect_units(routines, outdir//'/'//job//'.msg')
-  call blas_threads_default(blas_note)
-  if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   nthreads = 1
   !$ nthreads = omp_get_max_threads()
+  call blas_threads_default(nthreads, blas_note, options%factor_blas_threads, options%factor_min_flops)
+  if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call omp_wait_note(nthreads, wait_note)
   if (len(wait_note) > 0) call output_log(out, 'ldfcz: '//wait_note)
   call heap_reuse_default(heap_note)

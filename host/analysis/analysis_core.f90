@@ -10,7 +10,7 @@ module analysis_core
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
   use element_colors, only: color_elements
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
-    sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
+    sparse_set_factor_threads, sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
   use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
   use solver_text, only: itoa, rtoa
@@ -52,6 +52,8 @@ module analysis_core
     logical :: symmetric = .true.               !< LDL^T with symmetrised element matrices
     logical :: sym_factors = .false.            !< unsymmetric: factors of the symmetric part (preconditioner only)
     logical :: single_factors = .false.         !< factors in single precision (preconditioner only)
+    integer :: factor_blas_threads = 0          !< BLAS threads of a large factorization (0: BLAS untouched)
+    real(dp) :: factor_min_flops = 0.0_dp       !< operations from which a factorization uses them
     integer, allocatable :: elem_ptr(:)         !< (nelem+1) into elem_dof
     integer, allocatable :: elem_dof(:)         !< global dof of each element dof
     integer, allocatable :: elem_eq(:)          !< equation of each element dof (0: prescribed/unused)
@@ -366,6 +368,7 @@ contains
       stat = 2
       return
     end if
+    call sparse_set_factor_threads(an%sys, an%factor_blas_threads, an%factor_min_flops)
     an%sys_ready = .true.
     if (.false.) print *, model%nnode
   end subroutine analysis_number_equations

@@ -5,7 +5,7 @@ module run_summary
   use model_types, only: model_t, etype_user
   use analysis_core, only: analysis_t, n_cost_class
   use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count, &
-    sparse_time_comm, sparse_factor_entries
+    sparse_time_comm, sparse_factor_entries, sparse_factor_flops
   use output_files, only: output_t, output_log
   use parallel_context, only: parallel_t, parallel_max, parallel_sum
   use solver_options, only: newton_full, newton_mode_name
@@ -37,6 +37,7 @@ module run_summary
     real(dp) :: class_calls(n_cost_class) = 0   !< element calls per cost class, all processes
     integer :: class_weight(n_cost_class) = 0   !< the partition's weights (MPI)
     integer(i8) :: factor_entries = 0           !< entries in the last factors (MUMPS INFOG(29); 0: none)
+    real(dp) :: factor_flops = 0.0_dp           !< operations of the last factorization (MUMPS RINFOG(3); 0: none)
   end type run_summary_t
 
 contains
@@ -87,6 +88,7 @@ contains
       summary%t_analysis = summary%t_analysis + sparse_time_analysis(an%sys)
       summary%factorizations = summary%factorizations + sparse_factor_count(an%sys)
       summary%factor_entries = sparse_factor_entries(an%sys)
+      summary%factor_flops = sparse_factor_flops(an%sys)
     end if
     summary%t_assembly = an%t_assembly
     summary%t_output = t_output
@@ -156,8 +158,9 @@ contains
     write (line, '(a,4(f10.3,a))') 'wall time split: assembly ', summary%t_assembly, ' s, factorization ', &
       summary%t_factor, ' s, solve ', summary%t_solve, ' s, output ', summary%t_output, ' s'
     call output_log(out, trim(line))
-    write (line, '(a,f10.3,a,i0)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', summary%t_analysis, &
-      ' s, entries in the last factors ', summary%factor_entries
+    write (line, '(a,f10.3,a,i0,a,es10.3)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', &
+      summary%t_analysis, ' s, entries in the last factors ', summary%factor_entries, ', flops of the last ', &
+      summary%factor_flops
     call output_log(out, trim(line))
     if (summary%nranks > 1) then
       write (line, '(a,i0,a,f10.3,a,i0,a)') 'MPI processes ', summary%nranks, ', communication of the host ', &

@@ -57,6 +57,8 @@ contains
     summary%ndof = count(an%used)
     an%sym_factors = opt%symmetric_factors
     an%single_factors = opt%single_factors
+    an%factor_blas_threads = opt%factor_blas_threads
+    an%factor_min_flops = opt%factor_min_flops
     call run_steps(model, routines, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
     if (.not. summarize) return
 

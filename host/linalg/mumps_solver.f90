@@ -39,7 +39,7 @@ module mumps_solver
   private
   public :: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy
   public :: mumps_factor_entries, mumps_pivot_order, mumps_is_analysed, mumps_is_factored
-  public :: mumps_solution_rows, mumps_solution_distributed
+  public :: mumps_solution_rows, mumps_solution_distributed, mumps_factor_flops
 
   include 'mpif.h'
   include 'dmumps_struc.h'
@@ -324,6 +324,20 @@ contains
       nf = -int(v, i8) * 1000000_i8
     end if
   end function mumps_factor_entries
+
+  !> Floating-point operations of one factorization: after a factorization RINFOG(3) (effective), before it
+  !> RINFOG(1) (the analysis' estimate); 0 before the analysis.
+  real(dp) function mumps_factor_flops(ms) result(flops)
+    type(mumps_solver_t), intent(in) :: ms           !< instance
+
+    flops = 0.0_dp
+    if (.not. ms%analysed) return
+    if (ms%single) then
+      flops = real(merge(ms%sid%RINFOG(3), ms%sid%RINFOG(1), ms%factored), dp)
+    else
+      flops = merge(ms%id%RINFOG(3), ms%id%RINFOG(1), ms%factored)
+    end if
+  end function mumps_factor_flops
 
   !> The pivot order MUMPS used (SYM_PERM after the analysis: position of each variable), for checks.
   subroutine mumps_pivot_order(ms, position)

@@ -36,7 +36,8 @@ module sparse_system
   use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_bcast, parallel_gather_pieces
   use mumps_solver, only: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy, &
                           mumps_factor_entries, mumps_pivot_order, mumps_is_factored, mumps_solution_rows, &
-                          mumps_solution_distributed
+                          mumps_solution_distributed, mumps_factor_flops
+  use blas_threads, only: blas_threads_set
   implicit none
   private
   public :: sparse_system_t
@@ -46,6 +47,7 @@ module sparse_system
   public :: sparse_time_solve, sparse_factor_count, sparse_analysis_count, sparse_solve_count
   public :: sparse_ordering, sparse_pivot_order, sparse_to_dense, sparse_is_symmetric
   public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count, sparse_factors_exact, sparse_time_comm
+  public :: sparse_set_factor_threads, sparse_factor_flops
 
   !> A sparse system with its pattern, values, ordering and MUMPS instance (components private).
   type :: sparse_system_t
@@ -67,6 +69,8 @@ module sparse_system
     integer, allocatable :: lo_entry(:)             !< sym_factors: entry (j, i) of each factor value
     real(dp), allocatable :: val_sym(:)             !< sym_factors: values given to MUMPS
     type(mumps_solver_t) :: solver                  !< the MUMPS instance
+    integer :: factor_threads = 0                   !< > 1: BLAS threads of a large factorization (see sparse_factorize)
+    real(dp) :: factor_min_flops = huge(1.0_dp)     !< operations from which a factorization is large
     type(parallel_t) :: par                         !< processes of the run (distributed: several)
     logical :: distributed = .false.                !< this process adds its own elements only
     integer, allocatable :: loc_entry(:)            !< distributed: the MUMPS values this process gives
@@ -279,6 +283,7 @@ contains
     integer, intent(out) :: stat                    !< 0 on success; MUMPS INFOG(1) otherwise (-10: singular)
     character(len=*), intent(out) :: errmsg         !< reason on failure
     integer(i8) :: c0
+    logical :: wide
 
     if (.not. sys%ready) then
       stat = -1000
@@ -286,6 +291,11 @@ contains
       return
     end if
     c0 = clock_count()
+    ! A factorization with large dense fronts runs its BLAS on the process' threads (the OpenMP element loop is not
+    ! running meanwhile); a small one stays on one thread, whose BLAS calls are too small to gain from a second
+    ! (docs/performance.md, "BLAS threads")
+    wide = sys%factor_threads > 1 .and. mumps_factor_flops(sys%solver) >= sys%factor_min_flops
+    if (wide) wide = blas_threads_set(sys%factor_threads)
     if (sys%sym_factors) then
       sys%val_sym = 0.5_dp * (sys%val(sys%up_entry) + sys%val(sys%lo_entry))
       if (sys%distributed) then
@@ -298,9 +308,27 @@ contains
     else
       call mumps_factorize(sys%solver, sys%val, stat, errmsg)
     end if
+    if (wide) wide = blas_threads_set(1)
     sys%t_factor = sys%t_factor + seconds_since(c0)
     if (stat == 0) sys%n_factor = sys%n_factor + 1
   end subroutine sparse_factorize
+
+  !> BLAS threads for the factorizations of at least min_flops operations (n = 0 or 1: leave the BLAS alone). The
+  !> caller passes the threads of its element loop when the host controls the BLAS (blas_threads_default).
+  subroutine sparse_set_factor_threads(sys, n, min_flops)
+    type(sparse_system_t), intent(inout) :: sys     !< system
+    integer, intent(in) :: n                        !< threads
+    real(dp), intent(in) :: min_flops               !< operations of one factorization from which they are used
+    sys%factor_threads = n
+    sys%factor_min_flops = min_flops
+  end subroutine sparse_set_factor_threads
+
+  !> Floating-point operations of one factorization (MUMPS' estimate before the first, then the effective count
+  !> of the last); 0 before the setup.
+  real(dp) function sparse_factor_flops(sys) result(flops)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    flops = mumps_factor_flops(sys%solver)
+  end function sparse_factor_flops
 
   !> True when the factors are those of the stored matrix (sparse_solve solves it), false when they are the
   !> symmetric part's or in single precision (a preconditioner for sparse_solve_krylov only).

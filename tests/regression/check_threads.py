@@ -9,7 +9,8 @@ sum is taken in the same order on any number of threads and the results must be 
 default; before the colouring, atomic additions in a run-dependent order gave ~3e-15). A data race (a static
 local array, a SAVEd variable written by two threads) gives O(1) differences or, in the Debug build, a "Recursive
 call to nonrecursive procedure" stop. Checks: both runs exit alike, same increments (step, inc, step time), every
-CSV value within --rel relative. Then the warning of host/linalg/omp_wait.f90 in JOB.log: present with 2 threads
+CSV value within --rel relative; the same with every factorization on 2 OpenBLAS threads (LDFCZ_BLAS_MIN_FLOPS=0).
+Then the warning of host/linalg/omp_wait.f90 in JOB.log: present with 2 threads
 and OMP_WAIT_POLICY=active or GOMP_SPINCOUNT=infinite, absent with 1 thread, the passive or the default policy.
 Use a deck with the default full Newton: `--newton auto` sizes its GMRES budget
 from measured times, which may take another path to the same tolerance.
@@ -24,6 +25,50 @@ import sys
 def fail(msg):
     print("FAIL: " + msg)
     sys.exit(1)
+
+
+def blas_threads_check(exe, out):
+    """Every factorization on 2 OpenBLAS threads (LDFCZ_BLAS_MIN_FLOPS=0: host/linalg/blas_threads.f90) on a
+    16x16x8 C3D8 block (fronts large enough for OpenBLAS to split its calls; the deck of tools/bench_calculix.py,
+    2 increments) against 1 thread: the same increments, every reaction within 1e-10 of the largest one (a
+    threaded BLAS sums in another order: 3e-15 relative observed on the pull reaction; the zero components carry
+    the solve's round-off of the force scale), and JOB.log says so. Skipped when the BLAS is not OpenBLAS."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+    import bench_calculix
+    d0 = os.path.join(out, "blas")
+    os.makedirs(d0, exist_ok=True)
+    deck = os.path.join(d0, "blk.inp")
+    with open(deck, "w") as f:
+        f.write(bench_calculix.block_deck(2, 0.1, nx=16, ny=16, nz=8))
+    tables, logs = {}, {}
+    for t, flops in ((1, None), (2, "0")):
+        d = os.path.join(d0, "t%d" % t)
+        e = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "LDFCZ_BLAS_MIN_FLOPS")}
+        if flops is not None:
+            e["LDFCZ_BLAS_MIN_FLOPS"] = flops
+        p = subprocess.run([exe, "--quiet", "--threads", str(t), "--out", d, deck], capture_output=True, text=True,
+                           errors="replace", timeout=600, env=e)
+        if p.returncode != 0:
+            fail("block with %d threads: exit %d\n%s" % (t, p.returncode, p.stderr[-2000:]))
+        with open(os.path.join(d, "blk.csv")) as f:
+            tables[t] = [l.split(",") for l in f.read().split("\n") if l]
+        with open(os.path.join(d, "blk.log")) as f:
+            logs[t] = f.read()
+    if "OpenBLAS on 1 thread" not in logs[1]:
+        print("BLAS is not OpenBLAS: threaded factorizations not checked")
+        return
+    if "on 2 during factorizations of at least 0.00E+00 flops" not in logs[2]:
+        fail("JOB.log does not say that factorizations use 2 BLAS threads")
+    r1, r2 = tables[1], tables[2]
+    if len(r1) != len(r2) or any(x[:3] != y[:3] for x, y in zip(r1, r2)):
+        fail("threaded factorizations changed the increments")
+    scale = max(abs(float(v)) for x in r1[1:] + r2[1:] for v in x[4:])
+    worst = max(abs(float(p) - float(q)) for x, y in zip(r1[1:], r2[1:]) for p, q in zip(x[4:], y[4:]))
+    worst /= max(scale, 1e-300)
+    print("block, every factorization on 2 BLAS threads: largest difference to 1 thread %.2e of the largest "
+          "reaction (bound 1e-10)" % worst)
+    if worst > 1e-10:
+        fail("threaded factorizations change the results beyond round-off")
 
 
 def main():
@@ -67,6 +112,7 @@ def main():
     print("%d increments, largest relative difference 1 vs 2 threads %.2e (bound %.0e)" % (len(r1) - 1, worst, a.rel))
     if worst > a.rel or (a.rel == 0.0 and any(x != y for x, y in zip(r1, r2))):
         fail("results depend on the thread count beyond round-off")
+    blas_threads_check(a.exe, a.out)
     # idle threads told to spin (host/linalg/omp_wait.f90): a warning in JOB.log with 2 threads, none with 1 thread
     # or the default policy
     for t, env, want in ((2, {"OMP_WAIT_POLICY": "active"}, True), (1, {"OMP_WAIT_POLICY": "Active"}, False),
