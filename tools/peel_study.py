@@ -403,7 +403,9 @@ def run_case(label, gen_args, workdir, ldfcz, threads, plateau, solver_args=(), 
         if x is not None and x > progress[-1][1]:
             progress.append((now, x))
         if time_limit > 0 and now > time_limit and not stopped:
-            proc.send_signal(signal.SIGTERM)
+            # OpenMPI's mpirun ends the job itself on SIGTERM (the processes are killed a second later) but forwards
+            # SIGUSR1, the same graceful stop (docs/host.md)
+            proc.send_signal(signal.SIGUSR1 if LAUNCH else signal.SIGTERM)
             stopped = True
     wall = time.time() - t0
     res = {'label': label, 'job': job, 'exit': rc, 'run_time_s': wall, 'elements': info['elements'],
