@@ -36,6 +36,7 @@ contains
     real(dp), intent(out) :: min_flops                   !< operations from which a factorization uses them
     integer :: length, status
     character(len=24) :: num
+    character(len=160) :: line
     real(dp) :: v
 
     what = ''
@@ -53,8 +54,8 @@ contains
     if (nthreads > 1) then
       factor_threads = nthreads
       write (num, '(es9.2)') min_flops
-      what = 'OpenBLAS on 1 thread, on '//trim(itoa(nthreads))//' during factorizations of at least '// &
-        trim(adjustl(num))//' flops (set OPENBLAS_NUM_THREADS to fix the count)'
+      write (line, '(a,i0,a)') 'OpenBLAS on 1 thread, on ', nthreads, ' during factorizations of at least '
+      what = trim(line)//' '//trim(adjustl(num))//' flops (set OPENBLAS_NUM_THREADS to fix the count)'
     end if
   end subroutine blas_threads_default
 
@@ -63,13 +64,5 @@ contains
     integer, intent(in) :: n                             !< threads (>= 1)
     done = ldfcz_blas_set_threads(int(max(n, 1), c_int)) == 1
   end function blas_threads_set
-
-  pure function itoa(i) result(s)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: s
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    s = trim(buf)
-  end function itoa
 
 end module blas_threads
