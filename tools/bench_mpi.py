@@ -25,6 +25,20 @@ memory per process against ranks and DOFs, with its prediction for the full-widt
   cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DLDFCZ_MPI=ON && cmake --build build-mpi -j2 --target ldfcz
   tools/bench_mpi.py --fine 0.02 0.05 --increments 3 --yield-idle --application --orderings pord amf
 
+With --scaling R1 R2 ... instead (strong scaling, for a machine with more cores): 1 rank x 1 thread and R ranks x
+1 thread for every R listed, plus --hybrid RxT runs (R ranks x T threads), on the same scenes; besides the table,
+OUT/bench_mpi_scaling.md gives per scene the speedup and parallel efficiency of the element loop, the
+factorization and the whole iteration, and compares every run with the prediction of the cost model fitted to
+the 1- and 2-rank runs alone (what a 2-core machine can measure; the rest of an iteration's wall time, setup and
+output included, is taken as not divided):
+
+  tools/bench_mpi.py --scaling 2 4 8 16 --hybrid 1x16 4x4 --fine 0.05 0.2 --application --out reports/bench/scaling
+
+--full-width meshes the application scene over the specimen's full width (the cost model's prediction target);
+`--fine` with no value leaves the peel members out:
+
+  tools/bench_mpi.py --scaling 2 8 16 --fine --application --full-width --out reports/bench/scaling
+
 With --ordering-study instead: the first increment of the peel member --fine (last value) and of the application
 mesh, on 1 process with every ordering (the host's METIS, MUMPS' PORD, AMF, AMD, QAMD) and on R processes with
 METIS and PORD: entries in the factors (deterministic), factorizations and their wall and rank-0 CPU seconds;
@@ -68,7 +82,7 @@ def deck(args, fine, out, application=False):
         cmd = [sys.executable, os.path.join(HERE, 'peel_deck.py'), '--3d', '--rigid-substrate', '--le', '0.002',
                '--ny', '10', '--nz', '3', '--fine-length', '1.05', '--bonded', '1.2', '--du', '0.001',
                '--dgamma-max', '1.0', '--u-total', str(0.001 * args.increments), '--field-frequency', '0',
-               '--info', '-o', out]
+               '--info', '-o', out] + (['--full-width'] if args.full_width else [])
     res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode != 0:
         sys.exit('bench_mpi.py: peel_deck.py failed: ' + res.stderr)
@@ -159,6 +173,67 @@ def cost_model(results, ranks, full_dofs, cluster_ranks):
     return out
 
 
+def amdahl_fraction(pairs):
+    """Serial fraction s of t(R) = t(1) (s + (1 - s) / R) by least squares over (R, t(R)/t(1)) pairs with R > 1."""
+    num = sum((y - 1.0 / r) * (1 - 1.0 / r) for r, y in pairs)
+    den = sum((1 - 1.0 / r) ** 2 for r, y in pairs)
+    return min(1.0, max(0.0, num / den)) if den > 0 else 1.0
+
+
+def scaling_report(results, full_dofs, cluster_ranks):
+    """Per scene: speedups against 1 rank x 1 thread, and every run against the prediction from the 1- and
+    2-rank runs alone (element loop / R, factorization and solve by Amdahl with the 2-rank serial fraction,
+    communication as measured on 2 ranks); then the serial fraction fitted over all ranks and its prediction for
+    the full-width specimen."""
+    out = []
+    fits = []
+    for scene in dict.fromkeys(r['scene'] for r in results):
+        rs = [r for r in results if r['scene'] == scene]
+        one = [r for r in rs if r['kind'] == 'base']
+        two = [r for r in rs if r['kind'] == 'dist' and r['ranks'] == 2]
+        if not one:
+            continue
+        b = one[0]
+        s2 = amdahl_fraction([(2, two[0]['fact'] / b['fact'])]) if two else 1.0
+        other = b['per'] - b['elem'] - b['fact'] - b['solve']   # setup, output, Newton's own work: not divided
+        comm2 = two[0]['comm'] if two else 0.0
+        dist = [r for r in rs if r['kind'] == 'dist']
+        s_all = amdahl_fraction([(r['ranks'], r['fact'] / b['fact']) for r in dist])
+        fits.append(dict(dofs=b['dofs'], elem=b['elem'], fact=b['fact'], solve=b['solve'], s=s_all, scene=scene))
+        out += ['## %s (%d DOFs, %d Newton iterations)' % (scene, b['dofs'], b['its']), '',
+                'Serial fraction of the factorization: %.2f from 2 ranks, %.2f fitted over all ranks.' % (s2, s_all),
+                '', '| run | cores | t/iteration (s) | speedup | efficiency | element loop speedup | factorization '
+                'speedup | communication (s) | predicted t/iteration from 1-2 ranks (s) | measured/predicted | '
+                'peak memory of a process (MB) |', '|---|---|---|---|---|---|---|---|---|---|---|']
+        for r in rs:
+            if r['kind'] in ('base', 'dist'):
+                R = r['ranks']
+                pred = (other + b['elem'] / R + (b['fact'] + b['solve']) * (s2 + (1 - s2) / R) +
+                        (comm2 if R > 1 else 0.0))
+                pcol = '%.3f | %.2f' % (pred, r['per'] / pred)
+            else:
+                pcol = '- | -'
+            sp = b['per'] / r['per']
+            out.append('| %s | %d | %.3f | %.2f | %.2f | %.2f | %.2f | %.3f | %s | %.0f |' % (
+                r['name'], r['cores'], r['per'], sp, sp / r['cores'], b['elem'] / max(r['elem'], 1e-12),
+                b['fact'] / max(r['fact'], 1e-12), r['comm'], pcol, r['mem_mb']))
+        out.append('')
+    if len(fits) >= 2:
+        af, bf = fit_power([f['dofs'] for f in fits], [f['fact'] for f in fits])
+        a_e = sum(f['elem'] / f['dofs'] for f in fits) / len(fits)
+        big = max(fits, key=lambda f: f['dofs'])
+        s = big['s']
+        out += ['## Prediction for the full-width specimen (%d DOFs)' % full_dofs, '',
+                'From the 1-rank runs (element loop %.3g N s, factorization %.3g N^%.2f s per iteration) and the '
+                'serial fraction %.2f fitted on the largest scene (%s):' % (a_e, af, bf, s, big['scene']), '',
+                '| ranks | element loop (s) | factorization (s) | total (s) |', '|---|---|---|---|']
+        for R in cluster_ranks:
+            te = a_e * full_dofs / R
+            tf = af * full_dofs ** bf * (s + (1 - s) / R)
+            out.append('| %d | %.2f | %.2f | %.2f |' % (R, te, tf, te + tf))
+    return out
+
+
 def ordering_study(args, env, work):
     mpirun = ['mpirun', '--oversubscribe', '--bind-to', 'none']
     lines = ['| scene | DOFs | processes | ordering | factorizations | entries in the factors (M) | factorization '
@@ -194,7 +269,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('--exe', default=os.path.join(ROOT, 'build-mpi', 'bin', 'ldfcz'), help='LDFCZ_MPI ldfcz')
     ap.add_argument('--serial-exe', default=None, help='default-build ldfcz (sequential MUMPS) to compare too')
-    ap.add_argument('--fine', type=float, nargs='+', default=[0.02, 0.05], help='fine-region lengths (mm)')
+    ap.add_argument('--fine', type=float, nargs='*', default=[0.02, 0.05], help='fine-region lengths (mm)')
     ap.add_argument('--ranks', type=int, default=2, help='R of R ranks x 1 thread')
     ap.add_argument('--threads', type=int, default=2, help='T of 1 rank x T threads')
     ap.add_argument('--newton', default='full')
@@ -208,8 +283,13 @@ def main():
     ap.add_argument('--application', action='store_true', help='also the paper\'s application mesh (section 8)')
     ap.add_argument('--orderings', nargs='*', default=[], help='MUMPS built-in orderings to compare with the host\'s '
                     'METIS on R ranks (pord, amd, amf, qamd)')
+    ap.add_argument('--full-width', action='store_true', help='the application mesh over the specimen\'s full width '
+                    '(peel_deck.py --full-width: twice the DOFs; what the cost model predicts)')
     ap.add_argument('--ordering-study', action='store_true', help='first increment per ordering (see above)')
     ap.add_argument('--cluster-ranks', type=int, nargs='+', default=[1, 2, 8, 32, 128])
+    ap.add_argument('--scaling', type=int, nargs='+', default=[], help='strong scaling: R ranks x 1 thread for each '
+                    'R (and 1 rank x 1 thread), see above')
+    ap.add_argument('--hybrid', nargs='*', default=[], help='with --scaling: RxT runs, R ranks x T threads each')
     ap.add_argument('--yield-idle', action='store_true', help='OMPI_MCA_mpi_yield_when_idle=1: a waiting process '
                     'gives its core away instead of polling (a machine shared with other jobs)')
     args = ap.parse_args()
@@ -235,6 +315,16 @@ def main():
     for o in args.orderings:
         configs.append(('%s ranks x 1 thread, MUMPS %s ordering' % (R, o.upper()), 'order', args.ranks,
                         mpirun + ['-np', R, args.exe, '--threads', '1'], {'LDFCZ_MUMPS_ORDERING': o}))
+    if args.scaling:
+        configs = [('1 rank x 1 thread', 'base', 1, mpirun + ['-np', '1', args.exe, '--threads', '1'], {})]
+        for nr in args.scaling:
+            if nr > 1:
+                configs.append(('%d ranks x 1 thread' % nr, 'dist', nr,
+                                mpirun + ['-np', str(nr), args.exe, '--threads', '1'], {}))
+        for h in args.hybrid:
+            nr, nt = (int(x) for x in h.lower().split('x'))
+            configs.append(('%d rank%s x %d threads' % (nr, 's' if nr > 1 else '', nt), 'hybrid', nr,
+                            mpirun + ['-np', str(nr), args.exe, '--threads', str(nt)], {}, nt))
     if args.serial_exe:
         configs.insert(0, ('serial build, %d threads' % args.threads, 'serial', 1,
                            [args.serial_exe, '--threads', str(args.threads)], {}))
@@ -244,7 +334,9 @@ def main():
              '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     scenes = [('peel %g' % f, f, False) for f in args.fine]
     if args.application:
-        scenes.append(('application', 1.05, True))
+        # with --scaling the application mesh first: the scene that matters most, should a time limit cut the rest
+        scenes.insert(0 if args.scaling else len(scenes),
+                      ('application, full width' if args.full_width else 'application', 1.05, True))
     results = []
     app_dofs = None
     for label, fine, application in scenes:
@@ -252,7 +344,8 @@ def main():
         path = os.path.join(work, 'peel_%s.inp' % tag)
         deck(args, fine, path, application)
         measured = None
-        for k, (name, kind, nranks, cmd, extra_env) in enumerate(configs):
+        for k, config in enumerate(configs):
+            name, kind, nranks, cmd, extra_env = config[:5]
             rdir = os.path.join(work, 'run_%s_%d' % (tag, k))
             os.makedirs(rdir, exist_ok=True)
             full = list(cmd)
@@ -282,8 +375,11 @@ def main():
             if application:
                 app_dofs = int(s['dofs'][0])
             cores = args.threads if kind in ('base', 'serial') else nranks
+            if args.scaling:
+                cores = nranks * (config[5] if len(config) > 5 else 1)
             results.append(dict(scene=label, kind=kind, ranks=nranks, cores=cores, dofs=int(s['dofs'][0]),
-                                elem=asm / its, comm=comm / its, fact=fact / its, solve=solve / its, mem_mb=mem_mb))
+                                elem=asm / its, comm=comm / its, fact=fact / its, solve=solve / its, mem_mb=mem_mb,
+                                per=per, name=name, its=its))
             entries = '%.2f' % (s['entries'][0] / 1e6) if s['entries'] else '-'
             row = ('| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %s | %.3f | %.3f | %.0f | '
                    '%s |') % (
@@ -291,9 +387,13 @@ def main():
                 entries, balance, s['wall'][1] / its, cpu_all, mem_mb, load)
             lines.append(row)
             print(row, flush=True)
-    full_dofs = 2 * (app_dofs or max(r['dofs'] for r in results))
-    model = cost_model(results, args.ranks, full_dofs,
+    full_dofs = (app_dofs if args.full_width else 2 * app_dofs) if app_dofs else 2 * max(r['dofs'] for r in results)
+    model = cost_model(results, 2 if args.scaling else args.ranks, full_dofs,
                        args.cluster_ranks)
+    if args.scaling:
+        with open(os.path.join(args.out, 'bench_mpi_scaling.md'), 'w') as f:
+            f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' +
+                    '\n'.join(scaling_report(results, full_dofs, args.cluster_ranks)) + '\n')
     load = open('/proc/loadavg').read().split()[:3] if os.path.exists('/proc/loadavg') else ['?']
     with open(os.path.join(args.out, 'bench_mpi.md'), 'w') as f:
         f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\nLoad average at the end: ' +
