@@ -327,6 +327,25 @@ def read_vtu_front(vtu_path, delta):
     return min(xs) if xs else None
 
 
+def vtu_frames(outdir):
+    """The ParaView frames of a run directory in order, each as the list of its files: JOB_NNNN.vtu of a serial
+    run, or the pieces JOB_NNNN_R.vtu of a distributed one (one per process, each with its own elements)."""
+    if not os.path.isdir(outdir):
+        return []
+    frames = {}
+    for x in os.listdir(outdir):
+        m = re.match(r'(.*_(\d+))(_\d+)?\.vtu$', x)
+        if m:
+            frames.setdefault(int(m.group(2)), []).append(os.path.join(outdir, x))
+    return [sorted(frames[k]) for k in sorted(frames)]
+
+
+def frame_front(files, delta):
+    """The delamination front of a frame: the smallest over its pieces (read_vtu_front)."""
+    fronts = [f for f in (read_vtu_front(v, delta) for v in files) if f is not None]
+    return min(fronts) if fronts else None
+
+
 def last_u1(csv_path):
     """LOAD.U1 of the last complete row of JOB.csv (None when there is none yet)."""
     try:
@@ -457,10 +476,11 @@ def collect(res, outdir, job, info, p, plateau, progress):
     res['u_total_mm'] = p.u_total
     res['completed'] = bool(u) and abs(u[-1] - p.u_total) <= 1e-6 * p.u_total and rc == 0
     res['F_w_tail'], res['spread'] = steady_force(u, fw, plateau)
-    vtus = sorted(x for x in os.listdir(outdir) if x.endswith('.vtu')) if os.path.isdir(outdir) else []
-    front = read_vtu_front(os.path.join(outdir, vtus[-1]), info['delta_mm']) if vtus else None
+    frames = vtu_frames(outdir)
+    front = frame_front(frames[-1], info['delta_mm']) if frames else None
     res['delaminated_mm'] = (info['x_front_mm'] - front) if front is not None else 0.0
-    res['vtus'] = [os.path.join(outdir, x) for x in vtus]
+    res['vtus'] = [f[0] for f in frames]      # a frame's (first) file: the serial frame, or piece 0 of a .pvtu
+    res['frames'] = frames
     res['info'] = info
     # the steady force with its plateau window and uncertainty (tools/steady_force.py): the front history of the
     # field frames decides where the front is inside the fine region
@@ -952,11 +972,11 @@ def front_history(r):
     pvd = [x for x in r['vtus'][:1]]
     if not pvd:
         return hist
-    pvd_path = re.sub(r'_\d+\.vtu$', '.pvd', pvd[0])
+    pvd_path = re.sub(r'_\d+(_\d+)?\.vtu$', '.pvd', pvd[0])
     times = [float(t) for t in re.findall(r'timestep="\s*([0-9.Ee+-]+)"', open(pvd_path).read())] \
         if os.path.exists(pvd_path) else []
-    for t, v in zip(times, r['vtus']):
-        fr = read_vtu_front(v, info['delta_mm'])
+    for t, v in zip(times, r.get('frames') or [[x] for x in r['vtus']]):
+        fr = frame_front(v, info['delta_mm'])
         hist.append((t * info['rate_mm_s'], info['x_front_mm'] - fr if fr is not None else 0.0))
     return hist
 
@@ -1022,7 +1042,9 @@ def application_extras(r, outdir):
                 'delaminated at %.1f um of pull, then the measured %.2f mm of front per mm of pull); at the measured '
                 'cost per um that is **%.0f s = %.2f h** in all on this machine with %s (an estimate).' % (
                     u_full, 1e3 * d_end, 1e3 * hist[-1][0], adv, t_full, t_full / 3600, run_config())]
-    if r['vtus']:
+    if r['vtus'] and len(r['frames'][-1]) > 1:
+        out += ['', 'No Mises picture: the frames of a distributed run are pieces (open JOB.pvd in ParaView).']
+    elif r['vtus']:
         png = os.path.join(outdir, 'application_mises.png')
         if render_mises(r['vtus'][-1], r['info'], png, hist[-1]):
             out += ['', '![deformed coating, von Mises stress](application_mises.png)', '',
