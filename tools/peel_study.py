@@ -334,9 +334,9 @@ def vtu_frames(outdir):
         return []
     frames = {}
     for x in os.listdir(outdir):
-        m = re.match(r'(.*_(\d+))(_\d+)?\.vtu$', x)
+        m = re.search(r'_(\d{4,})(_\d+)?\.vtu$', x)     # JOB_NNNN.vtu or JOB_NNNN_R.vtu
         if m:
-            frames.setdefault(int(m.group(2)), []).append(os.path.join(outdir, x))
+            frames.setdefault(int(m.group(1)), []).append(os.path.join(outdir, x))
     return [sorted(frames[k]) for k in sorted(frames)]
 
 
@@ -972,7 +972,7 @@ def front_history(r):
     pvd = [x for x in r['vtus'][:1]]
     if not pvd:
         return hist
-    pvd_path = re.sub(r'_\d+(_\d+)?\.vtu$', '.pvd', pvd[0])
+    pvd_path = re.sub(r'_\d{4,}(_\d+)?\.vtu$', '.pvd', pvd[0])
     times = [float(t) for t in re.findall(r'timestep="\s*([0-9.Ee+-]+)"', open(pvd_path).read())] \
         if os.path.exists(pvd_path) else []
     for t, v in zip(times, r.get('frames') or [[x] for x in r['vtus']]):
