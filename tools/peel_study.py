@@ -1042,7 +1042,7 @@ def application_extras(r, outdir):
                 'delaminated at %.1f um of pull, then the measured %.2f mm of front per mm of pull); at the measured '
                 'cost per um that is **%.0f s = %.2f h** in all on this machine with %s (an estimate).' % (
                     u_full, 1e3 * d_end, 1e3 * hist[-1][0], adv, t_full, t_full / 3600, run_config())]
-    if r['vtus'] and len(r['frames'][-1]) > 1:
+    if r['vtus'] and len((r.get('frames') or [[None]])[-1]) > 1:
         out += ['', 'No Mises picture: the frames of a distributed run are pieces (open JOB.pvd in ParaView).']
     elif r['vtus']:
         png = os.path.join(outdir, 'application_mises.png')
