@@ -145,7 +145,7 @@ def cost_model(results, ranks, full_dofs, cluster_ranks):
         base = [o for o in one if o['dofs'] == r['dofs']]
         if base and base[0]['fact'] > 0:
             ratios.append(r['fact'] / base[0]['fact'])
-    s_f = min(1.0, max(0.0, 2.0 * sum(ratios) / len(ratios) - 1.0)) if ratios else 1.0
+    s_f = amdahl_fraction([(ranks, y) for y in ratios]) if ratios else 1.0
     mem_rows = [[1.0, r['dofs'] / r['ranks'], r['dofs']] for r in results if r['kind'] in ('base', 'dist')]
     mem = lstsq3(mem_rows, [r['mem_mb'] for r in results if r['kind'] in ('base', 'dist')])
     out = ['Cost model per Newton iteration, fitted to the runs above (N: DOFs, R: ranks; the fit is as noisy as '
