@@ -13,6 +13,7 @@ program ldfcz
     newton_krylov, newton_auto
   use abaqus_host_state, only: abaqus_set_job, abaqus_flush_repeats, abaqus_set_processes
   use blas_threads, only: blas_threads_default
+  use blas_kernels, only: blas_kernels_restart, blas_kernels_note
   use omp_wait, only: omp_wait_note
   use parallel_context, only: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed, &
     parallel_file, parallel_first_error
@@ -23,6 +24,7 @@ program ldfcz
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc, fflags
   integer :: i, n, stat, threads, exit_code, k, nthreads
   logical :: quiet, verbose, exists, reorient, orient_error
+  logical :: slow_kernels   !< OpenBLAS runs kernels narrower than the CPU allows (blas_kernels_note)
   logical :: out_open    !< JOB.log is open (an error is logged there too)
   type(interface_check_t) :: orient
   character(len=:), allocatable :: orient_text
@@ -44,6 +46,8 @@ program ldfcz
     end function c_mkdir
   end interface
 
+  ! OpenBLAS' kernels for this CPU: may start the program again (so first, before MPI or any file)
+  call blas_kernels_restart()
   call parallel_init(par)   ! MPI_Init in the LDFCZ_MPI build (mpirun -np N ldfcz ...); nothing in a serial one
   out_open = .false.
   deck = ''
@@ -236,6 +240,9 @@ program ldfcz
   call user_routines_connect_units(routines, outdir//'/'//job//'.msg')
   nthreads = 1
   !$ nthreads = omp_get_max_threads()
+  call blas_kernels_note(blas_note, slow_kernels)
+  if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
+  if (slow_kernels .and. parallel_writer(par)) write (error_unit, '(a)') 'ldfcz: warning: '//blas_note
   call blas_threads_default(nthreads, blas_note, options%factor_blas_threads, options%factor_min_flops)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call omp_wait_note(nthreads, wait_note)

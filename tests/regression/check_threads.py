@@ -10,7 +10,8 @@ default; before the colouring, atomic additions in a run-dependent order gave ~3
 local array, a SAVEd variable written by two threads) gives O(1) differences or, in the Debug build, a "Recursive
 call to nonrecursive procedure" stop. Checks: both runs exit alike, same increments (step, inc, step time), every
 CSV value within --rel relative; the same with every factorization on 2 OpenBLAS threads (LDFCZ_BLAS_MIN_FLOPS=0).
-Then the warning of host/linalg/omp_wait.f90 in JOB.log: present with 2 threads
+Then the kernels of OpenBLAS (host/linalg/blas_kernels.c): those JOB.log names fit the CPU's instructions, and a
+user's OPENBLAS_CORETYPE is kept. Then the warning of host/linalg/omp_wait.f90 in JOB.log: present with 2 threads
 and OMP_WAIT_POLICY=active or GOMP_SPINCOUNT=infinite, absent with 1 thread, the passive or the default policy.
 Use a deck with the default full Newton: `--newton auto` sizes its GMRES budget
 from measured times, which may take another path to the same tolerance.
@@ -71,6 +72,67 @@ def blas_threads_check(exe, out):
         fail("threaded factorizations change the results beyond round-off")
 
 
+# kernel sets of OpenBLAS 0.3 that use AVX2 and FMA or AVX-512 (host/linalg/blas_kernels.c)
+WIDE_KERNELS = ("haswell", "zen", "excavator", "skylakex", "cooperlake", "sapphirerapids")
+
+
+def cpu_class():
+    """'avx512' (F, BW, VL, DQ), 'avx2' (with FMA) or '' from the flags of /proc/cpuinfo."""
+    try:
+        with open("/proc/cpuinfo") as f:
+            flags = next((l.split(":", 1)[1].split() for l in f if l.startswith("flags")), [])
+    except OSError:
+        return ""
+    if all(x in flags for x in ("avx512f", "avx512bw", "avx512vl", "avx512dq")):
+        return "avx512"
+    if "avx2" in flags and "fma" in flags:
+        return "avx2"
+    return ""
+
+
+def blas_kernels_check(exe, out):
+    """The kernels OpenBLAS runs (host/linalg/blas_kernels.c), on the 16x16x8 block of blas_threads_check: without
+    OPENBLAS_CORETYPE, those JOB.log names use AVX2 or AVX-512 when the CPU has them (OpenBLAS 0.3.21 takes CPUs it
+    does not know for Prescott, and ldfcz then restarts itself with OPENBLAS_CORETYPE set); with
+    OPENBLAS_CORETYPE=Prescott, Prescott runs and JOB.log says it was asked for; both runs take the same increments
+    and their reactions agree within 1e-10 of the largest one (other kernels sum in another order)."""
+    deck = os.path.join(out, "blas", "blk.inp")
+    tables, lines = {}, {}
+    for label, core in (("default", None), ("prescott", "Prescott")):
+        d = os.path.join(out, "kernels", label)
+        e = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_CORETYPE", "LDFCZ_OPENBLAS_CHOSE")}
+        if core:
+            e["OPENBLAS_CORETYPE"] = core
+        p = subprocess.run([exe, "--quiet", "--threads", "1", "--out", d, deck], capture_output=True, text=True,
+                           errors="replace", timeout=600, env=e)
+        if p.returncode != 0:
+            fail("block, kernels %s: exit %d\n%s" % (label, p.returncode, p.stderr[-2000:]))
+        with open(os.path.join(d, "blk.csv")) as f:
+            tables[label] = [l.split(",") for l in f.read().split("\n") if l]
+        with open(os.path.join(d, "blk.log")) as f:
+            lines[label] = next((l.strip() for l in f if l.startswith("ldfcz: OpenBLAS kernels ")), "")
+        print("kernels %s: %s" % (label, lines[label] or "(no line: the BLAS is not OpenBLAS)"))
+    if not lines["default"]:
+        print("BLAS is not OpenBLAS: kernels not checked")
+        return
+    if not lines["prescott"].startswith("ldfcz: OpenBLAS kernels Prescott (OPENBLAS_CORETYPE=Prescott)"):
+        fail("OPENBLAS_CORETYPE=Prescott was not kept or not reported")
+    core = lines["default"].split()[3].lower()
+    cls = cpu_class()
+    if cls and core not in WIDE_KERNELS:
+        fail("the CPU has %s but OpenBLAS runs the %s kernels" % (cls.upper(), core))
+    r1, r2 = tables["default"], tables["prescott"]
+    if len(r1) != len(r2) or any(x[:3] != y[:3] for x, y in zip(r1, r2)):
+        fail("the kernels changed the increments")
+    scale = max(abs(float(v)) for x in r1[1:] + r2[1:] for v in x[4:])
+    worst = max(abs(float(p) - float(q)) for x, y in zip(r1[1:], r2[1:]) for p, q in zip(x[4:], y[4:]))
+    worst /= max(scale, 1e-300)
+    print("block, %s kernels (CPU class %s) against Prescott: largest difference %.2e of the largest reaction "
+          "(bound 1e-10)" % (core, cls or "without AVX2", worst))
+    if worst > 1e-10:
+        fail("the kernels change the results beyond round-off")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
@@ -113,6 +175,7 @@ def main():
     if worst > a.rel or (a.rel == 0.0 and any(x != y for x, y in zip(r1, r2))):
         fail("results depend on the thread count beyond round-off")
     blas_threads_check(a.exe, a.out)
+    blas_kernels_check(a.exe, a.out)
     # idle threads told to spin (host/linalg/omp_wait.f90): a warning in JOB.log with 2 threads, none with 1 thread
     # or the default policy
     for t, env, want in ((2, {"OMP_WAIT_POLICY": "active"}, True), (1, {"OMP_WAIT_POLICY": "Active"}, False),
