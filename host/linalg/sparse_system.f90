@@ -74,6 +74,9 @@ module sparse_system
     type(parallel_t) :: par                         !< processes of the run (distributed: several)
     logical :: distributed = .false.                !< this process adds its own elements only
     integer, allocatable :: loc_entry(:)            !< distributed: the MUMPS values this process gives
+    !> distributed: the entries this process's elements touch, row by row (mv_entry; mv_row(r)'s are
+    !> mv_entry(mv_ptr(r):mv_ptr(r+1)-1)): the only nonzero values of its part of a product (sparse_matvec)
+    integer, allocatable :: mv_row(:), mv_ptr(:), mv_entry(:)
     real(dp) :: t_analysis = 0.0_dp                 !< wall seconds in setup (pattern, ordering, analysis)
     real(dp) :: t_factor = 0.0_dp                   !< wall seconds in factorizations
     real(dp) :: t_solve = 0.0_dp                    !< wall seconds in solves
@@ -191,6 +194,7 @@ contains
           if (sys%slot(sys%slot_ptr(k) + j) > 0) touched(sys%slot(sys%slot_ptr(k) + j)) = .true.
         end do
       end do
+      call local_rows(sys, touched)
     end if
     if (sys%sym_factors) then
       ! the upper triangle of the (structurally symmetric: element pattern) full pattern and each entry's mirror
@@ -386,7 +390,11 @@ contains
 
     y = 0.0_dp
     if (.not. allocated(sys%val)) return
-    if (sys%symmetric) then
+    if (sys%distributed) then
+      ! this process's part: its values are zero outside the entries its elements touch, so only those are
+      ! multiplied (the same sums in the same order as over the whole rows: adding an exact zero changes nothing)
+      call local_matvec(sys, x, y)
+    else if (sys%symmetric) then
       do k = 1, size(sys%val)
         i = sys%irn(k)
         j = sys%jcn(k)
@@ -407,6 +415,64 @@ contains
     end if
     if (sys%distributed) call parallel_sum(sys%par, y)
   end subroutine sparse_matvec
+
+  !> The rows of the entries this process's elements touch and those entries row by row (entries are numbered
+  !> row by row, so packing keeps that order).
+  subroutine local_rows(sys, touched)
+    type(sparse_system_t), intent(inout) :: sys     !< system with its pattern
+    logical, intent(in) :: touched(:)               !< entries this process's elements touch
+    integer :: k, r, p
+
+    sys%mv_entry = pack([(k, k = 1, size(touched))], touched)
+    r = 0
+    do p = 1, size(sys%mv_entry)
+      if (p == 1) then
+        r = r + 1
+      else if (sys%irn(sys%mv_entry(p)) /= sys%irn(sys%mv_entry(p - 1))) then
+        r = r + 1
+      end if
+    end do
+    allocate (sys%mv_row(r), sys%mv_ptr(r + 1))
+    r = 0
+    do p = 1, size(sys%mv_entry)
+      if (p > 1) then
+        if (sys%irn(sys%mv_entry(p)) == sys%irn(sys%mv_entry(p - 1))) cycle
+      end if
+      r = r + 1
+      sys%mv_row(r) = sys%irn(sys%mv_entry(p))
+      sys%mv_ptr(r) = p
+    end do
+    sys%mv_ptr(r + 1) = size(sys%mv_entry) + 1
+  end subroutine local_rows
+
+  !> y = (this process's part of A) x over the entries its elements touch (y zero elsewhere).
+  subroutine local_matvec(sys, x, y)
+    type(sparse_system_t), intent(in) :: sys        !< distributed system
+    real(dp), intent(in) :: x(:)                    !< vector (size neq)
+    real(dp), intent(inout) :: y(:)                 !< product (size neq), zero on entry
+    integer :: r, p, k, i, j
+    real(dp) :: acc
+
+    if (sys%symmetric) then
+      do p = 1, size(sys%mv_entry)
+        k = sys%mv_entry(p)
+        i = sys%irn(k)
+        j = sys%jcn(k)
+        y(i) = y(i) + sys%val(k) * x(j)
+        if (i /= j) y(j) = y(j) + sys%val(k) * x(i)
+      end do
+    else
+      !$omp parallel do schedule(static) private(p, acc) if (size(sys%mv_row) > 2000)
+      do r = 1, size(sys%mv_row)
+        acc = 0.0_dp
+        do p = sys%mv_ptr(r), sys%mv_ptr(r + 1) - 1
+          acc = acc + sys%val(sys%mv_entry(p)) * x(sys%jcn(sys%mv_entry(p)))
+        end do
+        y(sys%mv_row(r)) = acc
+      end do
+      !$omp end parallel do
+    end if
+  end subroutine local_matvec
 
   !> True when factors from an earlier sparse_factorize are available (possibly of older values).
   logical function sparse_is_factored(sys)
@@ -539,6 +605,9 @@ contains
     if (allocated(sys%lo_entry)) deallocate(sys%lo_entry)
     if (allocated(sys%val_sym)) deallocate(sys%val_sym)
     if (allocated(sys%loc_entry)) deallocate(sys%loc_entry)
+    if (allocated(sys%mv_row)) deallocate(sys%mv_row)
+    if (allocated(sys%mv_ptr)) deallocate(sys%mv_ptr)
+    if (allocated(sys%mv_entry)) deallocate(sys%mv_entry)
     sys%distributed = .false.
     sys%sym_factors = .false.
     sys%single_factors = .false.

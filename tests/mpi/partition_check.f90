@@ -8,7 +8,10 @@
 !>      sparse matrix, summed over the processes) equal those of one process assembling every element, to
 !>      1e-12 of the largest entry: the two differ only in the order of the floating-point additions (a few ulp
 !>      per entry), while an element missing or a shared-node contribution summed twice would change entries by
-!>      their full size.
+!>      their full size;
+!>   4. the product of that tangent with a vector (v_i = cos i) computed distributed (sparse_matvec: each process
+!>      over the entries its elements touch, summed over the processes) equals the serial product to 1e-12 of its
+!>      largest entry (again only the order of the additions differs).
 !> Usage: partition_check DECK. Exit 0 when all hold, 1 otherwise (the failures are printed by rank 0).
 program partition_check
   use ldfcz_kinds, only: dp
@@ -16,7 +19,7 @@ program partition_check
   use deck_reader, only: read_deck
   use analysis_core, only: analysis_t, analysis_init, analysis_number_equations, analysis_assemble
   use user_routines, only: user_routines_t, user_routines_builtin
-  use sparse_system, only: sparse_to_dense
+  use sparse_system, only: sparse_to_dense, sparse_matvec
   use parallel_context, only: parallel_t, parallel_init, parallel_finalize, parallel_sum, parallel_writer
   implicit none
   type(parallel_t) :: par
@@ -25,8 +28,8 @@ program partition_check
   type(analysis_t) :: dist, ser
   character(len=512) :: deck
   character(len=:), allocatable :: errmsg
-  real(dp), allocatable :: own(:), kd(:, :), ks(:, :), flat(:)
-  real(dp) :: pn, size_model, err_f, err_k, fmax, kmax
+  real(dp), allocatable :: own(:), kd(:, :), ks(:, :), flat(:), v(:), yd(:), ys(:)
+  real(dp) :: pn, size_model, err_f, err_k, fmax, kmax, err_y
   integer :: stat, i, nfail, nown
   logical :: ok
 
@@ -71,11 +74,20 @@ program partition_check
   call check(fmax > 0.0_dp .and. kmax > 0.0_dp, 'trivial state: zero forces or tangent')
   call check(err_f <= 1.0e-12_dp, 'distributed internal force differs from the serial one')
   call check(err_k <= 1.0e-12_dp, 'distributed tangent differs from the serial one')
+
+  ! 4.: products with the tangent
+  allocate (v(ser%neq), yd(ser%neq), ys(ser%neq))
+  v = [(cos(real(i, dp)), i = 1, ser%neq)]
+  call sparse_matvec(dist%sys, v, yd)
+  call sparse_matvec(ser%sys, v, ys)
+  err_y = maxval(abs(yd - ys)) / max(maxval(abs(ys)), tiny(1.0_dp))
+  call check(maxval(abs(ys)) > 0.0_dp, 'trivial product')
+  call check(err_y <= 1.0e-12_dp, 'distributed product differs from the serial one')
   if (parallel_writer(par)) then
     print '(a,i0,a,i0,a,i0,a,i0,a)', 'partition_check: ', par%nranks, ' processes, ', model%nelem, &
       ' elements (', nown, ' on rank 0), ', dist%neq, ' equations'
-    print '(a,es10.2,a,es10.2,a)', 'partition_check: force difference ', err_f, ', tangent difference ', err_k, &
-      ' (of the largest entry)'
+    print '(a,es10.2,a,es10.2,a,es10.2,a)', 'partition_check: force difference ', err_f, ', tangent difference ', &
+      err_k, ', product difference ', err_y, ' (of the largest entry)'
     if (nfail == 0) print '(a)', 'PASS'
   end if
   ok = nfail == 0
