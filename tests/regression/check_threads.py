@@ -28,6 +28,28 @@ def fail(msg):
     sys.exit(1)
 
 
+def run_block(exe, deck, d, threads, env, what):
+    """Runs the block deck into d; returns its CSV rows and JOB.log."""
+    p = subprocess.run([exe, "--quiet", "--threads", str(threads), "--out", d, deck], capture_output=True, text=True,
+                       errors="replace", timeout=600, env=env)
+    if p.returncode != 0:
+        fail("block, %s: exit %d\n%s" % (what, p.returncode, p.stderr[-2000:]))
+    with open(os.path.join(d, "blk.csv")) as f:
+        table = [l.split(",") for l in f.read().split("\n") if l]
+    with open(os.path.join(d, "blk.log")) as f:
+        return table, f.read()
+
+
+def reaction_difference(r1, r2, what):
+    """Fails unless both runs took the same increments; returns the largest difference of a CSV value relative to
+    the largest one."""
+    if len(r1) != len(r2) or any(x[:3] != y[:3] for x, y in zip(r1, r2)):
+        fail("%s changed the increments" % what)
+    scale = max(abs(float(v)) for x in r1[1:] + r2[1:] for v in x[4:])
+    worst = max(abs(float(p) - float(q)) for x, y in zip(r1[1:], r2[1:]) for p, q in zip(x[4:], y[4:]))
+    return worst / max(scale, 1e-300)
+
+
 def blas_threads_check(exe, out):
     """Every factorization on 2 OpenBLAS threads (LDFCZ_BLAS_MIN_FLOPS=0: host/linalg/blas_threads.f90) on a
     16x16x8 C3D8 block (fronts large enough for OpenBLAS to split its calls; the deck of tools/bench_calculix.py,
@@ -47,25 +69,13 @@ def blas_threads_check(exe, out):
         e = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "LDFCZ_BLAS_MIN_FLOPS")}
         if flops is not None:
             e["LDFCZ_BLAS_MIN_FLOPS"] = flops
-        p = subprocess.run([exe, "--quiet", "--threads", str(t), "--out", d, deck], capture_output=True, text=True,
-                           errors="replace", timeout=600, env=e)
-        if p.returncode != 0:
-            fail("block with %d threads: exit %d\n%s" % (t, p.returncode, p.stderr[-2000:]))
-        with open(os.path.join(d, "blk.csv")) as f:
-            tables[t] = [l.split(",") for l in f.read().split("\n") if l]
-        with open(os.path.join(d, "blk.log")) as f:
-            logs[t] = f.read()
+        tables[t], logs[t] = run_block(exe, deck, d, t, e, "%d threads" % t)
     if "OpenBLAS on 1 thread" not in logs[1]:
         print("BLAS is not OpenBLAS: threaded factorizations not checked")
         return
     if "on 2 during factorizations of at least 0.00E+00 flops" not in logs[2]:
         fail("JOB.log does not say that factorizations use 2 BLAS threads")
-    r1, r2 = tables[1], tables[2]
-    if len(r1) != len(r2) or any(x[:3] != y[:3] for x, y in zip(r1, r2)):
-        fail("threaded factorizations changed the increments")
-    scale = max(abs(float(v)) for x in r1[1:] + r2[1:] for v in x[4:])
-    worst = max(abs(float(p) - float(q)) for x, y in zip(r1[1:], r2[1:]) for p, q in zip(x[4:], y[4:]))
-    worst /= max(scale, 1e-300)
+    worst = reaction_difference(tables[1], tables[2], "threaded factorizations")
     print("block, every factorization on 2 BLAS threads: largest difference to 1 thread %.2e of the largest "
           "reaction (bound 1e-10)" % worst)
     if worst > 1e-10:
@@ -103,14 +113,8 @@ def blas_kernels_check(exe, out):
         e = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_CORETYPE", "LDFCZ_OPENBLAS_CHOSE")}
         if core:
             e["OPENBLAS_CORETYPE"] = core
-        p = subprocess.run([exe, "--quiet", "--threads", "1", "--out", d, deck], capture_output=True, text=True,
-                           errors="replace", timeout=600, env=e)
-        if p.returncode != 0:
-            fail("block, kernels %s: exit %d\n%s" % (label, p.returncode, p.stderr[-2000:]))
-        with open(os.path.join(d, "blk.csv")) as f:
-            tables[label] = [l.split(",") for l in f.read().split("\n") if l]
-        with open(os.path.join(d, "blk.log")) as f:
-            lines[label] = next((l.strip() for l in f if l.startswith("ldfcz: OpenBLAS kernels ")), "")
+        tables[label], log = run_block(exe, deck, d, 1, e, "kernels " + label)
+        lines[label] = next((l.strip() for l in log.split("\n") if l.startswith("ldfcz: OpenBLAS kernels ")), "")
         print("kernels %s: %s" % (label, lines[label] or "(no line: the BLAS is not OpenBLAS)"))
     if not lines["default"]:
         print("BLAS is not OpenBLAS: kernels not checked")
@@ -121,12 +125,7 @@ def blas_kernels_check(exe, out):
     cls = cpu_class()
     if cls and core not in WIDE_KERNELS:
         fail("the CPU has %s but OpenBLAS runs the %s kernels" % (cls.upper(), core))
-    r1, r2 = tables["default"], tables["prescott"]
-    if len(r1) != len(r2) or any(x[:3] != y[:3] for x, y in zip(r1, r2)):
-        fail("the kernels changed the increments")
-    scale = max(abs(float(v)) for x in r1[1:] + r2[1:] for v in x[4:])
-    worst = max(abs(float(p) - float(q)) for x, y in zip(r1[1:], r2[1:]) for p, q in zip(x[4:], y[4:]))
-    worst /= max(scale, 1e-300)
+    worst = reaction_difference(tables["default"], tables["prescott"], "the kernels")
     print("block, %s kernels (CPU class %s) against Prescott: largest difference %.2e of the largest reaction "
           "(bound 1e-10)" % (core, cls or "without AVX2", worst))
     if worst > 1e-10:
