@@ -385,7 +385,7 @@ contains
     type(sparse_system_t), intent(inout) :: sys     !< system
     real(dp), intent(in) :: x(:)                    !< vector (size neq)
     real(dp), intent(out) :: y(:)                   !< product (size neq)
-    integer :: k, i, j
+    integer :: k, i
     real(dp) :: acc
 
     y = 0.0_dp
@@ -395,12 +395,7 @@ contains
       ! multiplied (the same sums in the same order as over the whole rows: adding an exact zero changes nothing)
       call local_matvec(sys, x, y)
     else if (sys%symmetric) then
-      do k = 1, size(sys%val)
-        i = sys%irn(k)
-        j = sys%jcn(k)
-        y(i) = y(i) + sys%val(k) * x(j)
-        if (i /= j) y(j) = y(j) + sys%val(k) * x(i)
-      end do
+      call symmetric_product(sys, x, y)
     else
       ! full storage: rows are independent, so the product is threaded over rows (same sum order as serial)
       !$omp parallel do schedule(static) private(k, acc) if (sys%neq > 2000)
@@ -450,17 +445,11 @@ contains
     type(sparse_system_t), intent(in) :: sys        !< distributed system
     real(dp), intent(in) :: x(:)                    !< vector (size neq)
     real(dp), intent(inout) :: y(:)                 !< product (size neq), zero on entry
-    integer :: r, p, k, i, j
+    integer :: r, p
     real(dp) :: acc
 
     if (sys%symmetric) then
-      do p = 1, size(sys%mv_entry)
-        k = sys%mv_entry(p)
-        i = sys%irn(k)
-        j = sys%jcn(k)
-        y(i) = y(i) + sys%val(k) * x(j)
-        if (i /= j) y(j) = y(j) + sys%val(k) * x(i)
-      end do
+      call symmetric_product(sys, x, y, sys%mv_entry)
     else
       !$omp parallel do schedule(static) private(p, acc) if (size(sys%mv_row) > 2000)
       do r = 1, size(sys%mv_row)
@@ -473,6 +462,26 @@ contains
       !$omp end parallel do
     end if
   end subroutine local_matvec
+
+  !> y += A x for the stored upper triangle mirrored, over the given entries (all when absent), in their order.
+  subroutine symmetric_product(sys, x, y, entries)
+    type(sparse_system_t), intent(in) :: sys        !< symmetric system
+    real(dp), intent(in) :: x(:)                    !< vector (size neq)
+    real(dp), intent(inout) :: y(:)                 !< product (size neq)
+    integer, intent(in), optional :: entries(:)     !< entries to multiply
+    integer :: p, k, i, j, n
+
+    n = size(sys%val)
+    if (present(entries)) n = size(entries)
+    do p = 1, n
+      k = p
+      if (present(entries)) k = entries(p)
+      i = sys%irn(k)
+      j = sys%jcn(k)
+      y(i) = y(i) + sys%val(k) * x(j)
+      if (i /= j) y(j) = y(j) + sys%val(k) * x(i)
+    end do
+  end subroutine symmetric_product
 
   !> True when factors from an earlier sparse_factorize are available (possibly of older values).
   logical function sparse_is_factored(sys)
