@@ -107,12 +107,14 @@ int ldfcz_blas_kernels_restart(void)
     return 1;
 }
 
-/* What OpenBLAS runs: its kernels (into core), the kernels it had chosen itself before a restart made here (into
- * chose, "" if none), and the best set for this CPU (into best, "" without AVX2). Returns 0 without OpenBLAS. */
-int ldfcz_blas_kernels(char *core, char *chose, char *best, int len)
+/* What OpenBLAS runs: its kernels (into core; *wide = 1 when they use AVX2 and FMA or AVX-512), the kernels it had
+ * chosen itself before a restart made here (into chose, "" if none), and the best set for this CPU (into best, ""
+ * without AVX2). Returns 0 without OpenBLAS. */
+int ldfcz_blas_kernels(char *core, char *chose, char *best, int *wide, int len)
 {
     const char *from = getenv(restart_marker), *target = best_kernels();
     if (!openblas_get_corename || len < 1) return 0;
+    *wide = has_wide_kernels(openblas_get_corename());
     snprintf(core, (size_t)len, "%s", openblas_get_corename());
     snprintf(chose, (size_t)len, "%s", from ? from : "");
     snprintf(best, (size_t)len, "%s", target ? target : "");

@@ -12,9 +12,10 @@ module blas_kernels
     integer(c_int) function ldfcz_blas_kernels_restart() bind(C, name='ldfcz_blas_kernels_restart')
       import :: c_int
     end function ldfcz_blas_kernels_restart
-    integer(c_int) function ldfcz_blas_kernels(core, chose, best, len) bind(C, name='ldfcz_blas_kernels')
+    integer(c_int) function ldfcz_blas_kernels(core, chose, best, wide, len) bind(C, name='ldfcz_blas_kernels')
       import :: c_int, c_char
       character(kind=c_char), intent(out) :: core(*), chose(*), best(*)
+      integer(c_int), intent(out) :: wide
       integer(c_int), value :: len
     end function ldfcz_blas_kernels
   end interface
@@ -37,10 +38,11 @@ contains
     character(kind=c_char, len=name_len) :: core, chose, best
     character(len=name_len) :: asked
     integer :: status
+    integer(c_int) :: wide
 
     what = ''
     slow = .false.
-    if (ldfcz_blas_kernels(core, chose, best, int(name_len, c_int)) /= 1) return
+    if (ldfcz_blas_kernels(core, chose, best, wide, int(name_len, c_int)) /= 1) return
     call c_to_fortran(core)
     call c_to_fortran(chose)
     call c_to_fortran(best)
@@ -57,7 +59,7 @@ contains
       end if
     else if (status == 0) then
       what = 'OpenBLAS kernels '//trim(core)//' (OPENBLAS_CORETYPE='//trim(asked)//')'
-    else if (len_trim(best) > 0 .and. .not. wide(core)) then
+    else if (len_trim(best) > 0 .and. wide == 0) then
       slow = .true.
       what = 'OpenBLAS kernels '//trim(core)//' although the CPU has the instructions of '//trim(best)// &
         ' (ldfcz did not restart itself: under valgrind, or the restart failed): dense BLAS kernels up to 5x '// &
@@ -66,17 +68,6 @@ contains
       what = 'OpenBLAS kernels '//trim(core)
     end if
   end subroutine blas_kernels_note
-
-  !> Kernel sets that use AVX2 and FMA or AVX-512 (the list of blas_kernels.c).
-  pure logical function wide(core)
-    character(len=*), intent(in) :: core
-    select case (lower(core))
-    case ('haswell', 'skylakex', 'cooperlake', 'sapphirerapids', 'zen', 'excavator')
-      wide = .true.
-    case default
-      wide = .false.
-    end select
-  end function wide
 
   pure function lower(s) result(t)
     character(len=*), intent(in) :: s
