@@ -80,7 +80,7 @@ program ldfcz
     case ('--reorient-interfaces')
       reorient = .true.
     case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment', &
-          '--element-weights')
+          '--element-weights', '--partition-pieces')
       if (i == n) call die('option '//arg//' needs a value')
       i = i + 1
       select case (arg)
@@ -101,6 +101,13 @@ program ldfcz
         if (stat /= 0 .or. any(options%element_weights < 1) .or. any(options%element_weights > 1000000)) &
           call die('--element-weights needs three integers 1..1000000 separated by commas (UMAT continuum, '// &
             'elastic continuum, user element), e.g. 6,5,1')
+      case ('--partition-pieces')
+        ! METIS pieces per process, dealt out in turn (element_partition)
+        arg = get_arg(i)
+        read (arg, *, iostat=stat) options%partition_pieces
+        if (stat /= 0 .or. options%partition_pieces < 1 .or. options%partition_pieces > 10000) &
+          call die('--partition-pieces needs an integer 1..10000 (METIS pieces per process; 1: one part each; '// &
+            'default 32 with at least 300 elements a piece)')
       case ('--max-opening-increment')
         arg = get_arg(i)
         read (arg, *, iostat=stat) options%max_opening
@@ -376,6 +383,10 @@ contains
       '  --element-weights U,E,C  partition weights of a distributed run (mpirun): cost of a UMAT continuum,', &
       '                     an *ELASTIC continuum and a user element (default 6,5,1; the closing summary', &
       '                     of any run prints the measured ones); a restart needs the same', &
+      '  --partition-pieces P  a distributed run cuts the mesh into P pieces per process, dealt out in turn,', &
+      '                     so that a costly moving region (a plastic zone) is shared by the processes', &
+      '                     (default 32, but pieces of at least 300 elements; 1: one part per process; at', &
+      '                     least 10 elements a piece); a restart needs the same', &
       '  --plastic-statev N report the largest increment of STATEV(N) (default: the STATEV a material', &
       '                     declares by **LDFCZ STATEV, PLASTIC STRAIN=n; 0: none)', &
       '  --max-plastic-increment X  choose the next increment so that STATEV(N) changes by about 0.8 X', &

@@ -24,6 +24,13 @@ foreach(np 2 3)
     set_tests_properties(mpi_partition_${name}_np${np} PROPERTIES LABELS "mpi" TIMEOUT 120
       ENVIRONMENT "${LDFCZ_MPI_ENV}" PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
   endforeach()
+  # the interleaved partition (4 METIS pieces per process dealt out in turn on the plane-strain peel's 90 elements;
+  # 3 per process with 3 processes: at least 10 elements a piece)
+  add_test(NAME mpi_partition_interleaved_np${np}
+    COMMAND ${LDFCZ_MPIEXEC} -np ${np} --oversubscribe --bind-to none $<TARGET_FILE:partition_check>
+      ${PROJECT_SOURCE_DIR}/decks/peel/peel_ps.inp 4)
+  set_tests_properties(mpi_partition_interleaved_np${np} PROPERTIES LABELS "mpi" TIMEOUT 120
+    ENVIRONMENT "${LDFCZ_MPI_ENV}" PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
 endforeach()
 
 set(LDFCZ_CHECK_MPI "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_mpi.py")
@@ -36,6 +43,9 @@ ldfcz_add_mpi_test(mpi_cohesive_block ${PROJECT_SOURCE_DIR}/decks/single/cohesiv
 ldfcz_add_mpi_test(mpi_leonov_uniaxial ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp)
 ldfcz_add_mpi_test(mpi_rotation ${PROJECT_SOURCE_DIR}/decks/single/c3d8_rotation_uniaxial.inp)
 ldfcz_add_mpi_test(mpi_peel_ps ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp)
+# the interleaved partition (4 pieces per process, 3 with 3 processes; the default gives these small decks one)
+ldfcz_add_mpi_test(mpi_peel_ps_interleaved ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
+  -- --partition-pieces 4)
 # the small 3D peel (Leonov C3D8 coating, cohesive layer): its first 12 increments (PNEWDT cutbacks included)
 ldfcz_add_mpi_test(mpi_peel_3d ${PROJECT_SOURCE_DIR}/decks/peel/peel_3d_quarter.inp --expect-exit 3
   -- --stop-after-increments 12)
@@ -48,9 +58,9 @@ ldfcz_add_mpi_test(mpi_xit ${PROJECT_SOURCE_DIR}/decks/bad/runtime/uel_phi_zero.
 ldfcz_add_mpi_test(mpi_xit_remote ${CMAKE_CURRENT_SOURCE_DIR}/mpi/xit_first_element.inp --xit --remote-at 2
   -- --element-weights 20,2,1)
 
-# start-up errors (a malformed deck, an unknown option, a missing --user file, found by every process; a restart file
-# missing on the last rank only, JOB.sta not writable on rank 0 only; a restart with other --element-weights, found when
-# the restart files are read) under -np 2 and -np 3: exit status 2, the message once, no MPI_Abort, no hang
+# start-up errors (a malformed deck, an unknown option or a bad value, a missing --user file, found by every process; a
+# restart file missing on the last rank only, JOB.sta not writable on rank 0 only; a restart with other
+# --element-weights or --partition-pieces, found when the restart files are read) under -np 2 and -np 3: exit status 2, the message once, no MPI_Abort, no hang
 # (tests/mpi/check_mpi_errors.py)
 add_test(NAME mpi_startup_errors COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/mpi/check_mpi_errors.py
   --exe $<TARGET_FILE:ldfcz> --decks ${PROJECT_SOURCE_DIR}/decks --peel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp

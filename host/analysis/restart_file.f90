@@ -315,7 +315,7 @@ contains
         ' elements vs ', expect%nelem, '; ', rs%ndof, ' dofs vs ', expect%ndof, ')'
       if (rs%nnode == expect%nnode .and. rs%nelem == expect%nelem .and. rs%ndof == expect%ndof) &
         line = ' (same sizes, but the checksum of the numbers differs; a distributed run: or another partition, '// &
-        'i.e. other --element-weights)'
+        'i.e. other --element-weights or --partition-pieces)'
       errmsg = path//': the restart file was written for a different model than this deck'//trim(line)// &
         '; restart with the deck that wrote it'
       close (u)

@@ -31,6 +31,9 @@ module solver_options
     !> *ELASTIC continuum, user element; measured on the 3D peel family (docs/performance.md, "Distributed runs":
     !> a Leonov C3D8 75-100 us per call, an elastic C3D8 70-90 us, a cohesive U1 12 us); --element-weights
     integer :: element_weights(3) = [6, 5, 1]
+    !> pieces per process of a distributed run's partition (> 1: interleaved, element_partition; 0: the default
+    !> rule of analysis_core, 32 but at least 300 elements a piece); --partition-pieces
+    integer :: partition_pieces = 0
     !> BLAS threads of a large factorization (blas_threads_default; 0: the BLAS is left as it is)
     integer :: factor_blas_threads = 0
     real(dp) :: factor_min_flops = 0.0_dp       !< operations from which a factorization uses them

@@ -47,6 +47,7 @@ contains
     call abaqus_clear_stop()
     if (present(par)) an%par = par
     an%cost_weight = opt%element_weights
+    an%partition_pieces = opt%partition_pieces
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
       call output_log(out, 'ldfcz: error: '//errmsg)

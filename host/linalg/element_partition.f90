@@ -4,6 +4,10 @@
 !> elastic element: analysis_core sets the weights). METIS runs with its default options, so the partition is
 !> deterministic: every process computes the same one from the same model (test partition_*: each element is
 !> owned exactly once over the processes).
+!> Interleaved partition (pieces > 1): METIS cuts the graph into pieces x processes parts of equal weight and deals
+!> them out in turn (part k to process mod(k, processes)), so that every process holds pieces all over the mesh. A
+!> region whose elements cost more than their weight says (the plastic zone at a moving delamination front) then
+!> falls on several processes instead of one (docs/performance.md, "Interleaved partition").
 module element_partition
   use, intrinsic :: iso_c_binding, only: c_int, c_int32_t, c_ptr, c_null_ptr
   implicit none
@@ -11,6 +15,8 @@ module element_partition
   public :: partition_elements
 
   integer(c_int), parameter :: metis_ok = 1_c_int  !< METIS_OK in metis.h
+  !> fewest elements per piece of an interleaved partition (fewer pieces on a small mesh)
+  integer, parameter :: min_piece_elements = 10
 
   interface
     !> int METIS_PartGraphKway(idx_t *nvtxs, idx_t *ncon, idx_t *xadj, idx_t *adjncy, idx_t *vwgt, idx_t *vsize,
@@ -31,20 +37,22 @@ module element_partition
 contains
 
   !> owner(e) in 0..nparts-1 for every element e of the mesh given by its node lists (conn_ptr, conn), with the
-  !> cost weight(e) >= 1 of each element. stat /= 0: METIS failed (errmsg).
-  subroutine partition_elements(nnode, conn_ptr, conn, weight, nparts, owner, stat, errmsg)
+  !> cost weight(e) >= 1 of each element, in pieces pieces per process (1: one connected part each; fewer when
+  !> a piece would have fewer than min_piece_elements elements). stat /= 0: METIS failed (errmsg).
+  subroutine partition_elements(nnode, conn_ptr, conn, weight, nparts, pieces, owner, stat, errmsg)
     integer, intent(in) :: nnode                    !< nodes of the mesh
     integer, intent(in) :: conn_ptr(:)              !< (nelem+1) CSR pointers into conn
     integer, intent(in) :: conn(:)                  !< node of each element node
     integer, intent(in) :: weight(:)                !< (nelem) cost of each element (>= 1)
     integer, intent(in) :: nparts                   !< processes
+    integer, intent(in) :: pieces                   !< pieces per process (>= 1)
     integer, allocatable, intent(out) :: owner(:)   !< (nelem) process of each element
     integer, intent(out) :: stat                    !< 0 ok
     character(len=*), intent(out) :: errmsg         !< reason on failure
     integer, allocatable :: ne_ptr(:), ne_elem(:), fill(:), mark(:), xadj(:), adjncy(:)
     integer(c_int32_t), allocatable :: cx(:), ca(:), cw(:), cpart(:)
     integer(c_int32_t) :: nv, ncon, np, objval
-    integer :: nelem, e, k, a, f, cnt, pos, n
+    integer :: nelem, e, k, a, f, cnt, pos, n, npieces
 
     stat = 0
     errmsg = ''
@@ -115,14 +123,15 @@ contains
     allocate (cpart(nelem))
     nv = int(nelem, c_int32_t)
     ncon = 1
-    np = int(nparts, c_int32_t)
+    npieces = max(1, min(pieces, nelem / (nparts * min_piece_elements)))
+    np = int(nparts * npieces, c_int32_t)
     if (c_metis_kway(nv, ncon, cx, ca, cw, c_null_ptr, c_null_ptr, np, c_null_ptr, c_null_ptr, c_null_ptr, &
         objval, cpart) /= metis_ok) then
       stat = 1
       errmsg = 'METIS_PartGraphKway failed on the element graph'
       return
     end if
-    owner = int(cpart)
+    owner = mod(int(cpart), nparts)
   end subroutine partition_elements
 
 end module element_partition

@@ -2,8 +2,8 @@
 """Errors of the start-up end a distributed run cleanly (mpirun -np N, the LDFCZ_MPI build).
 
 Each case runs `mpirun -np N ldfcz ...` with something wrong, found by every process (a malformed deck, an unknown
-option, a missing --user file; a restart with other --element-weights than the run that wrote the restart files,
-i.e. another partition, found when the restart files are read) or by one process only (its own restart file
+option or option value, a missing --user file; a restart with other --element-weights or --partition-pieces than
+the run that wrote the restart files, i.e. another partition, found when the restart files are read) or by one process only (its own restart file
 JOB.rst.RofN missing; JOB.sta not writable, which only rank 0, the writer, opens). Each must:
   - end within the time limit (a process that gave up while the others wait in a collective call would hang);
   - end with exit status 2 (mpirun passes on the processes' status);
@@ -73,6 +73,11 @@ def main():
             ("restart with another partition", ["--out", rdir, "--restart-from", peel_rst, "--element-weights",
                                                 "1,1,100", args.peel],
              "another partition"),
+            ("restart with an interleaved partition", ["--out", rdir, "--restart-from", peel_rst,
+                                                       "--partition-pieces", "3", args.peel],
+             "another partition"),
+            ("bad --partition-pieces", ["--partition-pieces", "0", good],
+             re.escape("--partition-pieces needs an integer 1..10000")),
             ("malformed deck", [bad], re.escape("bad_bad_number.inp:10: *NODE: not a number")),
             ("unknown option", ["--no-such-option", good], re.escape("unknown option --no-such-option")),
             ("missing deck", [os.path.join(out, "absent.inp")], re.escape("absent.inp: file not found")),

@@ -2,6 +2,8 @@
 !> partitioned over the processes (analysis_core, METIS on the element graph) and
 !>   1. every element is owned by exactly one process (the ownership flags summed over the processes are all 1);
 !>   2. with N > 1 and more elements than processes, no process owns every element (the partition distributes);
+!>      with PIECES > 1 the processes' elements form more than N connected pieces in all (the interleaving took
+!>      effect: two elements are connected when they share a node);
 !>   3. at a non-trivial displacement (u_i = a sin(i), a = 1e-3 of the model size: finite strains in every element,
 !>      cohesive openings below the critical one) the assembled internal force of the distributed element loop
 !>      (each process its own elements, summed over the processes) and its tangent (each process's part of the
@@ -12,7 +14,9 @@
 !>   4. the product of that tangent with a vector (v_i = cos i) computed distributed (sparse_matvec: each process
 !>      over the entries its elements touch, summed over the processes) equals the serial product to 1e-12 of its
 !>      largest entry (again only the order of the additions differs).
-!> Usage: partition_check DECK. Exit 0 when all hold, 1 otherwise (the failures are printed by rank 0).
+!> Usage: partition_check DECK [PIECES] (pieces per process of the interleaved partition, as ldfcz
+!> --partition-pieces; default: ldfcz's default rule, one piece per process on these small decks).
+!> Exit 0 when all hold, 1 otherwise (the failures are printed by rank 0).
 program partition_check
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
@@ -26,20 +30,27 @@ program partition_check
   type(model_t) :: model
   type(user_routines_t) :: routines
   type(analysis_t) :: dist, ser
-  character(len=512) :: deck
+  character(len=512) :: deck, arg
   character(len=:), allocatable :: errmsg
   real(dp), allocatable :: own(:), kd(:, :), ks(:, :), flat(:), v(:), yd(:), ys(:)
-  real(dp) :: pn, size_model, err_f, err_k, fmax, kmax, err_y
-  integer :: stat, i, nfail, nown
+  real(dp) :: pn, size_model, err_f, err_k, fmax, kmax, err_y, ncomp(1)
+  integer :: stat, i, nfail, nown, pieces
   logical :: ok
 
   call parallel_init(par)
   nfail = 0
   call get_command_argument(1, deck)
+  pieces = 0                            ! ldfcz's default rule
+  if (command_argument_count() >= 2) then
+    call get_command_argument(2, arg)
+    read (arg, *, iostat=stat) pieces
+    call check(stat == 0 .and. pieces >= 1, 'PIECES must be an integer >= 1')
+  end if
   call read_deck(trim(deck), model, stat, errmsg)
   call check(stat == 0, 'deck read: '//errmsg)
   call user_routines_builtin(routines)
   dist%par = par
+  dist%partition_pieces = pieces
   call analysis_init(dist, model, routines, stat, errmsg)
   call check(stat == 0, 'distributed analysis_init: '//errmsg)
   call analysis_init(ser, model, routines, stat, errmsg)   ! one process's view: every element
@@ -52,6 +63,10 @@ program partition_check
   nown = count(dist%owned)
   if (par%nranks > 1 .and. model%nelem >= par%nranks) &
     call check(nown < model%nelem, 'one process owns every element: nothing distributed')
+  ncomp(1) = real(owned_components(), dp)
+  call parallel_sum(par, ncomp)
+  if (pieces > 1 .and. par%nranks > 1) &
+    call check(ncomp(1) > real(par%nranks, dp), 'interleaved partition: each process holds one connected part')
 
   ! 3.: forces and tangents at a deformed state, the dofs of the first node prescribed
   size_model = maxval(model%x(1:model%ndim, 1:model%nnode)) - minval(model%x(1:model%ndim, 1:model%nnode))
@@ -86,6 +101,8 @@ program partition_check
   if (parallel_writer(par)) then
     print '(a,i0,a,i0,a,i0,a,i0,a)', 'partition_check: ', par%nranks, ' processes, ', model%nelem, &
       ' elements (', nown, ' on rank 0), ', dist%neq, ' equations'
+    print '(a,i0,a,i0,a)', 'partition_check: ', pieces, ' pieces per process asked (0: default), ', &
+      nint(ncomp(1)), ' connected pieces in all'
     print '(a,es10.2,a,es10.2,a,es10.2,a)', 'partition_check: force difference ', err_f, ', tangent difference ', &
       err_k, ', product difference ', err_y, ' (of the largest entry)'
     if (nfail == 0) print '(a)', 'PASS'
@@ -95,6 +112,42 @@ program partition_check
   if (.not. ok) error stop 1
 
 contains
+
+  !> Connected pieces of this process's elements (union-find over the elements that share a node).
+  integer function owned_components() result(nc)
+    integer, allocatable :: root(:), first(:)
+    integer :: e, k, n, a, b
+    allocate (root(model%nelem), first(model%nnode))
+    root = [(e, e = 1, model%nelem)]
+    first = 0
+    do e = 1, model%nelem
+      if (.not. dist%owned(e)) cycle
+      do k = model%conn_ptr(e), model%conn_ptr(e + 1) - 1
+        n = model%conn(k)
+        if (first(n) == 0) then
+          first(n) = e
+        else
+          a = find_root(root, first(n))
+          b = find_root(root, e)
+          if (a /= b) root(max(a, b)) = min(a, b)
+        end if
+      end do
+    end do
+    nc = 0
+    do e = 1, model%nelem
+      if (dist%owned(e) .and. find_root(root, e) == e) nc = nc + 1
+    end do
+  end function owned_components
+
+  !> Root of element x in the union-find forest root.
+  pure integer function find_root(root, x) result(r)
+    integer, intent(in) :: root(:)  !< parent of each element
+    integer, intent(in) :: x        !< element
+    r = x
+    do while (root(r) /= r)
+      r = root(r)
+    end do
+  end function find_root
 
   subroutine prepare(an)
     type(analysis_t), intent(inout) :: an
