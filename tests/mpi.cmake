@@ -60,8 +60,8 @@ ldfcz_add_mpi_test(mpi_xit_remote ${CMAKE_CURRENT_SOURCE_DIR}/mpi/xit_first_elem
 
 # start-up errors (a malformed deck, an unknown option or a bad value, a missing --user file, found by every process; a
 # restart file missing on the last rank only, JOB.sta not writable on rank 0 only; a restart with other
-# --element-weights or --partition-pieces, found when the restart files are read) under -np 2 and -np 3: exit status 2, the message once, no MPI_Abort, no hang
-# (tests/mpi/check_mpi_errors.py)
+# --element-weights or --partition-pieces, found when the restart files are read) under -np 2 and -np 3: exit status
+# 2, the message once, no MPI_Abort, no hang (tests/mpi/check_mpi_errors.py)
 add_test(NAME mpi_startup_errors COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/mpi/check_mpi_errors.py
   --exe $<TARGET_FILE:ldfcz> --decks ${PROJECT_SOURCE_DIR}/decks --peel ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
   --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/startup_errors)

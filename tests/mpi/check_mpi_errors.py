@@ -3,8 +3,9 @@
 
 Each case runs `mpirun -np N ldfcz ...` with something wrong, found by every process (a malformed deck, an unknown
 option or option value, a missing --user file; a restart with other --element-weights or --partition-pieces than
-the run that wrote the restart files, i.e. another partition, found when the restart files are read) or by one process only (its own restart file
-JOB.rst.RofN missing; JOB.sta not writable, which only rank 0, the writer, opens). Each must:
+the run that wrote the restart files, i.e. another partition, found when the restart files are read) or by one
+process only (its own restart file JOB.rst.RofN missing; JOB.sta not writable, which only rank 0, the writer,
+opens). Each must:
   - end within the time limit (a process that gave up while the others wait in a collective call would hang);
   - end with exit status 2 (mpirun passes on the processes' status);
   - print the expected message (file, line and keyword for a deck error) exactly once, from whichever process
