@@ -90,6 +90,12 @@ ldfcz_add_mpi_restart_test(mpi_sigusr1_peel_np2 ${CMAKE_CURRENT_SOURCE_DIR}/mpi/
 ldfcz_add_mpi_test(mpi_cohesive_krylov_symmetric_single ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp
   -- --newton krylov --factors symmetric-single)
 ldfcz_add_mpi_test(mpi_cohesive_modified ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp -- --newton modified)
+# the application scene's preconditioner (tools/peel_study.py application): single-precision LDL^T factors, whose
+# right-hand side and solution MUMPS takes and leaves distributed, on the interleaved plane-strain peel; with
+# --newton krylov (GMRES to 1e-8: full Newton's iterates) rather than the scene's auto, whose GMRES budget follows
+# measured times, so that two runs may take different paths (docs/host.md)
+ldfcz_add_mpi_test(mpi_peel_ps_krylov_single ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
+  -- --newton krylov --factors symmetric-single --partition-pieces 4)
 
 # the closed-form load tests of tests/host.cmake run distributed (ldfcz_np2: mpirun -np 2 ldfcz): *DLOAD/*DSLOAD
 # pressure on a thick cylinder (Lame), *EQUATION and *TIE constraints, load history over steps, initial stress

@@ -17,14 +17,12 @@
 !> Distributed (the LDFCZ_MPI build, several processes; mumps_analyse with comm): the parallel MUMPS on that
 !> communicator, PAR = 1 (the host works too), the matrix in distributed assembled form (ICNTL(18) = 3: each
 !> process gives IRN_loc, JCN_loc, A_loc of the entries its own elements touch; MUMPS sums the entries given on
-!> several processes), the user ordering (PERM_IN), and in double precision the right-hand side and solution
-!> distributed (ICNTL(20) = 10: each process gives a block of rows, IRHS_loc, of the right-hand side that every
+!> several processes), the user ordering (PERM_IN), and the right-hand side and solution distributed, in both
+!> precisions (ICNTL(20) = 10: each process gives a block of rows, IRHS_loc, of the right-hand side that every
 !> process holds; ICNTL(21) = 1: each process receives the solution entries MUMPS leaves on it, ISOL_loc, known
 !> after the factorization): after a solve a process's rhs holds its own solution entries, zero elsewhere, and
 !> mumps_solution_rows names them (sparse_system gathers the pieces on every process). Nothing goes through the
-!> host. Single-precision factors keep the right-hand side and solution on the host (ICNTL(20) = 0,
-!> ICNTL(21) = 0; only rank 0's rhs holds the solution). Every call is collective: all processes call the same
-!> phases in the same order.
+!> host. Every call is collective: all processes call the same phases in the same order.
 !>
 !> Output of MUMPS is silenced (ICNTL(1:4)) unless the environment variable LDFCZ_MUMPS_VERBOSE is set to a value
 !> other than '' or '0'. Two switches for measurements only (tools/bench_mpi.py, docs/performance.md):
@@ -89,6 +87,7 @@ contains
     ms%distributed = present(comm) .and. present(rank)
     ms%host = .true.
     if (ms%distributed) ms%host = rank == 0
+    ms%dist_vectors = ms%distributed .and. .not. env_set('LDFCZ_MUMPS_CENTRAL_RHS')
     if (ms%single) then
       call analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, comm)
       return
@@ -105,23 +104,16 @@ contains
       return
     end if
     ms%initialised = .true.
-    ms%dist_vectors = ms%distributed .and. .not. env_set('LDFCZ_MUMPS_CENTRAL_RHS')
     call set_controls(ms%id%ICNTL, ms%distributed, ms%dist_vectors)
     ms%n = n
     ms%id%N = n
     if (ms%distributed) then
-      ! this process's block of right-hand side rows (any disjoint cover of 1..n serves: every process holds the
-      ! whole right-hand side); an empty block still gets an associated array
-      block
-        integer :: lo, hi, i
-        lo = int(int(n, i8) * ms%id%MYID / ms%id%NPROCS) + 1
-        hi = int(int(n, i8) * (ms%id%MYID + 1) / ms%id%NPROCS)
-        ms%id%Nloc_RHS = hi - lo + 1
-        ms%id%LRHS_loc = max(1, hi - lo + 1)
-        allocate (ms%id%IRHS_loc(max(1, hi - lo + 1)), ms%id%RHS_loc(max(1, hi - lo + 1)))
-        ms%id%IRHS_loc = [(i, i = lo, lo + size(ms%id%IRHS_loc) - 1)]
+      if (ms%dist_vectors) then
+        call rhs_row_block(n, ms%id%MYID, ms%id%NPROCS, ms%id%Nloc_RHS, ms%id%IRHS_loc)
+        ms%id%LRHS_loc = size(ms%id%IRHS_loc)
+        allocate (ms%id%RHS_loc(size(ms%id%IRHS_loc)))
         ms%id%RHS_loc = 0.0_dp
-      end block
+      end if
       ms%id%NNZ_loc = int(size(irn), i8)
       allocate(ms%id%IRN_loc(size(irn)), ms%id%JCN_loc(size(jcn)), ms%id%A_loc(size(irn)))
       ms%id%IRN_loc = irn
@@ -210,18 +202,18 @@ contains
     if (ms%dist_vectors) then
       ! the solution entries MUMPS leaves on this process: INFO(23) of them (ISOL_loc filled by the solve)
       if (associated(ms%id%SOL_loc)) then
-        if (size(ms%id%SOL_loc) /= max(1, ms%id%INFO(23))) deallocate (ms%id%SOL_loc, ms%id%ISOL_loc)
+        if (size(ms%id%SOL_loc) /= max(1, ms%id%INFO(23))) deallocate (ms%id%SOL_loc)
       end if
-      if (.not. associated(ms%id%SOL_loc)) &
-        allocate (ms%id%SOL_loc(max(1, ms%id%INFO(23))), ms%id%ISOL_loc(max(1, ms%id%INFO(23))))
-      ms%id%LSOL_loc = max(1, ms%id%INFO(23))
+      if (.not. associated(ms%id%SOL_loc)) allocate (ms%id%SOL_loc(max(1, ms%id%INFO(23))))
+      call size_solution_rows(ms%id%INFO(23), ms%id%ISOL_loc, ms%id%LSOL_loc)
     end if
     ms%factored = .true.
   end subroutine mumps_factorize
 
   !> Solve with the last factors: rhs in, solution out. Distributed (mumps_solution_distributed): every process
   !> gives the same rhs; out, its rhs holds its own solution entries (mumps_solution_rows), zero elsewhere.
-  !> Distributed with single-precision factors: rank 0's rhs only holds the solution (the others' is untouched).
+  !> Distributed with central vectors (LDFCZ_MUMPS_CENTRAL_RHS): rank 0's rhs only holds the solution (the
+  !> others' is untouched).
   subroutine mumps_solve(ms, rhs, stat, errmsg)
     type(mumps_solver_t), intent(inout) :: ms        !< factored instance
     real(dp), intent(inout) :: rhs(:)                !< right-hand side in, solution out (size n)
@@ -261,7 +253,7 @@ contains
     end if
     if (ms%dist_vectors) then
       rhs = 0.0_dp
-      if (ms%id%INFO(23) > 0) rhs(ms%id%ISOL_loc(1:ms%id%INFO(23))) = ms%id%SOL_loc(1:ms%id%INFO(23))
+      rhs(ms%id%ISOL_loc(1:ms%id%INFO(23))) = ms%id%SOL_loc(1:ms%id%INFO(23))
     else if (ms%host) then
       rhs = ms%id%RHS
     end if
@@ -281,6 +273,10 @@ contains
       if (associated(ms%sid%IRN_loc)) deallocate(ms%sid%IRN_loc)
       if (associated(ms%sid%JCN_loc)) deallocate(ms%sid%JCN_loc)
       if (associated(ms%sid%A_loc)) deallocate(ms%sid%A_loc)
+      if (associated(ms%sid%IRHS_loc)) deallocate(ms%sid%IRHS_loc)
+      if (associated(ms%sid%RHS_loc)) deallocate(ms%sid%RHS_loc)
+      if (associated(ms%sid%ISOL_loc)) deallocate(ms%sid%ISOL_loc)
+      if (associated(ms%sid%SOL_loc)) deallocate(ms%sid%SOL_loc)
     else if (ms%initialised) then
       ms%id%JOB = job_end
       call dmumps(ms%id)
@@ -354,7 +350,7 @@ contains
     end if
   end subroutine mumps_pivot_order
 
-  !> True when a solve leaves each process its own solution entries (distributed double-precision instance).
+  !> True when a solve leaves each process its own solution entries (distributed instance).
   logical function mumps_solution_distributed(ms)
     type(mumps_solver_t), intent(in) :: ms           !< instance
     mumps_solution_distributed = ms%dist_vectors
@@ -365,7 +361,9 @@ contains
   subroutine mumps_solution_rows(ms, rows)
     type(mumps_solver_t), intent(in) :: ms           !< factored and solved instance
     integer, allocatable, intent(out) :: rows(:)     !< equation numbers
-    if (ms%dist_vectors .and. ms%factored .and. associated(ms%id%ISOL_loc)) then
+    if (ms%dist_vectors .and. ms%factored .and. ms%single) then
+      rows = ms%sid%ISOL_loc(1:ms%sid%INFO(23))
+    else if (ms%dist_vectors .and. ms%factored) then
       rows = ms%id%ISOL_loc(1:ms%id%INFO(23))
     else
       allocate (rows(0))
@@ -462,19 +460,28 @@ contains
       return
     end if
     ms%initialised = .true.
-    call set_controls(ms%sid%ICNTL, ms%distributed, .false.)
+    call set_controls(ms%sid%ICNTL, ms%distributed, ms%dist_vectors)
     ms%n = n
     ms%sid%N = n
     if (ms%distributed) then
+      if (ms%dist_vectors) then
+        call rhs_row_block(n, ms%sid%MYID, ms%sid%NPROCS, ms%sid%Nloc_RHS, ms%sid%IRHS_loc)
+        ms%sid%LRHS_loc = size(ms%sid%IRHS_loc)
+        allocate (ms%sid%RHS_loc(size(ms%sid%IRHS_loc)))
+        ms%sid%RHS_loc = 0.0_sp
+      end if
       ms%sid%NNZ_loc = int(size(irn), i8)
       allocate(ms%sid%IRN_loc(size(irn)), ms%sid%JCN_loc(size(jcn)), ms%sid%A_loc(size(irn)))
       ms%sid%IRN_loc = irn
       ms%sid%JCN_loc = jcn
       ms%sid%A_loc = 0.0_sp
       if (ms%host) then
-        allocate(ms%sid%PERM_IN(n), ms%sid%RHS(n))
+        allocate(ms%sid%PERM_IN(n))
         ms%sid%PERM_IN = pivot_position
-        ms%sid%RHS = 0.0_sp
+        if (.not. ms%dist_vectors) then
+          allocate(ms%sid%RHS(n))
+          ms%sid%RHS = 0.0_sp
+        end if
       end if
     else
       ms%sid%NNZ = int(size(irn), i8)
@@ -541,6 +548,13 @@ contains
       call describe(here, ms%sid%INFOG(1), ms%sid%INFOG(2), errmsg)
       return
     end if
+    if (ms%dist_vectors) then
+      if (associated(ms%sid%SOL_loc)) then
+        if (size(ms%sid%SOL_loc) /= max(1, ms%sid%INFO(23))) deallocate (ms%sid%SOL_loc)
+      end if
+      if (.not. associated(ms%sid%SOL_loc)) allocate (ms%sid%SOL_loc(max(1, ms%sid%INFO(23))))
+      call size_solution_rows(ms%sid%INFO(23), ms%sid%ISOL_loc, ms%sid%LSOL_loc)
+    end if
     ms%factored = .true.
   end subroutine factorize_single
 
@@ -553,11 +567,16 @@ contains
     character(len=*), intent(out) :: errmsg          !< reason on failure
     real(dp) :: scale
 
-    scale = maxval(abs(rhs))
+    scale = maxval(abs(rhs))   ! the same on every process: each holds the whole right-hand side
     if (scale == 0.0_dp .or. .not. (scale < huge(1.0_dp))) scale = 1.0_dp
-    if (ms%host) ms%sid%RHS = real(rhs / scale, sp)
     ms%sid%NRHS = 1
-    ms%sid%LRHS = ms%n
+    if (ms%dist_vectors) then
+      if (ms%sid%Nloc_RHS > 0) ms%sid%RHS_loc(1:ms%sid%Nloc_RHS) = &
+        real(rhs(ms%sid%IRHS_loc(1:ms%sid%Nloc_RHS)) / scale, sp)
+    else
+      if (ms%host) ms%sid%RHS = real(rhs / scale, sp)
+      ms%sid%LRHS = ms%n
+    end if
     ms%sid%JOB = job_solve
     call smumps(ms%sid)
     if (ms%sid%INFOG(1) < 0) then
@@ -565,8 +584,41 @@ contains
       call describe('mumps_solve (single precision)', ms%sid%INFOG(1), ms%sid%INFOG(2), errmsg)
       return
     end if
-    if (ms%host) rhs = real(ms%sid%RHS, dp) * scale
+    if (ms%dist_vectors) then
+      rhs = 0.0_dp
+      rhs(ms%sid%ISOL_loc(1:ms%sid%INFO(23))) = real(ms%sid%SOL_loc(1:ms%sid%INFO(23)), dp) * scale
+    else if (ms%host) then
+      rhs = real(ms%sid%RHS, dp) * scale
+    end if
   end subroutine solve_single
+
+  !> This process's block of right-hand side rows for ICNTL(20) = 10: a contiguous share of 1..n (any disjoint
+  !> cover serves, every process holds the whole right-hand side); an empty block still gets an array of one.
+  pure subroutine rhs_row_block(n, myid, nprocs, count, rows)
+    integer, intent(in) :: n                         !< order
+    integer, intent(in) :: myid, nprocs              !< this process's MUMPS rank and the number of processes
+    integer, intent(out) :: count                    !< rows in the block (Nloc_RHS)
+    integer, pointer, intent(out) :: rows(:)         !< IRHS_loc (allocated here, size max(1, count))
+    integer :: lo, hi, i
+    lo = int(int(n, i8) * myid / nprocs) + 1
+    hi = int(int(n, i8) * (myid + 1) / nprocs)
+    count = hi - lo + 1
+    allocate (rows(max(1, count)))
+    rows = [(lo + i - 1, i = 1, size(rows))]
+    if (count == 0) rows = 1   ! not read by MUMPS (Nloc_RHS = 0), but a valid row
+  end subroutine rhs_row_block
+
+  !> ISOL_loc of the size a factorization's INFO(23) asks for (kept when it already has it), and LSOL_loc.
+  subroutine size_solution_rows(nsol, rows, lsol)
+    integer, intent(in) :: nsol                      !< INFO(23): solution entries left on this process
+    integer, pointer, intent(inout) :: rows(:)       !< ISOL_loc
+    integer, intent(out) :: lsol                     !< LSOL_loc
+    if (associated(rows)) then
+      if (size(rows) /= max(1, nsol)) deallocate (rows)
+    end if
+    if (.not. associated(rows)) allocate (rows(max(1, nsol)))
+    lsol = max(1, nsol)
+  end subroutine size_solution_rows
 
   !> Message for a MUMPS error code (MUMPS 5.5 user guide, section "Error diagnostics").
   subroutine describe(where, info1, info2, errmsg)

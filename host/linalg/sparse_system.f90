@@ -26,9 +26,9 @@
 !> every process keeps the whole pattern but adds only its own elements, and hands MUMPS (distributed assembled
 !> input, mumps_solver) only the entries its elements touch; MUMPS sums what several processes give. Each process
 !> gives MUMPS a block of the right-hand side's rows and receives its piece of the solution, and the pieces are
-!> gathered on every process (one all-gather; with single-precision factors the solution comes back on rank 0 and
-!> is broadcast); products A x sum the processes' parts (parallel_context), so every process holds the same
-!> vectors and the Newton decisions built on them agree.
+!> gathered on every process (one all-gather; the solution comes back on rank 0 and is broadcast only when
+!> LDFCZ_MUMPS_CENTRAL_RHS asks for MUMPS' central vectors); products A x sum the processes' parts
+!> (parallel_context), so every process holds the same vectors and the Newton decisions built on them agree.
 module sparse_system
   use ldfcz_kinds, only: dp, i8
   use sparse_pattern, only: build_pattern, build_slot_map, find_in_row
@@ -362,7 +362,7 @@ contains
   end subroutine sparse_solve
 
   !> Solve with the factors; distributed: each process's piece of the solution (MUMPS' distributed solution)
-  !> gathered on every process, or with single-precision factors rank 0's solution broadcast.
+  !> gathered on every process, or with central vectors (LDFCZ_MUMPS_CENTRAL_RHS) rank 0's solution broadcast.
   subroutine factor_solve(sys, rhs, stat, errmsg)
     type(sparse_system_t), intent(inout) :: sys     !< factored system
     real(dp), intent(inout) :: rhs(:)               !< right-hand side in, solution out
