@@ -1,0 +1,231 @@
+#!/usr/bin/env python3
+"""One process x T threads against N processes x 1 thread on the paper's application scene, in alternating
+segments so that both meet the same machine speeds (docs/performance.md, "Serial against 2 processes, in
+alternating segments").
+
+  bench_alternate.py [--deck DECK] [--work DIR] [--serial EXE] [--mpi EXE] [--ranks N] [--threads T]
+                     [--segment K] [--until HH:MM | --budget S] [--options "..."] [--md FILE]
+  bench_alternate.py --report DIR [--md FILE]     (the tables of an earlier or interrupted comparison)
+
+On a shared or virtual machine the speed of the same run varies by 10-30 % between hours, more than the difference
+between the two configurations; two whole runs one after the other compare hours as much as codes. Here both runs
+start from the deck and advance by K converged increments at a time (default 100: `--restart-write K
+--stop-after-increments K`, then `--restart-from` their own restart files), taking turns: serial then distributed,
+then distributed then serial, and so on, until the time given (--until, a wall-clock time of today, or --budget
+seconds from the start) has passed; the pair under way is completed. Each run keeps its own directory
+(DIR/serial, DIR/mpi); restarting costs both the same (the restart file is read, MUMPS analyses again, GMRES starts
+without factors).
+
+Records per run: the wall time of its segments summed against the pull (LOAD.U1 of JOB.csv, sampled every 2 s:
+DIR/progress_serial.csv, DIR/progress_mpi.csv) and each segment's JOB.log (DIR/RUN/log_NN.txt). The report: wall
+time at equal pull of the two runs and their ratio, and each run's time split summed over its segments (element
+loop, factorization, solve, the host's communication on rank 0) with its mean cost of a Leonov element call.
+
+Defaults: the deck of `tools/peel_study.py application` generated into DIR (tools/peel_deck.py), its solver options
+(`--newton auto --max-opening-increment 0.33 --max-plastic-increment 1.0 --factors symmetric-single`), serial
+build/bin/ldfcz with 2 threads, build-mpi/bin/ldfcz under `mpirun -np 2 --bind-to none` with 1 thread each.
+Python standard library only (tools/peel_study.py's CSV reader).
+"""
+import argparse
+import csv
+import glob
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+from peel_study import last_u1  # noqa: E402  (LOAD.U1 of the last complete CSV row)
+
+GEN = ['--3d', '--rigid-substrate', '--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.001',
+       '--dgamma-max', '1.0', '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72',
+       '--field-frequency', '40']
+OPTIONS = '--newton auto --max-opening-increment 0.33 --max-plastic-increment 1.0 --factors symmetric-single'
+RUNS = ('serial', 'mpi')
+
+
+def progress(work, run):
+    """(wall s, pull mm) samples of a run."""
+    with open(os.path.join(work, 'progress_%s.csv' % run)) as fh:
+        return [(float(r['wall_s']), float(r['U1_mm'])) for r in csv.DictReader(fh)]
+
+
+def wall_at(prog, u):
+    """Wall time at pull u, interpolated in the samples (None beyond them)."""
+    for k in range(1, len(prog)):
+        if prog[k][1] >= u:
+            (w0, a0), (w1, a1) = prog[k - 1], prog[k]
+            return w0 + (u - a0) / (a1 - a0) * (w1 - w0) if a1 > a0 else w1
+    return None
+
+
+def segment_summary(path):
+    """Times of one segment (JOB.log of a run that started or restarted: its times are its own) and the counters
+    at its end (they continue over a restart)."""
+    text = open(path, errors='replace').read().split('=== ldfcz summary ===')[-1]
+    out = {}
+    m = re.search(r'increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), '
+                  r'factorizations (\d+)', text)
+    out['inc'], out['att'], out['cut'], out['its'], out['fac'] = map(int, m.groups())
+    m = re.search(r'\((\d+) GMRES iterations', text)
+    out['gmres'] = int(m.group(1)) if m else 0
+    out['wall'] = float(re.search(r'wall time\s+([\d.]+) s', text).group(1))
+    m = re.search(r'assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s', text)
+    out['asm'], out['fact'], out['solve'] = map(float, m.groups())
+    m = re.search(r'communication of the host\s+([\d.]+) s', text)
+    out['comm'] = float(m.group(1)) if m else 0.0
+    m = re.search(r'UMAT continuum\s+([\d.]+) \(\s*([\d.Ee+]+)\)', text)
+    out['umat_us'], out['umat_calls'] = (float(m.group(1)), float(m.group(2))) if m else (0.0, 0.0)
+    return out
+
+
+def report(work):
+    """Markdown tables of a comparison in work."""
+    ps, pm = progress(work, 'serial'), progress(work, 'mpi')
+    if len(ps) < 2 or len(pm) < 2:
+        return 'bench_alternate.py: no progress recorded yet in %s\n' % work
+    umax = min(ps[-1][1], pm[-1][1])
+    out = ['| pull (um) | 1 process (s) | %s processes (s) | 1 process / processes |' % ranks_of(work),
+           '|---|---|---|---|']
+    marks = [u for u in (25, 50, 100, 150, 200, 250, 300, 350, 400, 450, 500, 550, 600, 650, 700)
+             if u * 1e-3 < umax] + [round(umax * 1e3, 1)]
+    for u in marks:
+        a, b = wall_at(ps, u * 1e-3), wall_at(pm, u * 1e-3)
+        out.append('| %s | %.0f | %.0f | %.3f |' % (('%g' % u) + (' (common end)' if u == marks[-1] else ''),
+                                                  a, b, a / b))
+    out += ['', '| run | segments | increments | attempts | Newton iterations | factorizations | GMRES iterations '
+            '| wall (s) | element loop (s) | factorization (s) | solve (s) | host communication (s) | Leonov call '
+            '(us, mean) |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+    for run in RUNS:
+        segs = [segment_summary(f) for f in sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))]
+        if not segs:
+            continue
+        tot = {k: sum(s[k] for s in segs) for k in ('wall', 'asm', 'fact', 'solve', 'comm')}
+        calls = sum(s['umat_calls'] for s in segs)
+        us = sum(s['umat_us'] * s['umat_calls'] for s in segs) / calls if calls else 0.0
+        last = segs[-1]
+        out.append('| %s | %d | %d | %d | %d | %d | %d | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f |' % (
+            run, len(segs), last['inc'], last['att'], last['its'], last['fac'], last['gmres'], tot['wall'],
+            tot['asm'], tot['fact'], tot['solve'], tot['comm'], us))
+    out += ['', 'Leonov call per segment (us; the machine speed each segment met): ' + '; '.join(
+        '%s %s' % (run, ', '.join('%.1f' % segment_summary(f)['umat_us']
+                                  for f in sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))))
+        for run in RUNS)]
+    return '\n'.join(out) + '\n'
+
+
+def ranks_of(work):
+    path = os.path.join(work, 'ranks.txt')
+    return open(path).read().strip() if os.path.exists(path) else 'N'
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('--deck', help='the deck (default: the application deck, generated into --work)')
+    ap.add_argument('--work', default=os.path.join(ROOT, 'out', 'bench-alternate'))
+    ap.add_argument('--serial', default=os.path.join(ROOT, 'build', 'bin', 'ldfcz'))
+    ap.add_argument('--mpi', default=os.path.join(ROOT, 'build-mpi', 'bin', 'ldfcz'))
+    ap.add_argument('--ranks', type=int, default=2)
+    ap.add_argument('--threads', type=int, default=2, help='threads of the one-process run')
+    ap.add_argument('--segment', type=int, default=100, help='converged increments per segment')
+    ap.add_argument('--until', help='start no new pair of segments after this time of today (HH:MM)')
+    ap.add_argument('--budget', type=float, help='start no new pair after this many seconds')
+    ap.add_argument('--options', default=OPTIONS, help='ldfcz options of both runs')
+    ap.add_argument('--report', help='only print the tables of the comparison in this directory')
+    ap.add_argument('--md', help='also write the tables to this file')
+    a = ap.parse_args()
+    if a.report:
+        text = report(a.report)
+        print(text, end='')
+        if a.md:
+            open(a.md, 'w').write(text)
+        return
+    if a.until:
+        hh, mm = map(int, a.until.split(':'))
+        now = time.localtime()
+        deadline = time.mktime((now.tm_year, now.tm_mon, now.tm_mday, hh, mm, 0, 0, 0, -1))
+    elif a.budget is not None:
+        deadline = time.time() + a.budget
+    else:
+        sys.exit('bench_alternate.py: give --until HH:MM or --budget SECONDS')
+    for exe in (a.serial, a.mpi):
+        if not os.access(exe, os.X_OK):
+            sys.exit('bench_alternate.py: %s is not an executable (build first)' % exe)
+    os.makedirs(a.work, exist_ok=True)
+    deck = a.deck
+    if not deck:
+        deck = os.path.join(a.work, 'app.inp')
+        subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'peel_deck.py')] + GEN + ['-o', deck],
+                       check=True, stdout=subprocess.DEVNULL)
+    deck = os.path.abspath(deck)
+    job = os.path.splitext(os.path.basename(deck))[0]
+    opts = a.options.split() + ['--restart-write', str(a.segment), '--stop-after-increments', str(a.segment)]
+    launch = {'serial': [os.path.abspath(a.serial), '-q', '-t', str(a.threads)],
+              'mpi': ['mpirun', '-np', str(a.ranks), '--bind-to', 'none', os.path.abspath(a.mpi), '-q', '-t', '1']}
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+    state = {}
+    for run in RUNS:
+        d = os.path.join(a.work, run)
+        shutil.rmtree(d, ignore_errors=True)
+        os.makedirs(d)
+        with open(os.path.join(a.work, 'progress_%s.csv' % run), 'w') as fh:
+            fh.write('wall_s,U1_mm\n')
+        state[run] = {'wall': 0.0, 'seg': 0}
+    open(os.path.join(a.work, 'ranks.txt'), 'w').write(str(a.ranks))
+    with open(os.path.join(a.work, 'commands.txt'), 'w') as fh:
+        for run in RUNS:
+            fh.write('%s: %s\n' % (run, ' '.join(launch[run] + ['-o', os.path.join(a.work, run)] + opts +
+                                                ['[--restart-from DIR/%s.rst]' % job, deck])))
+    log = open(os.path.join(a.work, 'segments.txt'), 'w')
+
+    def segment(run):
+        st, d = state[run], os.path.join(a.work, run)
+        cmd = launch[run] + ['-o', d] + opts
+        if st['seg'] > 0:
+            cmd += ['--restart-from', os.path.join(d, job + '.rst')]
+        t0 = time.time()
+        with open(os.path.join(d, 'console_%02d.txt' % st['seg']), 'w') as con, \
+                open(os.path.join(a.work, 'progress_%s.csv' % run), 'a') as prog:
+            p = subprocess.Popen(cmd + [deck], env=env, stdout=con, stderr=subprocess.STDOUT)
+            last = None
+            while p.poll() is None:
+                time.sleep(2)
+                u = last_u1(os.path.join(d, job + '.csv'))
+                if u is not None and u != last:
+                    prog.write('%.2f,%.6g\n' % (st['wall'] + time.time() - t0, u))
+                    prog.flush()
+                    last = u
+            st['wall'] += time.time() - t0
+            u = last_u1(os.path.join(d, job + '.csv'))
+            if u is not None:
+                prog.write('%.2f,%.6g\n' % (st['wall'], u))
+        if os.path.exists(os.path.join(d, job + '.log')):
+            shutil.copy(os.path.join(d, job + '.log'), os.path.join(d, 'log_%02d.txt' % st['seg']))
+        log.write('%s %s segment %d: exit %d, %.1f s, %.1f s in all, pull %.6g mm, load %.2f\n' % (
+            time.strftime('%H:%M:%S'), run, st['seg'], p.returncode, time.time() - t0, st['wall'], u,
+            os.getloadavg()[0]))
+        log.flush()
+        st['seg'] += 1
+        return p.returncode
+
+    pair, ended = 0, False
+    while time.time() < deadline and not ended:
+        for run in (RUNS if pair % 2 == 0 else RUNS[::-1]):
+            rc = segment(run)
+            if rc == 0:
+                ended = True        # the analysis is complete (the other run completes in its turn)
+            elif rc != 3:
+                sys.exit('bench_alternate.py: the %s run failed (exit %d; %s)' % (run, rc, os.path.join(
+                    a.work, run, 'console_%02d.txt' % (state[run]['seg'] - 1))))
+        pair += 1
+    text = report(a.work)
+    print(text, end='')
+    if a.md:
+        open(a.md, 'w').write(text)
+
+
+if __name__ == '__main__':
+    main()
