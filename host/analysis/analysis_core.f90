@@ -15,8 +15,8 @@ module analysis_core
   use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
   use solver_text, only: itoa, rtoa
   use abaqus_host_state, only: abaqus_set_caller, abaqus_stop_requested, abaqus_stop_element, abaqus_stop_message
-  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_any, &
-    parallel_lowest
+  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_max, &
+    parallel_any, parallel_lowest
   use element_partition, only: partition_elements
   use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
   use node_rotations, only: node_rotation_t, node_rotations_build, element_to_global, element_to_local, &
@@ -96,6 +96,9 @@ module analysis_core
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
     integer :: n_factor_done = 0                !< factorizations of earlier sparse systems
     real(dp) :: t_assembly = 0.0_dp             !< wall seconds in element loops
+    !> distributed: the slowest process's seconds of each element loop, summed over the loops (what the run waits
+    !> for; against the mean of t_assembly it gives the imbalance loop by loop, not only over the run)
+    real(dp) :: t_assembly_slowest = 0.0_dp
     type(parallel_t) :: par                     !< processes of the run (parallel_context)
     logical, allocatable :: owned(:)            !< (nelem) elements this process computes (all in a serial run)
     logical :: stop_asked = .false.             !< a user routine asked to end the analysis (XIT) in the last loop
@@ -516,6 +519,8 @@ contains
       trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
     fail_text = trim(first_msg)
     if (parallel_distributed(an%par)) then
+      call system_clock(c1)
+      an%t_assembly_slowest = an%t_assembly_slowest + parallel_max(an%par, real(c1 - c0, dp) / real(rate, dp))
       ! the processes' parts: forces summed, the smallest PNEWDT, the first failing element and the element that
       ! asked to stop (lowest label or index over the processes), so that every process decides alike
       call parallel_sum(an%par, an%fint)

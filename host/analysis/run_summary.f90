@@ -33,6 +33,7 @@ module run_summary
     integer :: peak_kb_max = 0                  !< largest VmHWM over the processes (MPI)
     real(dp) :: t_assembly_max = 0              !< element loop: the slowest process's seconds (MPI)
     real(dp) :: t_assembly_mean = 0             !< element loop: the mean over the processes (MPI)
+    real(dp) :: t_assembly_slowest = 0          !< element loop: the slowest process's time of each loop, summed
     real(dp) :: class_time(n_cost_class) = 0    !< seconds in the element routines per cost class, all processes
     real(dp) :: class_calls(n_cost_class) = 0   !< element calls per cost class, all processes
     integer :: class_weight(n_cost_class) = 0   !< the partition's weights (MPI)
@@ -98,6 +99,7 @@ contains
     e(1) = an%t_assembly
     call parallel_sum(an%par, e)
     summary%t_assembly_mean = e(1) / real(an%par%nranks, dp)
+    summary%t_assembly_slowest = an%t_assembly_slowest
     summary%class_time = an%class_time
     call parallel_sum(an%par, summary%class_time)
     summary%class_calls = real(an%class_calls, dp)
@@ -173,6 +175,11 @@ contains
         summary%t_assembly_max, ' s, mean ', summary%t_assembly_mean, ' s, max/mean ', &
         summary%t_assembly_max / max(summary%t_assembly_mean, tiny(1.0_dp)), ' (partition weights ', &
         summary%class_weight(1), ',', summary%class_weight(2), ',', summary%class_weight(3), ')'
+      call output_log(out, trim(line))
+      write (line, '(a,f10.3,a,f6.3,a)') 'element loop, slowest process of each loop summed: ', &
+        summary%t_assembly_slowest, ' s, against the mean ', &
+        summary%t_assembly_slowest / max(summary%t_assembly_mean, tiny(1.0_dp)), &
+        ' (the imbalance loop by loop: what the processes wait for at the force reduction)'
       call output_log(out, trim(line))
     end if
     call cost_line(out, summary)
