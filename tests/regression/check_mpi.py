@@ -180,6 +180,17 @@ def main():
             fail(f"-np {np}: increments/attempts/cutbacks/iterations {c} against {c1} on one process")
         if f"MPI processes {np}" not in log:
             fail(f"-np {np}: the summary does not report {np} processes")
+        # the element loop's balance: the slowest process of each loop, summed over the loops, is at least the
+        # largest process total (a sum of maxima bounds the maximum of the sums) and at least the mean; allowed
+        # below: the printing (1 ms) and the statements after the reductions that the totals also count (1 %)
+        m = re.search(r"element loop per process: max\s+([\d.]+) s, mean\s+([\d.]+) s", log)
+        m2 = re.search(r"element loop, slowest process of each loop summed:\s+([\d.]+) s, against the mean\s+([\d.]+)",
+                       log)
+        if not m or not m2:
+            fail(f"-np {np}: the summary lacks the element loop's balance lines")
+        t_max, t_slowest = float(m.group(1)), float(m2.group(1))
+        if t_slowest < 0.99 * t_max - 0.002:
+            fail(f"-np {np}: slowest process of each loop summed {t_slowest} s < the largest process total {t_max} s")
         s1, s = sta_lines(base1 + ".sta"), sta_lines(base + ".sta")
         if s1 != s:
             for k, (x, y) in enumerate(zip(s1, s)):
