@@ -1,8 +1,9 @@
 !> Restart file JOB.rst (docs/host.md, "Restart"): everything the static solver needs to continue an analysis from
 !> a converged increment so that the continuation repeats the uninterrupted run's arithmetic bit for bit.
 !>
-!> Format: unformatted stream (native byte order), in this order: magic 'LDFCZRST', format version, the model
-!> fingerprint (nodes, elements, dofs, checksum of the model's numbers: restart_checksum), the increment loop's
+!> Format: unformatted stream (native byte order), in this order: magic 'LDFCZRST', format version, the size in
+!> bits of the run summary record (written whole, so that a build whose summary type has other fields refuses the
+!> file by name instead of misreading it), the model fingerprint (nodes, elements, dofs, checksum of the model's numbers: restart_checksum), the increment loop's
 !> state whole (analysis_state: position, counters, times, increment control, boundary tables, the dof vectors
 !> the next increment starts from), the converged displacement and internal forces, per element the converged
 !> ENERGY, SVARS, stress, strain, STATEV and energy densities (each array preceded by its shape), the summary counters, the VTU frame times, and the end marker 'LDFCZEND' (a truncated
@@ -21,7 +22,9 @@ module restart_file
 
   character(len=8), parameter :: restart_magic = 'LDFCZRST'  !< first 8 bytes of a restart file
   character(len=8), parameter :: end_magic = 'LDFCZEND'      !< last 8 bytes
-  integer, parameter :: restart_version = 5                  !< format version
+  !> format version: 6 adds the summary record's size to the header (version 5 files of builds before and after
+  !> the summary gained a field could not be told apart)
+  integer, parameter :: restart_version = 6
 
   !> The solver state at the end of a converged increment (element states are passed separately).
   type :: restart_state_t
@@ -213,7 +216,8 @@ contains
       errmsg = 'cannot write '//path//'.tmp: '//trim(iom)
       return
     end if
-    write (u, iostat=ios, iomsg=iom) restart_magic, restart_version, rs%nnode, rs%nelem, rs%ndof, rs%checksum
+    write (u, iostat=ios, iomsg=iom) restart_magic, restart_version, summary_bits(), rs%nnode, rs%nelem, rs%ndof, &
+      rs%checksum
     if (ios == 0) call analysis_state_write(u, rs%state, ios, iom)
     if (ios == 0) write (u, iostat=ios, iomsg=iom) rs%u_conv, rs%fint
     do ie = 1, size(elems)
@@ -265,6 +269,12 @@ contains
 
   end subroutine restart_write
 
+  !> Size in bits of the run summary record as this build writes it (restart_write writes the type whole).
+  pure integer function summary_bits()
+    type(run_summary_t) :: probe
+    summary_bits = int(storage_size(probe))
+  end function summary_bits
+
   !> Read a restart file written for the model whose fingerprint is in expect (nnode, nelem, ndof, checksum).
   !> The element states go into elems, whose arrays must already have the shapes of the file's (the analysis
   !> allocates them from the deck): a different shape is refused. stat: 0 ok, 2 not readable or another model.
@@ -275,7 +285,7 @@ contains
     type(elem_state_t), intent(inout) :: elems(:)        !< element states (allocated by the analysis)
     integer, intent(out) :: stat                         !< 0 ok, 2 error
     character(len=:), allocatable, intent(out) :: errmsg !< message
-    integer :: u, ios, ie, version
+    integer :: u, ios, ie, version, bits
     character(len=8) :: magic
     character(len=256) :: iom
     character(len=200) :: line
@@ -303,7 +313,15 @@ contains
       close (u)
       return
     end if
-    read (u, iostat=ios) rs%nnode, rs%nelem, rs%ndof, rs%checksum
+    read (u, iostat=ios) bits
+    if (ios == 0 .and. bits /= summary_bits()) then
+      write (line, '(a,i0,a,i0,a)') ': written by another build of ldfcz (its run summary record holds ', bits / 8, &
+        ' bytes, this build''s ', summary_bits() / 8, '); restart with the program that wrote the file'
+      errmsg = path//trim(line)
+      close (u)
+      return
+    end if
+    if (ios == 0) read (u, iostat=ios) rs%nnode, rs%nelem, rs%ndof, rs%checksum
     if (ios /= 0) then
       errmsg = path//': truncated restart file'
       close (u)

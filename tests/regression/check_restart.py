@@ -34,6 +34,7 @@ import os
 import re
 import shutil
 import signal
+import struct
 import subprocess
 import sys
 import time
@@ -232,6 +233,15 @@ def main():
         p = run(base + ["--out", bad, "--restart-from", run_deck, run_deck], out, expect=[2])
         if "not an ldfcz restart file" not in p.stdout + p.stderr:
             fail("a deck given as restart file is not refused as such")
+        # a build whose run summary has another field: the header's summary size (bytes 12-15, after the magic and
+        # the version) differs by one 8-byte field; refused by name, not read as a damaged or valid file
+        bits = struct.unpack("=i", data[12:16])[0]
+        with open(os.path.join(bad, "layout.rst"), "wb") as f:
+            f.write(data[:12] + struct.pack("=i", bits + 64) + data[16:])
+        p = run(base + ["--out", bad, "--restart-from", os.path.join(bad, "layout.rst"), run_deck], out, expect=[2])
+        if "written by another build of ldfcz" not in p.stdout + p.stderr:
+            fail("a restart file with another summary layout is not refused as such: "
+                 + (p.stdout + p.stderr)[-500:])
 
     # 3. the restart
     run(base + ["--out", cut, "--restart-from", rst, run_deck], out, expect=[a.expect_exit])
