@@ -34,6 +34,12 @@ output included, is taken as not divided):
 
   tools/bench_mpi.py --scaling 2 4 8 16 --hybrid 1x16 4x4 --fine 0.05 0.2 --application --out reports/bench/scaling
 
+--pieces default 1 runs every R twice, with ldfcz's interleaved partition and with one part per process
+(--partition-pieces 1); the tables then also give the element loop's balance loop by loop (the summary's "slowest
+process of each loop summed", against the mean):
+
+  tools/bench_mpi.py --scaling 16 8 4 2 --pieces default 1 --fine --application --out reports/bench/scaling-interleaved
+
 --full-width meshes the application scene over the specimen's full width (the cost model's prediction target);
 `--fine` with no value leaves the peel members out:
 
@@ -68,6 +74,7 @@ PATTERNS = {
     'comm': r'^MPI processes (\d+), communication of the host\s+([\d.]+) s.*peak memory of a process (\d+) kB',
     'memory': r'^peak memory \(VmHWM\) (\d+) kB',
     'balance': r'^element loop per process: max\s+([\d.]+) s, mean\s+([\d.]+) s, max/mean\s+([\d.]+)',
+    'slowest': r'^element loop, slowest process of each loop summed:\s+([\d.]+) s, against the mean\s+([\d.]+)',
     'weights': r'as partition weights: --element-weights (\d+),(\d+),(\d+)',
 }
 
@@ -203,8 +210,9 @@ def scaling_report(results, full_dofs, cluster_ranks):
         out += ['## %s (%d DOFs, %d Newton iterations)' % (scene, b['dofs'], b['its']), '',
                 'Serial fraction of the factorization: %.2f from 2 ranks, %.2f fitted over all ranks.' % (s2, s_all),
                 '', '| run | cores | t/iteration (s) | speedup | efficiency | element loop speedup | factorization '
-                'speedup | communication (s) | predicted t/iteration from 1-2 ranks (s) | measured/predicted | '
-                'peak memory of a process (MB) |', '|---|---|---|---|---|---|---|---|---|---|---|']
+                'speedup | element loop max/mean | slowest of each loop / mean | communication (s) | predicted '
+                't/iteration from 1-2 ranks (s) | measured/predicted | peak memory of a process (MB) |',
+                '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
         for r in rs:
             if r['kind'] in ('base', 'dist'):
                 R = r['ranks']
@@ -214,9 +222,9 @@ def scaling_report(results, full_dofs, cluster_ranks):
             else:
                 pcol = '- | -'
             sp = b['per'] / r['per']
-            out.append('| %s | %d | %.3f | %.2f | %.2f | %.2f | %.2f | %.3f | %s | %.0f |' % (
+            out.append('| %s | %d | %.3f | %.2f | %.2f | %.2f | %.2f | %s | %s | %.3f | %s | %.0f |' % (
                 r['name'], r['cores'], r['per'], sp, sp / r['cores'], b['elem'] / max(r['elem'], 1e-12),
-                b['fact'] / max(r['fact'], 1e-12), r['comm'], pcol, r['mem_mb']))
+                b['fact'] / max(r['fact'], 1e-12), r['balance'], r['slowest'], r['comm'], pcol, r['mem_mb']))
         out.append('')
     if len(fits) >= 2:
         af, bf = fit_power([f['dofs'] for f in fits], [f['fact'] for f in fits])
@@ -290,6 +298,10 @@ def main():
     ap.add_argument('--scaling', type=int, nargs='+', default=[], help='strong scaling: R ranks x 1 thread for each '
                     'R (and 1 rank x 1 thread), see above')
     ap.add_argument('--hybrid', nargs='*', default=[], help='with --scaling: RxT runs, R ranks x T threads each')
+    ap.add_argument('--pieces', nargs='+', default=['default'],
+                    help='with --scaling: the partitions of the R-rank runs, each R run once per value: "default" '
+                    '(ldfcz\'s own interleaved partition) or P (--partition-pieces P; 1: one part per process). '
+                    'The cost model uses the first value\'s runs')
     ap.add_argument('--yield-idle', action='store_true', help='OMPI_MCA_mpi_yield_when_idle=1: a waiting process '
                     'gives its core away instead of polling (a machine shared with other jobs)')
     args = ap.parse_args()
@@ -319,8 +331,12 @@ def main():
         configs = [('1 rank x 1 thread', 'base', 1, mpirun + ['-np', '1', args.exe, '--threads', '1'], {})]
         for nr in args.scaling:
             if nr > 1:
-                configs.append(('%d ranks x 1 thread' % nr, 'dist', nr,
-                                mpirun + ['-np', str(nr), args.exe, '--threads', '1'], {}))
+                for k, pieces in enumerate(args.pieces):
+                    opt = [] if pieces == 'default' else ['--partition-pieces', str(int(pieces))]
+                    label = '' if pieces == 'default' else ', %s piece%s per process' % (pieces,
+                                                                                      '' if pieces == '1' else 's')
+                    configs.append(('%d ranks x 1 thread%s' % (nr, label), 'dist' if k == 0 else 'pieces', nr,
+                                    mpirun + ['-np', str(nr), args.exe, '--threads', '1'] + opt, {}))
         for h in args.hybrid:
             nr, nt = (int(x) for x in h.lower().split('x'))
             configs.append(('%d rank%s x %d threads' % (nr, 's' if nr > 1 else '', nt), 'hybrid', nr,
@@ -329,9 +345,10 @@ def main():
         configs.insert(0, ('serial build, %d threads' % args.threads, 'serial', 1,
                            [args.serial_exe, '--threads', str(args.threads)], {}))
     lines = ['| scene | DOFs | run | increments / iterations | t/iteration (s) | element loop | communication | '
-             'factorization | solve | factor entries (M) | element loop max/mean | CPU/iteration rank 0 (s) | '
-             'CPU/iteration all (s) | peak memory of a process (MB) | load average before |',
-             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+             'factorization | solve | factor entries (M) | element loop max/mean | element loop, slowest of each loop '
+             'summed / mean | CPU/iteration rank 0 (s) | CPU/iteration all (s) | peak memory of a process (MB) | '
+             'load average before |',
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     scenes = [('peel %g' % f, f, False) for f in args.fine]
     if args.application:
         # with --scaling the application mesh first: the scene that matters most, should a time limit cut the rest
@@ -370,6 +387,7 @@ def main():
             cpu_all = (ru1.ru_utime + ru1.ru_stime - ru0.ru_utime - ru0.ru_stime) / its
             mem_mb = (s['comm'][2] if s['comm'] else s['memory'][0]) / 1024.0
             balance = '%.3f' % s['balance'][2] if s['balance'] else '-'
+            slowest = '%.3f' % s['slowest'][1] if s['slowest'] else '-'
             if kind == 'dist' and s['weights']:
                 measured = ['%d' % w for w in s['weights']]
             if application:
@@ -379,12 +397,12 @@ def main():
                 cores = nranks * (config[5] if len(config) > 5 else 1)
             results.append(dict(scene=label, kind=kind, ranks=nranks, cores=cores, dofs=int(s['dofs'][0]),
                                 elem=asm / its, comm=comm / its, fact=fact / its, solve=solve / its, mem_mb=mem_mb,
-                                per=per, name=name, its=its))
+                                per=per, name=name, its=its, balance=balance, slowest=slowest))
             entries = '%.2f' % (s['entries'][0] / 1e6) if s['entries'] else '-'
-            row = ('| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %s | %.3f | %.3f | %.0f | '
-                   '%s |') % (
+            row = ('| %s | %d | %s | %d / %d | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %s | %s | %.3f | %.3f | '
+                   '%.0f | %s |') % (
                 label, int(s['dofs'][0]), name, inc, its, per, asm / its, comm / its, fact / its, solve / its,
-                entries, balance, s['wall'][1] / its, cpu_all, mem_mb, load)
+                entries, balance, slowest, s['wall'][1] / its, cpu_all, mem_mb, load)
             lines.append(row)
             print(row, flush=True)
     full_dofs = (app_dofs if args.full_width else 2 * app_dofs) if app_dofs else 2 * max(r['dofs'] for r in results)
