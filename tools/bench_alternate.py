@@ -5,6 +5,8 @@ alternating segments").
 
   bench_alternate.py [--deck DECK] [--work DIR] [--serial EXE] [--mpi EXE] [--ranks N] [--threads T]
                      [--segment K] [--until HH:MM | --budget S] [--options "..."] [--md FILE]
+  bench_alternate.py --resume --work DIR [--deck DECK] [--until HH:MM | --budget S] ...
+                                                  (an earlier comparison continued from its restart files)
   bench_alternate.py --report DIR [--md FILE]     (the tables of an earlier or interrupted comparison)
 
 On a shared or virtual machine the speed of the same run varies by 10-30 % between hours, more than the difference
@@ -135,6 +137,8 @@ def main():
     ap.add_argument('--budget', type=float, help='start no new pair after this many seconds')
     ap.add_argument('--options', default=OPTIONS, help='ldfcz options of both runs')
     ap.add_argument('--report', help='only print the tables of the comparison in this directory')
+    ap.add_argument('--resume', action='store_true', help='continue the comparison in --work: each run from its '
+                    'last restart files, its wall time summed on from its progress file, the turns in order')
     ap.add_argument('--md', help='also write the tables to this file')
     a = ap.parse_args()
     if a.report:
@@ -158,6 +162,7 @@ def main():
     deck = a.deck
     if not deck:
         deck = os.path.join(a.work, 'app.inp')
+    if not a.deck and not (a.resume and os.path.exists(deck)):
         subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'peel_deck.py')] + GEN + ['-o', deck],
                        check=True, stdout=subprocess.DEVNULL)
     deck = os.path.abspath(deck)
@@ -169,17 +174,28 @@ def main():
     state = {}
     for run in RUNS:
         d = os.path.join(a.work, run)
+        if a.resume:
+            # the segments so far (one JOB.log copy each) and the wall time summed over them
+            segs = len(glob.glob(os.path.join(d, 'log_*.txt')))
+            if segs == 0 or not glob.glob(os.path.join(d, job + '.rst*')):     # JOB.rst, or JOB.rst.KofN per rank
+                sys.exit('bench_alternate.py: nothing to resume in %s (no log_NN.txt or no %s.rst)' % (d, job))
+            state[run] = {'wall': progress(a.work, run)[-1][0], 'seg': segs}
+            continue
         shutil.rmtree(d, ignore_errors=True)
         os.makedirs(d)
         with open(os.path.join(a.work, 'progress_%s.csv' % run), 'w') as fh:
             fh.write('wall_s,U1_mm\n')
         state[run] = {'wall': 0.0, 'seg': 0}
+    if a.resume and (state['serial']['seg'] != state['mpi']['seg'] or
+                     ranks_of(a.work) != str(a.ranks)):
+        sys.exit('bench_alternate.py: %s holds %d and %d segments on %s processes: resume needs whole pairs and '
+                 'the same --ranks' % (a.work, state['serial']['seg'], state['mpi']['seg'], ranks_of(a.work)))
     open(os.path.join(a.work, 'ranks.txt'), 'w').write(str(a.ranks))
-    with open(os.path.join(a.work, 'commands.txt'), 'w') as fh:
+    with open(os.path.join(a.work, 'commands.txt'), 'a' if a.resume else 'w') as fh:
         for run in RUNS:
             fh.write('%s: %s\n' % (run, ' '.join(launch[run] + ['-o', os.path.join(a.work, run)] + opts +
                                                 ['[--restart-from DIR/%s.rst]' % job, deck])))
-    log = open(os.path.join(a.work, 'segments.txt'), 'w')
+    log = open(os.path.join(a.work, 'segments.txt'), 'a' if a.resume else 'w')
 
     def segment(run):
         st, d = state[run], os.path.join(a.work, run)
@@ -211,7 +227,7 @@ def main():
         st['seg'] += 1
         return p.returncode
 
-    pair, ended = 0, False
+    pair, ended = state['serial']['seg'], False     # the turns go on in order after a resume
     while time.time() < deadline and not ended:
         for run in (RUNS if pair % 2 == 0 else RUNS[::-1]):
             rc = segment(run)
