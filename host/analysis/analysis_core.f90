@@ -99,6 +99,9 @@ module analysis_core
     !> distributed: the slowest process's seconds of each element loop, summed over the loops (what the run waits
     !> for; against the mean of t_assembly it gives the imbalance loop by loop, not only over the run)
     real(dp) :: t_assembly_slowest = 0.0_dp
+    !> distributed: seconds this process waited at the end of its element loops for the slowest process (the first
+    !> reduction after a loop; part of par%t_comm)
+    real(dp) :: t_loop_wait = 0.0_dp
     type(parallel_t) :: par                     !< processes of the run (parallel_context)
     logical, allocatable :: owned(:)            !< (nelem) elements this process computes (all in a serial run)
     logical :: stop_asked = .false.             !< a user routine asked to end the analysis (XIT) in the last loop
@@ -408,7 +411,7 @@ contains
     real(dp) :: ctime(n_cost_class)        !< seconds in the element routines per cost class (this loop)
     integer(i8) :: ccalls(n_cost_class)    !< calls per cost class
     integer(i8) :: e0, e1
-    real(dp) :: pn, pn_worst, comm0
+    real(dp) :: pn, pn_worst, comm0, comm1
     character(len=256) :: msg, first_msg
     character(len=:), allocatable :: who, fail_text
     integer(i8) :: c0, c1, rate
@@ -520,7 +523,9 @@ contains
     fail_text = trim(first_msg)
     if (parallel_distributed(an%par)) then
       call system_clock(c1)
+      comm1 = an%par%t_comm
       an%t_assembly_slowest = an%t_assembly_slowest + parallel_max(an%par, real(c1 - c0, dp) / real(rate, dp))
+      an%t_loop_wait = an%t_loop_wait + (an%par%t_comm - comm1)
       ! the processes' parts: forces summed, the smallest PNEWDT, the first failing element and the element that
       ! asked to stop (lowest label or index over the processes), so that every process decides alike
       call parallel_sum(an%par, an%fint)

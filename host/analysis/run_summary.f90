@@ -34,6 +34,7 @@ module run_summary
     real(dp) :: t_assembly_max = 0              !< element loop: the slowest process's seconds (MPI)
     real(dp) :: t_assembly_mean = 0             !< element loop: the mean over the processes (MPI)
     real(dp) :: t_assembly_slowest = 0          !< element loop: the slowest process's time of each loop, summed
+    real(dp) :: t_loop_wait = 0                 !< rank 0's wait at the end of its element loops (in t_comm)
     real(dp) :: class_time(n_cost_class) = 0    !< seconds in the element routines per cost class, all processes
     real(dp) :: class_calls(n_cost_class) = 0   !< element calls per cost class, all processes
     integer :: class_weight(n_cost_class) = 0   !< the partition's weights (MPI)
@@ -100,6 +101,7 @@ contains
     call parallel_sum(an%par, e)
     summary%t_assembly_mean = e(1) / real(an%par%nranks, dp)
     summary%t_assembly_slowest = an%t_assembly_slowest
+    summary%t_loop_wait = an%t_loop_wait
     summary%class_time = an%class_time
     call parallel_sum(an%par, summary%class_time)
     summary%class_calls = real(an%class_calls, dp)
@@ -180,6 +182,10 @@ contains
         summary%t_assembly_slowest, ' s, against the mean ', &
         summary%t_assembly_slowest / max(summary%t_assembly_mean, tiny(1.0_dp)), &
         ' (the imbalance loop by loop: what the processes wait for at the force reduction)'
+      call output_log(out, trim(line))
+      write (line, '(a,f10.3,a,f10.3,a)') 'host communication of rank 0: waiting for the slowest process at the '// &
+        'end of element loops ', summary%t_loop_wait, ' s, reductions, gathers and broadcasts ', &
+        max(summary%t_comm - summary%t_loop_wait, 0.0_dp), ' s'
       call output_log(out, trim(line))
     end if
     call cost_line(out, summary)

@@ -191,6 +191,16 @@ def main():
         t_max, t_slowest = float(m.group(1)), float(m2.group(1))
         if t_slowest < 0.99 * t_max - 0.002:
             fail(f"-np {np}: slowest process of each loop summed {t_slowest} s < the largest process total {t_max} s")
+        # rank 0's wait for the slowest process at the end of its loops is a part of its host communication: the
+        # two parts printed add up to the communication line's total (1 ms for printing each)
+        m3 = re.search(r"host communication of rank 0: waiting for the slowest process at the end of element loops"
+                       r"\s+([\d.]+) s, reductions, gathers and broadcasts\s+([\d.]+) s", log)
+        mc = re.search(r"communication of the host\s+([\d.]+) s", log)
+        if not m3 or not mc:
+            fail(f"-np {np}: the summary lacks rank 0's split of its communication")
+        wait, rest, comm = float(m3.group(1)), float(m3.group(2)), float(mc.group(1))
+        if wait < 0 or rest < 0 or abs(wait + rest - comm) > 0.002:
+            fail(f"-np {np}: waiting {wait} s + the rest {rest} s != the host communication {comm} s")
         s1, s = sta_lines(base1 + ".sta"), sta_lines(base + ".sta")
         if s1 != s:
             for k, (x, y) in enumerate(zip(s1, s)):
