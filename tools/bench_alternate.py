@@ -21,16 +21,19 @@ without factors).
 Records per run: the wall time of its segments summed against the pull (LOAD.U1 of JOB.csv, sampled every 2 s:
 DIR/progress_serial.csv, DIR/progress_mpi.csv) and each segment's JOB.log (DIR/RUN/log_NN.txt). The report: wall
 time at equal pull of the two runs and their ratio, and each run's time split summed over its segments (element
-loop, factorization, solve, the host's communication on rank 0) with its mean cost of a Leonov element call.
+loop, factorization, solve, the host's communication on rank 0) with its mean cost of a Leonov element call, and,
+for the default deck, the pull and wall time at which each run's field frames show 1.0 mm of delamination (the
+paper's application measure; the front found as tools/peel_study.py finds it, interpolated between frames).
 
 Defaults: the deck of `tools/peel_study.py application` generated into DIR (tools/peel_deck.py), its solver options
 (`--newton auto --max-opening-increment 0.33 --max-plastic-increment 1.0 --factors symmetric-single`), serial
 build/bin/ldfcz with 2 threads, build-mpi/bin/ldfcz under `mpirun -np 2 --bind-to none` with 1 thread each.
-Python standard library only (tools/peel_study.py's CSV reader).
+Python standard library only (tools/peel_study.py's CSV and VTU front readers).
 """
 import argparse
 import csv
 import glob
+import json
 import os
 import re
 import shutil
@@ -40,7 +43,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, 'tools'))
-from peel_study import last_u1  # noqa: E402  (LOAD.U1 of the last complete CSV row)
+from peel_study import frame_front, last_u1  # noqa: E402  (a frame's front; LOAD.U1 of the last CSV row)
 
 GEN = ['--3d', '--rigid-substrate', '--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.001',
        '--dgamma-max', '1.0', '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72',
@@ -84,7 +87,44 @@ def segment_summary(path):
     return out
 
 
-def report(work):
+def front_info():
+    """tools/peel_deck.py's summary of the default deck (initial front x, delta, pull rate, nodes, elements)."""
+    deck = os.path.join(os.environ.get('TMPDIR', '/tmp'), 'bench_alternate_%d.inp' % os.getpid())
+    res = subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'peel_deck.py')] + GEN + ['--info', '-o', deck],
+                         capture_output=True, text=True, check=True)
+    os.remove(deck)
+    return json.loads(res.stderr.strip().splitlines()[-1])
+
+
+def front_history(work, run, info):
+    """(pull mm, delaminated mm) of every field frame of a run (JOB.pvd: a .vtu, or a .pvtu whose pieces are
+    JOB_NNNN_R.vtu), the front found as tools/peel_study.py finds it. [] unless the run is of the default deck (its
+    node and element counts in the log)."""
+    logs = sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))
+    pvds = glob.glob(os.path.join(work, run, '*.pvd'))
+    if not logs or len(pvds) != 1 or '%d nodes, %d elements' % (info['nodes'], info['elements']) not in \
+            open(logs[0], errors='replace').read():
+        return []
+    hist = []
+    for t, f in re.findall(r'timestep="\s*([0-9.Ee+-]+)"[^>]*file="([^"]+)"', open(pvds[0]).read()):
+        path = os.path.join(work, run, f)
+        pieces = sorted(glob.glob(path[:-5] + '_*.vtu')) if f.endswith('.pvtu') else [path]
+        x = frame_front(pieces, info['delta_mm']) if pieces and all(map(os.path.exists, pieces)) else None
+        if x is not None:
+            hist.append((float(t) * info['rate_mm_s'], info['x_front_mm'] - x))
+    return hist
+
+
+def pull_at_delamination(hist, d):
+    """Pull at which the delaminated length first reaches d, interpolated between frames (None if it does not)."""
+    for k in range(1, len(hist)):
+        (u0, d0), (u1, d1) = hist[k - 1], hist[k]
+        if d1 >= d > d0:
+            return u0 + (d - d0) / (d1 - d0) * (u1 - u0)
+    return None
+
+
+def report(work, delamination=1.0):
     """Markdown tables of a comparison in work."""
     ps, pm = progress(work, 'serial'), progress(work, 'mpi')
     if len(ps) < 2 or len(pm) < 2:
@@ -93,10 +133,11 @@ def report(work):
     out = ['| pull (um) | 1 process (s) | %s processes (s) | 1 process / processes |' % ranks_of(work),
            '|---|---|---|---|']
     marks = [u for u in (25, 50, 100, 150, 200, 250, 300, 350, 400, 450, 500, 550, 600, 650, 700)
-             if u * 1e-3 < umax] + [round(umax * 1e3, 1)]
-    for u in marks:
-        a, b = wall_at(ps, u * 1e-3), wall_at(pm, u * 1e-3)
-        out.append('| %s | %.0f | %.0f | %.3f |' % (('%g' % u) + (' (common end)' if u == marks[-1] else ''),
+             if u * 1e-3 < umax]
+    for k, u in enumerate(marks + [umax * 1e3]):
+        um = umax if k == len(marks) else u * 1e-3      # the common end exactly as recorded (mm)
+        a, b = wall_at(ps, um), wall_at(pm, um)
+        out.append('| %s | %.0f | %.0f | %.3f |' % ('%.1f (common end)' % u if k == len(marks) else '%g' % u,
                                                   a, b, a / b))
     out += ['', '| run | segments | increments | attempts | Newton iterations | factorizations | GMRES iterations '
             '| wall (s) | element loop (s) | factorization (s) | solve (s) | host communication (s) | Leonov call '
@@ -112,6 +153,17 @@ def report(work):
         out.append('| %s | %d | %d | %d | %d | %d | %d | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f |' % (
             run, len(segs), last['inc'], last['att'], last['its'], last['fac'], last['gmres'], tot['wall'],
             tot['asm'], tot['fact'], tot['solve'], tot['comm'], us))
+    info = front_info()
+    rows = []
+    for run, prog in (('serial', ps), ('mpi', pm)):
+        u = pull_at_delamination(front_history(work, run, info), delamination)
+        w = wall_at(prog, u) if u is not None else None
+        if w is not None:
+            rows.append('| %s | %.1f | %.0f | %.3f |' % (run, 1e3 * u, w, w / 3600))
+    if rows:
+        out += ['', 'Delamination of %g mm (front of each run\'s field frames as tools/peel_study.py finds it, pull '
+                'interpolated between the frames that bracket it, wall time at that pull):' % delamination, '',
+                '| run | pull (um) | wall (s) | wall (h) |', '|---|---|---|---|'] + rows
     out += ['', 'Leonov call per segment (us; the machine speed each segment met): ' + '; '.join(
         '%s %s' % (run, ', '.join('%.1f' % segment_summary(f)['umat_us']
                                   for f in sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))))
