@@ -98,10 +98,15 @@ def front_info():
 
 def front_history(work, run, info):
     """(pull mm, delaminated mm) of every field frame of a run (JOB.pvd: a .vtu, or a .pvtu whose pieces are
-    JOB_NNNN_R.vtu), the front found as tools/peel_study.py finds it. [] unless the run is of the default deck (its
-    node and element counts in the log)."""
+    JOB_NNNN_R.vtu), the front found as tools/peel_study.py finds it, also written to DIR/front_RUN.csv; without
+    the frames (a copy of the records only) that file is read instead. [] unless the run is of the default deck
+    (its node and element counts in the log)."""
     logs = sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))
     pvds = glob.glob(os.path.join(work, run, '*.pvd'))
+    record = os.path.join(work, 'front_%s.csv' % run)
+    if not pvds and os.path.exists(record):
+        with open(record) as fh:
+            return [(float(r['U1_mm']), float(r['delaminated_mm'])) for r in csv.DictReader(fh)]
     if not logs or len(pvds) != 1 or '%d nodes, %d elements' % (info['nodes'], info['elements']) not in \
             open(logs[0], errors='replace').read():
         return []
@@ -112,6 +117,8 @@ def front_history(work, run, info):
         x = frame_front(pieces, info['delta_mm']) if pieces and all(map(os.path.exists, pieces)) else None
         if x is not None:
             hist.append((float(t) * info['rate_mm_s'], info['x_front_mm'] - x))
+    with open(record, 'w') as fh:
+        fh.write('U1_mm,delaminated_mm\n' + ''.join('%.6g,%.6g\n' % h for h in hist))
     return hist
 
 
