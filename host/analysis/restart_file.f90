@@ -3,12 +3,13 @@
 !>
 !> Format: unformatted stream (native byte order), in this order: magic 'LDFCZRST', format version, the size in
 !> bits of the run summary record (written whole, so that a build whose summary type has other fields refuses the
-!> file by name instead of misreading it), the model fingerprint (nodes, elements, dofs, checksum of the model's numbers: restart_checksum), the increment loop's
-!> state whole (analysis_state: position, counters, times, increment control, boundary tables, the dof vectors
-!> the next increment starts from), the converged displacement and internal forces, per element the converged
-!> ENERGY, SVARS, stress, strain, STATEV and energy densities (each array preceded by its shape), the summary counters, the VTU frame times, and the end marker 'LDFCZEND' (a truncated
-!> file is refused). Written to JOB.rst.tmp, flushed, closed and renamed over JOB.rst (rename(2) is atomic): a kill
-!> at any moment leaves the previous or the new restart file, never a partial one.
+!> file by name instead of misreading it), the model fingerprint (nodes, elements, dofs, checksum of the model's
+!> numbers: restart_checksum), the increment loop's state whole (analysis_state: position, counters, times,
+!> increment control, boundary tables, the dof vectors the next increment starts from), the converged displacement
+!> and internal forces, per element the converged ENERGY, SVARS, stress, strain, STATEV and energy densities (each
+!> array preceded by its shape), the summary counters, the VTU frame times, and the end marker 'LDFCZEND' (a
+!> truncated file is refused). Written to JOB.rst.tmp, flushed, closed and renamed over JOB.rst (rename(2) is
+!> atomic): a kill at any moment leaves the previous or the new restart file, never a partial one.
 module restart_file
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
   use ldfcz_kinds, only: dp, i8
