@@ -15,8 +15,9 @@ start from the deck and advance by K converged increments at a time (default 100
 --stop-after-increments K`, then `--restart-from` their own restart files), taking turns: serial then distributed,
 then distributed then serial, and so on, until the time given (--until, a wall-clock time of today, or --budget
 seconds from the start) has passed; the pair under way is completed. Each run keeps its own directory
-(DIR/serial, DIR/mpi); restarting costs both the same (the restart file is read, MUMPS analyses again, GMRES starts
-without factors).
+(DIR/serial, DIR/mpi); a segment that fails ends the comparison and leaves no record that --resume would count
+(its console file says why); restarting costs both the same (the restart file is read, MUMPS analyses again, GMRES
+starts without factors).
 
 Records per run: the wall time of its segments summed against the pull (LOAD.U1 of JOB.csv, sampled every 2 s:
 DIR/progress_serial.csv, DIR/progress_mpi.csv) and each segment's JOB.log (DIR/RUN/log_NN.txt). The report: wall
@@ -262,8 +263,9 @@ def main():
         if st['seg'] > 0:
             cmd += ['--restart-from', os.path.join(d, job + '.rst')]
         t0 = time.time()
-        with open(os.path.join(d, 'console_%02d.txt' % st['seg']), 'w') as con, \
-                open(os.path.join(a.work, 'progress_%s.csv' % run), 'a') as prog:
+        prog_path = os.path.join(a.work, 'progress_%s.csv' % run)
+        prog_size = os.path.getsize(prog_path)
+        with open(os.path.join(d, 'console_%02d.txt' % st['seg']), 'w') as con, open(prog_path, 'a') as prog:
             p = subprocess.Popen(cmd + [deck], env=env, stdout=con, stderr=subprocess.STDOUT)
             last = None
             while p.poll() is None:
@@ -273,10 +275,20 @@ def main():
                     prog.write('%.2f,%.6g\n' % (st['wall'] + time.time() - t0, u))
                     prog.flush()
                     last = u
-            st['wall'] += time.time() - t0
             u = last_u1(os.path.join(d, job + '.csv'))
-            if u is not None:
-                prog.write('%.2f,%.6g\n' % (st['wall'], u))
+            if p.returncode in (0, 3):
+                st['wall'] += time.time() - t0
+                if u is not None:
+                    prog.write('%.2f,%.6g\n' % (st['wall'], u))
+        if p.returncode not in (0, 3):
+            # a failed segment leaves no trace that a --resume would count: its progress rows are dropped, its
+            # JOB.log is not kept as a segment (the console file says why it failed)
+            with open(prog_path, 'r+') as prog:
+                prog.truncate(prog_size)
+            log.write('%s %s segment %d: failed, exit %d (not counted)\n' % (time.strftime('%H:%M:%S'), run,
+                                                                            st['seg'], p.returncode))
+            log.flush()
+            return p.returncode
         if os.path.exists(os.path.join(d, job + '.log')):
             shutil.copy(os.path.join(d, job + '.log'), os.path.join(d, 'log_%02d.txt' % st['seg']))
         log.write('%s %s segment %d: exit %d, %.1f s, %.1f s in all, pull %.6g mm, load %.2f\n' % (
@@ -294,7 +306,7 @@ def main():
                 ended = True        # the analysis is complete (the other run completes in its turn)
             elif rc != 3:
                 sys.exit('bench_alternate.py: the %s run failed (exit %d; %s)' % (run, rc, os.path.join(
-                    a.work, run, 'console_%02d.txt' % (state[run]['seg'] - 1))))
+                    a.work, run, 'console_%02d.txt' % state[run]['seg'])))
         pair += 1
     text = report(a.work)
     print(text, end='')
