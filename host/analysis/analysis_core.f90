@@ -3,6 +3,7 @@
 !> does (docs/conventions.md), and the assembly into the sparse system.
 module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, etype_user, etype_names, orientation_axes
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
@@ -117,6 +118,9 @@ module analysis_core
     real(dp) :: class_time(n_cost_class) = 0.0_dp     !< wall seconds in element routines, per cost class
     integer(i8) :: class_calls(n_cost_class) = 0      !< element calls per cost class (this process)
     integer(i8) :: partition_sig = 0                  !< signature of the partition (0: one process)
+    !> unit of the element-loop trace (LDFCZ_LOOP_TRACE=PREFIX: PREFIX.rankR.csv, one row per element loop with
+    !> this process's seconds per cost class; docs/host.md "Diagnostics"); 0: off
+    integer :: loop_trace = 0
   end type analysis_t
 
 contains
@@ -274,6 +278,7 @@ contains
     if (stat /= 0) return
     call partition(an, model, stat, errmsg)
     if (stat /= 0) return
+    call open_loop_trace(an)
     call node_rotations_build(an%nr, model, stat, errmsg)
     if (stat /= 0) return
     call constraints_build(an%cs, model, an%used, stat, errmsg)
@@ -411,13 +416,16 @@ contains
     real(dp) :: ctime(n_cost_class)        !< seconds in the element routines per cost class (this loop)
     integer(i8) :: ccalls(n_cost_class)    !< calls per cost class
     integer(i8) :: e0, e1
-    real(dp) :: pn, pn_worst, comm0, comm1
+    real(dp) :: pn, pn_worst, comm0, comm1, loop_own, loop_slowest, cpu0, cpu1
     character(len=256) :: msg, first_msg
     character(len=:), allocatable :: who, fail_text
     integer(i8) :: c0, c1, rate
     logical :: with_carry
 
     call system_clock(c0, rate)
+    cpu0 = 0.0_dp
+    cpu1 = 0.0_dp
+    if (an%loop_trace /= 0) call cpu_time(cpu0)
     comm0 = an%par%t_comm
     stat = 0
     errmsg = ''
@@ -521,10 +529,15 @@ contains
     if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
       trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
     fail_text = trim(first_msg)
+    ! this process's loop, before any reduction (what the slowest process's time is the largest of)
+    call system_clock(c1)
+    loop_own = real(c1 - c0, dp) / real(rate, dp)
+    if (an%loop_trace /= 0) call cpu_time(cpu1)
+    loop_slowest = loop_own
     if (parallel_distributed(an%par)) then
-      call system_clock(c1)
       comm1 = an%par%t_comm
-      an%t_assembly_slowest = an%t_assembly_slowest + parallel_max(an%par, real(c1 - c0, dp) / real(rate, dp))
+      loop_slowest = parallel_max(an%par, loop_own)
+      an%t_assembly_slowest = an%t_assembly_slowest + loop_slowest
       an%t_loop_wait = an%t_loop_wait + (an%par%t_comm - comm1)
       ! the processes' parts: forces summed, the smallest PNEWDT, the first failing element and the element that
       ! asked to stop (lowest label or index over the processes), so that every process decides alike
@@ -549,6 +562,9 @@ contains
     ! the reductions are communication, not assembly
     an%t_assembly = an%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
     an%n_assembly = an%n_assembly + 1
+    if (an%loop_trace /= 0) write (an%loop_trace, '(i0,3(",",i0),6(",",es10.4e2),3(",",i0))') &
+      an%n_assembly, kstep, kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, ctime / real(rate, dp), &
+      ccalls
   end subroutine analysis_assemble
 
   !> One element: UEL through the procedure pointer, or the continuum element with its material.
@@ -781,6 +797,35 @@ contains
       an%partition_sig = mod(an%partition_sig * 131_i8 + int(owner(ie) + 1, i8), 1000000007_i8)
     end do
   end subroutine partition
+
+  !> The element-loop trace when LDFCZ_LOOP_TRACE=PREFIX is set (a diagnostic of the element loop's balance;
+  !> tools/loop_trace.py reads it): PREFIX.rankR.csv on every process R, a header, then one row per element loop
+  !> (analysis_assemble): loop, step, increment, tangent assembled (1/0), this process's wall seconds up to the
+  !> first reduction, the largest of them over the processes (the process's own in a one-process run), the
+  !> process's CPU seconds over the same span (all its threads), then seconds and calls per cost class (cost_class:
+  !> UMAT continuum, *ELASTIC continuum, user element).
+  subroutine open_loop_trace(an)
+    type(analysis_t), intent(inout) :: an                !< analysis data (an%par set)
+    character(len=:), allocatable :: prefix, path
+    integer :: length, st, ios
+    character(len=256) :: iomsg
+    call get_environment_variable('LDFCZ_LOOP_TRACE', length=length, status=st)
+    if (st /= 0 .or. length == 0) return
+    allocate (character(len=length) :: prefix)
+    call get_environment_variable('LDFCZ_LOOP_TRACE', prefix)
+    path = prefix//'.rank'//itoa(an%par%rank)//'.csv'
+    open (newunit=an%loop_trace, file=path, status='replace', action='write', iostat=ios, iomsg=iomsg)
+    if (ios /= 0) then
+      ! a diagnostic that cannot change the analysis: the run goes on (a failure on one process only must not
+      ! part the processes), said on the error output by the process concerned
+      an%loop_trace = 0
+      write (error_unit, '(a)') 'ldfcz: warning: LDFCZ_LOOP_TRACE: cannot write '//path//' ('//trim(iomsg)// &
+        '): no element-loop trace from process '//itoa(an%par%rank)
+      return
+    end if
+    write (an%loop_trace, '(a)') 'loop,step,increment,tangent,loop_s,slowest_s,cpu_s,umat_s,elastic_s,user_s,' // &
+      'umat_calls,elastic_calls,user_calls'
+  end subroutine open_loop_trace
 
   !> Pieces per process of the interleaved partition when --partition-pieces is not given: 32, as measured on the
   !> paper's application scene with 2 processes (element loop balance max/mean 1.07 -> 1.01 over its first 62

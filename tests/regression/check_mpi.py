@@ -20,6 +20,7 @@ Checks, for every N given:
 The observed largest differences are printed.
 """
 import argparse
+import csv
 import os
 import re
 import shutil
@@ -32,7 +33,7 @@ def fail(msg):
     sys.exit(1)
 
 
-def run(exe, deck, out, np, user, extra, threads):
+def run(exe, deck, out, np, user, extra, threads, trace=None):
     if os.path.isdir(out):
         shutil.rmtree(out)
     os.makedirs(out)
@@ -44,6 +45,9 @@ def run(exe, deck, out, np, user, extra, threads):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_btl_vader_single_copy_mechanism="none", OMPI_MCA_rmaps_base_oversubscribe="1",
                OMPI_MCA_mpi_yield_when_idle="1")
+    env.pop("LDFCZ_LOOP_TRACE", None)
+    if trace:
+        env["LDFCZ_LOOP_TRACE"] = trace
     p = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
     return p.returncode, p.stdout + p.stderr
 
@@ -129,6 +133,69 @@ def compare_frames(vtu, pvtu, np_):
     return worst
 
 
+def read_trace(prefix, np_):
+    """The element-loop trace of a run (LDFCZ_LOOP_TRACE): one list of rows (dicts of strings) per process."""
+    procs = []
+    for k in range(np_):
+        path = f"{prefix}.rank{k}.csv"
+        if not os.path.isfile(path):
+            fail(f"-np {np_}: no element-loop trace {path}")
+        with open(path, newline="") as fh:
+            procs.append(list(csv.DictReader(fh)))
+    if os.path.exists(f"{prefix}.rank{np_}.csv"):
+        fail(f"-np {np_}: a trace file for process {np_}")
+    return procs
+
+
+CLASSES = ("umat", "elastic", "user")
+
+
+def check_trace(ref, procs, np_, nelem):
+    """ref: the one-process run's trace, procs: the distributed run's. The same loops (step, increment, tangent) in
+    the same order on every process; in every loop each element computed exactly once over the processes (the
+    calls of each class summed over the processes equal the one-process run's, which computes all nelem); the
+    slowest process's time is the largest process's own time (the same number on every process)."""
+    for r in ref[0]:
+        if sum(int(r[c + "_calls"]) for c in CLASSES) != nelem:
+            fail(f"one process: loop {r['loop']} computed {sum(int(r[c + '_calls']) for c in CLASSES)} elements "
+                 f"of {nelem}")
+        if r["slowest_s"] != r["loop_s"]:
+            fail(f"one process: loop {r['loop']}: slowest {r['slowest_s']} s is not its own {r['loop_s']} s")
+    key = ("loop", "step", "increment", "tangent")
+    for k, rows in enumerate(procs):
+        if [tuple(r[x] for x in key) for r in rows] != [tuple(r[x] for x in key) for r in ref[0]]:
+            fail(f"-np {np_}: process {k}'s trace lists other loops than the one-process run's "
+                 f"({len(rows)} against {len(ref[0])})")
+    for i, r1 in enumerate(ref[0]):
+        for c in CLASSES:
+            got = sum(int(rows[i][c + "_calls"]) for rows in procs)
+            if got != int(r1[c + "_calls"]):
+                fail(f"-np {np_}: loop {r1['loop']}: {got} {c} calls over the processes against {r1[c + '_calls']}")
+        slowest = {rows[i]["slowest_s"] for rows in procs}
+        own = max(float(rows[i]["loop_s"]) for rows in procs)
+        if len(slowest) != 1 or float(slowest.pop()) != own:
+            fail(f"-np {np_}: loop {r1['loop']}: slowest process's time {[rows[i]['slowest_s'] for rows in procs]} "
+                 f"is not the largest own time {own}")
+    print(f"-np {np_}: element-loop trace: {len(ref[0])} loops as on one process, each element computed once per "
+          f"loop, the slowest time the largest process's")
+
+
+def check_trace_tool(prefix, np_, t_slowest):
+    """tools/loop_trace.py on the distributed run's trace: its slowest process of each loop, summed from the rows
+    (4 digits each), is the closing summary's (summed in double precision): within 0.1 % and 1 ms."""
+    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "loop_trace.py")
+    p = subprocess.run([sys.executable, tool, prefix, "--pool", "0.1"], capture_output=True, text=True, timeout=120)
+    if p.returncode != 0:
+        fail(f"-np {np_}: tools/loop_trace.py failed:\n{p.stdout}{p.stderr}")
+    m = re.search(r"slowest process of each loop summed ([\d.]+) s", p.stdout)
+    if not m or "a pool of 0.10" not in p.stdout:
+        fail(f"-np {np_}: tools/loop_trace.py printed no loop-by-loop balance or pool line:\n{p.stdout}")
+    got = float(m.group(1))
+    if abs(got - t_slowest) > 1e-3 * t_slowest + 1e-3:
+        fail(f"-np {np_}: tools/loop_trace.py sums the slowest loops to {got} s, the summary to {t_slowest} s")
+    print(f"-np {np_}: tools/loop_trace.py: slowest process of each loop summed {got} s (summary {t_slowest} s)")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
@@ -143,12 +210,15 @@ def main():
     ap.add_argument("--expect-exit", type=int, default=0, help="exit status of a run that is not an XIT stop "
                     "(3 with --stop-after-increments)")
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--trace", action="store_true", help="run with LDFCZ_LOOP_TRACE and check the traces "
+                    "(and that an unwritable trace path only warns)")
     ap.add_argument("extra", nargs="*", help="more ldfcz options (after --)")
     a = ap.parse_args()
     if shutil.which("mpirun") is None:
         fail("mpirun not found (tools/setup.sh installs openmpi-bin for the LDFCZ_MPI build)")
     ref_out = os.path.join(a.out, "np1")
-    rc1, text1 = run(a.exe, a.deck, ref_out, 1, a.user, a.extra, a.threads)
+    trace_of = (lambda out: os.path.join(out, "trace")) if a.trace else (lambda out: None)
+    rc1, text1 = run(a.exe, a.deck, ref_out, 1, a.user, a.extra, a.threads, trace_of(ref_out))
     want = 2 if a.xit else a.expect_exit
     if rc1 != want:
         fail(f"one process: exit {rc1}, expected {want}\n{text1[-3000:]}")
@@ -156,7 +226,7 @@ def main():
     log1 = open(base1 + ".log").read()
     for np in a.np:
         out = os.path.join(a.out, f"np{np}")
-        rc, text = run(a.exe, a.deck, out, np, a.user, a.extra, a.threads)
+        rc, text = run(a.exe, a.deck, out, np, a.user, a.extra, a.threads, trace_of(out))
         if rc != want:
             fail(f"-np {np}: exit {rc}, expected {want}\n{text[-3000:]}")
         base = job_files(out, a.deck)
@@ -232,6 +302,26 @@ def main():
                 fail(f"-np {np}: last frame differs by {vworst:.2e} of an array's largest value")
         print(f"-np {np}: {c[0]} increments, {c[1]} attempts, {c[3]} Newton iterations as on one process; "
               f"largest CSV difference {worst:.2e} of the column, last VTU frame {vworst:.2e}")
+        if a.trace:
+            m = re.search(r"(\d+) nodes, (\d+) elements", log1)
+            if not m:
+                fail("the log does not say how many elements the model has")
+            check_trace(read_trace(trace_of(ref_out), 1), read_trace(trace_of(out), np), np, int(m.group(2)))
+            check_trace_tool(trace_of(out), np, t_slowest)
+    if a.trace:
+        # a trace that cannot be written: every process warns and the run goes on, its results unchanged
+        out = os.path.join(a.out, "trace_unwritable")
+        np = a.np[0]
+        rc, text = run(a.exe, a.deck, out, np, a.user, a.extra, a.threads,
+                       os.path.join(out, "no_such_directory", "trace"))
+        if rc != want:
+            fail(f"-np {np}, unwritable LDFCZ_LOOP_TRACE: exit {rc}, expected {want}\n{text[-3000:]}")
+        warned = sorted(re.findall(r"no element-loop trace from process (\d+)", text))
+        if warned != [str(k) for k in range(np)]:
+            fail(f"-np {np}, unwritable LDFCZ_LOOP_TRACE: warnings from processes {warned}\n{text[-3000:]}")
+        if sta_lines(job_files(out, a.deck) + ".sta") != sta_lines(base1 + ".sta"):
+            fail(f"-np {np}, unwritable LDFCZ_LOOP_TRACE: JOB.sta differs from the one-process run's")
+        print(f"-np {np}: an unwritable LDFCZ_LOOP_TRACE warns on every process, the run is unchanged")
     print("PASS")
 
 
