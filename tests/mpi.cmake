@@ -52,6 +52,9 @@ ldfcz_add_mpi_test(mpi_peel_ps_interleaved ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_
 # the small 3D peel (Leonov C3D8 coating, cohesive layer): its first 12 increments (PNEWDT cutbacks included)
 ldfcz_add_mpi_test(mpi_peel_3d ${PROJECT_SOURCE_DIR}/decks/peel/peel_3d_quarter.inp --expect-exit 3
   -- --stop-after-increments 12)
+# *EL PRINT / *NODE PRINT tables, which rank 0 writes: the printed states of elements on other processes are
+# gathered first (JOB.dat equal to the one-process run's to its printed digits)
+ldfcz_add_mpi_test(mpi_el_print ${CMAKE_CURRENT_SOURCE_DIR}/mpi/el_print_beam.inp --dat)
 ldfcz_add_mpi_test(mpi_user_uel ${PROJECT_SOURCE_DIR}/decks/single/user_uel.inp
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_elastic.f)
 ldfcz_add_mpi_test(mpi_xit ${PROJECT_SOURCE_DIR}/decks/bad/runtime/uel_phi_zero.inp --xit)

@@ -12,7 +12,7 @@ module print_tables
   use solid_element, only: polar_rotation
   implicit none
   private
-  public :: print_tables_any, print_tables_write
+  public :: print_tables_any, print_tables_write, print_tables_elements
 
   integer, parameter :: name_w = 8  !< column heading width
 
@@ -44,23 +44,17 @@ contains
     logical :: header
     header = .false.
     do k = 1, st%nprint
-      if (.not. due(st%prints(k)%frequency)) cycle
+      if (.not. request_due(st%prints(k)%frequency, kinc, last)) cycle
       call write_header()
       call node_table(u, model, an, st%prints(k))
     end do
     do k = 1, st%nelprint
-      if (.not. due(st%elprints(k)%frequency)) cycle
+      if (.not. request_due(st%elprints(k)%frequency, kinc, last)) cycle
       call write_header()
       call element_tables(u, model, an, st%elprints(k), st%nlgeom)
     end do
     if (header) flush (u)
   contains
-    logical function due(freq)
-      integer, intent(in) :: freq
-      due = .false.
-      if (freq <= 0) return
-      due = mod(kinc, freq) == 0 .or. last
-    end function due
     subroutine write_header()
       if (header) return
       header = .true.
@@ -71,6 +65,40 @@ contains
         total_time
     end subroutine write_header
   end subroutine print_tables_write
+
+  !> A request of print frequency freq prints at increment kinc (last: the step's final increment).
+  pure logical function request_due(freq, kinc, last) result(due)
+    integer, intent(in) :: freq   !< FREQUENCY (0: never)
+    integer, intent(in) :: kinc   !< increment number in the step
+    logical, intent(in) :: last   !< the step's last increment
+    due = .false.
+    if (freq <= 0) return
+    due = mod(kinc, freq) == 0 .or. last
+  end function request_due
+
+  !> The elements whose converged states the *EL PRINT tables of step st due at increment kinc read (each once,
+  !> ascending; continuum elements only): in a distributed run their states are gathered before rank 0 prints.
+  pure function print_tables_elements(model, st, kinc, last) result(elems)
+    type(model_t), intent(in) :: model  !< the model
+    type(step_t), intent(in) :: st      !< the step
+    integer, intent(in) :: kinc         !< increment number in the step
+    logical, intent(in) :: last         !< the step's last increment
+    integer, allocatable :: elems(:)
+    logical, allocatable :: pick(:)
+    integer :: k, ie
+    allocate (pick(model%nelem))
+    pick = .false.
+    do k = 1, st%nelprint
+      if (.not. request_due(st%elprints(k)%frequency, kinc, last)) cycle
+      if (st%elprints(k)%set_index > 0) then
+        pick(model%elsets(st%elprints(k)%set_index)%elems) = .true.
+      else
+        pick = .true.
+      end if
+    end do
+    pick = pick .and. model%elem_kind(1:model%nelem) /= etype_user
+    elems = pack([(ie, ie = 1, model%nelem)], pick)
+  end function print_tables_elements
 
   !> One *NODE PRINT table.
   subroutine node_table(u, model, an, np)

@@ -22,7 +22,8 @@ module static_step
   use run_summary, only: run_summary_t, run_summary_continue, cohesive_ratio, statev_increment
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
   use field_frame, only: write_field_frame
-  use print_tables, only: print_tables_any, print_tables_write
+  use print_tables, only: print_tables_any, print_tables_write, print_tables_elements
+  use state_gather, only: gather_converged_states
   use stop_report, only: stop_message
   use plane_stress_notice, only: plane_stress_umat_warnings
   use solver_text, only: itoa, rtoa
@@ -475,6 +476,9 @@ contains
           end do
           call output_csv_row(out, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, colv)
           s%csv_rows = s%csv_rows + 1
+          ! rank 0 prints: the states of the other processes' printed elements first (every process takes part)
+          if (print_tables_any(model)) call gather_converged_states(an, &
+            print_tables_elements(model, st, s%kinc, step_control_done(s%sc)))
           if (dat /= -1) call print_tables_write(dat, model, an, st, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, dt, &
             step_control_done(s%sc))
           if (st%field_output) then

@@ -196,6 +196,40 @@ def check_trace_tool(prefix, np_, t_slowest):
     print(f"-np {np_}: tools/loop_trace.py: slowest process of each loop summed {got} s (summary {t_slowest} s)")
 
 
+NUMBER = re.compile(r"^[-+]?\d+\.\d+E[-+]\d+$")
+
+
+def compare_dat(path1, path, np_):
+    """JOB.dat (the *NODE PRINT / *EL PRINT tables, written by rank 0) against the one-process run's: the same
+    lines and words; printed numbers (5 significant digits) equal, one unit of the last digit allowed (a rounding
+    that the runs' round-off differences can flip). The node or element under MAXIMUM/MINIMUM ('AT NODE', 'AT
+    ELEMENT') may differ: points of a symmetric model tie, and round-off picks one (the values themselves are
+    compared on every row). Returns the number of values compared."""
+    lines1 = open(path1).read().split("\n")
+    lines = open(path).read().split("\n") if os.path.isfile(path) else []
+    if len(lines) != len(lines1):
+        fail(f"-np {np_}: {os.path.basename(path)} has {len(lines)} lines against {len(lines1)}")
+    count = 0
+    for k, (a, b) in enumerate(zip(lines1, lines)):
+        wa, wb = a.split(), b.split()
+        if len(wa) != len(wb):
+            fail(f"-np {np_}: {os.path.basename(path)} line {k + 1}: '{b}' against '{a}'")
+        if wa[:1] == ["AT"] and wb[:1] == ["AT"]:
+            if wa[:2] != wb[:2]:
+                fail(f"-np {np_}: {os.path.basename(path)} line {k + 1}: '{b}' against '{a}'")
+            continue
+        for x, y in zip(wa, wb):
+            if NUMBER.match(x) and NUMBER.match(y):
+                count += 1
+                fx, fy = float(x), float(y)
+                unit = 10.0 ** (int(x.split("E")[1]) - 4)
+                if abs(fx - fy) > 1.01 * unit:
+                    fail(f"-np {np_}: {os.path.basename(path)} line {k + 1}: {y} against {x}:\n  {b}\n  {a}")
+            elif x != y:
+                fail(f"-np {np_}: {os.path.basename(path)} line {k + 1}: '{b}' against '{a}'")
+    return count
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
@@ -210,6 +244,8 @@ def main():
     ap.add_argument("--expect-exit", type=int, default=0, help="exit status of a run that is not an XIT stop "
                     "(3 with --stop-after-increments)")
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--dat", action="store_true", help="compare JOB.dat (printed tables) with the one-process "
+                    "run's; the one-process JOB.dat must hold element tables")
     ap.add_argument("--trace", action="store_true", help="run with LDFCZ_LOOP_TRACE and check the traces "
                     "(and that an unwritable trace path only warns)")
     ap.add_argument("extra", nargs="*", help="more ldfcz options (after --)")
@@ -302,6 +338,11 @@ def main():
                 fail(f"-np {np}: last frame differs by {vworst:.2e} of an array's largest value")
         print(f"-np {np}: {c[0]} increments, {c[1]} attempts, {c[3]} Newton iterations as on one process; "
               f"largest CSV difference {worst:.2e} of the column, last VTU frame {vworst:.2e}")
+        if a.dat:
+            if "E L E M E N T   O U T P U T" not in open(base1 + ".dat").read():
+                fail("the one-process JOB.dat holds no element table: the deck does not test *EL PRINT")
+            n = compare_dat(base1 + ".dat", base + ".dat", np)
+            print(f"-np {np}: JOB.dat equal to the one-process run's ({n} printed values)")
         if a.trace:
             m = re.search(r"(\d+) nodes, (\d+) elements", log1)
             if not m:
