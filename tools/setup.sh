@@ -2,7 +2,8 @@
 # Install what is missing (Debian 12 packages), then configure and build ldfcz.
 #   tools/setup.sh [Release|Debug]     build directory: build/ (Release) or build-debug/ (Debug), or $LDFCZ_BUILD_DIR
 #   tools/setup.sh bench               the Release build and what the benchmarks compare against (CalculiX 2.20,
-#                                      Debian's calculix-ccx: tools/bench_calculix.py); the tests never need it
+#                                      Debian's calculix-ccx: tools/bench_calculix.py) or measure with (heaptrack:
+#                                      reports/bench/memory/); the tests never need them
 # Extra CMake options may be passed in $LDFCZ_CMAKE_ARGS (e.g. -DCMAKE_PREFIX_PATH=/path/to/pfunit).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -10,7 +11,7 @@ build_type=${1:-Release}
 bench_packages=()
 if [ "$build_type" = bench ]; then
   build_type=Release
-  bench_packages=(calculix-ccx)
+  bench_packages=(calculix-ccx heaptrack)
 fi
 case "$build_type" in
   Release) default_dir="$root/build" ;;

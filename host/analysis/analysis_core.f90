@@ -25,7 +25,7 @@ module analysis_core
   implicit none
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
-  public :: analysis_restore, pnewdt_large, elem_type_name, n_cost_class
+  public :: analysis_restore, pnewdt_large, elem_type_name, n_cost_class, element_geometry
 
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
   integer, parameter :: n_cost_class = 3  !< cost classes of elements (cost_class)
@@ -189,22 +189,6 @@ contains
     end do
     an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
     call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%ncolor, an%color_ptr, an%color_elem)
-    ! reference shape-function derivatives and weights of the continuum elements, once (original coordinates)
-    allocate (an%elem_geo(model%nelem))
-    an%elem_geo = 0
-    n = 0
-    do ie = 1, model%nelem
-      if (model%elem_kind(ie) /= etype_user) then
-        n = n + 1
-        an%elem_geo(ie) = n
-      end if
-    end do
-    allocate (an%geo(n))
-    do ie = 1, model%nelem
-      if (an%elem_geo(ie) == 0) cycle
-      call solid_element_geometry(an%elem_tname(ie), &
-        model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
-    end do
 
     ! materials per section
     allocate (an%mats(max(1, model%nsection)))
@@ -278,6 +262,24 @@ contains
     if (stat /= 0) return
     call partition(an, model, stat, errmsg)
     if (stat /= 0) return
+    ! reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
+    ! process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
+    ! process's element when output needs it; 41 MB a process on the paper's application mesh when all are kept)
+    allocate (an%elem_geo(model%nelem))
+    an%elem_geo = 0
+    n = 0
+    do ie = 1, model%nelem
+      if (model%elem_kind(ie) /= etype_user .and. an%owned(ie)) then
+        n = n + 1
+        an%elem_geo(ie) = n
+      end if
+    end do
+    allocate (an%geo(n))
+    do ie = 1, model%nelem
+      if (an%elem_geo(ie) == 0) cycle
+      call solid_element_geometry(an%elem_tname(ie), &
+        model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+    end do
     call open_loop_trace(an)
     call node_rotations_build(an%nr, model, stat, errmsg)
     if (stat /= 0) return
@@ -728,6 +730,7 @@ contains
     integer :: ie, ip, nn, io, a
     real(dp) :: x(3)
     logical :: ok
+    type(solid_geometry_t) :: g
     stat = 0
     errmsg = ''
     allocate (an%axes(model%nelem))
@@ -737,10 +740,12 @@ contains
       if (io == 0) cycle
       nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
       allocate (an%axes(ie)%t(3, 3, an%elem_nip(ie)))
+      ! every element's axes on every process (the same errors everywhere; rank 0 prints any element's tables)
+      call element_geometry(an, model, ie, g)
       do ip = 1, an%elem_nip(ie)
         x = 0.0_dp
         do a = 1, nn
-          x = x + an%geo(an%elem_geo(ie))%nfun(a, ip) * model%x(:, model%conn(model%conn_ptr(ie) + a - 1))
+          x = x + g%nfun(a, ip) * model%x(:, model%conn(model%conn_ptr(ie) + a - 1))
         end do
         call orientation_axes(model%orientations(io), x, an%axes(ie)%t(:, :, ip), ok)
         if (ok .and. model%ndim == 2) ok = abs(abs(an%axes(ie)%t(3, 3, ip)) - 1.0_dp) <= 1.0e-9_dp
@@ -755,6 +760,23 @@ contains
       end do
     end do
   end subroutine element_axes
+
+  !> Reference data (solid_element_geometry) of continuum element ie: this process's stored copy, or computed here
+  !> when it keeps none (another process's element in a distributed run, or before analysis_init stores them).
+  subroutine element_geometry(an, model, ie, g)
+    type(analysis_t), intent(in) :: an          !< analysis data
+    type(model_t), intent(in) :: model          !< the model
+    integer, intent(in) :: ie                   !< continuum element
+    type(solid_geometry_t), intent(out) :: g    !< its reference data
+    if (allocated(an%elem_geo)) then
+      if (an%elem_geo(ie) > 0) then
+        g = an%geo(an%elem_geo(ie))
+        return
+      end if
+    end if
+    call solid_element_geometry(an%elem_tname(ie), &
+      model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), g)
+  end subroutine element_geometry
 
   !> The elements this process computes: all of them in a one-process run; with several processes the METIS
   !> partition of the element graph (element_partition), each element weighted by the cost of its class in the

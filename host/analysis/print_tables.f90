@@ -6,10 +6,10 @@
 module print_tables
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user, etype_c3d8, etype_cpe4
-  use analysis_core, only: analysis_t
+  use analysis_core, only: analysis_t, element_geometry
   use node_rotations, only: node_vector_global
   use stress_measures, only: mises_stress
-  use solid_element, only: polar_rotation
+  use solid_element, only: polar_rotation, solid_geometry_t
   implicit none
   private
   public :: print_tables_any, print_tables_write, print_tables_elements
@@ -185,6 +185,8 @@ contains
     integer, allocatable :: lab(:), pt(:)
     integer :: k, j, ie, ip, nrow, row, nsv_max, nsv, nt, c
     real(dp) :: s6(6), sl(6), el(6), t(3, 3)
+    type(solid_geometry_t) :: g
+    logical :: have_geo
     ! columns: the request's variables, SDV expanded to every state variable of these elements
     nsv_max = 0
     do k = 1, size(elems)
@@ -209,6 +211,7 @@ contains
     row = 0
     do k = 1, size(elems)
       ie = elems(k)
+      have_geo = .false.
       nt = size(an%conv(ie)%stress, 1)
       nsv = an%mats(model%elem_section(ie))%nstatv
       do ip = 1, size(an%conv(ie)%stress, 2)
@@ -223,7 +226,11 @@ contains
         if (allocated(an%axes(ie)%t)) then
           ! an *ORIENTATION: components in its local axes, as Abaqus prints them
           t = an%axes(ie)%t(:, :, ip)
-          if (nlgeom) t = matmul(polar_rotation(point_f(model, an, ie, ip)), t)
+          if (nlgeom) then
+            if (.not. have_geo) call element_geometry(an, model, ie, g)
+            have_geo = .true.
+            t = matmul(polar_rotation(point_f(model, an, g, ie, ip)), t)
+          end if
           sl = turned(s6, t, 1.0_dp)
           el = turned(el, t, 0.5_dp)
         end if
@@ -277,9 +284,10 @@ contains
   end function turned
 
   !> Deformation gradient at integration point ip of continuum element ie in the converged state.
-  function point_f(model, an, ie, ip) result(f)
+  function point_f(model, an, g, ie, ip) result(f)
     type(model_t), intent(in) :: model      !< the model
     type(analysis_t), intent(in) :: an      !< converged state
+    type(solid_geometry_t), intent(in) :: g !< the element's reference data (element_geometry)
     integer, intent(in) :: ie               !< element
     integer, intent(in) :: ip               !< integration point
     real(dp) :: f(3, 3), ug(model%ndim)
@@ -288,17 +296,15 @@ contains
     do i = 1, 3
       f(i, i) = 1.0_dp
     end do
-    associate (g => an%geo(an%elem_geo(ie)))
-      do a = 1, model%conn_ptr(ie + 1) - model%conn_ptr(ie)
-        node = model%conn(model%conn_ptr(ie) + a - 1)
-        ug = node_vector_global(an%nr, an%u_conv, node)
-        do j = 1, model%ndim
-          do i = 1, model%ndim
-            f(i, j) = f(i, j) + ug(i) * g%dndx_ref(a, j, ip)
-          end do
+    do a = 1, model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+      node = model%conn(model%conn_ptr(ie) + a - 1)
+      ug = node_vector_global(an%nr, an%u_conv, node)
+      do j = 1, model%ndim
+        do i = 1, model%ndim
+          f(i, j) = f(i, j) + ug(i) * g%dndx_ref(a, j, ip)
         end do
       end do
-    end associate
+    end do
   end function point_f
 
   !> MAXIMUM / AT NODE|ELEMENT / MINIMUM / AT ... (summary) and TOTAL (totals) lines of a table.

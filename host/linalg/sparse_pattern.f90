@@ -113,8 +113,9 @@ contains
   end subroutine build_pattern
 
   !> Element -> slot maps: slot(slot_ptr(e) + (b-1)*n_e + (a-1)) is the value index of element entry (a, b)
-  !> (column-major, as ke(a, b)); 0 when skipped.
-  subroutine build_slot_map(elem_ptr, elem_eq, symmetric, row_ptr, col, slot_ptr, slot)
+  !> (column-major, as ke(a, b)); 0 when skipped. With keep, only the elements kept get a map (the others an empty
+  !> one: a process of a distributed run maps only the elements it adds).
+  subroutine build_slot_map(elem_ptr, elem_eq, symmetric, row_ptr, col, slot_ptr, slot, keep)
     integer, intent(in) :: elem_ptr(:)                 !< element CSR pointers into elem_eq
     integer, intent(in) :: elem_eq(:)                  !< equation of each element dof (0 = constrained)
     logical, intent(in) :: symmetric                   !< upper triangle only
@@ -122,6 +123,7 @@ contains
     integer, intent(in) :: col(:)                      !< CSR columns (sorted per row)
     integer(i8), allocatable, intent(out) :: slot_ptr(:) !< start of each element's map, size nelem+1
     integer, allocatable, intent(out) :: slot(:)       !< value index of each element entry (0 = skipped)
+    logical, intent(in), optional :: keep(:)           !< (nelem) the elements to map (default: all)
     integer :: nelem, e, ne, a, b, i, j, k0
     integer(i8) :: p
 
@@ -130,10 +132,14 @@ contains
     slot_ptr(1) = 1
     do e = 1, nelem
       ne = elem_ptr(e + 1) - elem_ptr(e)
+      if (present(keep)) then
+        if (.not. keep(e)) ne = 0
+      end if
       slot_ptr(e + 1) = slot_ptr(e) + int(ne, i8)**2
     end do
     allocate(slot(slot_ptr(nelem + 1) - 1))
     do e = 1, nelem
+      if (slot_ptr(e + 1) == slot_ptr(e)) cycle
       ne = elem_ptr(e + 1) - elem_ptr(e)
       k0 = elem_ptr(e) - 1
       p = slot_ptr(e)
