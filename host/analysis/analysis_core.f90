@@ -25,7 +25,8 @@ module analysis_core
   implicit none
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
-  public :: analysis_restore, pnewdt_large, elem_type_name, n_cost_class, element_geometry
+  public :: analysis_restore, pnewdt_large, elem_type_name, n_cost_class, element_geometry, element_state_allocate
+  public :: continuum_state_dims
 
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
   integer, parameter :: n_cost_class = 3  !< cost classes of elements (cost_class)
@@ -235,32 +236,21 @@ contains
       if (model%steps(is)%unsymm) an%symmetric = .false.
     end do
 
-    ! states
+    call partition(an, model, stat, errmsg)
+    if (stat /= 0) return
+    ! states: of this process's elements only (all in a one-process run; state_gather brings another process's
+    ! converged state where output needs it)
     allocate (an%conv(model%nelem))
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) == etype_user) then
-        n = model%utypes(model%elem_utype(ie))%nsvars
-        allocate (an%conv(ie)%svars(n))
-        an%conv(ie)%svars = 0.0_dp
-      else
+      if (model%elem_kind(ie) /= etype_user) then
         call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, ntens, ndi, nshr, nextra)
         an%elem_nip(ie) = nip
-        is = model%elem_section(ie)
-        ! STATEV rows: the material's NSTATV, then the element's own (incompatible-mode parameters)
-        allocate (an%conv(ie)%stress(ntens, nip), an%conv(ie)%stran(ntens, nip), &
-          an%conv(ie)%statev(max(1, an%mats(is)%nstatv + nextra), nip), an%conv(ie)%eip(3, nip))
-        an%conv(ie)%stress = 0.0_dp
-        an%conv(ie)%stran = 0.0_dp
-        an%conv(ie)%statev = 0.0_dp
-        an%conv(ie)%eip = 0.0_dp
       end if
-      an%conv(ie)%energy = 0.0_dp
+      if (an%owned(ie)) call element_state_allocate(an, model, ie, an%conv(ie))
     end do
     call element_axes(an, model, stat, errmsg)
     if (stat /= 0) return
     call apply_initial_conditions(an, model, stat, errmsg)
-    if (stat /= 0) return
-    call partition(an, model, stat, errmsg)
     if (stat /= 0) return
     ! reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
     ! process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
@@ -761,6 +751,46 @@ contains
     end do
   end subroutine element_axes
 
+  !> State arrays of element ie, zero, in the shapes the model gives it: a user element's SVARS (NSVARS), a
+  !> continuum element's stress and strain (ntens x nip), STATEV (the material's NSTATV, then the element's own
+  !> incompatible-mode parameters, x nip) and energy densities (3 x nip).
+  subroutine element_state_allocate(an, model, ie, state)
+    type(analysis_t), intent(in) :: an              !< analysis data (materials, element type names)
+    type(model_t), intent(in) :: model              !< the model
+    integer, intent(in) :: ie                       !< element
+    type(elem_state_t), intent(inout) :: state      !< its state (any earlier arrays replaced)
+    integer :: d(3)
+    if (allocated(state%stress)) deallocate (state%stress)
+    if (allocated(state%stran)) deallocate (state%stran)
+    if (allocated(state%statev)) deallocate (state%statev)
+    if (allocated(state%eip)) deallocate (state%eip)
+    if (allocated(state%svars)) deallocate (state%svars)
+    state%energy = 0.0_dp
+    if (model%elem_kind(ie) == etype_user) then
+      allocate (state%svars(model%utypes(model%elem_utype(ie))%nsvars))
+      state%svars = 0.0_dp
+      return
+    end if
+    d = continuum_state_dims(an, model, ie)
+    allocate (state%stress(d(1), d(2)), state%stran(d(1), d(2)), state%statev(d(3), d(2)), state%eip(3, d(2)))
+    state%stress = 0.0_dp
+    state%stran = 0.0_dp
+    state%statev = 0.0_dp
+    state%eip = 0.0_dp
+  end subroutine element_state_allocate
+
+  !> Dimensions of continuum element ie's state arrays: ntens, nip, and the STATEV rows (the material's NSTATV,
+  !> then the element's own incompatible-mode parameters; at least 1).
+  pure function continuum_state_dims(an, model, ie) result(d)
+    type(analysis_t), intent(in) :: an              !< analysis data (materials, element type names)
+    type(model_t), intent(in) :: model              !< the model
+    integer, intent(in) :: ie                       !< continuum element
+    integer :: d(3)
+    integer :: nnode, ndim, nip, ntens, ndi, nshr, nextra
+    call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, ntens, ndi, nshr, nextra)
+    d = [ntens, nip, max(1, an%mats(model%elem_section(ie))%nstatv + nextra)]
+  end function continuum_state_dims
+
   !> Reference data (solid_element_geometry) of continuum element ie: this process's stored copy, or computed here
   !> when it keeps none (another process's element in a distributed run, or before analysis_init stores them).
   subroutine element_geometry(an, model, ie, g)
@@ -886,10 +916,11 @@ contains
     type(model_t), intent(in) :: model                   !< the model
     integer, intent(out) :: stat                         !< 0 ok, 2 model error
     character(len=:), allocatable, intent(out) :: errmsg !< message
-    integer :: k, j, ie, nt, nv, ip
+    integer :: k, j, ie, nt, nv, ip, nnode, ndim, nip, ndi, nshr, nextra
     character(len=16) :: b, c
     stat = 0
     errmsg = ''
+    ! every element is checked on every process (the same errors everywhere); the values go to this process's own
     do k = 1, model%ninit
       associate (ic => model%inits(k))
         do j = 1, size(ic%elems)
@@ -904,7 +935,7 @@ contains
           end if
           nv = size(ic%values)
           if (ic%kind == 1) then
-            nt = size(an%conv(ie)%stress, 1)
+            call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, nt, ndi, nshr, nextra)
             if (nv > nt) then
               if (any(ic%values(nt + 1:) /= 0.0_dp)) then
                 stat = 2
@@ -913,6 +944,7 @@ contains
                 return
               end if
             end if
+            if (.not. an%owned(ie)) cycle
             do ip = 1, size(an%conv(ie)%stress, 2)
               an%conv(ie)%stress(1:min(nt, nv), ip) = ic%values(1:min(nt, nv))
             end do
@@ -925,6 +957,7 @@ contains
                 'values on one logical data line (continue lines with a trailing comma)'
               return
             end if
+            if (.not. an%owned(ie)) cycle
             do ip = 1, size(an%conv(ie)%statev, 2)
               an%conv(ie)%statev(1:nv, ip) = ic%values
             end do

@@ -166,8 +166,8 @@ contains
     integer :: ie, nmax, k
     nmax = 0
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) /= etype_user .and. allocated(an%conv(ie)%statev)) &
-        nmax = max(nmax, an%mats(model%elem_section(ie))%nstatv, 1)
+      ! every continuum element of the model, not only this process's, so that every piece has the same arrays
+      if (model%elem_kind(ie) /= etype_user) nmax = max(nmax, an%mats(model%elem_section(ie))%nstatv, 1)
     end do
     if (step%out_sdv_all) then
       idx = [(k, k = 1, nmax)]

@@ -24,8 +24,9 @@ module restart_file
   character(len=8), parameter :: restart_magic = 'LDFCZRST'  !< first 8 bytes of a restart file
   character(len=8), parameter :: end_magic = 'LDFCZEND'      !< last 8 bytes
   !> format version: 6 adds the summary record's size to the header (version 5 files of builds before and after
-  !> the summary gained a field could not be told apart)
-  integer, parameter :: restart_version = 6
+  !> the summary gained a field could not be told apart); 7: a process of a distributed run writes the states of
+  !> its own elements only (the others as absent), which a version 6 reader would take for another model
+  integer, parameter :: restart_version = 7
 
   !> The solver state at the end of a converged increment (element states are passed separately).
   type :: restart_state_t

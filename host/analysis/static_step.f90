@@ -23,7 +23,7 @@ module static_step
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
   use field_frame, only: write_field_frame
   use print_tables, only: print_tables_any, print_tables_write, print_tables_elements
-  use state_gather, only: gather_converged_states
+  use state_gather, only: gather_converged_states, release_converged_states
   use stop_report, only: stop_message
   use plane_stress_notice, only: plane_stress_umat_warnings
   use solver_text, only: itoa, rtoa
@@ -55,6 +55,7 @@ contains
     character(len=96), allocatable :: colnames(:)
     character(len=512), allocatable :: notes(:)
     integer, allocatable :: col_set(:), col_var(:)
+    integer, allocatable :: printed(:)        !< elements of the *EL PRINT tables due (gathered, then released)
     real(dp), allocatable :: r(:), ratios(:), colv(:)
     logical, allocatable :: bc_was_on(:)
     type(analysis_state_t) :: s        !< the increment loop's state (what a restart file holds)
@@ -476,11 +477,15 @@ contains
           end do
           call output_csv_row(out, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, colv)
           s%csv_rows = s%csv_rows + 1
-          ! rank 0 prints: the states of the other processes' printed elements first (every process takes part)
-          if (print_tables_any(model)) call gather_converged_states(an, &
-            print_tables_elements(model, st, s%kinc, step_control_done(s%sc)))
+          ! rank 0 prints: the states of the other processes' printed elements first (every process takes part),
+          ! released after the tables
+          if (print_tables_any(model)) then
+            printed = print_tables_elements(model, st, s%kinc, step_control_done(s%sc))
+            call gather_converged_states(an, model, printed)
+          end if
           if (dat /= -1) call print_tables_write(dat, model, an, st, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, dt, &
             step_control_done(s%sc))
+          if (print_tables_any(model)) call release_converged_states(an, printed)
           if (st%field_output) then
             if (st%field_intervals > 0) then
               if (s%sc%t >= s%next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(s%sc)) then
