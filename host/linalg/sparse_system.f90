@@ -73,7 +73,9 @@ module sparse_system
     real(dp) :: factor_min_flops = huge(1.0_dp)     !< operations from which a factorization is large
     type(parallel_t) :: par                         !< processes of the run (distributed: several)
     logical :: distributed = .false.                !< this process adds its own elements only
-    integer, allocatable :: loc_entry(:)            !< distributed: the MUMPS values this process gives
+    !> distributed, during the setup: the entries (or symmetric-factor pairs) of the global pattern this process gives
+    !> MUMPS; afterwards its arrays hold those alone (keep_local_entries)
+    integer, allocatable :: loc_entry(:)
     !> distributed: the entries this process's elements touch, row by row (mv_entry; mv_row(r)'s are
     !> mv_entry(mv_ptr(r):mv_ptr(r+1)-1)): the only nonzero values of its part of a product (sparse_matvec)
     integer, allocatable :: mv_row(:), mv_ptr(:), mv_entry(:)
@@ -149,11 +151,10 @@ contains
     call build_pattern(neq, elem_ptr, elem_eq(1:elem_ptr(nelem + 1) - 1), symmetric, sys%row_ptr, sys%jcn, &
                        stat, errmsg)
     if (stat /= 0) return
-    allocate(sys%irn(size(sys%jcn)), sys%val(size(sys%jcn)))
+    allocate(sys%irn(size(sys%jcn)))
     do i = 1, neq
       sys%irn(sys%row_ptr(i):sys%row_ptr(i + 1) - 1) = i
     end do
-    sys%val = 0.0_dp
     ! a process of a distributed run maps only its own elements (the maps of all elements are 2.3 kB a C3D8 on
     ! every process otherwise: 50 MB on the paper's application mesh)
     if (present(par) .and. present(owned)) then
@@ -194,9 +195,15 @@ contains
       sys%par = par
       sys%distributed = parallel_distributed(par) .and. present(owned)
     end if
+    ! the values of the whole pattern; a distributed process's, of its own entries, come with keep_local_entries
+    ! (not allocated whole meanwhile: the setup's peak is a process's peak memory)
+    if (.not. sys%distributed) then
+      allocate(sys%val(size(sys%jcn)))
+      sys%val = 0.0_dp
+    end if
     if (sys%distributed) then
       ! the entries this process's elements touch
-      allocate(touched(size(sys%val)))
+      allocate(touched(size(sys%jcn)))
       touched = .false.
       do k = 1, nelem
         if (.not. owned(k)) cycle
@@ -209,7 +216,7 @@ contains
     if (sys%sym_factors) then
       ! the upper triangle of the (structurally symmetric: element pattern) full pattern and each entry's mirror
       m = count(sys%irn <= sys%jcn)
-      allocate(sys%up_entry(m), sys%lo_entry(m), sys%val_sym(m))
+      allocate(sys%up_entry(m), sys%lo_entry(m))
       m = 0
       do k = 1, size(sys%jcn)
         i = sys%irn(k)
@@ -224,29 +231,75 @@ contains
           return
         end if
       end do
-      sys%val_sym = 0.0_dp
       if (sys%distributed) then
         sys%loc_entry = pack([(k, k = 1, m)], touched(sys%up_entry) .or. touched(sys%lo_entry))
         call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry(sys%loc_entry)), &
           sys%jcn(sys%up_entry(sys%loc_entry)), sys%eq_position, stat, errmsg, single=sys%single_factors, &
           comm=sys%par%comm, rank=sys%par%rank)
       else
+        allocate(sys%val_sym(m))
+        sys%val_sym = 0.0_dp
         call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
           sys%eq_position, stat, errmsg, single=sys%single_factors)
       end if
     else if (sys%distributed) then
-      sys%loc_entry = pack([(k, k = 1, size(sys%val))], touched)
+      sys%loc_entry = pack([(k, k = 1, size(sys%jcn))], touched)
       call mumps_analyse(sys%solver, symmetric, neq, sys%irn(sys%loc_entry), sys%jcn(sys%loc_entry), &
         sys%eq_position, stat, errmsg, single=sys%single_factors, comm=sys%par%comm, rank=sys%par%rank)
     else
       call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg, &
         single=sys%single_factors)
     end if
+    ! a process of a distributed run keeps the entries its elements touch only, in MUMPS' order
+    if (stat == 0 .and. sys%distributed) call keep_local_entries(sys, touched)
     sys%n_analysis = sys%n_analysis + 1
     sys%t_analysis = sys%t_analysis + seconds_since(c0)
     if (stat /= 0) return
     sys%ready = .true.
   end subroutine sparse_setup
+
+  !> Distributed: the pattern, values, slot maps and product lists shrink to the entries this process's elements
+  !> touch (numbered in the global pattern's order, which is the order of this process's MUMPS input), so that a
+  !> process holds its part of the matrix, not the whole pattern (docs/performance.md "Memory of a process"). With
+  !> symmetric factors, the factor values are those of its input (loc_entry's pairs). The global row pointers go.
+  subroutine keep_local_entries(sys, touched)
+    type(sparse_system_t), intent(inout) :: sys     !< distributed system after its MUMPS analysis
+    logical, intent(in) :: touched(:)               !< entries of the global pattern this process's elements touch
+    integer, allocatable :: gl2loc(:), up(:), lo(:)
+    integer :: k, n
+    integer(i8) :: q
+    allocate (gl2loc(size(touched)))
+    n = 0
+    do k = 1, size(touched)
+      gl2loc(k) = 0
+      if (touched(k)) then
+        n = n + 1
+        gl2loc(k) = n
+      end if
+    end do
+    do q = 1, size(sys%slot, kind=i8)
+      if (sys%slot(q) > 0) sys%slot(q) = gl2loc(sys%slot(q))
+    end do
+    sys%irn = pack(sys%irn, touched)
+    sys%jcn = pack(sys%jcn, touched)
+    if (allocated(sys%val)) deallocate (sys%val)
+    allocate (sys%val(n))
+    sys%val = 0.0_dp
+    deallocate (sys%row_ptr)
+    sys%mv_entry = gl2loc(sys%mv_entry)
+    if (sys%sym_factors) then
+      up = gl2loc(sys%up_entry(sys%loc_entry))
+      lo = gl2loc(sys%lo_entry(sys%loc_entry))
+      ! an element that touches (i, j) touches (j, i): both halves of every pair are this process's
+      if (any(up == 0) .or. any(lo == 0)) error stop 'keep_local_entries: a mirror entry is not touched'
+      call move_alloc(up, sys%up_entry)
+      call move_alloc(lo, sys%lo_entry)
+      if (allocated(sys%val_sym)) deallocate (sys%val_sym)
+      allocate (sys%val_sym(size(sys%up_entry)))
+      sys%val_sym = 0.0_dp
+    end if
+    if (allocated(sys%loc_entry)) deallocate (sys%loc_entry)
+  end subroutine keep_local_entries
 
   !> Set all matrix values to zero (pattern kept).
   subroutine sparse_zero(sys)
@@ -313,15 +366,10 @@ contains
     ! (docs/performance.md, "BLAS threads")
     wide = sys%factor_threads > 1 .and. mumps_factor_flops(sys%solver) >= sys%factor_min_flops
     if (wide) wide = blas_threads_set(sys%factor_threads)
+    ! (distributed: a process's values are its MUMPS input, keep_local_entries)
     if (sys%sym_factors) then
       sys%val_sym = 0.5_dp * (sys%val(sys%up_entry) + sys%val(sys%lo_entry))
-      if (sys%distributed) then
-        call mumps_factorize(sys%solver, sys%val_sym(sys%loc_entry), stat, errmsg)
-      else
-        call mumps_factorize(sys%solver, sys%val_sym, stat, errmsg)
-      end if
-    else if (sys%distributed) then
-      call mumps_factorize(sys%solver, sys%val(sys%loc_entry), stat, errmsg)
+      call mumps_factorize(sys%solver, sys%val_sym, stat, errmsg)
     else
       call mumps_factorize(sys%solver, sys%val, stat, errmsg)
     end if
