@@ -65,8 +65,10 @@ module analysis_core
     integer, allocatable :: elem_nip(:)         !< integration points per element (continuum)
     character(len=8), allocatable :: elem_tname(:) !< Abaqus element type name ('C3D8', ...) or 'U'
     type(solid_material_t), allocatable :: mats(:)  !< per section
-    type(elem_state_t), allocatable :: conv(:)  !< converged state
-    type(elem_state_t), allocatable :: trial(:) !< state of the last element loop
+    !> (nelem) converged state; a distributed process allocates its own elements' only (state_gather brings
+    !> another's where output needs it)
+    type(elem_state_t), allocatable :: conv(:)
+    type(elem_state_t), allocatable :: trial(:) !< state of the last element loop (the same elements)
     type(elem_axes_t), allocatable :: axes(:)   !< (nelem) local material axes (*ORIENTATION)
     real(dp), allocatable :: u(:)               !< current total displacement
     real(dp), allocatable :: u_conv(:)          !< converged displacement
@@ -91,8 +93,10 @@ module analysis_core
     integer :: ncolor = 0                       !< element colours (element_colors: no shared dof within one)
     integer, allocatable :: color_ptr(:)        !< (ncolor+1) into color_elem
     integer, allocatable :: color_elem(:)       !< (nelem) elements by colour
-    integer, allocatable :: elem_geo(:)         !< (nelem) index into geo of a continuum element, 0 for user elements
-    type(solid_geometry_t), allocatable :: geo(:)  !< reference data of the continuum elements (computed once)
+    !> (nelem) index into geo of a continuum element this process computes, 0 otherwise (user elements, other
+    !> processes' elements: element_geometry computes theirs)
+    integer, allocatable :: elem_geo(:)
+    type(solid_geometry_t), allocatable :: geo(:)  !< reference data of those elements (computed once)
     real(dp) :: t_factor_done = 0.0_dp          !< factorization seconds of earlier sparse systems (pattern changes)
     real(dp) :: t_solve_done = 0.0_dp           !< solve seconds of earlier sparse systems
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
