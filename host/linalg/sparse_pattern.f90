@@ -13,7 +13,7 @@ module sparse_pattern
 contains
 
   !> CSR pattern (row_ptr, col) of sum over elements of the element couplings among free equations.
-  subroutine build_pattern(neq, elem_ptr, elem_eq, symmetric, row_ptr, col, stat, errmsg)
+  subroutine build_pattern(neq, elem_ptr, elem_eq, symmetric, row_ptr, col, stat, errmsg, empty_rows)
     integer, intent(in) :: neq                        !< number of equations
     integer, intent(in) :: elem_ptr(:)                !< element CSR pointers into elem_eq
     integer, intent(in) :: elem_eq(:)                 !< equation of each element dof (0 = constrained)
@@ -22,13 +22,19 @@ contains
     integer, allocatable, intent(out) :: col(:)       !< CSR column indices, sorted in each row
     integer, intent(out) :: stat                      !< 0 on success
     character(len=*), intent(out) :: errmsg           !< reason on failure
+    !> true: rows without entries are allowed (the part of a distributed process, whose elements touch some
+    !> equations only); default false: an equation of no element is an error
+    logical, intent(in), optional :: empty_rows
     character(len=*), parameter :: here = 'build_pattern'
     integer, allocatable :: qe_ptr(:), qe_elem(:), fill(:), mark(:)
     integer :: nelem, e, k, i, j, m, cnt, pos
     integer(i8) :: total
+    logical :: allow_empty
 
     stat = 0
     errmsg = ''
+    allow_empty = .false.
+    if (present(empty_rows)) allow_empty = empty_rows
     nelem = size(elem_ptr) - 1
     if (any(elem_eq < 0) .or. any(elem_eq > neq)) then
       stat = 1
@@ -78,7 +84,7 @@ contains
           end if
         end do
       end do
-      if (cnt == 0) then
+      if (cnt == 0 .and. .not. allow_empty) then
         stat = 2
         write(errmsg, '(a,a,i0,a)') here, ': equation ', i, ' belongs to no element (empty row)'
         return

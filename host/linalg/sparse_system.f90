@@ -23,8 +23,8 @@
 !> in the same way: half the factor storage and memory traffic of the double-precision ones.
 !>
 !> Distributed (sparse_setup with a parallel context of several processes and the elements this process owns):
-!> every process keeps the whole pattern but adds only its own elements, and hands MUMPS (distributed assembled
-!> input, mumps_solver) only the entries its elements touch; MUMPS sums what several processes give. Each process
+!> every process builds the pattern of its own elements only, adds its own elements into it, and hands MUMPS
+!> (distributed assembled input, mumps_solver) those entries; MUMPS sums what several processes give. Each process
 !> gives MUMPS a block of the right-hand side's rows and receives its piece of the solution, and the pieces are
 !> gathered on every process (one all-gather; the solution comes back on rank 0 and is broadcast only when
 !> LDFCZ_MUMPS_CENTRAL_RHS asks for MUMPS' central vectors); products A x sum the processes' parts
@@ -73,12 +73,6 @@ module sparse_system
     real(dp) :: factor_min_flops = huge(1.0_dp)     !< operations from which a factorization is large
     type(parallel_t) :: par                         !< processes of the run (distributed: several)
     logical :: distributed = .false.                !< this process adds its own elements only
-    !> distributed, during the setup: the entries (or symmetric-factor pairs) of the global pattern this process gives
-    !> MUMPS; afterwards its arrays hold those alone (keep_local_entries)
-    integer, allocatable :: loc_entry(:)
-    !> distributed: the entries this process's elements touch, row by row (mv_entry; mv_row(r)'s are
-    !> mv_entry(mv_ptr(r):mv_ptr(r+1)-1)): the only nonzero values of its part of a product (sparse_matvec)
-    integer, allocatable :: mv_row(:), mv_ptr(:), mv_entry(:)
     real(dp) :: t_analysis = 0.0_dp                 !< wall seconds in setup (pattern, ordering, analysis)
     real(dp) :: t_factor = 0.0_dp                   !< wall seconds in factorizations
     real(dp) :: t_solve = 0.0_dp                    !< wall seconds in solves
@@ -107,8 +101,7 @@ contains
     type(parallel_t), intent(in), optional :: par   !< processes of the run (default: this one alone)
     logical, intent(in), optional :: owned(:)       !< (nelem) the elements this process adds (with par)
     character(len=*), parameter :: here = 'sparse_setup'
-    logical, allocatable :: touched(:)
-    integer, allocatable :: xadj(:), adjncy(:), node_position(:)
+    integer, allocatable :: xadj(:), adjncy(:), node_position(:), own_eq(:)
     integer :: nnode, nelem, i, k, m, j
     integer(i8) :: c0
     logical :: metis
@@ -147,29 +140,45 @@ contains
     end if
     sys%neq = neq
     sys%symmetric = symmetric
+    sys%distributed = .false.
+    if (present(par)) then
+      sys%par = par
+      sys%distributed = parallel_distributed(par) .and. present(owned)
+    end if
 
-    call build_pattern(neq, elem_ptr, elem_eq(1:elem_ptr(nelem + 1) - 1), symmetric, sys%row_ptr, sys%jcn, &
-                       stat, errmsg)
+    ! a process of a distributed run builds its part of the matrix only: the pattern of its own elements (the others
+    ! as if all their dofs were constrained). Its entries are its MUMPS input (MUMPS sums the entries that several
+    ! processes give) and its part of every product; the whole pattern is never built (docs/performance.md, "Memory
+    ! of a process")
+    if (sys%distributed) then
+      own_eq = elem_eq(1:elem_ptr(nelem + 1) - 1)
+      do k = 1, nelem
+        if (.not. owned(k)) own_eq(elem_ptr(k):elem_ptr(k + 1) - 1) = 0
+      end do
+      call build_pattern(neq, elem_ptr, own_eq, symmetric, sys%row_ptr, sys%jcn, stat, errmsg, empty_rows=.true.)
+      deallocate (own_eq)
+    else
+      call build_pattern(neq, elem_ptr, elem_eq(1:elem_ptr(nelem + 1) - 1), symmetric, sys%row_ptr, sys%jcn, &
+                         stat, errmsg)
+    end if
     if (stat /= 0) return
-    allocate(sys%irn(size(sys%jcn)))
+    allocate(sys%irn(size(sys%jcn)), sys%val(size(sys%jcn)))
     do i = 1, neq
       sys%irn(sys%row_ptr(i):sys%row_ptr(i + 1) - 1) = i
     end do
-    ! a process of a distributed run maps only its own elements (the maps of all elements are 2.3 kB a C3D8 on
-    ! every process otherwise: 50 MB on the paper's application mesh)
-    if (present(par) .and. present(owned)) then
-      if (parallel_distributed(par)) then
-        call build_slot_map(elem_ptr, elem_eq, symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot, keep=owned)
-      else
-        call build_slot_map(elem_ptr, elem_eq, symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot)
-      end if
+    sys%val = 0.0_dp
+    ! and maps only its own elements (the maps of all elements are 2.3 kB a C3D8: 50 MB on the paper's application
+    ! mesh)
+    if (sys%distributed) then
+      call build_slot_map(elem_ptr, elem_eq, symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot, keep=owned)
     else
       call build_slot_map(elem_ptr, elem_eq, symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot)
     end if
     allocate(sys%elem_size(nelem))
     sys%elem_size = elem_ptr(2:) - elem_ptr(:nelem)
 
-    ! Fill-reducing order: METIS nested dissection of the node graph, expanded to equations.
+    ! Fill-reducing order: METIS nested dissection of the node graph (of every element: the same order on every
+    ! process), expanded to equations.
     nnode = maxval(eq_node)
     allocate(sys%eq_position(neq))
     if (metis) then
@@ -190,33 +199,10 @@ contains
     if (present(symmetric_factors)) sys%sym_factors = symmetric_factors .and. .not. symmetric
     sys%single_factors = .false.
     if (present(single_factors)) sys%single_factors = single_factors
-    sys%distributed = .false.
-    if (present(par)) then
-      sys%par = par
-      sys%distributed = parallel_distributed(par) .and. present(owned)
-    end if
-    ! the values of the whole pattern; a distributed process's, of its own entries, come with keep_local_entries
-    ! (not allocated whole meanwhile: the setup's peak is a process's peak memory)
-    if (.not. sys%distributed) then
-      allocate(sys%val(size(sys%jcn)))
-      sys%val = 0.0_dp
-    end if
-    if (sys%distributed) then
-      ! the entries this process's elements touch
-      allocate(touched(size(sys%jcn)))
-      touched = .false.
-      do k = 1, nelem
-        if (.not. owned(k)) cycle
-        do j = 0, sys%elem_size(k)**2 - 1
-          if (sys%slot(sys%slot_ptr(k) + j) > 0) touched(sys%slot(sys%slot_ptr(k) + j)) = .true.
-        end do
-      end do
-      call local_rows(sys, touched)
-    end if
     if (sys%sym_factors) then
       ! the upper triangle of the (structurally symmetric: element pattern) full pattern and each entry's mirror
       m = count(sys%irn <= sys%jcn)
-      allocate(sys%up_entry(m), sys%lo_entry(m))
+      allocate(sys%up_entry(m), sys%lo_entry(m), sys%val_sym(m))
       m = 0
       do k = 1, size(sys%jcn)
         i = sys%irn(k)
@@ -231,75 +217,26 @@ contains
           return
         end if
       end do
+      sys%val_sym = 0.0_dp
       if (sys%distributed) then
-        sys%loc_entry = pack([(k, k = 1, m)], touched(sys%up_entry) .or. touched(sys%lo_entry))
-        call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry(sys%loc_entry)), &
-          sys%jcn(sys%up_entry(sys%loc_entry)), sys%eq_position, stat, errmsg, single=sys%single_factors, &
-          comm=sys%par%comm, rank=sys%par%rank)
+        call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
+          sys%eq_position, stat, errmsg, single=sys%single_factors, comm=sys%par%comm, rank=sys%par%rank)
       else
-        allocate(sys%val_sym(m))
-        sys%val_sym = 0.0_dp
         call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
           sys%eq_position, stat, errmsg, single=sys%single_factors)
       end if
     else if (sys%distributed) then
-      sys%loc_entry = pack([(k, k = 1, size(sys%jcn))], touched)
-      call mumps_analyse(sys%solver, symmetric, neq, sys%irn(sys%loc_entry), sys%jcn(sys%loc_entry), &
-        sys%eq_position, stat, errmsg, single=sys%single_factors, comm=sys%par%comm, rank=sys%par%rank)
+      call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg, &
+        single=sys%single_factors, comm=sys%par%comm, rank=sys%par%rank)
     else
       call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg, &
         single=sys%single_factors)
     end if
-    ! a process of a distributed run keeps the entries its elements touch only, in MUMPS' order
-    if (stat == 0 .and. sys%distributed) call keep_local_entries(sys, touched)
     sys%n_analysis = sys%n_analysis + 1
     sys%t_analysis = sys%t_analysis + seconds_since(c0)
     if (stat /= 0) return
     sys%ready = .true.
   end subroutine sparse_setup
-
-  !> Distributed: the pattern, values, slot maps and product lists shrink to the entries this process's elements
-  !> touch (numbered in the global pattern's order, which is the order of this process's MUMPS input), so that a
-  !> process holds its part of the matrix, not the whole pattern (docs/performance.md "Memory of a process"). With
-  !> symmetric factors, the factor values are those of its input (loc_entry's pairs). The global row pointers go.
-  subroutine keep_local_entries(sys, touched)
-    type(sparse_system_t), intent(inout) :: sys     !< distributed system after its MUMPS analysis
-    logical, intent(in) :: touched(:)               !< entries of the global pattern this process's elements touch
-    integer, allocatable :: gl2loc(:), up(:), lo(:)
-    integer :: k, n
-    integer(i8) :: q
-    allocate (gl2loc(size(touched)))
-    n = 0
-    do k = 1, size(touched)
-      gl2loc(k) = 0
-      if (touched(k)) then
-        n = n + 1
-        gl2loc(k) = n
-      end if
-    end do
-    do q = 1, size(sys%slot, kind=i8)
-      if (sys%slot(q) > 0) sys%slot(q) = gl2loc(sys%slot(q))
-    end do
-    sys%irn = pack(sys%irn, touched)
-    sys%jcn = pack(sys%jcn, touched)
-    if (allocated(sys%val)) deallocate (sys%val)
-    allocate (sys%val(n))
-    sys%val = 0.0_dp
-    deallocate (sys%row_ptr)
-    sys%mv_entry = gl2loc(sys%mv_entry)
-    if (sys%sym_factors) then
-      up = gl2loc(sys%up_entry(sys%loc_entry))
-      lo = gl2loc(sys%lo_entry(sys%loc_entry))
-      ! an element that touches (i, j) touches (j, i): both halves of every pair are this process's
-      if (any(up == 0) .or. any(lo == 0)) error stop 'keep_local_entries: a mirror entry is not touched'
-      call move_alloc(up, sys%up_entry)
-      call move_alloc(lo, sys%lo_entry)
-      if (allocated(sys%val_sym)) deallocate (sys%val_sym)
-      allocate (sys%val_sym(size(sys%up_entry)))
-      sys%val_sym = 0.0_dp
-    end if
-    if (allocated(sys%loc_entry)) deallocate (sys%loc_entry)
-  end subroutine keep_local_entries
 
   !> Set all matrix values to zero (pattern kept).
   subroutine sparse_zero(sys)
@@ -366,7 +303,7 @@ contains
     ! (docs/performance.md, "BLAS threads")
     wide = sys%factor_threads > 1 .and. mumps_factor_flops(sys%solver) >= sys%factor_min_flops
     if (wide) wide = blas_threads_set(sys%factor_threads)
-    ! (distributed: a process's values are its MUMPS input, keep_local_entries)
+    ! (distributed: a process's values, of its own elements' pattern, are its MUMPS input)
     if (sys%sym_factors) then
       sys%val_sym = 0.5_dp * (sys%val(sys%up_entry) + sys%val(sys%lo_entry))
       call mumps_factorize(sys%solver, sys%val_sym, stat, errmsg)
@@ -451,11 +388,8 @@ contains
 
     y = 0.0_dp
     if (.not. allocated(sys%val)) return
-    if (sys%distributed) then
-      ! this process's part: its values are zero outside the entries its elements touch, so only those are
-      ! multiplied (the same sums in the same order as over the whole rows: adding an exact zero changes nothing)
-      call local_matvec(sys, x, y)
-    else if (sys%symmetric) then
+    ! (distributed: this process's part, over the pattern of its own elements, then summed)
+    if (sys%symmetric) then
       call symmetric_product(sys, x, y)
     else
       ! full storage: rows are independent, so the product is threaded over rows (same sum order as serial)
@@ -472,71 +406,14 @@ contains
     if (sys%distributed) call parallel_sum(sys%par, y)
   end subroutine sparse_matvec
 
-  !> The rows of the entries this process's elements touch and those entries row by row (entries are numbered
-  !> row by row, so packing keeps that order).
-  subroutine local_rows(sys, touched)
-    type(sparse_system_t), intent(inout) :: sys     !< system with its pattern
-    logical, intent(in) :: touched(:)               !< entries this process's elements touch
-    integer :: k, r, p
-
-    sys%mv_entry = pack([(k, k = 1, size(touched))], touched)
-    r = 0
-    do p = 1, size(sys%mv_entry)
-      if (p == 1) then
-        r = r + 1
-      else if (sys%irn(sys%mv_entry(p)) /= sys%irn(sys%mv_entry(p - 1))) then
-        r = r + 1
-      end if
-    end do
-    allocate (sys%mv_row(r), sys%mv_ptr(r + 1))
-    r = 0
-    do p = 1, size(sys%mv_entry)
-      if (p > 1) then
-        if (sys%irn(sys%mv_entry(p)) == sys%irn(sys%mv_entry(p - 1))) cycle
-      end if
-      r = r + 1
-      sys%mv_row(r) = sys%irn(sys%mv_entry(p))
-      sys%mv_ptr(r) = p
-    end do
-    sys%mv_ptr(r + 1) = size(sys%mv_entry) + 1
-  end subroutine local_rows
-
-  !> y = (this process's part of A) x over the entries its elements touch (y zero elsewhere).
-  subroutine local_matvec(sys, x, y)
-    type(sparse_system_t), intent(in) :: sys        !< distributed system
-    real(dp), intent(in) :: x(:)                    !< vector (size neq)
-    real(dp), intent(inout) :: y(:)                 !< product (size neq), zero on entry
-    integer :: r, p
-    real(dp) :: acc
-
-    if (sys%symmetric) then
-      call symmetric_product(sys, x, y, sys%mv_entry)
-    else
-      !$omp parallel do schedule(static) private(p, acc) if (size(sys%mv_row) > 2000)
-      do r = 1, size(sys%mv_row)
-        acc = 0.0_dp
-        do p = sys%mv_ptr(r), sys%mv_ptr(r + 1) - 1
-          acc = acc + sys%val(sys%mv_entry(p)) * x(sys%jcn(sys%mv_entry(p)))
-        end do
-        y(sys%mv_row(r)) = acc
-      end do
-      !$omp end parallel do
-    end if
-  end subroutine local_matvec
-
-  !> y += A x for the stored upper triangle mirrored, over the given entries (all when absent), in their order.
-  subroutine symmetric_product(sys, x, y, entries)
+  !> y += A x for the stored upper triangle mirrored, entry by entry in their order.
+  subroutine symmetric_product(sys, x, y)
     type(sparse_system_t), intent(in) :: sys        !< symmetric system
     real(dp), intent(in) :: x(:)                    !< vector (size neq)
     real(dp), intent(inout) :: y(:)                 !< product (size neq)
-    integer, intent(in), optional :: entries(:)     !< entries to multiply
-    integer :: p, k, i, j, n
+    integer :: k, i, j
 
-    n = size(sys%val)
-    if (present(entries)) n = size(entries)
-    do p = 1, n
-      k = p
-      if (present(entries)) k = entries(p)
+    do k = 1, size(sys%val)
       i = sys%irn(k)
       j = sys%jcn(k)
       y(i) = y(i) + sys%val(k) * x(j)
@@ -674,10 +551,6 @@ contains
     if (allocated(sys%up_entry)) deallocate(sys%up_entry)
     if (allocated(sys%lo_entry)) deallocate(sys%lo_entry)
     if (allocated(sys%val_sym)) deallocate(sys%val_sym)
-    if (allocated(sys%loc_entry)) deallocate(sys%loc_entry)
-    if (allocated(sys%mv_row)) deallocate(sys%mv_row)
-    if (allocated(sys%mv_ptr)) deallocate(sys%mv_ptr)
-    if (allocated(sys%mv_entry)) deallocate(sys%mv_entry)
     sys%distributed = .false.
     sys%sym_factors = .false.
     sys%single_factors = .false.
