@@ -26,7 +26,7 @@ module analysis_core
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
   public :: analysis_restore, pnewdt_large, elem_type_name, n_cost_class, element_geometry, element_state_allocate
-  public :: continuum_state_dims
+  public :: continuum_state_dims, element_state_free
 
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
   integer, parameter :: n_cost_class = 3  !< cost classes of elements (cost_class)
@@ -252,10 +252,6 @@ contains
       end if
       if (an%owned(ie)) call element_state_allocate(an, model, ie, an%conv(ie))
     end do
-    call element_axes(an, model, stat, errmsg)
-    if (stat /= 0) return
-    call apply_initial_conditions(an, model, stat, errmsg)
-    if (stat /= 0) return
     ! reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
     ! process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
     ! process's element when output needs it; 41 MB a process on the paper's application mesh when all are kept)
@@ -274,6 +270,10 @@ contains
       call solid_element_geometry(an%elem_tname(ie), &
         model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
     end do
+    call element_axes(an, model, stat, errmsg)
+    if (stat /= 0) return
+    call apply_initial_conditions(an, model, stat, errmsg)
+    if (stat /= 0) return
     call open_loop_trace(an)
     call node_rotations_build(an%nr, model, stat, errmsg)
     if (stat /= 0) return
@@ -764,12 +764,7 @@ contains
     integer, intent(in) :: ie                       !< element
     type(elem_state_t), intent(inout) :: state      !< its state (any earlier arrays replaced)
     integer :: d(3)
-    if (allocated(state%stress)) deallocate (state%stress)
-    if (allocated(state%stran)) deallocate (state%stran)
-    if (allocated(state%statev)) deallocate (state%statev)
-    if (allocated(state%eip)) deallocate (state%eip)
-    if (allocated(state%svars)) deallocate (state%svars)
-    state%energy = 0.0_dp
+    call element_state_free(state)
     if (model%elem_kind(ie) == etype_user) then
       allocate (state%svars(model%utypes(model%elem_utype(ie))%nsvars))
       state%svars = 0.0_dp
@@ -782,6 +777,17 @@ contains
     state%statev = 0.0_dp
     state%eip = 0.0_dp
   end subroutine element_state_allocate
+
+  !> An element state without arrays (another process's element in a distributed run), its energies zero.
+  pure subroutine element_state_free(state)
+    type(elem_state_t), intent(inout) :: state      !< the state
+    if (allocated(state%stress)) deallocate (state%stress)
+    if (allocated(state%stran)) deallocate (state%stran)
+    if (allocated(state%statev)) deallocate (state%statev)
+    if (allocated(state%eip)) deallocate (state%eip)
+    if (allocated(state%svars)) deallocate (state%svars)
+    state%energy = 0.0_dp
+  end subroutine element_state_free
 
   !> Dimensions of continuum element ie's state arrays: ntens, nip, and the STATEV rows (the material's NSTATV,
   !> then the element's own incompatible-mode parameters; at least 1).
@@ -796,7 +802,7 @@ contains
   end function continuum_state_dims
 
   !> Reference data (solid_element_geometry) of continuum element ie: this process's stored copy, or computed here
-  !> when it keeps none (another process's element in a distributed run, or before analysis_init stores them).
+  !> when it keeps none (another process's element in a distributed run).
   subroutine element_geometry(an, model, ie, g)
     type(analysis_t), intent(in) :: an          !< analysis data
     type(model_t), intent(in) :: model          !< the model

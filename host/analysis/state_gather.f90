@@ -4,7 +4,7 @@
 module state_gather
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, etype_user
-  use analysis_core, only: analysis_t, element_state_allocate, continuum_state_dims
+  use analysis_core, only: analysis_t, element_state_allocate, element_state_free, continuum_state_dims
   use parallel_context, only: parallel_distributed, parallel_gather_pieces
   implicit none
   private
@@ -90,12 +90,7 @@ contains
     if (.not. parallel_distributed(an%par)) return
     do k = 1, size(elems)
       ie = elems(k)
-      if (an%owned(ie)) cycle
-      if (allocated(an%conv(ie)%stress)) deallocate (an%conv(ie)%stress)
-      if (allocated(an%conv(ie)%stran)) deallocate (an%conv(ie)%stran)
-      if (allocated(an%conv(ie)%statev)) deallocate (an%conv(ie)%statev)
-      if (allocated(an%conv(ie)%eip)) deallocate (an%conv(ie)%eip)
-      if (allocated(an%conv(ie)%svars)) deallocate (an%conv(ie)%svars)
+      if (.not. an%owned(ie)) call element_state_free(an%conv(ie))
     end do
   end subroutine release_converged_states
 
