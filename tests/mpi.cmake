@@ -49,8 +49,10 @@ ldfcz_add_mpi_test(mpi_peel_ps ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
 # the interleaved partition (4 pieces per process, 3 with 3 processes; the default gives these small decks one)
 ldfcz_add_mpi_test(mpi_peel_ps_interleaved ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
   -- --partition-pieces 4)
-# the small 3D peel (Leonov C3D8 coating, cohesive layer): its first 12 increments (PNEWDT cutbacks included)
-ldfcz_add_mpi_test(mpi_peel_3d ${PROJECT_SOURCE_DIR}/decks/peel/peel_3d_quarter.inp --expect-exit 3
+# the small 3D peel (Leonov C3D8 coating, cohesive layer): its first 12 increments (PNEWDT cutbacks included); with
+# the trace, whose files must hold every loop on every process although the run ends with exit 3 (mpirun ends the
+# other processes as soon as one has exited with a non-zero status: the trace is closed before the processes part)
+ldfcz_add_mpi_test(mpi_peel_3d ${PROJECT_SOURCE_DIR}/decks/peel/peel_3d_quarter.inp --expect-exit 3 --trace
   -- --stop-after-increments 12)
 # *EL PRINT / *NODE PRINT tables, which rank 0 writes: the printed states of elements on other processes are
 # gathered first (JOB.dat equal to the one-process run's to its printed digits)
@@ -86,10 +88,18 @@ ldfcz_add_mpi_restart_test(mpi_restart_cohesive_np2 ${PROJECT_SOURCE_DIR}/decks/
   --np 2 --stop 9 --freq 1 --other-deck ${PROJECT_SOURCE_DIR}/decks/single/cohesive_mode_I.inp)
 ldfcz_add_mpi_restart_test(mpi_restart_umat_np3 ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp
   --np 3 --stop 45 --freq 7)
-# the graceful stop of a distributed run: SIGUSR1 to mpirun, which OpenMPI forwards to every process (on SIGTERM
-# mpirun ends the job itself: the processes are killed without a stop)
+# the graceful stop of a distributed run: SIGUSR1 to mpirun, which OpenMPI forwards to every process at once (SIGTERM
+# it does not forward: mpi_launcher_sigterm below)
 ldfcz_add_mpi_restart_test(mpi_sigusr1_peel_np2 ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp
   --np 2 --stop 20 --freq 100000 --term)
+# SIGTERM to mpirun, which OpenMPI 4 does not forward: it sends the processes SIGTERM odls_base_sigkill_timeout
+# seconds later and SIGKILL as many seconds after that; with a grace of 2 s the processes stop gracefully (closing
+# summary, restart files) on the small 3D peel (tests/mpi/check_launcher_sigterm.py)
+add_test(NAME mpi_launcher_sigterm COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/mpi/check_launcher_sigterm.py
+  --exe $<TARGET_FILE:ldfcz> --deck ${PROJECT_SOURCE_DIR}/decks/peel/peel_3d_quarter.inp
+  --out ${CMAKE_CURRENT_BINARY_DIR}/mpi/launcher_sigterm --grace 2)
+set_tests_properties(mpi_launcher_sigterm PROPERTIES LABELS "mpi;restart" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}"
+  PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
 
 # other Newton variants and preconditioning factors distributed (GMRES products summed over the processes, LDL^T
 # factors of the symmetric part from the processes' entries): the full-Newton iterates, so the same counts

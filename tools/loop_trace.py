@@ -3,13 +3,18 @@
 per element loop; docs/host.md "Diagnostics") and say where the loop-by-loop imbalance of a distributed run comes
 from.
 
-    tools/loop_trace.py PREFIX [--reference SERIAL_PREFIX] [--class all|user|umat|elastic] [--slow 1.3]
-                        [--pool F ...]
+    tools/loop_trace.py PREFIX [--reference SERIAL_PREFIX] [--rerun PREFIX2] [--class all|user|umat|elastic]
+                        [--slow 1.3] [--pool F ...]
 
 Printed:
 - the balance: the processes' totals (largest / mean) and loop by loop (the slowest process of each loop summed,
   against the mean: what the processes wait for at the force reduction);
 - wall against CPU seconds of the loops (a process descheduled inside its loop shows wall > CPU);
+- each process's microseconds per call of each element class over the run, their spread over the processes and
+  the correlation between classes (processes slower in every class: they ran on slower cores, or computed costlier
+  elements of every class); with --rerun, a second run of the same deck and partition on as many processes: the
+  correlation of each process's seconds per call between the two runs (near 1: its elements cost more; near 0:
+  where the process ran decided its speed);
 - the speed factor of each process in each loop: the loop's seconds in the element routines over what its calls
   take at the process's median seconds per call (per element class, over the loops of the same kind: with or
   without the tangent; --class takes one class only, e.g. the user elements, whose cost does not depend on a
@@ -85,6 +90,14 @@ def speed_factors(rows, cls):
     return out
 
 
+def correlation(x, y):
+    """Pearson's correlation to 2 decimals, or a word where it is undefined (a constant series)."""
+    try:
+        return f"{statistics.correlation(x, y):.2f}"
+    except statistics.StatisticsError:
+        return "undefined (constant)"
+
+
 def expected_max(values, p):
     """E[max of p independent draws] from the empirical distribution of values (order statistics)."""
     x = sorted(values)
@@ -150,6 +163,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("prefix", help="LDFCZ_LOOP_TRACE value of the run (PREFIX.rankR.csv)")
     ap.add_argument("--reference", help="the trace of another run (one process) whose speed variation predicts")
+    ap.add_argument("--rerun", help="the trace of a second run of the same deck and partition (as many processes)")
     ap.add_argument("--class", dest="cls", choices=CLASSES + ("all",), default="all",
                     help="element class whose seconds per call measure a process's speed (default: all classes, "
                     "weighted by their time)")
@@ -170,18 +184,51 @@ def main():
 
     totals = [sum(r["loop_s"] for r in rows) for rows in procs]
     cpu = [sum(r["cpu_s"] for r in rows) for rows in procs]
+    # the classes every process called and timed (a class whose seconds round to 0 has no measurable speed)
+    present = [c for c in CLASSES
+               if all(any(r[c + "_calls"] for r in rows) and sum(r[c + "_s"] for r in rows) > 0 for rows in procs)]
+    per_call = [{c: sum(r[c + "_s"] for r in rows) / sum(r[c + "_calls"] for r in rows) for c in present}
+                for rows in procs]
     for k in range(nprocs):
-        print(f"  process {k}: loops {totals[k]:.3f} s wall, {cpu[k]:.3f} s CPU (CPU / wall {cpu[k] / totals[k]:.3f})")
+        calls = ", ".join(f"{c} {1e6 * per_call[k][c]:.2f}" for c in present)
+        print(f"  process {k}: loops {totals[k]:.3f} s wall, {cpu[k]:.3f} s CPU (CPU / wall {cpu[k] / totals[k]:.3f}); "
+              f"us per call: {calls}")
     if nprocs > 1:
         mean_total = statistics.mean(totals)
         sum_max = sum(max(rows[i]["loop_s"] for rows in procs) for i in range(nloops))
         print(f"  balance of the totals: largest / mean {max(totals) / mean_total:.3f}")
         print(f"  loop by loop: slowest process of each loop summed {sum_max:.3f} s, against the mean "
               f"{sum_max / mean_total:.3f}")
+        # a process's own speed over the whole run: the same element class costs each process alike where the
+        # processes run at the same speed (the user elements' cost, unlike a material's, does not depend on state)
+        spread = ", ".join(f"{c} {max(x[c] for x in per_call) / min(x[c] for x in per_call):.2f}" for c in present)
+        print(f"  seconds per call over the run, largest / smallest over the processes: {spread}")
+        if len(present) > 1 and nprocs > 2:   # two points always correlate to +-1
+            for i, c in enumerate(present):
+                for d in present[i + 1:]:
+                    corr = correlation([math.log(x[c]) for x in per_call], [math.log(x[d]) for x in per_call])
+                    print(f"  correlation over the processes of the log seconds per call of {c} and {d}: {corr} "
+                          f"(near 1: some processes ran slower throughout, whatever they computed)")
 
+    if a.rerun:
+        other = read_trace(a.rerun)
+        if len(other) != nprocs:
+            fail(f"--rerun {a.rerun}: {len(other)} processes against {nprocs}")
+        if nprocs < 3:
+            fail("--rerun needs 3 processes or more (two points always correlate to +-1)")
+        for c in present:
+            calls = [sum(r[c + "_calls"] for r in rows) for rows in procs]
+            calls2 = [sum(r[c + "_calls"] for r in rows) for rows in other]
+            if any(abs(x - y) > 0.05 * x for x, y in zip(calls, calls2)):
+                fail(f"--rerun {a.rerun}: the processes' {c} calls differ by more than 5 %: not the same partition")
+            mine = [math.log(x[c]) for x in per_call]
+            if any(sum(r[c + "_s"] for r in rows) <= 0 for rows in other):
+                fail(f"--rerun {a.rerun}: a process's {c} seconds sum to 0")
+            theirs = [math.log(sum(r[c + "_s"] for r in rows) / sum(r[c + "_calls"] for r in rows)) for rows in other]
+            print(f"  rerun {a.rerun}: correlation over the processes of the log seconds per call of {c} between the "
+                  f"two runs: {correlation(mine, theirs)}")
     cls = pick_class(procs, a.cls)
     factors = [speed_factors(rows, cls) for rows in procs]
-    present = [c for c in CLASSES if all(any(r[c + "_calls"] for r in rows) for rows in procs)]
     what = "every class's" if cls == "all" else f"the {cls} class's"
     print(f"  speed factor: {what} seconds per call over the process's median (loops of the same kind)")
     for k in range(nprocs):

@@ -422,8 +422,9 @@ def run_case(label, gen_args, workdir, ldfcz, threads, plateau, solver_args=(), 
         if x is not None and x > progress[-1][1]:
             progress.append((now, x))
         if time_limit > 0 and now > time_limit and not stopped:
-            # OpenMPI's mpirun ends the job itself on SIGTERM (the processes are killed a second later) but forwards
-            # SIGUSR1, the same graceful stop (docs/host.md)
+            # OpenMPI's mpirun does not forward SIGTERM (it sends the processes SIGTERM a second later and SIGKILL a
+            # second after that, too soon for an increment of this scene) but forwards SIGUSR1, the same graceful
+            # stop (docs/host.md)
             proc.send_signal(signal.SIGUSR1 if LAUNCH else signal.SIGTERM)
             stopped = True
     wall = time.time() - t0

@@ -26,7 +26,7 @@ module analysis_core
   private
   public :: analysis_t, elem_state_t, analysis_init, analysis_number_equations, analysis_assemble, analysis_commit
   public :: analysis_restore, pnewdt_large, elem_type_name, n_cost_class, element_geometry, element_state_allocate
-  public :: continuum_state_dims, element_state_free
+  public :: continuum_state_dims, element_state_free, close_loop_trace
 
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
   integer, parameter :: n_cost_class = 3  !< cost classes of elements (cost_class)
@@ -105,6 +105,11 @@ module analysis_core
     !> distributed: the slowest process's seconds of each element loop, summed over the loops (what the run waits
     !> for; against the mean of t_assembly it gives the imbalance loop by loop, not only over the run)
     real(dp) :: t_assembly_slowest = 0.0_dp
+    !> distributed: this process's seconds of each element loop up to the first reduction (what the slowest
+    !> process's time of a loop is the largest of), summed over the loops: the per-process totals of the balance
+    !> line, so that the sum of the loops' largest bounds their largest exactly (t_assembly also counts the few
+    !> statements after the reductions, in which an oversubscribed process may be descheduled)
+    real(dp) :: t_loop_own = 0.0_dp
     !> distributed: seconds this process waited at the end of its element loops for the slowest process (the first
     !> reduction after a loop; part of par%t_comm)
     real(dp) :: t_loop_wait = 0.0_dp
@@ -534,6 +539,7 @@ contains
       comm1 = an%par%t_comm
       loop_slowest = parallel_max(an%par, loop_own)
       an%t_assembly_slowest = an%t_assembly_slowest + loop_slowest
+      an%t_loop_own = an%t_loop_own + loop_own
       an%t_loop_wait = an%t_loop_wait + (an%par%t_comm - comm1)
       ! the processes' parts: forces summed, the smallest PNEWDT, the first failing element and the element that
       ! asked to stop (lowest label or index over the processes), so that every process decides alike
@@ -888,6 +894,16 @@ contains
     write (an%loop_trace, '(a)') 'loop,step,increment,tangent,loop_s,slowest_s,cpu_s,umat_s,elastic_s,user_s,' // &
       'umat_calls,elastic_calls,user_calls'
   end subroutine open_loop_trace
+
+  !> Closes the element-loop trace (when open) at the end of the analysis, before the processes part: left to the
+  !> program's exit, its last lines were lost on the processes that mpirun ended as soon as another one had exited
+  !> with a non-zero status (a run stopped by --stop-after-increments or SIGTERM, exit 3 or 128+n).
+  subroutine close_loop_trace(an)
+    type(analysis_t), intent(inout) :: an  !< analysis data
+    if (an%loop_trace == 0) return
+    close (an%loop_trace)
+    an%loop_trace = 0
+  end subroutine close_loop_trace
 
   !> Pieces per process of the interleaved partition when --partition-pieces is not given: 32, as measured on the
   !> paper's application scene with 2 processes (element loop balance max/mean 1.07 -> 1.01 over its first 62

@@ -31,8 +31,8 @@ module run_summary
     integer :: nranks = 1                       !< processes of the run (MPI)
     real(dp) :: t_comm = 0                      !< wall seconds in the host's reductions and broadcasts (MPI)
     integer :: peak_kb_max = 0                  !< largest VmHWM over the processes (MPI)
-    real(dp) :: t_assembly_max = 0              !< element loop: the slowest process's seconds (MPI)
-    real(dp) :: t_assembly_mean = 0             !< element loop: the mean over the processes (MPI)
+    real(dp) :: t_assembly_max = 0              !< element loops up to their first reduction: the largest total (MPI)
+    real(dp) :: t_assembly_mean = 0             !< element loops up to their first reduction: the processes' mean (MPI)
     real(dp) :: t_assembly_slowest = 0          !< element loop: the slowest process's time of each loop, summed
     real(dp) :: t_loop_wait = 0                 !< rank 0's wait at the end of its element loops (in t_comm)
     real(dp) :: class_time(n_cost_class) = 0    !< seconds in the element routines per cost class, all processes
@@ -96,8 +96,8 @@ contains
     summary%t_output = t_output
     summary%nranks = an%par%nranks
     ! load balance of the element loop and the measured cost of each element class (sums over the processes)
-    summary%t_assembly_max = parallel_max(an%par, an%t_assembly)
-    e(1) = an%t_assembly
+    summary%t_assembly_max = parallel_max(an%par, an%t_loop_own)
+    e(1) = an%t_loop_own
     call parallel_sum(an%par, e)
     summary%t_assembly_mean = e(1) / real(an%par%nranks, dp)
     summary%t_assembly_slowest = an%t_assembly_slowest

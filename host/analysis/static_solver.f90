@@ -5,7 +5,7 @@ module static_solver
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t
-  use analysis_core, only: analysis_t, analysis_init
+  use analysis_core, only: analysis_t, analysis_init, close_loop_trace
   use sparse_system, only: sparse_destroy
   use output_files, only: output_t, output_log
   use user_routines, only: user_routines_t
@@ -61,6 +61,7 @@ contains
     an%factor_blas_threads = opt%factor_blas_threads
     an%factor_min_flops = opt%factor_min_flops
     call run_steps(model, routines, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
+    call close_loop_trace(an)
     if (.not. summarize) return
 
     call run_summary_collect(summary, model, an, out%t_output, fact_offset)

@@ -22,9 +22,10 @@
 5. with --other-deck: a restart of DECK's restart file with DECK2 must be refused (exit 2, "different model").
 Also refused (exit 2): a truncated restart file and a file that is not a restart file.
 With --np N (the LDFCZ_MPI build) every run is `mpirun -np N`: one restart file per process (JOB.rst.RofN, read by a
-run with the same N), the reference and the restart distributed alike; --term sends SIGTERM to the launcher, which
-forwards it to every process (OpenMPI), and the processes must stop together after the increment under way with
-the log, status note and closing summary of a serial stop (mpirun's own exit status is OpenMPI's, not checked).
+run with the same N), the reference and the restart distributed alike; --term sends SIGUSR1 to the launcher, which
+forwards it to every process (OpenMPI; SIGTERM to mpirun is tests/mpi/check_launcher_sigterm.py's), and the
+processes must stop together after the increment under way with the log, status note and closing summary of a
+serial stop (mpirun's own exit status is OpenMPI's, not checked).
 The refusals of damaged files are the serial run's code and are checked there only. Two distributed runs of one
 deck are not bit-identical (MUMPS' parallel factorization sums contribution blocks in message arrival order), so
 the distributed restart is compared within --rel (give 1e-9), frame times too.
@@ -130,8 +131,8 @@ def main():
     rst = os.path.join(cut, job + ".rst")
     rst_file = rst + (".0of%d" % a.np if a.np else "")   # the file of rank 0 when distributed
     if a.np and a.term:
-        # OpenMPI's mpirun ends the job itself on SIGTERM but forwards SIGUSR1 to every process: the graceful stop
-        # of a distributed run is asked for with SIGUSR1 (docs/host.md)
+        # OpenMPI's mpirun forwards SIGUSR1 to every process at once; SIGTERM it does not forward but sends the
+        # processes itself, a grace later, before SIGKILL (docs/host.md, tests/mpi/check_launcher_sigterm.py)
         cmd = base + ["--out", cut, "--restart-write", str(a.freq), run_deck]
         print("$ " + " ".join(cmd) + "  (SIGUSR1 to mpirun after %d rows)" % a.stop)
         p = subprocess.Popen(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
