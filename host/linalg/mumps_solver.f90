@@ -12,7 +12,9 @@
 !>
 !> Debian's sequential MUMPS (libdmumps_seq + libmpiseq_seq) ships a stub MPI: MPI_INIT is a no-op there and
 !> the communicator is only passed through to the stub, so COMM is set to MPI_COMM_WORLD of the stub mpif.h
-!> (/usr/include/mumps_seq/mpif.h) and no MPI_INIT is called.
+!> (/usr/include/mumps_seq/mpif.h). The parallel MUMPS (the LDFCZ_MPI build) needs MPI started: ldfcz starts it
+!> (parallel_init) before any MUMPS call; a program that calls this module without doing so (the unit tests, a
+!> user's own driver of the host library) has it started at its first analysis (mpi_start_if_needed).
 !>
 !> Distributed (the LDFCZ_MPI build, several processes; mumps_analyse with comm): the parallel MUMPS on that
 !> communicator, PAR = 1 (the host works too), the matrix in distributed assembled form (ICNTL(18) = 3: each
@@ -64,6 +66,16 @@ module mumps_solver
 
 contains
 
+  !> MPI started if it is not yet, with threads funnelled as parallel_init starts it (only the thread outside
+  !> OpenMP regions calls MPI): without it the parallel MUMPS stops at its initialisation ("MPI is not running")
+  !> and the instance is unusable. A no-op with the sequential MUMPS' stub MPI.
+  subroutine mpi_start_if_needed()
+    logical :: started
+    integer :: ierr, provided
+    call MPI_Initialized(started, ierr)
+    if (.not. started) call MPI_Init_thread(MPI_THREAD_FUNNELED, provided, ierr)
+  end subroutine mpi_start_if_needed
+
   !> Initialise the instance and run the analysis of the pattern (irn, jcn) with the user pivot order.
   subroutine mumps_analyse(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, single, comm, rank)
     type(mumps_solver_t), intent(inout) :: ms        !< instance (must be fresh or destroyed)
@@ -81,6 +93,7 @@ contains
 
     stat = 0
     errmsg = ''
+    call mpi_start_if_needed()
     if (ms%initialised) call mumps_destroy(ms)
     ms%single = .false.
     if (present(single)) ms%single = single
