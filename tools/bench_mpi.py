@@ -45,6 +45,14 @@ process of each loop summed", against the mean):
 
   tools/bench_mpi.py --scaling 2 8 16 --fine --application --full-width --out reports/bench/scaling
 
+With --refit MD [MD ...] instead: nothing is run; the tables of earlier runs (their bench_mpi.md files, the rows of
+1 rank x 1 thread and R ranks x 1 thread) are read back and the cost model and the scaling report are fitted to
+them all, e.g. the application mesh and its full width measured in separate commands, so that the prediction for
+the full-width specimen on a cluster uses both sizes (OUT/bench_mpi_refit.md):
+
+  tools/bench_mpi.py --refit reports/bench/scaling-memory/bench_mpi.md \
+      reports/bench/scaling-memory/full_width_bench_mpi.md --cluster-ranks 1 2 8 16 32 128 --out DIR
+
 With --ordering-study instead: the first increment of the peel member --fine (last value) and of the application
 mesh, on 1 process with every ordering (the host's METIS, MUMPS' PORD, AMF, AMD, QAMD) and on R processes with
 METIS and PORD: entries in the factors (deterministic), factorizations and their wall and rank-0 CPU seconds;
@@ -153,8 +161,14 @@ def cost_model(results, ranks, full_dofs, cluster_ranks):
         if base and base[0]['fact'] > 0:
             ratios.append(r['fact'] / base[0]['fact'])
     s_f = amdahl_fraction([(ranks, y) for y in ratios]) if ratios else 1.0
-    mem_rows = [[1.0, r['dofs'] / r['ranks'], r['dofs']] for r in results if r['kind'] in ('base', 'dist')]
-    mem = lstsq3(mem_rows, [r['mem_mb'] for r in results if r['kind'] in ('base', 'dist')])
+    # memory: on the distributed runs alone where they span two sizes and two numbers of processes (a one-process
+    # run takes the serial path, whose structures the linear form does not describe: its residual was 52 MB against
+    # 2.5 MB for the others on reports/bench/scaling-memory), else on every run
+    dist = [r for r in results if r['kind'] == 'dist']
+    spans = len({r['dofs'] for r in dist}) >= 2 and len({r['ranks'] for r in dist}) >= 2
+    mem_runs = dist if len(dist) >= 3 and spans else [r for r in results if r['kind'] in ('base', 'dist')]
+    mem_from_dist = mem_runs is dist
+    mem = lstsq3([[1.0, r['dofs'] / r['ranks'], r['dofs']] for r in mem_runs], [r['mem_mb'] for r in mem_runs])
     out = ['Cost model per Newton iteration, fitted to the runs above (N: DOFs, R: ranks; the fit is as noisy as '
            'the wall times it comes from):', '',
            '- element loop: t_e = %.3g N / R s (R cores: ranks, or the threads of the 1-rank run; mean over the '
@@ -164,7 +178,11 @@ def cost_model(results, ranks, full_dofs, cluster_ranks):
                                                                    ', '.join('%.2f' % x for x in ratios)),
            '- solve: t_s = %.3g N^%.2f s' % (asv, bsv)]
     if mem:
-        out.append('- memory per process: m = %.0f MB + %.3g MB N / R + %.3g MB N' % tuple(mem))
+        worst = max(abs(mem[0] + mem[1] * r['dofs'] / r['ranks'] + mem[2] * r['dofs'] - r['mem_mb'])
+                    for r in mem_runs)
+        out.append('- memory per process: m = %.0f MB + %.3g MB N / R + %.3g MB N (fitted on %d runs%s; largest '
+                   'residual %.1f MB)' % (tuple(mem) + (len(mem_runs), ' of 2 processes or more' if mem_from_dist
+                                                        else '', worst)))
     out.append('')
     out.append('Prediction for the full-width specimen (`--full-width`: twice the quarter model\'s width, about %d '
                'DOFs) per Newton iteration:' % full_dofs)
@@ -176,7 +194,8 @@ def cost_model(results, ranks, full_dofs, cluster_ranks):
         tf = af * full_dofs ** bf * (s_f + (1 - s_f) / R)
         ts = asv * full_dofs ** bsv * (s_f + (1 - s_f) / R)
         m = (mem[0] + mem[1] * full_dofs / R + mem[2] * full_dofs) if mem else float('nan')
-        out.append('| %d | %.2f | %.2f | %.2f | %.2f | %.0f |' % (R, te, tf, ts, te + tf + ts, m))
+        mcol = '-' if (mem_from_dist and R == 1) else '%.0f' % m
+        out.append('| %d | %.2f | %.2f | %.2f | %.2f | %s |' % (R, te, tf, ts, te + tf + ts, mcol))
     return out
 
 
@@ -273,6 +292,60 @@ def ordering_study(args, env, work):
         f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
 
 
+def read_tables(paths):
+    """The rows of earlier runs' bench_mpi.md tables as this script's results (1 rank x 1 thread: 'base'; R ranks
+    x 1 thread: 'dist'; hybrid or partition variants kept apart), each row once."""
+    results, seen = [], set()
+    for path in paths:
+        header = None
+        for line in open(path):
+            cells = [c.strip() for c in line.strip().strip('|').split('|')]
+            if not line.startswith('|') or len(cells) < 5:
+                continue
+            if cells[0] == 'scene':
+                header = cells
+                continue
+            if header is None or set(cells[0]) <= set('-') or tuple(cells) in seen:
+                continue
+            seen.add(tuple(cells))
+            c = dict(zip(header, cells))
+            name = c['run']
+            m = re.match(r'^(\d+) ranks? x (\d+) threads?$', name)
+            ranks, threads = (int(m.group(1)), int(m.group(2))) if m else (0, 0)
+            kind = ('base' if (ranks, threads) == (1, 1) else 'dist' if m and threads == 1 else
+                    'hybrid' if m else 'other')
+            if kind == 'other':
+                continue
+            results.append(dict(scene=c['scene'], kind=kind, ranks=ranks, cores=ranks * threads,
+                                dofs=int(c['DOFs']), elem=float(c['element loop']), comm=float(c['communication']),
+                                fact=float(c['factorization']), solve=float(c['solve']),
+                                mem_mb=float(c['peak memory of a process (MB)']), per=float(c['t/iteration (s)']),
+                                name=name, its=int(c['increments / iterations'].split('/')[1]),
+                                balance=c.get('element loop max/mean', '-'),
+                                slowest=c.get('element loop, slowest of each loop summed / mean', '-')))
+    if not results:
+        sys.exit('bench_mpi.py: --refit: no rows of 1 rank x 1 thread or R ranks x 1 thread in ' + ' '.join(paths))
+    return results
+
+
+def refit(args):
+    """--refit: the cost model and scaling report fitted to the rows of earlier tables."""
+    results = read_tables(args.refit)
+    # the scaling report's per-scene tables: the 1-process row first
+    results.sort(key=lambda r: (r['scene'], r['ranks'] != 1, r['ranks']))
+    wide = [r['dofs'] for r in results if 'full width' in r['scene']]
+    app = [r['dofs'] for r in results if r['scene'] == 'application']
+    full_dofs = wide[0] if wide else 2 * (app[0] if app else max(r['dofs'] for r in results))
+    text = (['Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]), '',
+             'Rows read: %d from %s' % (len(results), ', '.join(args.refit)), ''] +
+            cost_model(results, 2, full_dofs, args.cluster_ranks) + [''] +
+            scaling_report(results, full_dofs, args.cluster_ranks))
+    os.makedirs(args.out, exist_ok=True)
+    with open(os.path.join(args.out, 'bench_mpi_refit.md'), 'w') as f:
+        f.write('\n'.join(text) + '\n')
+    print('\n'.join(text))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('--exe', default=os.path.join(ROOT, 'build-mpi', 'bin', 'ldfcz'), help='LDFCZ_MPI ldfcz')
@@ -304,7 +377,12 @@ def main():
                     'The cost model uses the first value\'s runs')
     ap.add_argument('--yield-idle', action='store_true', help='OMPI_MCA_mpi_yield_when_idle=1: a waiting process '
                     'gives its core away instead of polling (a machine shared with other jobs)')
+    ap.add_argument('--refit', nargs='+', default=[], metavar='MD', help='fit the cost model to earlier tables '
+                    '(bench_mpi.md files) instead of running, see above')
     args = ap.parse_args()
+    if args.refit:
+        refit(args)
+        return
     work = os.path.join(args.out, 'work_mpi')
     os.makedirs(work, exist_ok=True)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1',
