@@ -294,7 +294,8 @@ def ordering_study(args, env, work):
 
 def read_tables(paths):
     """The rows of earlier runs' bench_mpi.md tables as this script's results (1 rank x 1 thread: 'base'; R ranks
-    x 1 thread: 'dist'; hybrid or partition variants kept apart), each row once."""
+    x 1 thread: 'dist'; R ranks x T threads: 'hybrid'; the variants with a suffix, other partitions, weights or
+    orderings, left out), each row once."""
     results, seen = [], set()
     for path in paths:
         header = None
