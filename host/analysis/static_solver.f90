@@ -50,6 +50,7 @@ contains
     an%partition_pieces = opt%partition_pieces
     call analysis_init(an, model, routines, stat, errmsg)
     if (stat /= 0) then
+      call close_loop_trace(an)
       call output_log(out, 'ldfcz: error: '//errmsg)
       if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """SIGTERM to the launcher of a distributed run (docs/host.md, "Graceful stop"):
 
-  check_launcher_sigterm.py --exe BIN --deck DECK --out DIR [--np 2] [--rows 3] [--grace 2]
+  check_launcher_sigterm.py --exe BIN --deck DECK --out DIR [--np 2] [--rows 3] [--grace 1]
 
 OpenMPI 4's mpirun does not forward SIGTERM: it ends the job itself, sending every process SIGCONT, then SIGTERM
 `odls_base_sigkill_timeout` seconds later (default 1), then SIGKILL as many seconds after that. ldfcz stops
@@ -44,7 +44,7 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--np", type=int, default=2)
     ap.add_argument("--rows", type=int, default=3, help="SIGTERM to mpirun once JOB.csv holds this many rows")
-    ap.add_argument("--grace", type=int, default=2, help="odls_base_sigkill_timeout (s)")
+    ap.add_argument("--grace", type=int, default=1, help="odls_base_sigkill_timeout (s; OpenMPI's default 1)")
     a = ap.parse_args()
     if shutil.which("mpirun") is None:
         fail("mpirun not found (tools/setup.sh installs openmpi-bin for the LDFCZ_MPI build)")
