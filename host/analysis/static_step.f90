@@ -22,6 +22,7 @@ module static_step
   use run_summary, only: run_summary_t, run_summary_continue, cohesive_ratio, statev_increment
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
   use field_frame, only: write_field_frame
+  use history_columns, only: history_columns_t, history_columns_build, history_columns_values
   use print_tables, only: print_tables_any, print_tables_write, print_tables_elements
   use state_gather, only: gather_converged_states, release_converged_states
   use stop_report, only: stop_message
@@ -50,11 +51,10 @@ contains
     integer, intent(inout) :: exit_code            !< exit status (solver_options)
     integer, intent(out) :: fact_offset            !< factorizations of the run before the restart point
     logical, intent(out) :: summarize              !< the closing summary is due
-    integer :: stat, is, attempt, iter, i, j, k, ncol, ic
+    integer :: stat, is, attempt, iter, i, k
     character(len=:), allocatable :: errmsg, msg
-    character(len=96), allocatable :: colnames(:)
+    type(history_columns_t) :: cols    !< the columns of JOB.csv
     character(len=512), allocatable :: notes(:)
-    integer, allocatable :: col_set(:), col_var(:)
     integer, allocatable :: printed(:)        !< elements of the *EL PRINT tables due (gathered, then released)
     real(dp), allocatable :: r(:), ratios(:), colv(:)
     logical, allocatable :: bc_was_on(:)
@@ -191,30 +191,10 @@ contains
     end if
 
     ! CSV columns: every (set, variable) requested by *NODE PRINT in any step
-    ncol = 0
-    k = 0
-    do is = 1, model%nstep
-      do i = 1, model%steps(is)%nprint
-        k = k + size(model%steps(is)%prints(i)%vars)
-      end do
-    end do
-    allocate (colnames(k), col_set(k), col_var(k))
-    do is = 1, model%nstep
-      do i = 1, model%steps(is)%nprint
-        if (model%steps(is)%prints(i)%set_index == 0) cycle  ! every node: the JOB.dat table only
-        do j = 1, size(model%steps(is)%prints(i)%vars)
-          msg = trim(model%steps(is)%prints(i)%nset)//'.'//trim(model%steps(is)%prints(i)%vars(j))
-          if (any(colnames(1:ncol) == msg)) cycle
-          ncol = ncol + 1
-          colnames(ncol) = msg
-          col_set(ncol) = model%steps(is)%prints(i)%set_index
-          col_var(ncol) = var_code(model%steps(is)%prints(i)%vars(j))
-        end do
-      end do
-    end do
-    allocate (colv(ncol))
+    call history_columns_build(model, cols)
+    allocate (colv(cols%n))
     if (restarting) then
-      call output_csv_resume(out, colnames(1:ncol), rs%state%csv_rows, fresh_csv, stat, errmsg)
+      call output_csv_resume(out, cols%names(1:cols%n), rs%state%csv_rows, fresh_csv, stat, errmsg)
       if (stat /= 0) then
         call output_log(out, 'ldfcz: error: '//errmsg)
         if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
@@ -224,7 +204,7 @@ contains
       if (fresh_csv) call output_log(out, 'ldfcz: warning: no '//out%job//'.csv in '//out%dir//': the new one '// &
         'holds the increments after the restart point only')
     else
-      call output_csv_header(out, colnames(1:ncol))
+      call output_csv_header(out, cols%names(1:cols%n))
     end if
     ! JOB.dat: the *NODE PRINT / *EL PRINT tables, on unit 6, which output_open has pointed at JOB.dat (continued
     ! after a restart): what user routines write there interleaves with the tables as in Abaqus
@@ -472,9 +452,7 @@ contains
           summary%increments = summary%increments + 1
           s%kinc_total = s%kinc_total + 1
           run_increments = run_increments + 1
-          do ic = 1, ncol
-            colv(ic) = column_value(col_set(ic), col_var(ic))
-          end do
+          call history_columns_values(cols, model, an%u, an%fint, an%fext, an%fdl, an%prescribed, colv)
           call output_csv_row(out, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, colv)
           s%csv_rows = s%csv_rows + 1
           ! rank 0 prints: the states of the other processes' printed elements first (every process takes part),
@@ -687,23 +665,6 @@ contains
       end do
     end function any_velocity
 
-    real(dp) function column_value(iset, ivar) result(v)
-      integer, intent(in) :: iset, ivar
-      integer :: k, dof, nn
-      v = 0.0_dp
-      nn = size(model%nsets(iset)%nodes)
-      do k = 1, nn
-        if (mod(ivar, 10) > model%ndim) cycle
-        dof = (model%nsets(iset)%nodes(k) - 1) * model%ndim + mod(ivar, 10)
-        if (ivar > 10) then
-          if (an%prescribed(dof)) v = v + an%fint(dof) - an%fext(dof) - an%fdl(dof)
-        else
-          v = v + an%u(dof)
-        end if
-      end do
-      if (ivar < 10 .and. nn > 0) v = v / real(nn, dp)
-    end function column_value
-
     !> Calls the user library's UEXTERNALDB, if it has one, with copies of the arguments (a routine may write to
     !> them).
     subroutine external_db(lop, lrestart_, tm, dtm, kstep, kinc_)
@@ -731,24 +692,5 @@ contains
     end subroutine write_frame
 
   end subroutine run_steps
-
-  !> Column code: 1..3 U1..U3 (mean), 11..13 RF1..RF3 (sum).
-  pure integer function var_code(v)
-    character(len=*), intent(in) :: v
-    select case (trim(v))
-    case ('U1')
-      var_code = 1
-    case ('U2')
-      var_code = 2
-    case ('U3')
-      var_code = 3
-    case ('RF1')
-      var_code = 11
-    case ('RF2')
-      var_code = 12
-    case default
-      var_code = 13
-    end select
-  end function var_code
 
 end module static_step

@@ -1,0 +1,86 @@
+!> The columns of JOB.csv: one per (node set, variable) that a *NODE PRINT of any step requests, in the order of
+!> first request, and their values at a converged increment (U: the set's mean, RF: its sum over prescribed dofs).
+module history_columns
+  use ldfcz_kinds, only: dp
+  use model_types, only: model_t
+  implicit none
+  private
+  public :: history_columns_t, history_columns_build, history_columns_values
+
+  integer, parameter :: column_name_len = 96  !< longest column name (SET.VARIABLE)
+
+  !> The columns of the run's history CSV.
+  type :: history_columns_t
+    integer :: n = 0                                           !< columns
+    character(len=column_name_len), allocatable :: names(:)    !< (n) SET.VARIABLE
+    integer, allocatable :: set_index(:)                       !< (n) index into model%nsets
+    integer, allocatable :: component(:)                       !< (n) 1..3 the dof of the variable
+    logical, allocatable :: reaction(:)                        !< (n) RF (sum) rather than U (mean)
+  end type history_columns_t
+
+contains
+
+  !> Every (set, variable) of the *NODE PRINT requests of the model (a request over every node has a JOB.dat table
+  !> only).
+  pure subroutine history_columns_build(model, cols)
+    type(model_t), intent(in) :: model            !< the model
+    type(history_columns_t), intent(out) :: cols  !< its columns
+    integer :: is, i, j, k
+    character(len=column_name_len) :: name
+    k = 0
+    do is = 1, model%nstep
+      do i = 1, model%steps(is)%nprint
+        k = k + size(model%steps(is)%prints(i)%vars)
+      end do
+    end do
+    allocate (cols%names(k), cols%set_index(k), cols%component(k), cols%reaction(k))
+    do is = 1, model%nstep
+      do i = 1, model%steps(is)%nprint
+        associate (pr => model%steps(is)%prints(i))
+          if (pr%set_index == 0) cycle
+          do j = 1, size(pr%vars)
+            name = trim(pr%nset)//'.'//trim(pr%vars(j))
+            if (any(cols%names(1:cols%n) == name)) cycle
+            cols%n = cols%n + 1
+            cols%names(cols%n) = name
+            cols%set_index(cols%n) = pr%set_index
+            ! the reader accepts U1..U3 and RF1..RF3 only
+            cols%reaction(cols%n) = pr%vars(j)(1:2) == 'RF'
+            cols%component(cols%n) = index('123', pr%vars(j)(len_trim(pr%vars(j)):len_trim(pr%vars(j))))
+          end do
+        end associate
+      end do
+    end do
+  end subroutine history_columns_build
+
+  !> The columns' values: U the mean over the set's nodes, RF the sum of fint - fext - fdl over its prescribed dofs
+  !> (a component beyond the model's dimension is 0).
+  pure subroutine history_columns_values(cols, model, u, fint, fext, fdl, prescribed, values)
+    type(history_columns_t), intent(in) :: cols  !< the columns
+    type(model_t), intent(in) :: model           !< the model
+    real(dp), intent(in) :: u(:)                 !< (ndof) displacement
+    real(dp), intent(in) :: fint(:)              !< (ndof) internal force
+    real(dp), intent(in) :: fext(:)              !< (ndof) concentrated loads
+    real(dp), intent(in) :: fdl(:)               !< (ndof) distributed-load forces
+    logical, intent(in) :: prescribed(:)         !< (ndof) prescribed dofs
+    real(dp), intent(out) :: values(:)           !< (n) the values
+    integer :: ic, k, dof, nn
+    real(dp) :: v
+    do ic = 1, cols%n
+      v = 0.0_dp
+      nn = size(model%nsets(cols%set_index(ic))%nodes)
+      do k = 1, nn
+        if (cols%component(ic) > model%ndim) cycle
+        dof = (model%nsets(cols%set_index(ic))%nodes(k) - 1) * model%ndim + cols%component(ic)
+        if (cols%reaction(ic)) then
+          if (prescribed(dof)) v = v + fint(dof) - fext(dof) - fdl(dof)
+        else
+          v = v + u(dof)
+        end if
+      end do
+      if (.not. cols%reaction(ic) .and. nn > 0) v = v / real(nn, dp)
+      values(ic) = v
+    end do
+  end subroutine history_columns_values
+
+end module history_columns
