@@ -7,6 +7,7 @@ find_package(Python3 REQUIRED COMPONENTS Interpreter)
 set(LDFCZ_DROPIN_DIR "${PROJECT_BINARY_DIR}/dropin")
 set(_common "${PROJECT_SOURCE_DIR}/common/ldfcz_kinds.f90" "${PROJECT_SOURCE_DIR}/common/ldfcz_finite.f90")
 set(_uel "${PROJECT_SOURCE_DIR}/uel/cohesive_law.f90" "${PROJECT_SOURCE_DIR}/uel/cohesive_element.f90"
+  "${PROJECT_SOURCE_DIR}/uel/cohesive_input.f90"
   "${PROJECT_SOURCE_DIR}/uel/uel.f")
 set(_umat "${PROJECT_SOURCE_DIR}/umat/leonov_parameters.f90" "${PROJECT_SOURCE_DIR}/umat/leonov.f90"
   "${PROJECT_SOURCE_DIR}/umat/leonov_plane_stress.f90" "${PROJECT_SOURCE_DIR}/umat/umat.f")
