@@ -23,7 +23,7 @@ endforeach()
 install(TARGETS ldfcz_kinds ldfcz_uel ldfcz_umat ldfcz_abaqus_utils ldfcz_kinds_shared ldfcz_uel_shared
   ldfcz_umat_shared ldfcz_abaqus_utils_shared EXPORT ldfczTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(mod ldfcz_kinds ldfcz_finite cohesive_law cohesive_element leonov_parameters leonov leonov_marc
+foreach(mod ldfcz_kinds ldfcz_finite cohesive_law cohesive_element cohesive_input cohesive_marc leonov_parameters leonov leonov_marc
             abaqus_host_state abaqus_tensor_utils)
   install(FILES "${CMAKE_Fortran_MODULE_DIRECTORY}/${mod}.mod" DESTINATION ${LDFCZ_INSTALL_MODDIR} OPTIONAL)
 endforeach()

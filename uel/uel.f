@@ -41,7 +41,9 @@
      2 KSTEP,KINC,JELEM,PARAMS,NDLOAD,JDLTYP,ADLMAG,PREDEF,NPREDF,
      3 LFLAGS,MLVARX,DDLMAG,MDLOAD,PNEWDT,JPROPS,NJPROP,PERIOD)
       USE LDFCZ_FINITE, ONLY: IS_FINITE
-      USE COHESIVE_LAW, ONLY: COHESIVE_PROPS, LAW_LDF, LAW_CLASSICAL
+      USE COHESIVE_LAW, ONLY: COHESIVE_PROPS
+      USE COHESIVE_INPUT, ONLY: COHESIVE_SECTION, COHESIVE_INPUT_READ,
+     1 INPUT_OK
       USE COHESIVE_ELEMENT, ONLY: COHESIVE_ELEMENT_COMPUTE,
      1 NSV_PER_IP, ELEMENT_NIP, STAT_OK, STAT_BAD_INPUT
       INCLUDE 'ABA_PARAM.INC'
@@ -58,7 +60,8 @@
      4 PREDEF(2,NPREDF,NNODE),LFLAGS(*),JPROPS(*)
 !
       TYPE(COHESIVE_PROPS) PR
-      INTEGER NDIM, NEED, IUNL, LAW, ISTAT, I, LF, ISEC
+      TYPE(COHESIVE_SECTION) SEC
+      INTEGER NDIM, NEED, ISTAT, LF
       INTEGER INTV(3)
       DOUBLE PRECISION REALV(2), ESTO, EDIS, EVIS, EDS0, THICK
       DOUBLE PRECISION UST(NDOFEL)
@@ -89,137 +92,17 @@
         CALL XIT()
         RETURN
       END IF
-!     --- real properties
-      IF (NPROPS .LT. 2) THEN
-        INTV(2) = NPROPS
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: NPROPS=%I, need'
-     1   //' at least 2 (PROPS(1)=phi, PROPS(2)=delta)',
-     2   INTV, REALV, CHARV)
+!     --- properties (module cohesive_input: the UEL layout, checked)
+      CALL COHESIVE_INPUT_READ(NDIM, PROPS(1:NPROPS),
+     1 JPROPS(1:NJPROP), PR, SEC, ISTAT, EMSG)
+      IF (ISTAT .NE. INPUT_OK) THEN
+        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: '//TRIM(EMSG),
+     1   INTV, REALV, CHARV)
         CALL XIT()
         RETURN
       END IF
-      DO I = 1, MIN(NPROPS, 7)
-        IF (.NOT. IS_FINITE(PROPS(I))) THEN
-          INTV(2) = I
-          CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(%I) is'
-     1     //' not a finite number (NaN or Inf)', INTV, REALV, CHARV)
-          CALL XIT()
-          RETURN
-        END IF
-      END DO
-      IF (.NOT. (PROPS(1) .GT. 0.0D0)) THEN
-        REALV(1) = PROPS(1)
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(1) = phi'
-     1   //' (work of separation) must be > 0, got %R',
-     2   INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      IF (.NOT. (PROPS(2) .GT. 0.0D0)) THEN
-        REALV(1) = PROPS(2)
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(2) = delta'
-     1   //' (characteristic opening) must be > 0, got %R',
-     2   INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      DO I = 3, MIN(NPROPS, 7)
-        IF (PROPS(I) .LT. 0.0D0) THEN
-          INTV(2) = I
-          REALV(1) = PROPS(I)
-          CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(%I)'
-     1     //' (3 k_c, 4 phi_t, 5 delta_t, 6 eta_v, 7 thickness)'
-     2     //' must be >= 0,'
-     2     //' got %R',
-     2     INTV, REALV, CHARV)
-          CALL XIT()
-          RETURN
-        END IF
-      END DO
-      PR%PHI = PROPS(1)
-      PR%DELTA = PROPS(2)
-!     default k_c = phi/delta: T_c(Delta_c = -delta) = e*T_max
-      PR%KC = PROPS(1) / PROPS(2)
-      IF (NPROPS .GE. 3) THEN
-        IF (PROPS(3) .GT. 0.0D0) PR%KC = PROPS(3)
-      END IF
-      PR%PHI_T = PROPS(1)
-      IF (NPROPS .GE. 4) THEN
-        IF (PROPS(4) .GT. 0.0D0) PR%PHI_T = PROPS(4)
-      END IF
-      PR%DELTA_T = PROPS(2)
-      IF (NPROPS .GE. 5) THEN
-        IF (PROPS(5) .GT. 0.0D0) PR%DELTA_T = PROPS(5)
-      END IF
-!     optional viscous regularisation eta_v (N s/mm^3); 0: none
-      PR%ETA_V = 0.0D0
-      IF (NPROPS .GE. 6) PR%ETA_V = PROPS(6)
-!     --- integer properties
-      IUNL = 1
-      LAW = LAW_LDF
-      IF (NJPROP .GE. 1) THEN
-        IF (JPROPS(1) .NE. 0) IUNL = JPROPS(1)
-      END IF
-      IF (NJPROP .GE. 2) THEN
-        IF (JPROPS(2) .NE. 0) LAW = JPROPS(2)
-      END IF
-      IF (IUNL .LT. 1 .OR. IUNL .GT. 3) THEN
-        INTV(2) = IUNL
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: JPROPS(1) ='
-     1   //' unloading type %I unknown; use 1 reversible, 2 elastic'
-     2   //' damage, 3 plastic', INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      IF (LAW .NE. LAW_LDF .AND. LAW .NE. LAW_CLASSICAL) THEN
-        INTV(2) = LAW
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: JPROPS(2) = law'
-     1   //' %I unknown; use 1 LDF, 2 classical', INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      IF (LAW .EQ. LAW_CLASSICAL .AND. IUNL .NE. 1) THEN
-        INTV(2) = IUNL
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: the classical'
-     1   //' law (JPROPS(2)=2) is reversible only; JPROPS(1)=%I must'
-     2   //' be 0 or 1', INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      PR%UNLOADING = IUNL
-      PR%LAW = LAW
-!     --- section of the 2D element: thickness PROPS(7), JPROPS(3)
-      THICK = 1.0D0
-      IF (NPROPS .GE. 7) THEN
-        IF (PROPS(7) .GT. 0.0D0) THICK = PROPS(7)
-      END IF
-      ISEC = 0
-      IF (NJPROP .GE. 3) ISEC = JPROPS(3)
-      IF (ISEC .NE. 0 .AND. ISEC .NE. 1) THEN
-        INTV(2) = ISEC
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: JPROPS(3) ='
-     1   //' %I unknown; use 0 planar (thickness PROPS(7)), 1'
-     2   //' axisymmetric', INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      IF (NDIM .EQ. 3 .AND. (ISEC .NE. 0 .OR. THICK .NE. 1.0D0)) THEN
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: PROPS(7)'
-     1   //' (thickness) and JPROPS(3) (axisymmetric) apply to the'
-     2   //' 2D element only; leave them 0 or absent in 3D',
-     3   INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      IF (ISEC .EQ. 1 .AND. THICK .NE. 1.0D0) THEN
-        REALV(1) = THICK
-        CALL STDB_ABQERR(-3, 'UEL ldfcz: element %I: axisymmetric'
-     1   //' (JPROPS(3) = 1) takes no thickness, PROPS(7) = %R: the'
-     2   //' forces are totals over 2 pi', INTV, REALV, CHARV)
-        CALL XIT()
-        RETURN
-      END IF
-      AXI = ISEC .EQ. 1
+      THICK = SEC%THICKNESS
+      AXI = SEC%AXISYMMETRIC
 !     --- state variables
       NEED = NSV_PER_IP * ELEMENT_NIP(NDIM)
       IF (NSVARS .LT. NEED) THEN

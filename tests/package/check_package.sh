@@ -33,7 +33,8 @@ moved=$(PKG_CONFIG_PATH="$out/moved/lib/pkgconfig" pkg-config --variable=libdir 
 echo "pkg-config after moving the prefix: libdir $moved: ok"
 mv "$out/moved" "$out/prefix"
 for f in ldfcz_abaqus.f ldfcz_abaqus_uel.f ldfcz_abaqus_umat.f ldfcz_abaqus.f90 ldfcz_abaqus_uel.f90 \
-         ldfcz_abaqus_umat.f90 ldfcz_marc_hypela2.f; do
+         ldfcz_abaqus_umat.f90 ldfcz_marc_hypela2.f ldfcz_marc_uselem.f ldfcz_marc.f ldfcz_open_host_utils.f \
+         ldfcz_open_host_utils.f90; do
   [ -f "$out/prefix/share/ldfcz/$f" ] || { echo "FAIL: drop-in $f not installed"; exit 1; }
 done
 [ -f "$out/prefix/include/ldfcz/SMAAspUserSubroutines.hdr" ] || { echo "FAIL: SMAAspUserSubroutines.hdr not installed"; exit 1; }
