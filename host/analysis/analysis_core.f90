@@ -417,7 +417,7 @@ contains
     !> (symmetrised for LDL^T) over all dofs, prescribed ones included
     real(dp), intent(in), optional :: carry(:)
     real(dp), intent(out), optional :: k_carry(:)          !< (ndof) K carry
-    integer :: ie, ic, c, n, k, fail_elem, st, m, pn_elem, kc
+    integer :: ie, ic, c, n, fail_elem, st, pn_elem, kc
     real(dp), allocatable :: ke(:, :), fel(:), kx(:, :), fk(:)
     real(dp) :: ctime(n_cost_class)        !< seconds in the element routines per cost class (this loop)
     integer(i8) :: ccalls(n_cost_class)    !< calls per cost class
@@ -451,7 +451,7 @@ contains
     ccalls = 0
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
-    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, m, kc, e0, e1)
+    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, kc, e0, e1)
     allocate (ke(an%max_ndofel, an%max_ndofel), fel(an%max_ndofel))
     allocate (kx(max(1, an%eqs%cs%max_x), max(1, an%eqs%cs%max_x)))
     do c = 1, an%eqs%ncolor
@@ -489,15 +489,10 @@ contains
         end if
         an%work%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
         if (want_k .and. an%eqs%neq > 0) then
-          if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
-          if (with_carry) fk(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
-            matmul(ke(1:n, 1:n), carry(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)))
-          if (an%eqs%cs%n > 0) then
-            ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
-            call constraints_transform(an%eqs%cs, ie, ke(1:n, 1:n), m, kx)
-            call sparse_add_element(an%eqs%sys, ie, kx(1:m, 1:m), exclusive=.true.)
+          if (with_carry) then
+            call add_element_tangent(an, ie, ke(1:n, 1:n), kx, carry, fk)
           else
-            call sparse_add_element(an%eqs%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+            call add_element_tangent(an, ie, ke(1:n, 1:n), kx)
           end if
         end if
       end do
@@ -516,19 +511,12 @@ contains
       an%work%stop%elem = abaqus_stop_element()
       an%work%stop%text = abaqus_stop_message()
     end if
-    an%work%fint = 0.0_dp
-    an%work%fdl = 0.0_dp
-    do k = 1, size(an%elem_dof)
-      an%work%fint(an%elem_dof(k)) = an%work%fint(an%elem_dof(k)) + an%work%fe(k)
-      an%work%fdl(an%elem_dof(k)) = an%work%fdl(an%elem_dof(k)) + an%work%fdle(k)
-    end do
+    ! the element forces into the dofs' (and K carry's)
+    call scatter_add(an, an%work%fe, an%work%fint)
+    call scatter_add(an, an%work%fdle, an%work%fdl)
     if (present(k_carry)) then
       k_carry = 0.0_dp
-      if (with_carry) then
-        do k = 1, size(an%elem_dof)
-          k_carry(an%elem_dof(k)) = k_carry(an%elem_dof(k)) + fk(k)
-        end do
-      end if
+      if (with_carry) call scatter_add(an, fk, k_carry)
     end if
     who = ''
     if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
@@ -545,19 +533,11 @@ contains
       an%timing%t_assembly_slowest = an%timing%t_assembly_slowest + loop_slowest
       an%timing%t_loop_own = an%timing%t_loop_own + loop_own
       an%timing%t_loop_wait = an%timing%t_loop_wait + (an%par%t_comm - comm1)
-      ! the processes' parts: forces summed, the smallest PNEWDT, the first failing element and the element that
-      ! asked to stop (lowest label or index over the processes), so that every process decides alike
-      call parallel_sum(an%par, an%work%fint)
-      call parallel_sum(an%par, an%work%fdl)
-      if (with_carry) call parallel_sum(an%par, k_carry)
-      pnewdt_min = parallel_min(an%par, pnewdt_min)
-      if (parallel_min(an%par, pn_worst) < pn_worst) pn_elem = 0
-      call parallel_lowest(an%par, pn_elem, who)
-      if (fail_elem == huge(1)) fail_elem = 0
-      call parallel_lowest(an%par, fail_elem, fail_text)
-      if (fail_elem == 0) fail_elem = huge(1)
-      an%work%stop%asked = parallel_any(an%par, an%work%stop%asked)
-      if (an%work%stop%asked) call parallel_lowest(an%par, an%work%stop%elem, an%work%stop%text, an%work%stop%rank)
+      if (with_carry) then
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
+      else
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text)
+      end if
     end if
     if (fail_elem /= huge(1)) then
       stat = 1
@@ -572,6 +552,67 @@ contains
       an%timing%n_assembly, inc%step, inc%kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, &
       ctime / real(rate, dp), ccalls
   end subroutine analysis_assemble
+
+  !> Element ie's tangent ke into the sparse system (symmetrised for LDL^T; T^T K T on the extended dofs of an
+  !> element holding *EQUATION-eliminated dofs, kx the work matrix for it); with carry, fk of the element = K carry.
+  !> Called within the colour loop: no other thread touches the element's entries.
+  subroutine add_element_tangent(an, ie, ke, kx, carry, fk)
+    type(analysis_t), intent(inout) :: an           !< analysis data
+    integer, intent(in) :: ie                       !< element
+    real(dp), intent(inout) :: ke(:, :)             !< (n, n) its tangent (symmetrised here when an%symmetric)
+    real(dp), intent(inout) :: kx(:, :)             !< work: the extended element matrix
+    real(dp), intent(in), optional :: carry(:)      !< (ndof) displacement change carried through the tangent
+    real(dp), intent(inout), optional :: fk(:)      !< (elem_ptr layout) K carry per element dof
+    integer :: n, m
+    n = size(ke, 1)
+    if (an%symmetric) ke = 0.5_dp * (ke + transpose(ke))
+    if (present(carry)) fk(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
+      matmul(ke, carry(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)))
+    if (an%eqs%cs%n > 0) then
+      ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
+      call constraints_transform(an%eqs%cs, ie, ke(1:n, 1:n), m, kx)
+      call sparse_add_element(an%eqs%sys, ie, kx(1:m, 1:m), exclusive=.true.)
+    else
+      call sparse_add_element(an%eqs%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+    end if
+  end subroutine add_element_tangent
+
+  !> v (ndof) = the sum of the element-dof values ve (elem_ptr layout) at each dof.
+  subroutine scatter_add(an, ve, v)
+    type(analysis_t), intent(in) :: an      !< analysis data (dof maps)
+    real(dp), intent(in) :: ve(:)           !< per element dof
+    real(dp), intent(out) :: v(:)           !< per dof
+    integer :: k
+    v = 0.0_dp
+    do k = 1, size(an%elem_dof)
+      v(an%elem_dof(k)) = v(an%elem_dof(k)) + ve(k)
+    end do
+  end subroutine scatter_add
+
+  !> A distributed run's element loop: the processes' parts combined, forces summed, the smallest PNEWDT, the first
+  !> failing element and the element that asked to stop (lowest label or index over the processes), so that every
+  !> process decides alike.
+  subroutine reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
+    type(analysis_t), intent(inout) :: an                    !< analysis data (forces, stop request)
+    real(dp), intent(inout) :: pnewdt_min                    !< smallest PNEWDT
+    real(dp), intent(in) :: pn_worst                         !< this process's smallest PNEWDT < 1 (1: none)
+    integer, intent(inout) :: pn_elem                        !< its element (0: none)
+    character(len=:), allocatable, intent(inout) :: who      !< who asked for the smallest PNEWDT
+    integer, intent(inout) :: fail_elem                      !< label of the first failing element (huge: none)
+    character(len=:), allocatable, intent(inout) :: fail_text !< its message
+    real(dp), intent(inout), optional :: k_carry(:)          !< K carry
+    call parallel_sum(an%par, an%work%fint)
+    call parallel_sum(an%par, an%work%fdl)
+    if (present(k_carry)) call parallel_sum(an%par, k_carry)
+    pnewdt_min = parallel_min(an%par, pnewdt_min)
+    if (parallel_min(an%par, pn_worst) < pn_worst) pn_elem = 0
+    call parallel_lowest(an%par, pn_elem, who)
+    if (fail_elem == huge(1)) fail_elem = 0
+    call parallel_lowest(an%par, fail_elem, fail_text)
+    if (fail_elem == 0) fail_elem = huge(1)
+    an%work%stop%asked = parallel_any(an%par, an%work%stop%asked)
+    if (an%work%stop%asked) call parallel_lowest(an%par, an%work%stop%elem, an%work%stop%text, an%work%stop%rank)
+  end subroutine reduce_over_processes
 
   !> One element: UEL through the procedure pointer, or the continuum element with its material.
   subroutine element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
