@@ -78,9 +78,10 @@ contains
       call hash_reals(hs, model%amplitudes(k)%a)
       call hash_ints(hs, [merge(1, 0, model%amplitudes(k)%smooth), merge(1, 0, model%amplitudes(k)%total_time)])
     end do
-    call hash_boundaries(hs, model%initial_bcs, model%n_initial_bc)
-    call hash_cloads(hs, model%temp_inits, model%ntemp_init)
-    call hash_cloads(hs, model%field_inits, model%nfield_init)
+    ! (the lists are passed only when they hold definitions: an empty one may be unallocated)
+    if (model%n_initial_bc > 0) call hash_boundaries(hs, model%initial_bcs, model%n_initial_bc)
+    if (model%ntemp_init > 0) call hash_cloads(hs, model%temp_inits, model%ntemp_init)
+    if (model%nfield_init > 0) call hash_cloads(hs, model%field_inits, model%nfield_init)
     call hash_int(hs, model%nfield)
     call hash_int(hs, model%nstep)
     do k = 1, model%nstep
@@ -156,10 +157,10 @@ contains
         st%cload_op_new, st%dload_op_new]))
       call hash_ints(hs, [st%max_inc, st%max_iter, st%nbc, st%ncload, st%ndload, st%ntemp, st%nfielddef])
       call hash_reals(hs, [st%dt_initial, st%period, st%dt_min, st%dt_max, st%r_n, st%c_n])
-      call hash_boundaries(hs, st%bcs, st%nbc)
-      call hash_cloads(hs, st%cloads, st%ncload)
-      call hash_cloads(hs, st%temps, st%ntemp)
-      call hash_cloads(hs, st%fields, st%nfielddef)
+      if (st%nbc > 0) call hash_boundaries(hs, st%bcs, st%nbc)
+      if (st%ncload > 0) call hash_cloads(hs, st%cloads, st%ncload)
+      if (st%ntemp > 0) call hash_cloads(hs, st%temps, st%ntemp)
+      if (st%nfielddef > 0) call hash_cloads(hs, st%fields, st%nfielddef)
       if (allocated(st%field_new)) call hash_ints(hs, st%field_new)
       do j = 1, st%ndload
         associate (dl => st%dloads(j))
