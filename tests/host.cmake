@@ -171,6 +171,32 @@ if(EXISTS "${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp")
   # PET cube with 12 cutbacks (UMAT PNEWDT): increment size and growth state carried over
   ldfcz_add_restart_test(restart_pet_cutbacks ${LDFCZ_DECKS}/stability/stab_one_increment_50pct_pet.inp --stop 8)
 endif()
+# Restart of every kind of deck (tests/restart/*.inp; their headers say what each step does): every deck is stopped
+# within a step with --stop-after-increments and, in a second run, with SIGTERM, continued, and compared with the
+# uninterrupted run bit for bit (--rel 0): JOB.csv, JOB.dat, the VTU frames, and the files the user routines write
+# on every call (the temperatures and fields a UMAT receives, the arguments of DISP), so that any part of the analysis
+# state a restart lost (a load, an amplitude's start, a released reaction, a velocity, a field variable's ramp, a
+# local system's prescribed value) shows as a difference.
+set(LDFCZ_RESTART_DECKS "${CMAKE_CURRENT_SOURCE_DIR}/restart")
+# loads and amplitudes over four steps: *CLOAD (RAMP, OP=MOD on a tabular amplitude, OP=NEW decaying, SMOOTH STEP
+# under AMPLITUDE=STEP), follower *DSLOAD pressure and *DLOAD GRAV under NLGEOM, a prescribed deflection released by
+# *BOUNDARY, OP=NEW (its reaction decays); stopped in step 3, while the released loads decay; with the refusals
+ldfcz_add_restart_test(restart_loads_steps ${LDFCZ_RESTART_DECKS}/loads_steps.inp --modes stop,term --stop 10
+  --freq 1 --rel 0 --dat --point mid --other-deck ${LDFCZ_RESTART_DECKS}/fields_velocity.inp)
+# the same deck stopped at the end of step 1 (restart data every 3rd increment and at the end of the step): the
+# continuation begins step 2 from the loads, boundaries and increment size the file holds
+ldfcz_add_restart_test(restart_loads_step_end ${LDFCZ_RESTART_DECKS}/loads_steps.inp --stop 4 --freq 3 --rel 0 --dat
+  --point end --no-refusals)
+# *TEMPERATURE (with thermal expansion), *FIELD on an amplitude, OP=NEW of both, TYPE=VELOCITY boundaries on an
+# amplitude, then a displacement; stopped in step 2 (automatic increments); the recording UMAT's file compared
+ldfcz_add_restart_test(restart_fields_velocity ${LDFCZ_RESTART_DECKS}/fields_velocity.inp --modes stop,term --stop 7
+  --freq 1 --rel 0 --dat --point mid --no-refusals --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_fields.f
+  --compare-files umat_fields.txt)
+# *EQUATION, *TIE, *TRANSFORM and *BOUNDARY, USER (DISP) under NLGEOM, OP=NEW and a *CLOAD in the local system in
+# step 2; stopped in step 2; the file of DISP's calls compared
+ldfcz_add_restart_test(restart_constraints_transform ${LDFCZ_RESTART_DECKS}/constraints_transform.inp
+  --modes stop,term --stop 6 --freq 1 --rel 0 --dat --point mid --no-refusals
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_disp.f --compare-files disp_calls.txt)
 
 # field output as ParaView reads it: tensors in VTK's order with names, principal values, requests carried over
 # to the next step, a warning for a variable that cannot be written (python3-vtk9 reads the frames)

@@ -13,7 +13,11 @@ module analysis_core
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
     sparse_set_factor_threads, sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
-  use distributed_loads, only: dload_state_t, dload_element, dload_uel_arrays, dload_has
+  use distributed_loads, only: dload_element, dload_uel_arrays, dload_has
+  use element_state, only: elem_state_t, element_state_free, element_state_copy
+  use analysis_state, only: analysis_state_t, analysis_state_init
+  use increment, only: increment_t, increment_time, increment_end
+  use solver_options, only: solver_options_t
   use solver_text, only: itoa, rtoa
   use abaqus_host_state, only: abaqus_set_caller, abaqus_stop_requested, abaqus_stop_element, abaqus_stop_message
   use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_max, &
@@ -32,71 +36,61 @@ module analysis_core
   integer, parameter :: n_cost_class = 3  !< cost classes of elements (cost_class)
   integer, parameter :: mdload = 8   !< MDLOAD: distributed loads of a user element at most (Un on one element)
 
-  !> State of one element (integration-point arrays of continuum elements, SVARS and ENERGY of user elements).
-  type :: elem_state_t
-    real(dp), allocatable :: stress(:, :)  !< (ntens, nip) Cauchy stress
-    real(dp), allocatable :: stran(:, :)   !< (ntens, nip) strain
-    real(dp), allocatable :: statev(:, :)  !< (nstatv, nip)
-    real(dp), allocatable :: eip(:, :)     !< (3, nip) SSE, SPD, SCD per unit volume
-    real(dp), allocatable :: svars(:)      !< user element SVARS
-    real(dp) :: energy(8) = 0.0_dp         !< user element ENERGY; continuum: (2) SSE and (4) SPD integrals
-  end type elem_state_t
-
   !> Local material axes of a continuum element with an *ORIENTATION (unallocated: none).
   type :: elem_axes_t
     real(dp), allocatable :: t(:, :, :)    !< (3, 3, nip) axes as columns at each integration point, reference
   end type elem_axes_t
 
-  type :: analysis_t
-    integer :: ndim = 3                         !< 2 or 3
-    integer :: ndof = 0                         !< ndim * nnode
+  !> How the sparse system is factored (solver_options).
+  type :: factoring_t
+    logical :: symmetric_part = .false.   !< unsymmetric: factors of the symmetric part (preconditioner only)
+    logical :: single = .false.           !< factors in single precision (preconditioner only)
+    integer :: blas_threads = 0           !< BLAS threads of a large factorization (0: BLAS untouched)
+    real(dp) :: min_flops = 0.0_dp        !< operations from which a factorization uses them
+  end type factoring_t
+
+  !> The equations of the current step: the free dofs numbered (prescribed ones and *EQUATION/*TIE-eliminated ones
+  !> excluded), the element colours of the assembly and the sparse system (working data, rebuilt when the set of
+  !> prescribed dofs changes).
+  type :: equation_system_t
     integer :: neq = 0                          !< free equations
-    logical :: symmetric = .true.               !< LDL^T with symmetrised element matrices
-    logical :: sym_factors = .false.            !< unsymmetric: factors of the symmetric part (preconditioner only)
-    logical :: single_factors = .false.         !< factors in single precision (preconditioner only)
-    integer :: factor_blas_threads = 0          !< BLAS threads of a large factorization (0: BLAS untouched)
-    real(dp) :: factor_min_flops = 0.0_dp       !< operations from which a factorization uses them
-    integer, allocatable :: elem_ptr(:)         !< (nelem+1) into elem_dof
-    integer, allocatable :: elem_dof(:)         !< global dof of each element dof
-    integer, allocatable :: elem_eq(:)          !< equation of each element dof (0: prescribed/unused)
     integer, allocatable :: eq(:)               !< (ndof) equation of each dof, 0 if prescribed or unused
-    logical, allocatable :: used(:)             !< (ndof) dof attached to an element
-    logical, allocatable :: prescribed(:)       !< (ndof)
-    integer, allocatable :: elem_nip(:)         !< integration points per element (continuum)
-    character(len=8), allocatable :: elem_tname(:) !< Abaqus element type name ('C3D8', ...) or 'U'
-    type(solid_material_t), allocatable :: mats(:)  !< per section
-    !> (nelem) converged state; a distributed process allocates its own elements' only (state_gather brings
-    !> another's where output needs it)
-    type(elem_state_t), allocatable :: conv(:)
-    type(elem_state_t), allocatable :: trial(:) !< state of the last element loop (the same elements)
-    type(elem_axes_t), allocatable :: axes(:)   !< (nelem) local material axes (*ORIENTATION)
-    real(dp), allocatable :: u(:)               !< current total displacement
-    real(dp), allocatable :: u_conv(:)          !< converged displacement
-    real(dp), allocatable :: fint(:)            !< internal force (all dofs)
-    real(dp), allocatable :: fext(:)            !< external nodal force (all dofs) at the end of the increment
-    real(dp), allocatable :: fdl(:)             !< distributed-load nodal forces (all dofs) at the current estimate
-    real(dp), allocatable :: temp_start(:)      !< (nnode) temperatures at the start of the increment
-    real(dp), allocatable :: temp_end(:)        !< (nnode) temperatures at the end of the increment
-    real(dp), allocatable :: field_start(:)     !< (nfield*nnode) field variables at the start of the increment
-    real(dp), allocatable :: field_end(:)       !< (nfield*nnode) at its end (variable n of node a: (a-1)*nfield+n)
-    real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
-    type(dload_state_t) :: dl                   !< distributed loads of the current step (distributed_loads)
+    integer, allocatable :: elem_eq(:)          !< equation of each element dof (0: prescribed/unused)
+    logical, allocatable :: prescribed(:)       !< (ndof) the dof is prescribed in this step
     type(constraint_set_t) :: cs                !< *EQUATION constraints (linear_constraints), eliminated
-    type(node_rotation_t) :: nr                 !< *TRANSFORM local node systems (node_rotations): u, u_conv, fint,
-                                                !< fext, fdl and the system are in their components at those nodes
-    real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
-    type(sparse_system_t) :: sys                !< sparse tangent
-    logical :: sys_ready = .false.
-    logical :: extrapolated = .false.           !< an%u is an extrapolated increment start (UEL LFLAGS(5) = 1)
-    type(user_routines_t) :: routines           !< UEL and UMAT in use
-    integer :: max_ndofel = 0
     integer :: ncolor = 0                       !< element colours (element_colors: no shared dof within one)
     integer, allocatable :: color_ptr(:)        !< (ncolor+1) into color_elem
     integer, allocatable :: color_elem(:)       !< (nelem) elements by colour
-    !> (nelem) index into geo of a continuum element this process computes, 0 otherwise (user elements, other
-    !> processes' elements: element_geometry computes theirs)
-    integer, allocatable :: elem_geo(:)
-    type(solid_geometry_t), allocatable :: geo(:)  !< reference data of those elements (computed once)
+    type(sparse_system_t) :: sys                !< sparse tangent
+    logical :: sys_ready = .false.              !< sys is set up for the current numbering
+    type(factoring_t) :: factoring              !< how sys is factored
+  end type equation_system_t
+
+  !> A stop asked by a user routine (XIT, STDB_ABQERR) in the last element loop.
+  type :: stop_request_t
+    logical :: asked = .false.                  !< a routine asked to end the analysis
+    integer :: elem = 0                         !< the element that asked (lowest index; 0: not known)
+    character(len=:), allocatable :: text       !< the routine's message
+    integer :: rank = 0                         !< the process whose element asked (distributed run)
+  end type stop_request_t
+
+  !> The solver's working data of an increment (never checkpointed): the current iterate and what the last element
+  !> loop computed at it.
+  type :: solver_work_t
+    real(dp), allocatable :: u(:)               !< (ndof) current total displacement
+    type(elem_state_t), allocatable :: trial(:) !< (nelem) element states of the last element loop (the owned ones)
+    real(dp), allocatable :: fint(:)            !< (ndof) internal force (all dofs)
+    real(dp), allocatable :: fext(:)            !< (ndof) external nodal force at the end of the increment
+    real(dp), allocatable :: fdl(:)             !< (ndof) distributed-load nodal forces at the current estimate
+    real(dp), allocatable :: fe(:)              !< element internal forces (elem_ptr layout)
+    real(dp), allocatable :: fdle(:)            !< element distributed-load forces (elem_ptr layout)
+    real(dp), allocatable :: temp_end(:)        !< (nnode) temperatures at the end of the increment
+    real(dp), allocatable :: field_end(:)       !< (nfield*nnode) field variables at its end
+    type(stop_request_t) :: stop                !< a stop asked in the last element loop
+  end type solver_work_t
+
+  !> Times and counts of the element loops and of the sparse systems gone (run summary), and the loop trace.
+  type :: loop_timings_t
     real(dp) :: t_factor_done = 0.0_dp          !< factorization seconds of earlier sparse systems (pattern changes)
     real(dp) :: t_solve_done = 0.0_dp           !< solve seconds of earlier sparse systems
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
@@ -113,24 +107,45 @@ module analysis_core
     !> distributed: seconds this process waited at the end of its element loops for the slowest process (the first
     !> reduction after a loop; part of par%t_comm)
     real(dp) :: t_loop_wait = 0.0_dp
-    type(parallel_t) :: par                     !< processes of the run (parallel_context)
-    logical, allocatable :: owned(:)            !< (nelem) elements this process computes (all in a serial run)
-    logical :: stop_asked = .false.             !< a user routine asked to end the analysis (XIT) in the last loop
-    integer :: stop_elem = 0                    !< the element that asked (lowest index; 0: not known)
-    character(len=:), allocatable :: stop_text  !< the routine's message
-    integer :: stop_rank = 0                    !< the process whose element asked (distributed run)
-    integer :: n_assembly = 0
-    !> METIS vertex weight of each cost class (cost_class: UMAT continuum, *ELASTIC continuum, user element)
-    integer :: cost_weight(n_cost_class) = [6, 5, 1]
-    !> pieces per process of the partition (element_partition: > 1 interleaved; --partition-pieces); 0: the
-    !> default rule (partition_pieces_default)
-    integer :: partition_pieces = 0
+    integer :: n_assembly = 0                   !< element loops
     real(dp) :: class_time(n_cost_class) = 0.0_dp     !< wall seconds in element routines, per cost class
     integer(i8) :: class_calls(n_cost_class) = 0      !< element calls per cost class (this process)
-    integer(i8) :: partition_sig = 0                  !< signature of the partition (0: one process)
     !> unit of the element-loop trace (LDFCZ_LOOP_TRACE=PREFIX: PREFIX.rankR.csv, one row per element loop with
     !> this process's seconds per cost class; docs/host.md "Diagnostics"); 0: off
     integer :: loop_trace = 0
+  end type loop_timings_t
+
+  !> The analysis: the discretised model (fixed after analysis_init: dof maps, element data, materials, partition)
+  !> and, by role, the analysis state (what a continuation needs), the equations of the step, the solver's working
+  !> data and the timings.
+  type :: analysis_t
+    integer :: ndim = 3                         !< 2 or 3
+    integer :: ndof = 0                         !< ndim * nnode
+    logical :: symmetric = .true.               !< LDL^T with symmetrised element matrices
+    integer, allocatable :: elem_ptr(:)         !< (nelem+1) into elem_dof
+    integer, allocatable :: elem_dof(:)         !< global dof of each element dof
+    integer :: max_ndofel = 0                   !< largest number of dofs of an element
+    logical, allocatable :: used(:)             !< (ndof) dof attached to an element
+    integer, allocatable :: elem_nip(:)         !< integration points per element (continuum)
+    character(len=8), allocatable :: elem_tname(:) !< Abaqus element type name ('C3D8', ...) or 'U'
+    type(solid_material_t), allocatable :: mats(:)  !< per section
+    type(elem_axes_t), allocatable :: axes(:)   !< (nelem) local material axes (*ORIENTATION)
+    !> (nelem) index into geo of a continuum element this process computes, 0 otherwise (user elements, other
+    !> processes' elements: element_geometry computes theirs)
+    integer, allocatable :: elem_geo(:)
+    type(solid_geometry_t), allocatable :: geo(:)  !< reference data of those elements (computed once)
+    type(node_rotation_t) :: nr                 !< *TRANSFORM local node systems (node_rotations): u, u_conv, fint,
+                                                !< fext, fdl and the system are in their components at those nodes
+    type(user_routines_t) :: routines           !< UEL and UMAT in use
+    type(parallel_t) :: par                     !< processes of the run (parallel_context)
+    logical, allocatable :: owned(:)            !< (nelem) elements this process computes (all in a serial run)
+    !> METIS vertex weight of each cost class (cost_class: UMAT continuum, *ELASTIC continuum, user element)
+    integer :: cost_weight(n_cost_class) = [6, 5, 1]
+    integer(i8) :: partition_sig = 0            !< signature of the partition (0: one process)
+    type(analysis_state_t) :: state             !< what a continuation needs (analysis_state; restart_file)
+    type(equation_system_t) :: eqs              !< the equations of the step
+    type(solver_work_t) :: work                 !< the current iterate and the element loop's results
+    type(loop_timings_t) :: timing              !< times and counts
   end type analysis_t
 
 contains
@@ -143,17 +158,24 @@ contains
   end function elem_type_name
 
   !> Dof maps, materials and initial (zero) states.
-  subroutine analysis_init(an, model, routines, stat, errmsg)
+  subroutine analysis_init(an, model, routines, stat, errmsg, options)
     type(analysis_t), intent(inout) :: an                !< analysis data (filled; an%par set by the caller)
     type(model_t), intent(in) :: model                   !< the model
     type(user_routines_t), intent(in) :: routines        !< UEL and UMAT to call
     integer, intent(out) :: stat                         !< 0 ok, 2 model error
     character(len=:), allocatable, intent(out) :: errmsg !< message
+    !> the partition's weights and pieces, the factorization's choices (default: solver_options_t's)
+    type(solver_options_t), intent(in), optional :: options
+    type(solver_options_t) :: opt
     integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra
     character(len=16) :: b
 
     stat = 0
     errmsg = ''
+    if (present(options)) opt = options
+    an%cost_weight = opt%element_weights
+    an%eqs%factoring = factoring_t(opt%symmetric_factors, opt%single_factors, opt%factor_blas_threads, &
+      opt%factor_min_flops)
     an%routines = routines
     an%ndim = model%ndim
     an%ndof = model%ndim * model%nnode
@@ -198,7 +220,7 @@ contains
       an%used(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)) = .true.
     end do
     an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
-    call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%ncolor, an%color_ptr, an%color_elem)
+    call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)
 
     ! materials per section
     allocate (an%mats(max(1, model%nsection)))
@@ -245,17 +267,17 @@ contains
       if (model%steps(is)%unsymm) an%symmetric = .false.
     end do
 
-    call partition(an, model, stat, errmsg)
+    call partition(an, model, opt%partition_pieces, stat, errmsg)
     if (stat /= 0) return
     ! states: of this process's elements only (all in a one-process run; state_gather brings another process's
     ! converged state where output needs it)
-    allocate (an%conv(model%nelem))
+    allocate (an%state%conv(model%nelem))
     do ie = 1, model%nelem
       if (model%elem_kind(ie) /= etype_user) then
         call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, ntens, ndi, nshr, nextra)
         an%elem_nip(ie) = nip
       end if
-      if (an%owned(ie)) call element_state_allocate(an, model, ie, an%conv(ie))
+      if (an%owned(ie)) call element_state_allocate(an, model, ie, an%state%conv(ie))
     end do
     ! reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
     ! process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
@@ -282,40 +304,28 @@ contains
     call open_loop_trace(an)
     call node_rotations_build(an%nr, model, stat, errmsg)
     if (stat /= 0) return
-    call constraints_build(an%cs, model, an%used, stat, errmsg)
+    call constraints_build(an%eqs%cs, model, an%used, stat, errmsg)
     if (stat /= 0) return
-    ! initial temperatures (*INITIAL CONDITIONS, TYPE=TEMPERATURE; 0 elsewhere), in deck order
-    allocate (an%temp_start(model%nnode), an%temp_end(model%nnode))
-    an%temp_start = 0.0_dp
-    do k = 1, model%ntemp_init
-      an%temp_start(model%temp_inits(k)%nodes) = model%temp_inits(k)%value
-    end do
-    an%temp_end = an%temp_start
-    ! initial field variables (*INITIAL CONDITIONS, TYPE=FIELD, VARIABLE=n; 0 elsewhere), in deck order
-    allocate (an%field_start(model%nfield * model%nnode), an%field_end(model%nfield * model%nnode))
-    an%field_start = 0.0_dp
-    do k = 1, model%nfield_init
-      associate (fi => model%field_inits(k))
-        an%field_start((fi%nodes - 1) * model%nfield + fi%dof) = fi%value
-      end associate
-    end do
-    an%field_end = an%field_start
-    an%trial = an%conv
-    allocate (an%u(an%ndof), an%u_conv(an%ndof), an%fint(an%ndof), an%fe(an%elem_ptr(model%nelem + 1) - 1))
-    an%u = 0.0_dp
-    an%u_conv = 0.0_dp
-    an%fint = 0.0_dp
-    an%fe = 0.0_dp
-    allocate (an%fext(an%ndof), an%fdl(an%ndof), an%fdle(size(an%fe)))
-    an%fext = 0.0_dp
-    an%fdl = 0.0_dp
-    an%fdle = 0.0_dp
-    allocate (an%prescribed(an%ndof), an%eq(an%ndof))
-    an%prescribed = .false.
-    an%eq = 0
+    ! the state before the first increment (analysis_state): the model data's boundaries, the initial temperatures
+    ! and field variables; the element states above
+    call analysis_state_init(an%state, model, an%ndof)
+    an%work%temp_end = an%state%temp_start
+    an%work%field_end = an%state%field_start
+    an%work%trial = an%state%conv
+    allocate (an%work%u(an%ndof), an%work%fint(an%ndof), an%work%fe(an%elem_ptr(model%nelem + 1) - 1))
+    an%work%u = 0.0_dp
+    an%work%fint = 0.0_dp
+    an%work%fe = 0.0_dp
+    allocate (an%work%fext(an%ndof), an%work%fdl(an%ndof), an%work%fdle(size(an%work%fe)))
+    an%work%fext = 0.0_dp
+    an%work%fdl = 0.0_dp
+    an%work%fdle = 0.0_dp
+    allocate (an%eqs%prescribed(an%ndof), an%eqs%eq(an%ndof))
+    an%eqs%prescribed = .false.
+    an%eqs%eq = 0
   end subroutine analysis_init
 
-  !> Equation numbers for the free dofs (an%prescribed set by the caller) and the sparse system (pattern,
+  !> Equation numbers for the free dofs (an%eqs%prescribed set by the caller) and the sparse system (pattern,
   !> METIS ordering, MUMPS analysis) when the set of free dofs changed.
   subroutine analysis_number_equations(an, model, stat, errmsg)
     type(analysis_t), intent(inout) :: an                !< analysis data
@@ -331,11 +341,11 @@ contains
     eq_new = 0
     n = 0
     do i = 1, an%ndof
-      if (an%used(i) .and. .not. an%prescribed(i) .and. an%cs%of_dof(i) == 0) then
+      if (an%used(i) .and. .not. an%eqs%prescribed(i) .and. an%eqs%cs%of_dof(i) == 0) then
         n = n + 1
         eq_new(i) = n
       end if
-      if (an%prescribed(i) .and. an%cs%of_dof(i) /= 0) then
+      if (an%eqs%prescribed(i) .and. an%eqs%cs%of_dof(i) /= 0) then
         stat = 2
         write (msg, '(a,i0,a,i0)') 'a *BOUNDARY prescribes dof ', mod(i - 1, an%ndim) + 1, ' of node ', &
           model%node_id((i - 1) / an%ndim + 1)
@@ -344,63 +354,58 @@ contains
         return
       end if
     end do
-    if (an%sys_ready .and. all(eq_new == an%eq)) return
-    if (.not. an%sys_ready .and. n == 0 .and. all(eq_new == an%eq)) return
-    an%eq = eq_new
-    an%neq = n
-    if (an%sys_ready) then
+    if (an%eqs%sys_ready .and. all(eq_new == an%eqs%eq)) return
+    if (.not. an%eqs%sys_ready .and. n == 0 .and. all(eq_new == an%eqs%eq)) return
+    an%eqs%eq = eq_new
+    an%eqs%neq = n
+    if (an%eqs%sys_ready) then
       ! the old system goes away with its timers: keep them for the summary
-      an%t_factor_done = an%t_factor_done + sparse_time_factor(an%sys)
-      an%t_solve_done = an%t_solve_done + sparse_time_solve(an%sys)
-      an%t_setup_done = an%t_setup_done + sparse_time_analysis(an%sys)
-      an%n_factor_done = an%n_factor_done + sparse_factor_count(an%sys)
+      an%timing%t_factor_done = an%timing%t_factor_done + sparse_time_factor(an%eqs%sys)
+      an%timing%t_solve_done = an%timing%t_solve_done + sparse_time_solve(an%eqs%sys)
+      an%timing%t_setup_done = an%timing%t_setup_done + sparse_time_analysis(an%eqs%sys)
+      an%timing%n_factor_done = an%timing%n_factor_done + sparse_factor_count(an%eqs%sys)
     end if
     if (n == 0) then
       ! every dof prescribed: only reactions to compute, no linear system
-      if (an%sys_ready) call sparse_destroy(an%sys)
-      an%sys_ready = .false.
+      if (an%eqs%sys_ready) call sparse_destroy(an%eqs%sys)
+      an%eqs%sys_ready = .false.
       return
     end if
     allocate (eq_node(n))
     do i = 1, an%ndof
-      if (an%eq(i) > 0) eq_node(an%eq(i)) = (i - 1) / an%ndim + 1
+      if (an%eqs%eq(i) > 0) eq_node(an%eqs%eq(i)) = (i - 1) / an%ndim + 1
     end do
-    an%elem_eq = an%eq(an%elem_dof)
-    if (an%cs%n > 0) then
+    an%eqs%elem_eq = an%eqs%eq(an%elem_dof)
+    if (an%eqs%cs%n > 0) then
       ! eliminated dofs: extended element lists (masters appended), colours of the extended lists
-      if (allocated(an%cs%xptr)) deallocate (an%cs%xptr, an%cs%xeq, an%cs%xdof, an%cs%tptr, an%cs%trow, &
-        an%cs%tcol, an%cs%tw)
-      call constraints_extend(an%cs, an%elem_ptr, an%elem_dof, an%eq)
-      call color_elements(model%nelem, an%ndof, an%cs%xptr, an%cs%xdof, an%ncolor, an%color_ptr, an%color_elem)
-      call sparse_setup(an%sys, n, an%cs%xptr, an%cs%xeq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%sym_factors, single_factors=an%single_factors, par=an%par, owned=an%owned)
+      if (allocated(an%eqs%cs%xptr)) deallocate (an%eqs%cs%xptr, an%eqs%cs%xeq, an%eqs%cs%xdof, an%eqs%cs%tptr, an%eqs%cs%trow, &
+        an%eqs%cs%tcol, an%eqs%cs%tw)
+      call constraints_extend(an%eqs%cs, an%elem_ptr, an%elem_dof, an%eqs%eq)
+      call color_elements(model%nelem, an%ndof, an%eqs%cs%xptr, an%eqs%cs%xdof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)
+      call sparse_setup(an%eqs%sys, n, an%eqs%cs%xptr, an%eqs%cs%xeq, eq_node, an%symmetric, stat, msg, &
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned)
     else
-      call sparse_setup(an%sys, n, an%elem_ptr, an%elem_eq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%sym_factors, single_factors=an%single_factors, par=an%par, owned=an%owned)
+      call sparse_setup(an%eqs%sys, n, an%elem_ptr, an%eqs%elem_eq, eq_node, an%symmetric, stat, msg, &
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned)
     end if
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
       stat = 2
       return
     end if
-    call sparse_set_factor_threads(an%sys, an%factor_blas_threads, an%factor_min_flops)
-    an%sys_ready = .true.
+    call sparse_set_factor_threads(an%eqs%sys, an%eqs%factoring%blas_threads, an%eqs%factoring%min_flops)
+    an%eqs%sys_ready = .true.
     if (.false.) print *, model%nnode
   end subroutine analysis_number_equations
 
-  !> Element loop at the current estimate an%u (increment du = u - u_conv): every element gets a fresh copy of its
-  !> converged state; internal forces into an%fint, tangents into an%sys when want_k. pnewdt_min is the smallest
-  !> PNEWDT requested; stat /= 0 when an element failed (errmsg names it).
-  subroutine analysis_assemble(an, model, kstep, kinc, time, dtime, period, nlgeom, want_k, pnewdt_min, stat, errmsg, &
-      pnewdt_who, carry, k_carry)
+  !> Element loop at the current estimate an%work%u (increment du = u - u_conv): every element gets a fresh copy of its
+  !> converged state; internal forces into an%work%fint, tangents into an%eqs%sys when want_k. pnewdt_min is the smallest
+  !> PNEWDT requested; stat /= 0 when an element failed (errmsg names it). The increment inc gives the elements
+  !> KSTEP, KINC, TIME, DTIME, PERIOD, NLGEOM and whether the start is extrapolated (LFLAGS(5)).
+  subroutine analysis_assemble(an, model, inc, want_k, pnewdt_min, stat, errmsg, pnewdt_who, carry, k_carry)
     type(analysis_t), intent(inout) :: an                !< analysis data
     type(model_t), intent(in) :: model                   !< the model
-    integer, intent(in) :: kstep                         !< step number
-    integer, intent(in) :: kinc                          !< increment number
-    real(dp), intent(in) :: time(2)                      !< step and total time at the start of the increment
-    real(dp), intent(in) :: dtime                        !< time increment
-    real(dp), intent(in) :: period                       !< step period
-    logical, intent(in) :: nlgeom                        !< geometric nonlinearity
+    type(increment_t), intent(in) :: inc                 !< the increment
     logical, intent(in) :: want_k                        !< assemble the tangent
     real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
     integer, intent(out) :: stat                         !< 0 ok, 1 an element failed
@@ -412,7 +417,7 @@ contains
     !> (symmetrised for LDL^T) over all dofs, prescribed ones included
     real(dp), intent(in), optional :: carry(:)
     real(dp), intent(out), optional :: k_carry(:)          !< (ndof) K carry
-    integer :: ie, ic, c, n, k, fail_elem, st, m, pn_elem, kc
+    integer :: ie, ic, c, n, fail_elem, st, pn_elem, kc
     real(dp), allocatable :: ke(:, :), fel(:), kx(:, :), fk(:)
     real(dp) :: ctime(n_cost_class)        !< seconds in the element routines per cost class (this loop)
     integer(i8) :: ccalls(n_cost_class)    !< calls per cost class
@@ -426,7 +431,7 @@ contains
     call system_clock(c0, rate)
     cpu0 = 0.0_dp
     cpu1 = 0.0_dp
-    if (an%loop_trace /= 0) call cpu_time(cpu0)
+    if (an%timing%loop_trace /= 0) call cpu_time(cpu0)
     comm0 = an%par%t_comm
     stat = 0
     errmsg = ''
@@ -435,8 +440,8 @@ contains
     first_msg = ''
     pn_worst = 1.0_dp
     pn_elem = 0
-    if (want_k .and. an%neq > 0) call sparse_zero(an%sys)
-    an%fdle = 0.0_dp
+    if (want_k .and. an%eqs%neq > 0) call sparse_zero(an%eqs%sys)
+    an%work%fdle = 0.0_dp
     with_carry = present(carry) .and. present(k_carry) .and. want_k
     if (with_carry) then
       allocate (fk(size(an%elem_dof)))
@@ -446,20 +451,19 @@ contains
     ccalls = 0
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
-    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, m, kc, e0, e1)
+    !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, kc, e0, e1)
     allocate (ke(an%max_ndofel, an%max_ndofel), fel(an%max_ndofel))
-    allocate (kx(max(1, an%cs%max_x), max(1, an%cs%max_x)))
-    do c = 1, an%ncolor
+    allocate (kx(max(1, an%eqs%cs%max_x), max(1, an%eqs%cs%max_x)))
+    do c = 1, an%eqs%ncolor
       !$omp do schedule(dynamic, 8) reduction(min: pnewdt_min) reduction(+: ctime, ccalls)
-      do ic = an%color_ptr(c), an%color_ptr(c + 1) - 1
-        ie = an%color_elem(ic)
+      do ic = an%eqs%color_ptr(c), an%eqs%color_ptr(c + 1) - 1
+        ie = an%eqs%color_elem(ic)
         if (.not. an%owned(ie)) cycle   ! another process's element (distributed run)
         n = an%elem_ptr(ie + 1) - an%elem_ptr(ie)
         pn = pnewdt_large
         call abaqus_set_caller(ie)
         call system_clock(e0)
-        call element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel(1:n), &
-          ke(1:n, 1:n), pn, st, msg)
+        call element_compute(an, model, ie, n, inc, want_k, fel(1:n), ke(1:n, 1:n), pn, st, msg)
         call system_clock(e1)
         kc = cost_class(an, model, ie)
         ctime(kc) = ctime(kc) + real(e1 - e0, dp)
@@ -483,17 +487,12 @@ contains
           end if
           !$omp end critical (analysis_pnewdt)
         end if
-        an%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
-        if (want_k .and. an%neq > 0) then
-          if (an%symmetric) ke(1:n, 1:n) = 0.5_dp * (ke(1:n, 1:n) + transpose(ke(1:n, 1:n)))
-          if (with_carry) fk(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
-            matmul(ke(1:n, 1:n), carry(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)))
-          if (an%cs%n > 0) then
-            ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
-            call constraints_transform(an%cs, ie, ke(1:n, 1:n), m, kx)
-            call sparse_add_element(an%sys, ie, kx(1:m, 1:m), exclusive=.true.)
+        an%work%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fel(1:n)
+        if (want_k .and. an%eqs%neq > 0) then
+          if (with_carry) then
+            call add_element_tangent(an, ie, ke(1:n, 1:n), kx, carry, fk)
           else
-            call sparse_add_element(an%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+            call add_element_tangent(an, ie, ke(1:n, 1:n), kx)
           end if
         end if
       end do
@@ -502,29 +501,22 @@ contains
     call abaqus_set_caller(0)
     deallocate (ke, fel, kx)
     !$omp end parallel
-    an%class_time = an%class_time + ctime / real(rate, dp)
-    an%class_calls = an%class_calls + ccalls
+    an%timing%class_time = an%timing%class_time + ctime / real(rate, dp)
+    an%timing%class_calls = an%timing%class_calls + ccalls
     ! a stop asked by a user routine, with the element recorded when it asked
-    an%stop_asked = abaqus_stop_requested()
-    an%stop_elem = 0
-    an%stop_text = ''
-    if (an%stop_asked) then
-      an%stop_elem = abaqus_stop_element()
-      an%stop_text = abaqus_stop_message()
+    an%work%stop%asked = abaqus_stop_requested()
+    an%work%stop%elem = 0
+    an%work%stop%text = ''
+    if (an%work%stop%asked) then
+      an%work%stop%elem = abaqus_stop_element()
+      an%work%stop%text = abaqus_stop_message()
     end if
-    an%fint = 0.0_dp
-    an%fdl = 0.0_dp
-    do k = 1, size(an%elem_dof)
-      an%fint(an%elem_dof(k)) = an%fint(an%elem_dof(k)) + an%fe(k)
-      an%fdl(an%elem_dof(k)) = an%fdl(an%elem_dof(k)) + an%fdle(k)
-    end do
+    ! the element forces into the dofs' (and K carry's)
+    call scatter_add(an, an%work%fe, an%work%fint)
+    call scatter_add(an, an%work%fdle, an%work%fdl)
     if (present(k_carry)) then
       k_carry = 0.0_dp
-      if (with_carry) then
-        do k = 1, size(an%elem_dof)
-          k_carry(an%elem_dof(k)) = k_carry(an%elem_dof(k)) + fk(k)
-        end do
-      end if
+      if (with_carry) call scatter_add(an, fk, k_carry)
     end if
     who = ''
     if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
@@ -533,27 +525,19 @@ contains
     ! this process's loop, before any reduction (what the slowest process's time is the largest of)
     call system_clock(c1)
     loop_own = real(c1 - c0, dp) / real(rate, dp)
-    if (an%loop_trace /= 0) call cpu_time(cpu1)
+    if (an%timing%loop_trace /= 0) call cpu_time(cpu1)
     loop_slowest = loop_own
     if (parallel_distributed(an%par)) then
       comm1 = an%par%t_comm
       loop_slowest = parallel_max(an%par, loop_own)
-      an%t_assembly_slowest = an%t_assembly_slowest + loop_slowest
-      an%t_loop_own = an%t_loop_own + loop_own
-      an%t_loop_wait = an%t_loop_wait + (an%par%t_comm - comm1)
-      ! the processes' parts: forces summed, the smallest PNEWDT, the first failing element and the element that
-      ! asked to stop (lowest label or index over the processes), so that every process decides alike
-      call parallel_sum(an%par, an%fint)
-      call parallel_sum(an%par, an%fdl)
-      if (with_carry) call parallel_sum(an%par, k_carry)
-      pnewdt_min = parallel_min(an%par, pnewdt_min)
-      if (parallel_min(an%par, pn_worst) < pn_worst) pn_elem = 0
-      call parallel_lowest(an%par, pn_elem, who)
-      if (fail_elem == huge(1)) fail_elem = 0
-      call parallel_lowest(an%par, fail_elem, fail_text)
-      if (fail_elem == 0) fail_elem = huge(1)
-      an%stop_asked = parallel_any(an%par, an%stop_asked)
-      if (an%stop_asked) call parallel_lowest(an%par, an%stop_elem, an%stop_text, an%stop_rank)
+      an%timing%t_assembly_slowest = an%timing%t_assembly_slowest + loop_slowest
+      an%timing%t_loop_own = an%timing%t_loop_own + loop_own
+      an%timing%t_loop_wait = an%timing%t_loop_wait + (an%par%t_comm - comm1)
+      if (with_carry) then
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
+      else
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text)
+      end if
     end if
     if (fail_elem /= huge(1)) then
       stat = 1
@@ -562,21 +546,81 @@ contains
     if (present(pnewdt_who)) pnewdt_who = who
     call system_clock(c1)
     ! the reductions are communication, not assembly
-    an%t_assembly = an%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
-    an%n_assembly = an%n_assembly + 1
-    if (an%loop_trace /= 0) write (an%loop_trace, '(i0,3(",",i0),6(",",es10.4e2),3(",",i0))') &
-      an%n_assembly, kstep, kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, ctime / real(rate, dp), &
-      ccalls
+    an%timing%t_assembly = an%timing%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
+    an%timing%n_assembly = an%timing%n_assembly + 1
+    if (an%timing%loop_trace /= 0) write (an%timing%loop_trace, '(i0,3(",",i0),6(",",es10.4e2),3(",",i0))') &
+      an%timing%n_assembly, inc%step, inc%kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, &
+      ctime / real(rate, dp), ccalls
   end subroutine analysis_assemble
 
+  !> Element ie's tangent ke into the sparse system (symmetrised for LDL^T; T^T K T on the extended dofs of an
+  !> element holding *EQUATION-eliminated dofs, kx the work matrix for it); with carry, fk of the element = K carry.
+  !> Called within the colour loop: no other thread touches the element's entries.
+  subroutine add_element_tangent(an, ie, ke, kx, carry, fk)
+    type(analysis_t), intent(inout) :: an           !< analysis data
+    integer, intent(in) :: ie                       !< element
+    real(dp), intent(inout) :: ke(:, :)             !< (n, n) its tangent (symmetrised here when an%symmetric)
+    real(dp), intent(inout) :: kx(:, :)             !< work: the extended element matrix
+    real(dp), intent(in), optional :: carry(:)      !< (ndof) displacement change carried through the tangent
+    real(dp), intent(inout), optional :: fk(:)      !< (elem_ptr layout) K carry per element dof
+    integer :: n, m
+    n = size(ke, 1)
+    if (an%symmetric) ke = 0.5_dp * (ke + transpose(ke))
+    if (present(carry)) fk(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
+      matmul(ke, carry(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)))
+    if (an%eqs%cs%n > 0) then
+      ! T^T K T on the element's extended dofs (eliminated *EQUATION dofs)
+      call constraints_transform(an%eqs%cs, ie, ke(1:n, 1:n), m, kx)
+      call sparse_add_element(an%eqs%sys, ie, kx(1:m, 1:m), exclusive=.true.)
+    else
+      call sparse_add_element(an%eqs%sys, ie, ke(1:n, 1:n), exclusive=.true.)
+    end if
+  end subroutine add_element_tangent
+
+  !> v (ndof) = the sum of the element-dof values ve (elem_ptr layout) at each dof.
+  subroutine scatter_add(an, ve, v)
+    type(analysis_t), intent(in) :: an      !< analysis data (dof maps)
+    real(dp), intent(in) :: ve(:)           !< per element dof
+    real(dp), intent(out) :: v(:)           !< per dof
+    integer :: k
+    v = 0.0_dp
+    do k = 1, size(an%elem_dof)
+      v(an%elem_dof(k)) = v(an%elem_dof(k)) + ve(k)
+    end do
+  end subroutine scatter_add
+
+  !> A distributed run's element loop: the processes' parts combined, forces summed, the smallest PNEWDT, the first
+  !> failing element and the element that asked to stop (lowest label or index over the processes), so that every
+  !> process decides alike.
+  subroutine reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
+    type(analysis_t), intent(inout) :: an                    !< analysis data (forces, stop request)
+    real(dp), intent(inout) :: pnewdt_min                    !< smallest PNEWDT
+    real(dp), intent(in) :: pn_worst                         !< this process's smallest PNEWDT < 1 (1: none)
+    integer, intent(inout) :: pn_elem                        !< its element (0: none)
+    character(len=:), allocatable, intent(inout) :: who      !< who asked for the smallest PNEWDT
+    integer, intent(inout) :: fail_elem                      !< label of the first failing element (huge: none)
+    character(len=:), allocatable, intent(inout) :: fail_text !< its message
+    real(dp), intent(inout), optional :: k_carry(:)          !< K carry
+    call parallel_sum(an%par, an%work%fint)
+    call parallel_sum(an%par, an%work%fdl)
+    if (present(k_carry)) call parallel_sum(an%par, k_carry)
+    pnewdt_min = parallel_min(an%par, pnewdt_min)
+    if (parallel_min(an%par, pn_worst) < pn_worst) pn_elem = 0
+    call parallel_lowest(an%par, pn_elem, who)
+    if (fail_elem == huge(1)) fail_elem = 0
+    call parallel_lowest(an%par, fail_elem, fail_text)
+    if (fail_elem == 0) fail_elem = huge(1)
+    an%work%stop%asked = parallel_any(an%par, an%work%stop%asked)
+    if (an%work%stop%asked) call parallel_lowest(an%par, an%work%stop%elem, an%work%stop%text, an%work%stop%rank)
+  end subroutine reduce_over_processes
+
   !> One element: UEL through the procedure pointer, or the continuum element with its material.
-  subroutine element_compute(an, model, ie, n, kstep, kinc, time, dtime, period, nlgeom, want_k, fel, ke, pnewdt, &
-      stat, msg)
+  subroutine element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
     type(analysis_t), intent(inout) :: an
     type(model_t), intent(in) :: model
-    integer, intent(in) :: ie, n, kstep, kinc
-    real(dp), intent(in) :: time(2), dtime, period
-    logical, intent(in) :: nlgeom, want_k
+    integer, intent(in) :: ie, n
+    type(increment_t), intent(in) :: inc
+    logical, intent(in) :: want_k
     real(dp), intent(out) :: fel(n), ke(n, n)
     real(dp), intent(inout) :: pnewdt
     integer, intent(out) :: stat
@@ -588,12 +632,22 @@ contains
     integer :: jdltyp(mdload, 1), lflags(5), ndload, im
     integer, allocatable :: jprops(:)
     character(len=16) :: b
+    integer :: kstep, kinc
+    real(dp) :: time(2), dtime, period
+    logical :: nlgeom
 
+    ! copies of the increment's values (a user routine may write to its arguments)
+    kstep = inc%step
+    kinc = inc%kinc
+    time = increment_time(inc)
+    dtime = inc%dt
+    period = inc%period
+    nlgeom = inc%nlgeom
     stat = 0
     msg = ''
     nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
-    ue = an%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-    due(:, 1) = ue - an%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    ue = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    due(:, 1) = ue - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
     if (an%nr%elem_has(ie)) then
       ! *TRANSFORM: the element works in global components
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ue)
@@ -611,10 +665,10 @@ contains
       ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
       do a = 1, nn
         nd = model%conn(model%conn_ptr(ie) + a - 1)
-        predef(1, 1, a) = an%temp_end(nd)
-        predef(2, 1, a) = predef(1, 1, a) - an%temp_start(nd)
-        predef(1, 2:1 + nf, a) = an%field_end((nd - 1) * nf + 1:nd * nf)
-        predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%field_start((nd - 1) * nf + 1:nd * nf)
+        predef(1, 1, a) = an%work%temp_end(nd)
+        predef(2, 1, a) = predef(1, 1, a) - an%state%temp_start(nd)
+        predef(1, 2:1 + nf, a) = an%work%field_end((nd - 1) * nf + 1:nd * nf)
+        predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%state%field_start((nd - 1) * nf + 1:nd * nf)
       end do
       ip = model%elem_uelprop(ie)
       if (ip > 0) then
@@ -627,9 +681,9 @@ contains
       if (size(jprops) == 0) jprops = [0]
       nsv = model%utypes(iu)%nsvars
       ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
-      sv = an%conv(ie)%svars
+      sv = an%state%conv(ie)%svars
       if (size(sv) == 0) sv = svars
-      energy = an%conv(ie)%energy
+      energy = an%state%conv(ie)%energy
       rhs = 0.0_dp
       ke = 0.0_dp
       v = 0.0_dp
@@ -637,12 +691,12 @@ contains
       params = 0.0_dp
       ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
       ! DDLMAG(k,1) its increment (Abaqus UEL interface)
-      call dload_uel_arrays(an%dl, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
+      call dload_uel_arrays(an%state%loads%dload, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
         ddlmag(:, 1))
       ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
       ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
       ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
-      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, an%extrapolated)]
+      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
       call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
         ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
         adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
@@ -653,24 +707,24 @@ contains
         msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
         return
       end if
-      if (nsv > 0) an%trial(ie)%svars = sv(1:nsv)
-      an%trial(ie)%energy = energy
+      if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
+      an%work%trial(ie)%energy = energy
       ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
       if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
     else
       do a = 1, nn
         coords(1:an%ndim, a) = model%x(1:an%ndim, model%conn(model%conn_ptr(ie) + a - 1))
       end do
-      associate (st => an%trial(ie), cv => an%conv(ie))
+      associate (st => an%work%trial(ie), cv => an%state%conv(ie))
         call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
           an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
           model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
           energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
-          temp_nodes=an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
-          dtemp_nodes=an%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
-          an%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t, &
-          field_nodes=element_fields(an%field_start), dfield_nodes=element_fields(an%field_end) - &
-          element_fields(an%field_start))
+          temp_nodes=an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
+          dtemp_nodes=an%work%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
+          an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t, &
+          field_nodes=element_fields(an%state%field_start), dfield_nodes=element_fields(an%work%field_end) - &
+          element_fields(an%state%field_start))
         st%energy = 0.0_dp
         st%energy(2) = e2(1)
         st%energy(4) = e2(2)
@@ -683,16 +737,16 @@ contains
           an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
         stat = 1
       end if
-      if (stat == 0 .and. dload_has(an%dl, ie)) then
+      if (stat == 0 .and. dload_has(an%state%loads%dload, ie)) then
         ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
         im = model%elem_section(ie)
         rho = 0.0_dp
         if (im > 0) rho = model_density(model, im)
         associate (g => an%geo(an%elem_geo(ie)))
-          call dload_element(an%dl, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue, nlgeom, &
+          call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue, nlgeom, &
             g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, fl, kl)
         end associate
-        an%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
+        an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
         if (want_k) ke = ke + kl
       end if
     end if
@@ -701,14 +755,14 @@ contains
       associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
         call element_to_local(an%nr, nodes, fel)
         if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
-          an%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+          an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
         if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
       end associate
     end if
 
   contains
 
-    !> (nfield, nnode) the field variables of the element's nodes in v (an%field_start or an%field_end).
+    !> (nfield, nnode) the field variables of the element's nodes in v (an%state%field_start or an%work%field_end).
     pure function element_fields(v) result(fe)
       real(dp), intent(in) :: v(:)
       real(dp) :: fe(model%nfield, model%conn_ptr(ie + 1) - model%conn_ptr(ie))
@@ -784,17 +838,6 @@ contains
     state%eip = 0.0_dp
   end subroutine element_state_allocate
 
-  !> An element state without arrays (another process's element in a distributed run), its energies zero.
-  pure subroutine element_state_free(state)
-    type(elem_state_t), intent(inout) :: state      !< the state
-    if (allocated(state%stress)) deallocate (state%stress)
-    if (allocated(state%stran)) deallocate (state%stran)
-    if (allocated(state%statev)) deallocate (state%statev)
-    if (allocated(state%eip)) deallocate (state%eip)
-    if (allocated(state%svars)) deallocate (state%svars)
-    state%energy = 0.0_dp
-  end subroutine element_state_free
-
   !> Dimensions of continuum element ie's state arrays: ntens, nip, and the STATEV rows (the material's NSTATV,
   !> then the element's own incompatible-mode parameters; at least 1).
   pure function continuum_state_dims(an, model, ie) result(d)
@@ -828,13 +871,14 @@ contains
   !> partition of the element graph (element_partition), each element weighted by the cost of its class in the
   !> element loop (an%cost_weight: by default 6, 5, 1 for UMAT continuum, *ELASTIC continuum, user element, as
   !> measured on the 3D peel family; --element-weights sets others: every run measures its classes' costs and
-  !> run_summary prints them). The partition is interleaved: METIS pieces, an%partition_pieces per process
+  !> run_summary prints them). The partition is interleaved: METIS pieces, pieces_given per process
   !> (partition_pieces_default when 0; --partition-pieces), dealt out in turn, so that a costly region that moves
   !> (a plastic zone at the delamination front) is shared by the processes.
   !> The owner map's signature goes into the restart fingerprint: a restart needs the same partition.
-  subroutine partition(an, model, stat, errmsg)
+  subroutine partition(an, model, pieces_given, stat, errmsg)
     type(analysis_t), intent(inout) :: an                !< analysis data (an%par set)
     type(model_t), intent(in) :: model                   !< the model
+    integer, intent(in) :: pieces_given                  !< pieces per process (0: partition_pieces_default)
     integer, intent(out) :: stat                         !< 0 ok
     character(len=:), allocatable, intent(out) :: errmsg !< message
     integer, allocatable :: weight(:), owner(:)
@@ -849,7 +893,7 @@ contains
     do ie = 1, model%nelem
       weight(ie) = an%cost_weight(cost_class(an, model, ie))
     end do
-    pieces = an%partition_pieces
+    pieces = pieces_given
     if (pieces == 0) pieces = partition_pieces_default(model%nelem, an%par%nranks)
     call partition_elements(model%nnode, model%conn_ptr, model%conn(1:model%conn_ptr(model%nelem + 1) - 1), &
       weight, an%par%nranks, pieces, owner, stat, msg)
@@ -882,16 +926,16 @@ contains
     allocate (character(len=length) :: prefix)
     call get_environment_variable('LDFCZ_LOOP_TRACE', prefix)
     path = prefix//'.rank'//itoa(an%par%rank)//'.csv'
-    open (newunit=an%loop_trace, file=path, status='replace', action='write', iostat=ios, iomsg=iomsg)
+    open (newunit=an%timing%loop_trace, file=path, status='replace', action='write', iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
       ! a diagnostic that cannot change the analysis: the run goes on (a failure on one process only must not
       ! part the processes), said on the error output by the process concerned
-      an%loop_trace = 0
+      an%timing%loop_trace = 0
       write (error_unit, '(a)') 'ldfcz: warning: LDFCZ_LOOP_TRACE: cannot write '//path//' ('//trim(iomsg)// &
         '): no element-loop trace from process '//itoa(an%par%rank)
       return
     end if
-    write (an%loop_trace, '(a)') 'loop,step,increment,tangent,loop_s,slowest_s,cpu_s,umat_s,elastic_s,user_s,' // &
+    write (an%timing%loop_trace, '(a)') 'loop,step,increment,tangent,loop_s,slowest_s,cpu_s,umat_s,elastic_s,user_s,' // &
       'umat_calls,elastic_calls,user_calls'
   end subroutine open_loop_trace
 
@@ -900,9 +944,9 @@ contains
   !> with a non-zero status (a run stopped by --stop-after-increments or SIGTERM, exit 3 or 128+n).
   subroutine close_loop_trace(an)
     type(analysis_t), intent(inout) :: an  !< analysis data
-    if (an%loop_trace == 0) return
-    close (an%loop_trace)
-    an%loop_trace = 0
+    if (an%timing%loop_trace == 0) return
+    close (an%timing%loop_trace)
+    an%timing%loop_trace = 0
   end subroutine close_loop_trace
 
   !> Pieces per process of the interleaved partition when --partition-pieces is not given: 32, as measured on the
@@ -971,8 +1015,8 @@ contains
               end if
             end if
             if (.not. an%owned(ie)) cycle
-            do ip = 1, size(an%conv(ie)%stress, 2)
-              an%conv(ie)%stress(1:min(nt, nv), ip) = ic%values(1:min(nt, nv))
+            do ip = 1, size(an%state%conv(ie)%stress, 2)
+              an%state%conv(ie)%stress(1:min(nt, nv), ip) = ic%values(1:min(nt, nv))
             end do
           else
             if (nv /= an%mats(model%elem_section(ie))%nstatv) then
@@ -984,8 +1028,8 @@ contains
               return
             end if
             if (.not. an%owned(ie)) cycle
-            do ip = 1, size(an%conv(ie)%statev, 2)
-              an%conv(ie)%statev(1:nv, ip) = ic%values
+            do ip = 1, size(an%state%conv(ie)%statev, 2)
+              an%state%conv(ie)%statev(1:nv, ip) = ic%values
             end do
           end if
         end do
@@ -1008,28 +1052,17 @@ contains
   subroutine analysis_commit(an)
     type(analysis_t), intent(inout) :: an  !< analysis data
     integer :: ie
-    an%u_conv = an%u
-    do ie = 1, size(an%conv)
-      call copy_state(an%trial(ie), an%conv(ie))
+    an%state%u_conv = an%work%u
+    do ie = 1, size(an%state%conv)
+      call element_state_copy(an%work%trial(ie), an%state%conv(ie))
     end do
   end subroutine analysis_commit
 
   !> The attempt failed: back to the converged displacement (states are always recomputed from conv).
   subroutine analysis_restore(an)
     type(analysis_t), intent(inout) :: an  !< analysis data
-    an%u = an%u_conv
+    an%work%u = an%state%u_conv
   end subroutine analysis_restore
-
-  subroutine copy_state(from, to)
-    type(elem_state_t), intent(in) :: from
-    type(elem_state_t), intent(inout) :: to
-    if (allocated(from%stress)) to%stress = from%stress
-    if (allocated(from%stran)) to%stran = from%stran
-    if (allocated(from%statev)) to%statev = from%statev
-    if (allocated(from%eip)) to%eip = from%eip
-    if (allocated(from%svars)) to%svars = from%svars
-    to%energy = from%energy
-  end subroutine copy_state
 
   !> s in upper case (ASCII letters).
   pure function upper_case(s) result(u)

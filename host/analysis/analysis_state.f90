@@ -1,111 +1,94 @@
-!> The state of the increment loop of a static analysis (static_step) between two converged increments: where the
-!> analysis stands (step, increment, counters, times, increment control), the boundary tables and the dof vectors
-!> the next increment starts from (its prescribed ramp, the reactions and loads for the energy balance, the
-!> extrapolation of the last converged change). One type, so that the restart file (restart_file) writes and reads
-!> it whole and a continuation starts from exactly the state the uninterrupted run had; the element states and the
-!> converged displacement live in analysis_t (analysis_core) and are written beside it.
+!> The analysis state: everything a continuation of the analysis needs, between two converged increments (the
+!> "states" of OpenFAST's split by role, against the model's parameters and the solver's working data). Where the
+!> analysis stands (step, increment, times, increment control), the prescribed conditions in force (boundary_table),
+!> every load and predefined field with its propagation state (step_loads, distributed_loads), the converged
+!> solution (displacement, element states, temperatures and field variables) and what the next increment takes
+!> from the last one (its change for the extrapolation, its reactions and forces for the energy balance and the
+!> released reactions). One type, held by the analysis (analysis_core) and written and read whole by the restart
+!> file (restart_file): a continuation starts from exactly the state the uninterrupted run had. A distributed run's
+!> process holds its own elements' states only.
 module analysis_state
   use ldfcz_kinds, only: dp
+  use model_types, only: model_t
   use step_control, only: step_control_t
+  use boundary_table, only: boundary_table_t, boundary_table_init, boundary_apply, boundary_step_begin
+  use step_loads, only: loads_t, loads_init, loads_step_begin, initial_temperatures, initial_fields
+  use element_state, only: elem_state_t
   implicit none
   private
-  public :: analysis_state_t, analysis_state_init, analysis_state_write, analysis_state_read
+  public :: analysis_state_t, progress_t, last_increment_t, analysis_state_init, analysis_state_step_begin
 
-  type :: analysis_state_t
+  !> Where the analysis stands after its last converged increment.
+  type :: progress_t
     integer :: step = 0                   !< step of the last converged increment (0: none yet)
-    integer :: kinc = 0                   !< increment number in the step
+    integer :: kinc = 0                   !< its increment number in the step
     integer :: kinc_total = 0             !< converged increments of the analysis
-    integer :: csv_rows = 0               !< data rows of JOB.csv
-    integer :: last_frame_inc = -1        !< kinc_total of the last VTU frame
-    integer :: reuse_count = 0            !< modified Newton: solves with the current factors
     real(dp) :: t_total0 = 0.0_dp         !< total time at the start of the step
-    real(dp) :: q_sum = 0.0_dp            !< sum of the converged increments' typical forces (q_avg)
-    real(dp) :: next_mark = 0.0_dp        !< NUMBER INTERVAL: next output time
-    real(dp) :: dt_prev = 0.0_dp          !< size of the last converged increment (0: no extrapolation)
-    type(step_control_t) :: sc            !< increment control (time, next increment, growth state)
-    real(dp), allocatable :: u_start(:)   !< (ndof) displacement at the start of the step (boundary ramps)
-    real(dp), allocatable :: rf_old(:)    !< (ndof) reactions of the last converged increment
-    real(dp), allocatable :: du_prev(:)   !< (ndof) displacement change of the last converged increment
-    real(dp), allocatable :: fext_old(:)  !< (ndof) external and distributed-load forces of the last increment
-    real(dp), allocatable :: fcl_old(:)   !< (ndof) concentrated loads of the last increment
-    real(dp), allocatable :: bc_val(:)    !< (ndof) prescribed value of each dof
-    logical, allocatable :: bc_on(:)      !< (ndof) the dof is prescribed
-    logical, allocatable :: bc_init(:)    !< (ndof) prescribed by an initial *BOUNDARY (model data)
-    integer, allocatable :: bc_amp(:)     !< (ndof) amplitude of the prescribed value (0: step ramp)
-    logical, allocatable :: bc_vel(:)     !< (ndof) the prescribed value is a velocity (*BOUNDARY, TYPE=VELOCITY)
-    real(dp), allocatable :: bc_rate(:)   !< (ndof) that velocity in the last converged increment (next step's)
-    logical, allocatable :: bc_user(:)    !< (ndof) the value comes from the user subroutine DISP (*BOUNDARY, USER)
+    type(step_control_t) :: sc            !< increment control (step time, next increment, growth state)
+    real(dp) :: q_sum = 0.0_dp            !< sum of the step's converged increments' typical forces (q_avg)
+    integer :: reuse_count = 0            !< modified Newton: solves with the current factors
+  end type progress_t
+
+  !> The last converged increment, as the next one uses it.
+  type :: last_increment_t
+    real(dp) :: dt = 0.0_dp               !< its size (0: no extrapolation, as at the start of a step)
+    real(dp), allocatable :: du(:)        !< (ndof) its displacement change (extrapolation)
+    real(dp), allocatable :: rf(:)        !< (ndof) its reactions (energy balance; released by OP=NEW)
+    real(dp), allocatable :: fext(:)      !< (ndof) its external and distributed-load forces (energy balance)
+    real(dp), allocatable :: fcl(:)       !< (ndof) its concentrated loads (the next step's inherited loads)
+  end type last_increment_t
+
+  !> Everything a continuation needs (restart_file writes and reads it whole).
+  type :: analysis_state_t
+    type(progress_t) :: progress              !< step, increment, times, increment control
+    type(boundary_table_t) :: bc              !< prescribed conditions in force
+    type(loads_t) :: loads                    !< loads and predefined fields of the step
+    type(last_increment_t) :: last            !< the last converged increment
+    real(dp), allocatable :: u_conv(:)        !< (ndof) converged displacement
+    !> (nelem) converged element states; a distributed process allocates its own elements' only (state_gather
+    !> brings another's where output needs it)
+    type(elem_state_t), allocatable :: conv(:)
+    real(dp), allocatable :: temp_start(:)    !< (nnode) temperatures at the start of the increment
+    real(dp), allocatable :: field_start(:)   !< (nfield*nnode) field variables at its start (n of node a at
+                                              !< (a-1)*nfield+n)
   end type analysis_state_t
 
 contains
 
-  !> The state before the first increment of an analysis with ndof dofs.
-  pure subroutine analysis_state_init(s, ndof)
-    type(analysis_state_t), intent(out) :: s  !< state
-    integer, intent(in) :: ndof               !< dofs of the model
-    allocate (s%u_start(ndof), s%rf_old(ndof), s%du_prev(ndof), s%fext_old(ndof), s%fcl_old(ndof), &
-      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), s%bc_vel(ndof), s%bc_rate(ndof), &
-      s%bc_user(ndof))
-    s%bc_vel = .false.
-    s%bc_user = .false.
-    s%bc_rate = 0.0_dp
-    s%u_start = 0.0_dp
-    s%rf_old = 0.0_dp
-    s%du_prev = 0.0_dp
-    s%fext_old = 0.0_dp
-    s%fcl_old = 0.0_dp
-    s%bc_val = 0.0_dp
-    s%bc_on = .false.
-    s%bc_init = .false.
-    s%bc_amp = 0
+  !> The state before the first increment of an analysis with ndof dofs: the model data's boundaries, no loads,
+  !> the initial temperatures and field variables, zero displacement. The element states (conv) are allocated by
+  !> the analysis (analysis_core), which knows their shapes and owners.
+  pure subroutine analysis_state_init(s, model, ndof)
+    type(analysis_state_t), intent(inout) :: s  !< state (conv left as it is)
+    type(model_t), intent(in) :: model          !< the model
+    integer, intent(in) :: ndof                 !< dofs of the model
+    s%progress = progress_t()
+    call boundary_table_init(s%bc, ndof)
+    call boundary_apply(s%bc, model%initial_bcs, model%n_initial_bc, model%ndim, .true.)
+    call loads_init(s%loads, model, ndof)
+    s%last%dt = 0.0_dp
+    s%last%du = spread(0.0_dp, 1, ndof)
+    s%last%rf = s%last%du
+    s%last%fext = s%last%du
+    s%last%fcl = s%last%du
+    s%u_conv = s%last%du
+    s%temp_start = initial_temperatures(model)
+    s%field_start = initial_fields(model)
   end subroutine analysis_state_init
 
-  !> Write the whole state to the open unformatted stream unit u.
-  subroutine analysis_state_write(u, s, ios, iomsg)
-    integer, intent(in) :: u                    !< unit (stream, unformatted)
-    type(analysis_state_t), intent(in) :: s     !< state
-    integer, intent(out) :: ios                 !< iostat
-    character(len=*), intent(inout) :: iomsg   !< iomsg
-    write (u, iostat=ios, iomsg=iomsg) s%step, s%kinc, s%kinc_total, s%csv_rows, s%last_frame_inc, s%reuse_count, &
-      s%t_total0, s%q_sum, s%next_mark, s%dt_prev
-    if (ios == 0) write (u, iostat=ios, iomsg=iomsg) s%sc%period, s%sc%dt_min, s%sc%dt_max, &
-      merge(1, 0, s%sc%direct), s%sc%easy_iterations, s%sc%t, s%sc%dt, s%sc%easy_count, s%sc%cutbacks, &
-      s%sc%total_cutbacks
-    if (ios == 0) write (u, iostat=ios, iomsg=iomsg) size(s%u_start)
-    if (ios == 0) write (u, iostat=ios, iomsg=iomsg) s%u_start, s%rf_old, s%du_prev, s%fext_old, s%fcl_old, &
-      s%bc_val, merge(1, 0, s%bc_on), merge(1, 0, s%bc_init), s%bc_amp, merge(1, 0, s%bc_vel), s%bc_rate, &
-      merge(1, 0, s%bc_user)
-  end subroutine analysis_state_write
-
-  !> Read a state written by analysis_state_write for ndof dofs (ios = -2: another number of dofs).
-  subroutine analysis_state_read(u, ndof, s, ios)
-    integer, intent(in) :: u                    !< unit (stream, unformatted)
-    integer, intent(in) :: ndof                 !< dofs of this model
-    type(analysis_state_t), intent(out) :: s    !< state read
-    integer, intent(out) :: ios                 !< iostat (-2: the dofs differ)
-    integer :: idirect, n
-    integer, allocatable :: ion(:), iinit(:), ivel(:), iuser(:)
-    read (u, iostat=ios) s%step, s%kinc, s%kinc_total, s%csv_rows, s%last_frame_inc, s%reuse_count, &
-      s%t_total0, s%q_sum, s%next_mark, s%dt_prev
-    if (ios == 0) read (u, iostat=ios) s%sc%period, s%sc%dt_min, s%sc%dt_max, idirect, s%sc%easy_iterations, &
-      s%sc%t, s%sc%dt, s%sc%easy_count, s%sc%cutbacks, s%sc%total_cutbacks
-    if (ios /= 0) return
-    s%sc%direct = idirect == 1
-    read (u, iostat=ios) n
-    if (ios /= 0) return
-    if (n /= ndof) then
-      ios = -2
-      return
-    end if
-    allocate (s%u_start(ndof), s%rf_old(ndof), s%du_prev(ndof), s%fext_old(ndof), s%fcl_old(ndof), &
-      s%bc_val(ndof), s%bc_on(ndof), s%bc_init(ndof), s%bc_amp(ndof), s%bc_vel(ndof), s%bc_rate(ndof), ion(ndof), &
-      iinit(ndof), ivel(ndof), s%bc_user(ndof), iuser(ndof))
-    read (u, iostat=ios) s%u_start, s%rf_old, s%du_prev, s%fext_old, s%fcl_old, s%bc_val, ion, iinit, s%bc_amp, &
-      ivel, s%bc_rate, iuser
-    s%bc_on = ion == 1
-    s%bc_init = iinit == 1
-    s%bc_vel = ivel == 1
-    s%bc_user = iuser == 1
-  end subroutine analysis_state_read
+  !> Start of step is: the boundaries (inherited ones hold the value reached, OP=NEW removes them), the loads and
+  !> predefined fields (inherited at the values reached; a removed boundary's reaction becomes a load that decays
+  !> over the step). stat /= 0 (errmsg): a distributed load on a face the element lacks.
+  subroutine analysis_state_step_begin(s, model, is, stat, errmsg)
+    type(analysis_state_t), intent(inout) :: s           !< state
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(in) :: is                            !< the step beginning
+    integer, intent(out) :: stat                         !< 0 ok, 2 input error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    logical :: released(size(s%u_conv))
+    call boundary_step_begin(s%bc, model%steps(is), model%ndim, s%u_conv, released)
+    call loads_step_begin(s%loads, model, is, s%progress%t_total0, s%last%fcl, merge(s%last%rf, 0.0_dp, released), &
+      s%temp_start, s%field_start, stat, errmsg)
+  end subroutine analysis_state_step_begin
 
 end module analysis_state

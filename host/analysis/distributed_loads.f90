@@ -12,7 +12,7 @@ module distributed_loads
   use solver_text, only: itoa
   implicit none
   private
-  public :: dload_state_t, dload_step_begin, dload_element, dload_uel_arrays, dload_has
+  public :: dload_state_t, dload_step_begin, dload_element, dload_uel_arrays, dload_has, dload_reindex
 
   !> The distributed loads in force in the current step, one record per element and label.
   type :: dload_state_t
@@ -148,26 +148,32 @@ contains
         end associate
       end do
     end associate
-    ! records by element
-    if (allocated(ds%ptr)) deallocate (ds%ptr, ds%idx)
-    allocate (ds%ptr(model%nelem + 1), ds%idx(ds%n))
+    call dload_reindex(ds, model%nelem)
+  end subroutine dload_step_begin
+
+  !> The records by element (ptr, idx) from the records' elements: after a step's begin and a restart's read.
+  pure subroutine dload_reindex(ds, nelem)
+    type(dload_state_t), intent(inout) :: ds  !< load state (n records)
+    integer, intent(in) :: nelem              !< elements of the model
+    integer :: k, ie
+    integer, allocatable :: fill(:)
+    if (allocated(ds%ptr)) deallocate (ds%ptr)
+    if (allocated(ds%idx)) deallocate (ds%idx)
+    allocate (ds%ptr(nelem + 1), ds%idx(ds%n))
     ds%ptr = 0
     do k = 1, ds%n
       ds%ptr(ds%elem(k) + 1) = ds%ptr(ds%elem(k) + 1) + 1
     end do
     ds%ptr(1) = 1
-    do ie = 1, model%nelem
+    do ie = 1, nelem
       ds%ptr(ie + 1) = ds%ptr(ie + 1) + ds%ptr(ie)
     end do
-    block
-      integer, allocatable :: fill(:)
-      fill = ds%ptr(1:model%nelem)
-      do k = 1, ds%n
-        ds%idx(fill(ds%elem(k))) = k
-        fill(ds%elem(k)) = fill(ds%elem(k)) + 1
-      end do
-    end block
-  end subroutine dload_step_begin
+    fill = ds%ptr(1:nelem)
+    do k = 1, ds%n
+      ds%idx(fill(ds%elem(k))) = k
+      fill(ds%elem(k)) = fill(ds%elem(k)) + 1
+    end do
+  end subroutine dload_reindex
 
   !> External nodal forces f (element dof layout, node-major) of the continuum element ie at step time t, and
   !> when want_k the load stiffness k_l = -df/du of follower pressure under NLGEOM (unsymmetric in general).

@@ -41,10 +41,10 @@ contains
     fr%u = 0.0_dp
     fr%rf = 0.0_dp
     ! reaction = internal minus applied (concentrated and distributed) force on a prescribed dof
-    rf = merge(an%fint - an%fext - an%fdl, 0.0_dp, an%prescribed)
+    rf = merge(an%work%fint - an%work%fext - an%work%fdl, 0.0_dp, an%eqs%prescribed)
     do k = 1, model%nnode
       ! global components also at *TRANSFORM nodes (the frames show the deformed shape)
-      fr%u(1:model%ndim, k) = node_vector_global(an%nr, an%u_conv, k)
+      fr%u(1:model%ndim, k) = node_vector_global(an%nr, an%state%u_conv, k)
       fr%rf(1:model%ndim, k) = node_vector_global(an%nr, rf, k)
     end do
     allocate (fr%cell_type(ncell), fr%cell_ptr(ncell + 1), fr%cell_id(ncell))
@@ -116,24 +116,24 @@ contains
         ! Delta_max and traction where the element type declares them ('**LDFCZ SVARS', docs/uel.md)
         associate (ut => model%utypes(model%elem_utype(ie)))
           nip = ut%sv_points
-          nsv = size(an%conv(ie)%svars)
+          nsv = size(an%state%conv(ie)%svars)
           if (nip > 0 .and. nsv >= nip * ut%sv_per_point) then
             do ip = 1, nip
               if (ut%sv_delta_max > 0) fr%delta_max(c) = fr%delta_max(c) + &
-                an%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_delta_max) / nip
+                an%state%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_delta_max) / nip
               if (ut%sv_traction > 0) fr%traction(c) = fr%traction(c) + &
-                an%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_traction) / nip
+                an%state%conv(ie)%svars(ut%sv_per_point * (ip - 1) + ut%sv_traction) / nip
             end do
           end if
         end associate
       else
-        nip = size(an%conv(ie)%stress, 2)
-        nt = size(an%conv(ie)%stress, 1)
+        nip = size(an%state%conv(ie)%stress, 2)
+        nt = size(an%state%conv(ie)%stress, 1)
         s = 0.0_dp
         e = 0.0_dp
         do ip = 1, nip
-          s(1:nt) = s(1:nt) + an%conv(ie)%stress(:, ip) / nip
-          e(1:nt) = e(1:nt) + an%conv(ie)%stran(:, ip) / nip
+          s(1:nt) = s(1:nt) + an%state%conv(ie)%stress(:, ip) / nip
+          e(1:nt) = e(1:nt) + an%state%conv(ie)%stran(:, ip) / nip
         end do
         if (nt == 3) then
           ! plane stress (11, 22, 12): sigma33 = 0; the thickness strain is not kept (0 in the frame)
@@ -149,7 +149,7 @@ contains
         nsv = max(1, an%mats(model%elem_section(ie))%nstatv)
         do k = 1, size(fr%sdv_index)
           if (fr%sdv_index(k) > nsv) cycle
-          fr%sdv(k, c) = sum(an%conv(ie)%statev(fr%sdv_index(k), :)) / nip
+          fr%sdv(k, c) = sum(an%state%conv(ie)%statev(fr%sdv_index(k), :)) / nip
         end do
       end if
     end do
@@ -196,8 +196,8 @@ contains
       else
         nt = model%conn(model%conn_ptr(ie) + 4 - k)
       end if
-      op(1:model%ndim) = op(1:model%ndim) + (node_vector_global(an%nr, an%u_conv, nt) - &
-        node_vector_global(an%nr, an%u_conv, nb)) / (nn / 2)
+      op(1:model%ndim) = op(1:model%ndim) + (node_vector_global(an%nr, an%state%u_conv, nt) - &
+        node_vector_global(an%nr, an%state%u_conv, nb)) / (nn / 2)
     end do
   end subroutine cell_opening
 

@@ -4,6 +4,7 @@ module newton_iteration
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
   use analysis_core, only: analysis_t, analysis_assemble
+  use increment, only: increment_t
   use linear_constraints, only: constraints_residual, constraints_apply
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
@@ -67,19 +68,16 @@ contains
     ns%reuse_count = modified_max_reuse
   end subroutine newton_forget_factors
 
-  !> Newton iterations from the start an%u of the increment (time, dt of step is, increment kinc; prescribed dofs at
-  !> their end values) until convergence, a cutback reason (outcome) or a stop asked by a user routine (stopped;
-  !> nothing else is set then but iter). carry: the part of an%u's change that the first iteration carries through
-  !> the tangent (the prescribed increment, see carry_negligible above). ratios(1:iter + 1) are r_max / q_avg of the
-  !> iterations, for the status file.
-  subroutine newton_solve(an, model, is, kinc, time, dt, newton, verbose, out, ns, summary, r, ratios, q_sum, &
-      converged, stopped, iter, q_now, pnewdt_min, outcome, carry)
-    type(analysis_t), intent(inout) :: an                !< analysis data, an%u updated
+  !> Newton iterations of an attempt of increment inc from its start an%work%u (prescribed dofs at their end values)
+  !> until convergence, a cutback reason (inc%cause) or a stop asked by a user routine (stopped; nothing else is set
+  !> then but inc%iter). carry: the part of an%work%u's change that the first iteration carries through the tangent
+  !> (the prescribed increment, see carry_negligible above). ratios(1:inc%iter + 1) are r_max / q_avg of the
+  !> iterations, for the status file. inc%pnewdt: the smallest PNEWDT the user routines asked for.
+  subroutine newton_solve(an, model, inc, newton, verbose, out, ns, summary, r, ratios, q_sum, converged, stopped, &
+      q_now, carry)
+    type(analysis_t), intent(inout) :: an                !< analysis data, an%work%u updated
     type(model_t), intent(in) :: model                   !< the model
-    integer, intent(in) :: is                            !< step number
-    integer, intent(in) :: kinc                          !< increment number in the step
-    real(dp), intent(in) :: time(2)                      !< step and total time at the start of the increment
-    real(dp), intent(in) :: dt                           !< increment size
+    type(increment_t), intent(inout) :: inc              !< the increment (iter, pnewdt, cause set)
     integer, intent(in) :: newton                        !< Newton variant (solver_options)
     logical, intent(in) :: verbose                       !< per-iteration residual lines in the log
     type(output_t), intent(inout) :: out                 !< output files
@@ -90,21 +88,20 @@ contains
     real(dp), intent(inout) :: q_sum                     !< sum of q of the converged increments of the step
     logical, intent(out) :: converged                    !< the iteration converged
     logical, intent(out) :: stopped                      !< a user routine asked to stop (XIT)
-    integer, intent(out) :: iter                         !< iterations done
     real(dp), intent(out) :: q_now                       !< typical force of the last residual
-    real(dp), intent(out) :: pnewdt_min                  !< smallest PNEWDT of the user routines
-    character(len=*), intent(out) :: outcome             !< cutback reason ('' when converged)
-    real(dp), intent(in) :: carry(:)                     !< (ndof) change of an%u carried through the first tangent
+    real(dp), intent(in) :: carry(:)                     !< (ndof) change of an%work%u carried through the first tangent
     integer :: i, stat, kit, kbudget
     character(len=:), allocatable :: errmsg, pnewdt_who
     character(len=256) :: smsg
     real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s, r_norm, r_norm_prev, eta, eta_prev, tol
+    real(dp) :: pnewdt_min   ! smallest PNEWDT of the user routines (inc%pnewdt at the end)
     real(dp), allocatable :: r_copy(:), k_carry(:)
     logical :: want_k, k_fresh, k_skip, k_stale, carrying
 
-    associate (st => model%steps(is))
+    associate (st => model%steps(inc%step), is => inc%step, kinc => inc%kinc, iter => inc%iter, outcome => inc%cause)
       converged = .false.
       stopped = .false.
+      pnewdt_min = 1.0_dp
       outcome = ''
       iter = 0
       q_now = 0.0_dp
@@ -122,8 +119,8 @@ contains
       newton_loop: do
         ! a tangent is needed unless modified Newton can reuse the factors (docs/performance.md)
         want_k = .true.
-        if (newton == newton_modified .and. an%sys_ready) then
-          if (sparse_is_factored(an%sys)) then
+        if (newton == newton_modified .and. an%eqs%sys_ready) then
+          if (sparse_is_factored(an%eqs%sys)) then
             want_k = ns%reuse_count >= modified_max_reuse
             if (iter >= 1 .and. r_prev < huge(1.0_dp)) then
               if (r_max > modified_contraction * r_prev) want_k = .true.
@@ -131,8 +128,8 @@ contains
           end if
         end if
         ! mode auto: no tangent for an iteration likely to converge (see skip_margin above); never twice running
-        k_skip = newton == newton_auto .and. iter >= 2 .and. .not. k_stale .and. an%sys_ready
-        if (k_skip) k_skip = sparse_is_factored(an%sys) .and. r_prev < huge(1.0_dp)
+        k_skip = newton == newton_auto .and. iter >= 2 .and. .not. k_stale .and. an%eqs%sys_ready
+        if (k_skip) k_skip = sparse_is_factored(an%eqs%sys) .and. r_prev < huge(1.0_dp)
         if (k_skip) k_skip = r_max * (r_max / r_prev) < skip_margin * st%r_n * q_avg
         k_stale = k_skip
         if (k_skip) then
@@ -145,19 +142,18 @@ contains
         end if
         ! the first iteration carries the prescribed increment through the tangent, when it assembles one
         carrying = .false.
-        if (iter == 0 .and. want_k .and. an%neq > 0) &
-          carrying = maxval(abs(carry)) > carry_negligible * maxval(abs(an%u))
+        if (iter == 0 .and. want_k .and. an%eqs%neq > 0) &
+          carrying = maxval(abs(carry)) > carry_negligible * maxval(abs(an%work%u))
         if (carrying) then
-          an%u = an%u - carry
+          an%work%u = an%work%u - carry
           if (.not. allocated(k_carry)) allocate (k_carry(an%ndof))
-          call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
-            pnewdt_min, stat, errmsg, pnewdt_who, carry=carry, k_carry=k_carry)
+          call analysis_assemble(an, model, inc, want_k, pnewdt_min, stat, errmsg, pnewdt_who, carry=carry, &
+            k_carry=k_carry)
         else
-          call analysis_assemble(an, model, is, kinc, time, dt, st%period, st%nlgeom, want_k, &
-            pnewdt_min, stat, errmsg, pnewdt_who)
+          call analysis_assemble(an, model, inc, want_k, pnewdt_min, stat, errmsg, pnewdt_who)
         end if
-        an%extrapolated = .false.  ! only the first call of an increment sees the extrapolated start
-        if (an%stop_asked) then
+        inc%extrapolated = .false.  ! only the first call of an increment sees the extrapolated start
+        if (an%work%stop%asked) then
           stopped = .true.
           exit newton_loop
         end if
@@ -173,44 +169,44 @@ contains
           exit newton_loop
         end if
         do i = 1, an%ndof
-          if (an%eq(i) > 0) r(an%eq(i)) = an%fext(i) + an%fdl(i) - an%fint(i)
+          if (an%eqs%eq(i) > 0) r(an%eqs%eq(i)) = an%work%fext(i) + an%work%fdl(i) - an%work%fint(i)
         end do
         if (carrying) then
           ! the residual predicted at the end values of the prescribed dofs: r - K carry
           do i = 1, an%ndof
-            if (an%eq(i) > 0) r(an%eq(i)) = r(an%eq(i)) - k_carry(i)
+            if (an%eqs%eq(i) > 0) r(an%eqs%eq(i)) = r(an%eqs%eq(i)) - k_carry(i)
           end do
         end if
         ! *EQUATION: the residual of an eliminated dof acts on its masters
-        if (an%cs%n > 0 .and. an%neq > 0) then
+        if (an%eqs%cs%n > 0 .and. an%eqs%neq > 0) then
           if (carrying) then
-            call constraints_residual(an%cs, an%eq, an%fext + an%fdl - an%fint - k_carry, r)
+            call constraints_residual(an%eqs%cs, an%eqs%eq, an%work%fext + an%work%fdl - an%work%fint - k_carry, r)
           else
-            call constraints_residual(an%cs, an%eq, an%fext + an%fdl - an%fint, r)
+            call constraints_residual(an%eqs%cs, an%eqs%eq, an%work%fext + an%work%fdl - an%work%fint, r)
           end if
         end if
         r_max = 0.0_dp
-        if (an%neq > 0) r_max = maxval(abs(r(1:an%neq)))
+        if (an%eqs%neq > 0) r_max = maxval(abs(r(1:an%eqs%neq)))
         r_norm = 0.0_dp
-        if (an%neq > 0) r_norm = norm2(r(1:an%neq))
+        if (an%eqs%neq > 0) r_norm = norm2(r(1:an%eqs%neq))
         ! typical force: of the internal forces, or of the applied loads where they are larger (the first iteration
         ! of a load-controlled increment starts from zero internal force; Abaqus counts the applied loads in q)
         ! (a carried increment: of the internal forces predicted at its end, f_int + K carry)
         if (carrying) then
-          q_now = max(typical_force(an%fint + k_carry), typical_force(an%fext + an%fdl))
+          q_now = max(typical_force(an%work%fint + k_carry), typical_force(an%work%fext + an%work%fdl))
         else
-          q_now = max(typical_force(an%fint), typical_force(an%fext + an%fdl))
+          q_now = max(typical_force(an%work%fint), typical_force(an%work%fext + an%work%fdl))
         end if
         q_avg = (q_sum + q_now) / real(kinc, dp)
-        du_max = maxval(abs(an%u - an%u_conv))
-        if (carrying) du_max = maxval(abs(an%u + carry - an%u_conv))
+        du_max = maxval(abs(an%work%u - an%state%u_conv))
+        if (carrying) du_max = maxval(abs(an%work%u + carry - an%state%u_conv))
         ratios(iter + 1) = 0.0_dp
         if (q_avg > 1.0e-300_dp * r_max) ratios(iter + 1) = r_max / q_avg   ! (no overflow when q_avg ~ 0)
         if (verbose) call output_log(out, '    step '//itoa(is)//' inc '//itoa(kinc)//' iter '//itoa(iter)// &
           ': r_max '//rtoa(r_max)//' q_avg '//rtoa(q_avg)//' c_max '//rtoa(c_max)//' du_max '//rtoa(du_max)// &
           merge(' (tangent)      ', ' (reused LU/LDL)', want_k))
         ! (a carried increment is not applied yet: never converged before it is)
-        if (an%neq == 0 .or. (.not. carrying .and. newton_converged(r_max, q_avg, c_max, du_max, st%r_n, st%c_n, &
+        if (an%eqs%neq == 0 .or. (.not. carrying .and. newton_converged(r_max, q_avg, c_max, du_max, st%r_n, st%c_n, &
             iter))) then
           converged = .true.
           q_sum = q_sum + q_now
@@ -249,11 +245,11 @@ contains
         end if
         if (.not. want_k) then
           ! modified Newton: the last factors, a residual-only element loop
-          call sparse_solve(an%sys, r, stat, smsg)
+          call sparse_solve(an%eqs%sys, r, stat, smsg)
           ns%reuse_count = ns%reuse_count + 1
           summary%reused_solves = summary%reused_solves + 1
           k_fresh = stat /= 0
-        else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%sys)) then
+        else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%eqs%sys)) then
           ! fresh tangent, GMRES preconditioned by the last factorization
           kbudget = krylov_max_iter
           if (newton == newton_auto .and. ns%t_solve_last > 0.0_dp) &
@@ -261,17 +257,17 @@ contains
           ! the budget comes from measured times, which differ between processes: the smallest, on every process
           ! (GMRES runs collective solves and products: all must take the same iterations)
           if (parallel_distributed(an%par)) kbudget = nint(parallel_min(an%par, real(kbudget, dp)))
-          r_copy = r(1:an%neq)
-          t0s = sparse_time_solve(an%sys)
-          call sparse_solve_krylov(an%sys, r(1:an%neq), tol, kbudget, kbudget, kit, stat, smsg)
-          if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%sys) - t0s) / real(kit, dp)
+          r_copy = r(1:an%eqs%neq)
+          t0s = sparse_time_solve(an%eqs%sys)
+          call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, kbudget, kbudget, kit, stat, smsg)
+          if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%eqs%sys) - t0s) / real(kit, dp)
           summary%krylov_iterations = summary%krylov_iterations + kit
           if (stat == 0) then
             summary%krylov_solves = summary%krylov_solves + 1
             k_fresh = .false.
           else
             summary%krylov_failures = summary%krylov_failures + 1
-            r(1:an%neq) = r_copy
+            r(1:an%eqs%neq) = r_copy
           end if
         end if
         if (k_fresh) then
@@ -279,24 +275,24 @@ contains
             outcome = 'cutback: solve failed'
             exit newton_loop
           end if
-          t0s = sparse_time_factor(an%sys)
-          call sparse_factorize(an%sys, stat, smsg)
-          ns%t_fact_last = sparse_time_factor(an%sys) - t0s
+          t0s = sparse_time_factor(an%eqs%sys)
+          call sparse_factorize(an%eqs%sys, stat, smsg)
+          ns%t_fact_last = sparse_time_factor(an%eqs%sys) - t0s
           ns%reuse_count = 0
           if (stat /= 0) then
             outcome = 'cutback: singular tangent'
             if (verbose) call output_log(out, '  '//trim(smsg))
             exit newton_loop
           end if
-          t0s = sparse_time_solve(an%sys)
-          if (sparse_factors_exact(an%sys)) then
-            call sparse_solve(an%sys, r, stat, smsg)
-            if (ns%t_solve_last <= 0.0_dp) ns%t_solve_last = sparse_time_solve(an%sys) - t0s
+          t0s = sparse_time_solve(an%eqs%sys)
+          if (sparse_factors_exact(an%eqs%sys)) then
+            call sparse_solve(an%eqs%sys, r, stat, smsg)
+            if (ns%t_solve_last <= 0.0_dp) ns%t_solve_last = sparse_time_solve(an%eqs%sys) - t0s
           else
             ! preconditioning factors only (--factors symmetric/single): GMRES with them, the whole budget; when
             ! it does not reach tol, its best iterate (the residual only decreases in GMRES) is an inexact step
-            call sparse_solve_krylov(an%sys, r(1:an%neq), tol, krylov_max_iter, krylov_max_iter, kit, stat, smsg)
-            if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%sys) - t0s) / real(kit, dp)
+            call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, krylov_max_iter, krylov_max_iter, kit, stat, smsg)
+            if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%eqs%sys) - t0s) / real(kit, dp)
             summary%krylov_iterations = summary%krylov_iterations + kit
             summary%krylov_solves = summary%krylov_solves + 1
             if (stat == 1) then
@@ -312,14 +308,15 @@ contains
         end if
         iter = iter + 1
         r_norm_prev = r_norm
-        c_max = maxval(abs(r(1:max(an%neq, 1))))
-        if (carrying) an%u = an%u + carry
+        c_max = maxval(abs(r(1:max(an%eqs%neq, 1))))
+        if (carrying) an%work%u = an%work%u + carry
         do i = 1, an%ndof
-          if (an%eq(i) > 0) an%u(i) = an%u(i) + r(an%eq(i))
+          if (an%eqs%eq(i) > 0) an%work%u(i) = an%work%u(i) + r(an%eqs%eq(i))
         end do
-        if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
+        if (an%eqs%cs%n > 0) call constraints_apply(an%eqs%cs, an%work%u)
       end do newton_loop
     end associate
+    inc%pnewdt = pnewdt_min
   contains
     !> A cutback's cause (element, point, routine, reason) in the log at default verbosity, once: the same reason
     !> again is only counted, and the count is logged when another reason comes.
@@ -327,7 +324,7 @@ contains
       character(len=*), intent(in) :: reason  !< what the element or routine reported
       character(len=:), allocatable :: where
       if (len_trim(reason) == 0) return
-      where = '  step '//itoa(is)//' increment '//itoa(kinc)//': cutback: '
+      where = '  step '//itoa(inc%step)//' increment '//itoa(inc%kinc)//': cutback: '
       if (verbose) then
         call output_log(out, where//trim(reason))
         return

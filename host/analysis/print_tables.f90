@@ -124,10 +124,10 @@ contains
         if (comp > model%ndim) cycle
         dof = (nodes(k) - 1) * model%ndim + comp
         if (np%vars(j)(1:1) == 'U') then
-          val(j, k) = an%u(dof)
-        else if (an%prescribed(dof)) then
+          val(j, k) = an%work%u(dof)
+        else if (an%eqs%prescribed(dof)) then
           ! reaction = internal minus applied force on a prescribed dof (as JOB.csv and the VTU frames)
-          val(j, k) = an%fint(dof) - an%fext(dof) - an%fdl(dof)
+          val(j, k) = an%work%fint(dof) - an%work%fext(dof) - an%work%fdl(dof)
         end if
       end do
     end do
@@ -204,7 +204,7 @@ contains
     end do
     nrow = 0
     do k = 1, size(elems)
-      nrow = nrow + size(an%conv(elems(k))%stress, 2)
+      nrow = nrow + size(an%state%conv(elems(k))%stress, 2)
     end do
     allocate (val(size(cols), nrow), lab(nrow), pt(nrow))
     val = 0.0_dp
@@ -212,17 +212,17 @@ contains
     do k = 1, size(elems)
       ie = elems(k)
       have_geo = .false.
-      nt = size(an%conv(ie)%stress, 1)
+      nt = size(an%state%conv(ie)%stress, 1)
       nsv = an%mats(model%elem_section(ie))%nstatv
-      do ip = 1, size(an%conv(ie)%stress, 2)
+      do ip = 1, size(an%state%conv(ie)%stress, 2)
         row = row + 1
         lab(row) = model%elem_id(ie)
         pt(row) = ip
         s6 = 0.0_dp
-        s6(1:nt) = an%conv(ie)%stress(:, ip)
+        s6(1:nt) = an%state%conv(ie)%stress(:, ip)
         sl = s6
         el = 0.0_dp
-        el(1:nt) = an%conv(ie)%stran(:, ip)
+        el(1:nt) = an%state%conv(ie)%stran(:, ip)
         if (allocated(an%axes(ie)%t)) then
           ! an *ORIENTATION: components in its local axes, as Abaqus prints them
           t = an%axes(ie)%t(:, :, ip)
@@ -241,7 +241,7 @@ contains
           case ('S')
             if (cols(j)(1:3) == 'SDV') then
               read (cols(j)(4:), *) c
-              if (c <= nsv) val(j, row) = an%conv(ie)%statev(c, ip)
+              if (c <= nsv) val(j, row) = an%state%conv(ie)%statev(c, ip)
             else
               c = component(cols(j)(2:3))
               if (c <= nt) val(j, row) = sl(c)
@@ -298,7 +298,7 @@ contains
     end do
     do a = 1, model%conn_ptr(ie + 1) - model%conn_ptr(ie)
       node = model%conn(model%conn_ptr(ie) + a - 1)
-      ug = node_vector_global(an%nr, an%u_conv, node)
+      ug = node_vector_global(an%nr, an%state%u_conv, node)
       do j = 1, model%ndim
         do i = 1, model%ndim
           f(i, j) = f(i, j) + ug(i) * g%dndx_ref(a, j, ip)

@@ -75,40 +75,40 @@ contains
     real(dp) :: e(1)
     summary%e_int = 0.0_dp
     do i = 1, model%nelem
-      if (an%owned(i)) summary%e_int = summary%e_int + an%conv(i)%energy(2) + an%conv(i)%energy(4)
+      if (an%owned(i)) summary%e_int = summary%e_int + an%state%conv(i)%energy(2) + an%state%conv(i)%energy(4)
     end do
     e(1) = summary%e_int
     call parallel_sum(an%par, e)   ! over the processes' elements (distributed run)
     summary%e_int = e(1)
-    summary%t_factor = an%t_factor_done
-    summary%t_solve = an%t_solve_done
-    summary%t_analysis = an%t_setup_done
-    summary%factorizations = an%n_factor_done + fact_offset
-    if (an%sys_ready) then
-      summary%t_factor = summary%t_factor + sparse_time_factor(an%sys)
-      summary%t_solve = summary%t_solve + sparse_time_solve(an%sys)
-      summary%t_analysis = summary%t_analysis + sparse_time_analysis(an%sys)
-      summary%factorizations = summary%factorizations + sparse_factor_count(an%sys)
-      summary%factor_entries = sparse_factor_entries(an%sys)
-      summary%factor_flops = sparse_factor_flops(an%sys)
+    summary%t_factor = an%timing%t_factor_done
+    summary%t_solve = an%timing%t_solve_done
+    summary%t_analysis = an%timing%t_setup_done
+    summary%factorizations = an%timing%n_factor_done + fact_offset
+    if (an%eqs%sys_ready) then
+      summary%t_factor = summary%t_factor + sparse_time_factor(an%eqs%sys)
+      summary%t_solve = summary%t_solve + sparse_time_solve(an%eqs%sys)
+      summary%t_analysis = summary%t_analysis + sparse_time_analysis(an%eqs%sys)
+      summary%factorizations = summary%factorizations + sparse_factor_count(an%eqs%sys)
+      summary%factor_entries = sparse_factor_entries(an%eqs%sys)
+      summary%factor_flops = sparse_factor_flops(an%eqs%sys)
     end if
-    summary%t_assembly = an%t_assembly
+    summary%t_assembly = an%timing%t_assembly
     summary%t_output = t_output
     summary%nranks = an%par%nranks
     ! load balance of the element loop and the measured cost of each element class (sums over the processes)
-    summary%t_assembly_max = parallel_max(an%par, an%t_loop_own)
-    e(1) = an%t_loop_own
+    summary%t_assembly_max = parallel_max(an%par, an%timing%t_loop_own)
+    e(1) = an%timing%t_loop_own
     call parallel_sum(an%par, e)
     summary%t_assembly_mean = e(1) / real(an%par%nranks, dp)
-    summary%t_assembly_slowest = an%t_assembly_slowest
-    summary%t_loop_wait = an%t_loop_wait
-    summary%class_time = an%class_time
+    summary%t_assembly_slowest = an%timing%t_assembly_slowest
+    summary%t_loop_wait = an%timing%t_loop_wait
+    summary%class_time = an%timing%class_time
     call parallel_sum(an%par, summary%class_time)
-    summary%class_calls = real(an%class_calls, dp)
+    summary%class_calls = real(an%timing%class_calls, dp)
     call parallel_sum(an%par, summary%class_calls)
     summary%class_weight = an%cost_weight
     summary%t_comm = an%par%t_comm
-    if (an%sys_ready) summary%t_comm = summary%t_comm + sparse_time_comm(an%sys)
+    if (an%eqs%sys_ready) summary%t_comm = summary%t_comm + sparse_time_comm(an%eqs%sys)
   end subroutine run_summary_collect
 
   !> The measured cost of an element call per class (UMAT continuum, *ELASTIC continuum, user element: wall
@@ -229,7 +229,7 @@ contains
       iu = model%elem_utype(ie)
       associate (ut => model%utypes(iu))
         if (ut%sv_points == 0 .or. ut%sv_opening == 0 .or. ut%sv_length_prop == 0) cycle
-        if (size(an%trial(ie)%svars) < ut%sv_points * ut%sv_per_point) cycle
+        if (size(an%work%trial(ie)%svars) < ut%sv_points * ut%sv_per_point) cycle
         ipr = model%elem_uelprop(ie)
         if (ipr == 0) cycle
         if (size(model%uelprops(ipr)%props) < ut%sv_length_prop) cycle
@@ -237,7 +237,7 @@ contains
         if (delta <= 0.0_dp) cycle
         do ip = 1, ut%sv_points
           j = ut%sv_per_point * (ip - 1) + ut%sv_opening
-          worst = max(worst, abs(an%trial(ie)%svars(j) - an%conv(ie)%svars(j)) / delta)
+          worst = max(worst, abs(an%work%trial(ie)%svars(j) - an%state%conv(ie)%svars(j)) / delta)
         end do
       end associate
     end do
@@ -256,9 +256,9 @@ contains
     type(parallel_t) :: par
     do ie = 1, model%nelem
       if (model%elem_kind(ie) == etype_user .or. .not. an%owned(ie)) cycle
-      if (.not. allocated(an%trial(ie)%statev)) cycle
-      if (size(an%trial(ie)%statev, 1) < k .or. size(an%conv(ie)%statev, 1) < k) cycle
-      worst = max(worst, maxval(abs(an%trial(ie)%statev(k, :) - an%conv(ie)%statev(k, :))))
+      if (.not. allocated(an%work%trial(ie)%statev)) cycle
+      if (size(an%work%trial(ie)%statev, 1) < k .or. size(an%state%conv(ie)%statev, 1) < k) cycle
+      worst = max(worst, maxval(abs(an%work%trial(ie)%statev(k, :) - an%state%conv(ie)%statev(k, :))))
     end do
     par = an%par
     worst = parallel_max(par, worst)   ! over the processes' elements (distributed run)

@@ -17,7 +17,7 @@ contains
   !> arrays here; release_converged_states frees them). User elements in elems are skipped alike everywhere. A
   !> one-process run returns at once.
   subroutine gather_converged_states(an, model, elems)
-    type(analysis_t), intent(inout) :: an   !< analysis data: an%conv of elems filled from their owners
+    type(analysis_t), intent(inout) :: an   !< analysis data: an%state%conv of elems filled from their owners
     type(model_t), intent(in) :: model      !< the model (the states' shapes)
     integer, intent(in) :: elems(:)         !< elements, the same list on every process
     integer, allocatable :: first(:), rows(:)
@@ -49,7 +49,7 @@ contains
       ie = elems(k)
       if (.not. an%owned(ie) .or. first(k + 1) == first(k)) cycle
       pos = first(k)
-      associate (cv => an%conv(ie))
+      associate (cv => an%state%conv(ie))
         n = size(cv%stress)
         v(pos:pos + n - 1) = reshape(cv%stress, [n])
         pos = pos + n
@@ -66,9 +66,9 @@ contains
     do k = 1, size(elems)
       ie = elems(k)
       if (an%owned(ie) .or. first(k + 1) == first(k)) cycle
-      call element_state_allocate(an, model, ie, an%conv(ie))
+      call element_state_allocate(an, model, ie, an%state%conv(ie))
       pos = first(k)
-      associate (cv => an%conv(ie))
+      associate (cv => an%state%conv(ie))
         n = size(cv%stress)
         cv%stress = reshape(v(pos:pos + n - 1), shape(cv%stress))
         pos = pos + n
@@ -90,7 +90,7 @@ contains
     if (.not. parallel_distributed(an%par)) return
     do k = 1, size(elems)
       ie = elems(k)
-      if (.not. an%owned(ie)) call element_state_free(an%conv(ie))
+      if (.not. an%owned(ie)) call element_state_free(an%state%conv(ie))
     end do
   end subroutine release_converged_states
 

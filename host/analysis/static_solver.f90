@@ -46,9 +46,7 @@ contains
     exit_code = exit_ok
     call abaqus_clear_stop()
     if (present(par)) an%par = par
-    an%cost_weight = opt%element_weights
-    an%partition_pieces = opt%partition_pieces
-    call analysis_init(an, model, routines, stat, errmsg)
+    call analysis_init(an, model, routines, stat, errmsg, opt)
     if (stat /= 0) then
       call close_loop_trace(an)
       call output_log(out, 'ldfcz: error: '//errmsg)
@@ -57,16 +55,12 @@ contains
       return
     end if
     summary%ndof = count(an%used)
-    an%sym_factors = opt%symmetric_factors
-    an%single_factors = opt%single_factors
-    an%factor_blas_threads = opt%factor_blas_threads
-    an%factor_min_flops = opt%factor_min_flops
-    call run_steps(model, routines, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
+    call run_steps(model, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
     call close_loop_trace(an)
     if (.not. summarize) return
 
     call run_summary_collect(summary, model, an, out%t_output, fact_offset)
-    if (an%sys_ready) call sparse_destroy(an%sys)
+    if (an%eqs%sys_ready) call sparse_destroy(an%eqs%sys)
     call system_clock(c1)
     call cpu_time(cpu1)
     summary%wall = real(c1 - c0, dp) / real(rate, dp)

@@ -1,30 +1,34 @@
-!> Static (NLGEOM) steps: prescribed displacements, automatic increments (step_control) with cutbacks and growth,
-!> an accuracy bound on the cohesive opening increment (paper section 7), commit on convergence, output per
-!> increment (CSV, VTU frames, status) and the restart hooks (continue from a restart file, write one).
+!> The increment engine of a static (NLGEOM) analysis, in the phases of Abaqus/Standard's description of a
+!> nonlinear step (steps are broken into increments; an increment is found by Newton iterations; an attempt that
+!> fails is abandoned and retried with a smaller increment, a cutback):
+!>   begin the analysis (or resume it from a restart file), begin each step (its prescribed conditions, loads and
+!>   equations), and for each increment: begin it; then attempts, each one predict (the start: the converged
+!>   state or its linear extrapolation; the prescribed values and loads at the end of the increment), iterate
+!>   (Newton, then the accuracy bound on the cohesive opening increment of paper section 7) and, unless it
+!>   converged, cut back; accept the converged one (commit, energy balance, the next increment's size), write its
+!>   output, checkpoint it (restart file, UEXTERNALDB) and stop there when asked.
+!> The loops are run_steps; every phase is one procedure taking the model, the options, the analysis (whose state
+!> is what a continuation needs: analysis_state), the run's working data and the increment (increment) explicitly.
 module static_step
-  use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+  use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, amplitude_factor
-  use step_loads, only: load_state_t, load_state_init, load_step_begin, load_vector
-  use distributed_loads, only: dload_step_begin
-  use linear_constraints, only: constraints_apply
-  use node_rotations, only: node_vector_global
+  use model_types, only: model_t
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
-  use step_control, only: step_control_t, step_control_init, step_control_cutback, step_control_converged, &
-    step_control_done, step_control_dt, step_control_accuracy, step_control_exhausted, max_cutbacks
-  use analysis_state, only: analysis_state_t, analysis_state_init
+  use analysis_state, only: analysis_state_step_begin
+  use increment, only: increment_t, increment_time, increment_end
+  use boundary_table, only: boundary_prescribe, boundary_rates_update
+  use step_loads, only: loads_at_end
+  use linear_constraints, only: constraints_apply
+  use step_control, only: step_control_init, step_control_cutback, step_control_converged, step_control_done, &
+    step_control_dt, step_control_accuracy, step_control_exhausted, max_cutbacks
   use sparse_system, only: sparse_factor_count
-  use output_files, only: output_t, output_log, output_csv_header, output_csv_row, output_sta, output_progress, &
-    output_csv_resume, output_frames_resume, output_sta_note
-  use restart_file, only: restart_state_t, restart_write, restart_read, restart_checksum
+  use output_files, only: output_t, output_log, output_sta, output_progress, output_frames_resume, output_sta_note
+  use step_output, only: output_state_t, output_state_open, output_step_begin, write_increment_output, write_frame
+  use restart_file, only: checkpoint_t, restart_write, restart_read, restart_checksum
   use user_routines, only: user_routines_t
   use solver_options, only: solver_options_t, exit_input, exit_no_convergence, newton_mode_name
   use run_summary, only: run_summary_t, run_summary_continue, cohesive_ratio, statev_increment
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
-  use field_frame, only: write_field_frame
-  use history_columns, only: history_columns_t, history_columns_build, history_columns_values
-  use print_tables, only: print_tables_any, print_tables_write, print_tables_elements
-  use state_gather, only: gather_converged_states, release_converged_states
   use stop_report, only: stop_message
   use plane_stress_notice, only: plane_stress_umat_warnings
   use solver_text, only: itoa, rtoa
@@ -36,110 +40,222 @@ module static_step
 
   integer, parameter :: extrapolated_attempts = 2       !< attempts of an increment that start extrapolated
 
+  !> The run's working data shared by the phases (OpenFAST's "misc" variables): never checkpointed.
+  type :: run_t
+    logical :: verbose = .false.          !< per-iteration residual lines in the log
+    type(newton_state_t) :: ns            !< Newton's state across iterations, attempts and increments
+    type(output_state_t) :: os            !< output state (step_output)
+    real(dp), allocatable :: r(:)         !< (max(neq, 1)) residual and correction
+    real(dp), allocatable :: ratios(:)    !< r_max / q_avg of the attempt's iterations (status file)
+    real(dp), allocatable :: u_carry(:)   !< (ndof) prescribed change the first iteration carries (newton_iteration)
+    integer :: increments = 0             !< converged increments of this run (--stop-after-increments)
+    integer :: fact_offset = 0            !< factorizations of the run before the restart point
+    integer :: resume_step = 0            !< step a restart continues within (0: none)
+    integer(i8) :: checksum = 0           !< restart fingerprint of the model and partition (0: not computed yet)
+    real(dp) :: t_reached(2) = 0.0_dp     !< step and total time of the last converged increment (UEXTERNALDB)
+    integer(i8) :: step_clock = 0         !< clock count at the start of the step (progress line)
+    logical :: halt = .false.             !< the analysis ends (exit_code says why)
+    integer :: exit_code = 0              !< exit status (solver_options)
+  end type run_t
+
 contains
 
   !> Every step of the model from the initial state of an (analysis_init done), or from opt%restart_from.
   !> summarize is false when the run ended before its first step (input error: no closing summary).
-  subroutine run_steps(model, routines, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
+  subroutine run_steps(model, out, verbose, opt, an, summary, exit_code, fact_offset, summarize)
     type(model_t), intent(in) :: model             !< the model
-    type(user_routines_t), intent(in) :: routines  !< UEL and UMAT
     type(output_t), intent(inout) :: out           !< output files
     logical, intent(in) :: verbose                 !< per-iteration residual lines in the log
     type(solver_options_t), intent(in) :: opt      !< solver choices
-    type(analysis_t), intent(inout) :: an          !< analysis data
+    type(analysis_t), intent(inout) :: an          !< the analysis
     type(run_summary_t), intent(inout) :: summary  !< counters and measures
     integer, intent(inout) :: exit_code            !< exit status (solver_options)
     integer, intent(out) :: fact_offset            !< factorizations of the run before the restart point
     logical, intent(out) :: summarize              !< the closing summary is due
-    integer :: stat, is, attempt, iter, i, k
-    character(len=:), allocatable :: errmsg, msg
-    type(history_columns_t) :: cols    !< the columns of JOB.csv
-    character(len=512), allocatable :: notes(:)
-    integer, allocatable :: printed(:)        !< elements of the *EL PRINT tables due (gathered, then released)
-    real(dp), allocatable :: r(:), ratios(:), colv(:)
-    logical, allocatable :: bc_was_on(:)
-    type(analysis_state_t) :: s        !< the increment loop's state (what a restart file holds)
-    type(load_state_t) :: ls, ls_temp, ls_field
-    real(dp), allocatable :: temp_init(:), field_init(:)
-    logical :: field_comp(max(1, model%nfield))
-    real(dp), allocatable :: zero_nodes(:)
-    real(dp), allocatable :: u_carry(:)  !< (ndof) the prescribed change the first iteration carries (newton_iteration)
-    real(dp) :: time(2), dt, pnewdt_min, q_now, t_end
-    real(dp) :: open_inc, plastic_inc
-    integer(i8) :: c1, rate, cs0
-    type(newton_state_t) :: ns
-    logical :: converged, ok, stopped, redo
-    integer :: lrestart       !< UEXTERNALDB's LRESTART: 1 when restart data were written after the increment
-    real(dp) :: t_reached(2)  !< step and total time of the last converged increment (UEXTERNALDB)
-    character(len=64) :: outcome
-    type(restart_state_t) :: rs, fp
-    logical :: restarting, resumed, fresh_csv
-    integer :: is_first, run_increments, sig
-    integer :: dat                      !< JOB.dat unit (-1: no printed output requested)
+    type(run_t) :: run
+    type(increment_t) :: inc
+    integer :: is
+    logical :: converged
+    run%verbose = verbose
+    run%exit_code = exit_code
+    call begin_analysis(model, opt, an, run, out, summary, is)
+    summarize = .not. run%halt
+    if (summarize) then
+      steps: do while (is <= model%nstep)
+        call begin_step(model, opt, an, run, out, summary, is)
+        if (run%halt) exit steps
+        increments: do while (.not. step_control_done(an%state%progress%sc))
+          call begin_increment(model, an, run, out, inc)
+          if (run%halt) exit steps
+          attempts: do
+            call predict(model, an, run, inc)
+            call iterate(model, opt, an, run, out, summary, inc, converged)
+            if (converged .or. run%halt) exit attempts
+            call cut_back(model, an, run, out, summary, inc)
+            if (run%halt) exit attempts
+          end do attempts
+          if (run%halt) exit steps
+          call accept(model, opt, an, run, summary, inc)
+          call write_output(model, an, run, out, inc)
+          call checkpoint(model, opt, an, run, out, summary, inc)
+          call stop_if_asked(model, opt, an, run, out, summary, inc)
+          if (run%halt) exit steps
+        end do increments
+        call end_step(model, an, out, is)
+        is = is + 1
+      end do steps
+      call end_analysis(model, an, run, out, is)
+    end if
+    exit_code = run%exit_code
+    fact_offset = run%fact_offset
+  end subroutine run_steps
 
-    call system_clock(count_rate=rate)
-    summarize = .false.
+  !> Begin the analysis: the restart file read when continuing one (everything else of the restart is resume),
+  !> the requests checked, the model's lines in the log, JOB.csv and JOB.dat opened, the signal handler installed,
+  !> UEXTERNALDB called (LOP 0, or 4 when continuing) and the initial frame written. is_first: the step to begin.
+  subroutine begin_analysis(model, opt, an, run, out, summary, is_first)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures
+    integer, intent(out) :: is_first               !< the step to begin (past the last: none)
+    type(checkpoint_t) :: ck
+    logical :: restarting
+    integer :: stat
+    character(len=:), allocatable :: errmsg
+    is_first = 1
     restarting = .false.
     if (allocated(opt%restart_from)) restarting = len(opt%restart_from) > 0
-    run_increments = 0
-    fact_offset = 0
     if (restarting) then
-      ! the converged state of the increment the restart file was written after (element states straight into conv)
-      fp%nnode = model%nnode
-      fp%nelem = model%nelem
-      fp%ndof = an%ndof
-      ! a distributed run: the partition too (a restart needs the same, else elements' states are elsewhere)
-      fp%checksum = ieor(restart_checksum(model), an%partition_sig)
-      call restart_read(parallel_file(an%par, opt%restart_from), fp, rs, an%conv, stat, errmsg)
-      if (nint(parallel_max(an%par, real(stat, dp))) /= 0 .and. stat == 0) then
-        ! another process could not read its restart file (distributed run): all stop alike
-        stat = 2
-        errmsg = parallel_file(an%par, opt%restart_from)//': another process could not read its restart file'
-      end if
-      if (stat == 0 .and. rs%state%step > model%nstep) then
-        stat = 2
-        errmsg = opt%restart_from//': the restart file is of step '//itoa(rs%state%step)//' but the deck has '// &
-          itoa(model%nstep)//' steps'
-      end if
+      call read_checkpoint(model, opt, an, run, ck, stat, errmsg)
       if (stat /= 0) then
-        call output_log(out, 'ldfcz: error: '//errmsg)
-        if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-        exit_code = exit_input
+        call halt_on_error(out, run, errmsg, exit_input)
         return
       end if
+      run%os%marks = ck%marks
     end if
-    if (restarting .and. (any(model%steps(1:model%nstep)%ncload > 0) .or. &
-        any(model%steps(1:model%nstep)%ndload > 0) .or. any(model%steps(1:model%nstep)%op_new) .or. &
-        any(model%steps(1:model%nstep)%ntemp > 0) .or. any(model%steps(1:model%nstep)%nfielddef > 0) .or. &
-        any_velocity())) then
-      ! the load state (step_loads) is not in the restart file
-      errmsg = opt%restart_from//': a restart of a deck with *CLOAD, *DLOAD, *DSLOAD, *TEMPERATURE, *FIELD, '// &
-        '*BOUNDARY, TYPE=VELOCITY or *BOUNDARY, OP=NEW is not supported'
-      call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-      exit_code = exit_input
+    call check_requests(model, an, run, out)
+    if (run%halt) return
+    call log_model(model, an, out, summary)
+    call check_bounds(model, opt, run, out, summary)
+    if (run%halt) return
+    call output_state_open(run%os, model, out, restarting, stat, errmsg)
+    if (stat /= 0) then
+      call halt_on_error(out, run, errmsg, exit_input)
       return
     end if
-    if (.not. associated(routines%disp)) then
-      ! *BOUNDARY, USER needs the user subroutine DISP
-      do i = 1, model%nstep
-        do k = 1, model%steps(i)%nbc
-          if (.not. model%steps(i)%bcs(k)%user) cycle
-          errmsg = model%steps(i)%bcs(k)%pos%file//':'//itoa(model%steps(i)%bcs(k)%pos%line)//': *BOUNDARY: '// &
-            'USER needs the user subroutine DISP: give a file defining it with --user FILE'
-          call output_log(out, 'ldfcz: error: '//errmsg)
-          if (out%quiet) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-          exit_code = exit_input
-          return
-        end do
-      end do
+    call stop_signal_install()
+    if (restarting) then
+      call resume(model, opt, an, run, out, summary, ck, is_first)
+    else
+      ! a user library's UEXTERNALDB: start of the analysis
+      call external_db(an%routines, 0, 0, [0.0_dp, 0.0_dp], 0.0_dp, 0, 0)
+      if (any(model%steps(1:model%nstep)%field_output)) call write_frame(run%os, out, model, an, 0.0_dp, &
+        findloc(model%steps(1:model%nstep)%field_output, .true., 1))
     end if
+  end subroutine begin_analysis
+
+  !> The restart file of this process into the checkpoint record ck and the analysis state, for the model and
+  !> partition of this run; every process fails alike when one cannot read its file (distributed run).
+  subroutine read_checkpoint(model, opt, an, run, ck, stat, errmsg)
+    type(model_t), intent(in) :: model                   !< the model
+    type(solver_options_t), intent(in) :: opt            !< solver choices (the restart file)
+    type(analysis_t), intent(inout) :: an                !< the analysis (its state replaced)
+    type(run_t), intent(inout) :: run                    !< the run's working data
+    type(checkpoint_t), intent(out) :: ck                !< the checkpoint's record
+    integer, intent(out) :: stat                         !< 0 ok, 2 refused
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    ck%nnode = model%nnode
+    ck%nelem = model%nelem
+    ck%ndof = an%ndof
+    ! a distributed run: the partition too (a restart needs the same, else elements' states are elsewhere)
+    run%checksum = ieor(restart_checksum(model), an%partition_sig)
+    ck%checksum = run%checksum
+    call restart_read(parallel_file(an%par, opt%restart_from), ck, an%state, stat, errmsg)
+    if (nint(parallel_max(an%par, real(stat, dp))) /= 0 .and. stat == 0) then
+      stat = 2
+      errmsg = parallel_file(an%par, opt%restart_from)//': another process could not read its restart file'
+    end if
+    if (stat == 0 .and. an%state%progress%step > model%nstep) then
+      stat = 2
+      errmsg = opt%restart_from//': the restart file is of step '//itoa(an%state%progress%step)//' but the deck has '// &
+        itoa(model%nstep)//' steps'
+    end if
+  end subroutine read_checkpoint
+
+  !> Continue from the checkpoint read: the working data from the analysis state, the summary counters, the VTU
+  !> frames, the step to continue (the next one when the restart point ended its step), UEXTERNALDB's LOP 4.
+  subroutine resume(model, opt, an, run, out, summary, ck, is_first)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices (the restart file)
+    type(analysis_t), intent(inout) :: an          !< the analysis (state read)
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures
+    type(checkpoint_t), intent(in) :: ck           !< the checkpoint's record
+    integer, intent(out) :: is_first               !< the step to continue
+    real(dp) :: t_point(2)
+    associate (p => an%state%progress)
+      t_point = [p%sc%t, p%t_total0 + p%sc%t]
+      an%work%u = an%state%u_conv
+      an%work%trial = an%state%conv
+      run%ns%reuse_count = p%reuse_count
+      run%fact_offset = ck%summary%factorizations
+      call run_summary_continue(summary, ck%summary)
+      call output_frames_resume(out, ck%frame_times)
+      is_first = p%step
+      run%resume_step = p%step
+      if (p%sc%t >= p%sc%period) then
+        ! the restart point ended step p%step: the next step starts as in the uninterrupted run
+        is_first = p%step + 1
+        p%t_total0 = p%t_total0 + model%steps(p%step)%period
+        run%resume_step = 0
+      end if
+      call output_sta_note(out, 'restart from '//opt%restart_from//' after step '//itoa(p%step)//' increment '// &
+        itoa(p%kinc))
+      call output_log(out, 'ldfcz: restart from '//opt%restart_from//': step '//itoa(p%step)//', increment '// &
+        itoa(p%kinc)//', total time '//rtoa(t_point(2))//'; '//itoa(run%os%marks%csv_rows)//' CSV rows and '// &
+        itoa(size(ck%frame_times))//' VTU frames kept; summary counters continue, times are of this run only')
+      call external_db(an%routines, 4, 0, t_point, 0.0_dp, p%step, p%kinc)
+    end associate
+  end subroutine resume
+
+  !> What the deck asks that needs a user routine: *BOUNDARY, USER needs DISP.
+  subroutine check_requests(model, an, run, out)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(in) :: an             !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    integer :: i, k
+    if (associated(an%routines%disp)) return
+    do i = 1, model%nstep
+      do k = 1, model%steps(i)%nbc
+        if (.not. model%steps(i)%bcs(k)%user) cycle
+        call halt_on_error(out, run, model%steps(i)%bcs(k)%pos%file//':'//itoa(model%steps(i)%bcs(k)%pos%line)// &
+          ': *BOUNDARY: USER needs the user subroutine DISP: give a file defining it with --user FILE', exit_input)
+        return
+      end do
+    end do
+  end subroutine check_requests
+
+  !> The model's lines in the log: size and solver, plane-stress notices, the part instances' label offsets.
+  subroutine log_model(model, an, out, summary)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(in) :: an             !< the analysis
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(in) :: summary     !< counters and measures (dofs)
+    character(len=:), allocatable :: msg
+    character(len=512), allocatable :: notes(:)
+    integer :: k
     msg = ''
-    if (an%sym_factors .and. .not. an%symmetric) msg = ' (LDL^T factors of (K+K^T)/2 precondition GMRES)'
-    if (an%single_factors) msg = msg//' (single-precision factors precondition GMRES)'
+    if (an%eqs%factoring%symmetric_part .and. .not. an%symmetric) &
+      msg = ' (LDL^T factors of (K+K^T)/2 precondition GMRES)'
+    if (an%eqs%factoring%single) msg = msg//' (single-precision factors precondition GMRES)'
     call output_log(out, 'ldfcz: '//itoa(model%nnode)//' nodes, '//itoa(model%nelem)//' elements, '// &
       itoa(summary%ndof)//' dofs, '//merge('symmetric  ', 'unsymmetric', an%symmetric)//' solver'//msg// &
-      '; UEL: '//routines%uel_origin//'; UMAT: '//routines%umat_origin)
+      '; UEL: '//an%routines%uel_origin//'; UMAT: '//an%routines%umat_origin)
     ! plane-stress elements with a UMAT under NLGEOM: the inferred thickness, said loudly (log and standard error)
     call plane_stress_umat_warnings(model, an, notes)
     do k = 1, size(notes)
@@ -154,6 +270,15 @@ contains
           itoa(in%elem_offset)//' (elements, up to '//itoa(in%elem_last)//')')
       end associate
     end do
+  end subroutine log_model
+
+  !> The accuracy bounds and the plastic-strain report need what they read declared (docs/umat.md, docs/uel.md).
+  subroutine check_bounds(model, opt, run, out, summary)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures (Newton variant, STATEV reported)
     summary%newton = opt%newton
     summary%plastic_statev = opt%plastic_statev
     if (summary%plastic_statev < 0) then
@@ -167,20 +292,14 @@ contains
       summary%plastic_statev = 0
     end if
     if (opt%max_plastic > 0.0_dp .and. summary%plastic_statev == 0) then
-      errmsg = '--max-plastic-increment needs a UMAT material that declares its equivalent plastic strain '// &
-        '(**LDFCZ STATEV, PLASTIC STRAIN=n; docs/umat.md) or --plastic-statev N'
-      call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-      exit_code = exit_input
+      call halt_on_error(out, run, '--max-plastic-increment needs a UMAT material that declares its equivalent '// &
+        'plastic strain (**LDFCZ STATEV, PLASTIC STRAIN=n; docs/umat.md) or --plastic-statev N', exit_input)
       return
     end if
     if (opt%max_opening > 0.0_dp .and. .not. any(model%utypes(1:model%nutype)%sv_opening > 0 .and. &
         model%utypes(1:model%nutype)%sv_length_prop > 0)) then
-      errmsg = '--max-opening-increment needs a user element type that declares its opening and length scale '// &
-        '(**LDFCZ SVARS, ..., OPENING=, LENGTH PROPERTY=; docs/uel.md)'
-      call output_log(out, 'ldfcz: error: '//errmsg)
-      if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-      exit_code = exit_input
+      call halt_on_error(out, run, '--max-opening-increment needs a user element type that declares its '// &
+        'opening and length scale (**LDFCZ SVARS, ..., OPENING=, LENGTH PROPERTY=; docs/uel.md)', exit_input)
       return
     end if
     if (opt%max_opening > 0.0_dp) then
@@ -189,508 +308,427 @@ contains
     else
       call output_log(out, 'ldfcz: Newton '//trim(newton_mode_name(opt%newton)))
     end if
+  end subroutine check_bounds
 
-    ! CSV columns: every (set, variable) requested by *NODE PRINT in any step
-    call history_columns_build(model, cols)
-    allocate (colv(cols%n))
-    if (restarting) then
-      call output_csv_resume(out, cols%names(1:cols%n), rs%state%csv_rows, fresh_csv, stat, errmsg)
-      if (stat /= 0) then
-        call output_log(out, 'ldfcz: error: '//errmsg)
-        if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-        exit_code = exit_input
-        return
-      end if
-      if (fresh_csv) call output_log(out, 'ldfcz: warning: no '//out%job//'.csv in '//out%dir//': the new one '// &
-        'holds the increments after the restart point only')
-    else
-      call output_csv_header(out, cols%names(1:cols%n))
-    end if
-    ! JOB.dat: the *NODE PRINT / *EL PRINT tables, on unit 6, which output_open has pointed at JOB.dat (continued
-    ! after a restart): what user routines write there interleaves with the tables as in Abaqus
-    dat = -1
-    if (print_tables_any(model) .and. .not. out%silent) dat = output_unit  ! once: by the writing process
-    summarize = .true.
-    call stop_signal_install()
-
-    call analysis_state_init(s, an%ndof)
-    allocate (bc_was_on(an%ndof))
-    call load_state_init(ls, an%ndof)
-    ! nodal temperatures: every node holds its initial temperature until a *TEMPERATURE changes it
-    call load_state_init(ls_temp, model%nnode)
-    ls_temp%on = .true.
-    ls_temp%base = an%temp_start
-    ls_temp%target = an%temp_start
-    allocate (zero_nodes(model%nnode))
-    zero_nodes = 0.0_dp
-    temp_init = an%temp_start
-    ! field variables likewise (*INITIAL CONDITIONS, TYPE=FIELD until a *FIELD changes them), nfield per node
-    call load_state_init(ls_field, size(an%field_start))
-    ls_field%on = .true.
-    ls_field%base = an%field_start
-    ls_field%target = an%field_start
-    field_init = an%field_start
-    call apply_bc_list(model%initial_bcs, model%n_initial_bc, .true.)
-    t_reached = 0.0_dp
-    is_first = 1
-    ! a user library's UEXTERNALDB: start of the analysis (LOP 0) or of a restarted one (4, below)
-    if (.not. restarting) call external_db(0, 0, [0.0_dp, 0.0_dp], 0.0_dp, 0, 0)
-    if (restarting) then
-      call resume_state()
-      call external_db(4, 0, [rs%state%sc%t, rs%state%t_total0 + rs%state%sc%t], 0.0_dp, rs%state%step, &
-        rs%state%kinc)
-    else if (any(model%steps(1:model%nstep)%field_output)) then
-      call write_frame(0.0_dp, findloc(model%steps(1:model%nstep)%field_output, .true., 1))
-    end if
-
-    steps: do is = is_first, model%nstep
-      associate (st => model%steps(is))
-        resumed = .false.
-        if (restarting) resumed = is == rs%state%step
-        if (.not. resumed) then
-          ! boundaries of this step: inherited ones keep the value reached (OP=NEW drops them)
-          s%u_start = an%u_conv
-          where (s%bc_on .and. .not. s%bc_init .and. .not. s%bc_vel)
-            s%bc_val = an%u_conv
-            s%bc_amp = 0
-          end where
-          ! an inherited velocity keeps the velocity reached (constant in this step)
-          where (s%bc_on .and. s%bc_vel)
-            s%bc_val = s%bc_rate
-            s%bc_amp = 0
-          end where
-          if (st%op_new) where (.not. s%bc_init) s%bc_vel = .false.
-          bc_was_on = s%bc_on
-          if (st%op_new) where (.not. s%bc_init) s%bc_on = .false.
-          call apply_bc_list(st%bcs, st%nbc, .false.)
-          ! loads of this step; a boundary removed by OP=NEW leaves its reaction as a force that decays over the step
-          where (bc_was_on .and. .not. s%bc_on)
-            bc_was_on = .true.
-          elsewhere
-            bc_was_on = .false.
-          end where
-          call load_step_begin(ls, s%fcl_old, merge(s%rf_old, 0.0_dp, bc_was_on), st%cloads, st%ncload, &
-            st%cload_op_new, model%ndim)
-          ! predefined fields: OP=NEW (per variable, 0 the temperature) returns them to their initial values
-          field_comp = .false.
-          if (allocated(st%field_new)) then
-            do k = 1, model%nfield
-              field_comp(k) = any(st%field_new == k)
-            end do
-            call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, any(st%field_new == 0), 1, &
-              rest=temp_init)
-          else
-            call load_step_begin(ls_temp, an%temp_start, zero_nodes, st%temps, st%ntemp, .false., 1)
-          end if
-          if (model%nfield > 0) call load_step_begin(ls_field, an%field_start, 0.0_dp * field_init, st%fields, &
-            st%nfielddef, any(field_comp), model%nfield, rest=field_init, new_comp=field_comp)
-          call dload_step_begin(an%dl, model, is, s%t_total0, stat, errmsg)
-          if (stat /= 0) then
-            call output_log(out, 'ldfcz: error: '//errmsg)
-            if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
-            exit_code = exit_input
-            exit steps
-          end if
-        end if
-        an%prescribed = s%bc_on .and. an%used
-        call analysis_number_equations(an, model, stat, errmsg)
+  !> Begin step is (unless a restart continues within it): its prescribed conditions and loads (analysis_state),
+  !> the equations of its free dofs, the increment control and output marks; the step's line in the log.
+  subroutine begin_step(model, opt, an, run, out, summary, is)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures
+    integer, intent(in) :: is                      !< the step
+    logical :: resumed
+    integer :: stat
+    character(len=:), allocatable :: errmsg
+    associate (st => model%steps(is), p => an%state%progress)
+      resumed = is == run%resume_step
+      if (.not. resumed) then
+        call analysis_state_step_begin(an%state, model, is, stat, errmsg)
         if (stat /= 0) then
-          call output_log(out, 'ldfcz: error: step '//itoa(is)//': '//errmsg)
-          exit_code = exit_input
-          exit steps
+          call halt_on_error(out, run, errmsg, exit_input)
+          return
         end if
-        summary%neq = an%neq
-        if (allocated(r)) deallocate (r)
-        allocate (r(max(an%neq, 1)))
-        if (resumed) then
-          ! restart within this step: increment control, q_avg history and output marks as they were (s)
-          call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': resumed from '//opt%restart_from// &
-            ' after increment '//itoa(s%kinc)//' at step time '//rtoa(s%sc%t)//' of '//rtoa(st%period)//', '// &
-            itoa(an%neq)//' equations')
-        else
-          call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': period '//rtoa(st%period)// &
-            ', NLGEOM '//merge('YES', 'NO ', st%nlgeom)//', '//itoa(an%neq)//' equations')
-          call step_control_init(s%sc, st%dt_initial, st%period, st%dt_min, st%dt_max, st%direct)
-          s%step = is
-          s%kinc = 0
-          s%dt_prev = 0.0_dp  ! Abaqus: no extrapolation into the first increment of a step
-          s%q_sum = 0.0_dp
-          s%next_mark = st%period / max(1, st%field_intervals)
-          s%last_frame_inc = -1
-        end if
-        call system_clock(cs0)
-        increments: do while (.not. step_control_done(s%sc))
-          s%kinc = s%kinc + 1
-          if (s%kinc > st%max_inc) then
-            call output_log(out, 'ldfcz: step '//itoa(is)//': the maximum number of increments (INC='// &
-              itoa(st%max_inc)//') is reached before the end of the step')
-            exit_code = exit_no_convergence
-            exit steps
-          end if
-          attempt = 0
-          attempts: do
-            attempt = attempt + 1
-            summary%attempts = summary%attempts + 1
-            dt = step_control_dt(s%sc)
-            time = [s%sc%t, s%t_total0 + s%sc%t]
-            t_end = s%sc%t + dt
-            call external_db(1, 0, time, dt, is, s%kinc)
-            ! the start of the increment: the converged state, or extrapolated
-            an%u = an%u_conv
-            an%extrapolated = st%extrapolate .and. s%dt_prev > 0.0_dp .and. attempt <= extrapolated_attempts
-            if (an%extrapolated) then
-              ! *STEP, EXTRAPOLATION=LINEAR (Abaqus' default): every dof starts from the last converged increment's
-              ! change scaled to this increment; a failed start is retried once, then from u_conv
-              an%u = an%u_conv + (dt / s%dt_prev) * s%du_prev
-            end if
-            if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
-            ! the prescribed values at the end of the increment; what they add to the start (all of the prescribed
-            ! increment, or what the extrapolation missed) the first Newton iteration carries through the tangent
-            u_carry = an%u
-            do i = 1, an%ndof
-              if (an%prescribed(i)) an%u(i) = prescribed_value(i, t_end)
-            end do
-            if (an%cs%n > 0) call constraints_apply(an%cs, an%u)
-            u_carry = an%u - u_carry
-            call load_vector(ls, model, is, t_end, s%t_total0, an%fext)
-            call load_vector(ls_temp, model, is, t_end, s%t_total0, an%temp_end)
-            call load_vector(ls_field, model, is, t_end, s%t_total0, an%field_end)
-            call newton_solve(an, model, is, s%kinc, time, dt, opt%newton, verbose, out, ns, summary, r, ratios, s%q_sum, &
-              converged, stopped, iter, q_now, pnewdt_min, outcome, u_carry)
-            if (stopped) then
-              call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'stopped: XIT/STDB_ABQERR in a user routine')
-              msg = 'ldfcz: error: '//stop_message(model, an%stop_elem, an%stop_text, is, s%kinc)
-              call output_log(out, msg)
-              if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') msg
-              if (parallel_distributed(an%par)) call output_log(out, 'ldfcz: the element is computed by process '// &
-                itoa(an%stop_rank)//' of '//itoa(an%par%nranks)//'; every process stopped')
-              exit_code = exit_input
-              exit steps
-            end if
-            summary%iterations = summary%iterations + iter
-            open_inc = 0.0_dp
-            if (converged .and. opt%max_opening > 0.0_dp .and. .not. st%direct) then
-              ! accuracy: the cohesive opening increment bound (paper section 7); redo the increment if exceeded
-              call cohesive_ratio(model, an, open_inc)
-              call step_control_accuracy(s%sc, dt, open_inc, opt%max_opening, redo, pnewdt_min)
-              if (redo) then
-                converged = .false.
-                s%q_sum = s%q_sum - q_now
-                outcome = 'cutback: opening increment '//rtoa(open_inc)//' delta'
-                summary%accuracy_cutbacks = summary%accuracy_cutbacks + 1
-              end if
-            end if
-            if (converged) then
-              if (model%monitor_node > 0) then
-                ! *MONITOR: the dof's displacement at the end of the increment, on the converged line
-                call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'converged  monitor U'// &
-                  itoa(model%monitor_dof)//' '//rtoa(an%u((model%monitor_node - 1) * model%ndim + model%monitor_dof)), &
-                  ratios(1:iter + 1))
-              else
-                call output_sta(out, is, s%kinc, attempt, iter, t_end, dt, 'converged', ratios(1:iter + 1))
-              end if
-              exit attempts
-            end if
-            call newton_forget_factors(ns)
-            ! failed attempt
-            call output_sta(out, is, s%kinc, attempt, iter, s%sc%t + dt, dt, trim(outcome), ratios(1:min(iter + 1, size(ratios))))
-            call analysis_restore(an)
-            call step_control_cutback(s%sc, dt, pnewdt_min, ok)
-            summary%cutbacks = summary%cutbacks + 1
-            if (.not. ok .or. step_control_exhausted(s%sc)) then
-              if (st%direct) then
-                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(s%kinc)//': no convergence '// &
-                  'with DIRECT (fixed) increments ('//trim(outcome)//')')
-              else if (.not. ok) then
-                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(s%kinc)//': no convergence; '// &
-                  'the increment '//rtoa(s%sc%dt)//' would be below the minimum '//rtoa(st%dt_min)//' ('// &
-                  trim(outcome)//')')
-              else
-                call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(s%kinc)//': no convergence '// &
-                  'after '//itoa(max_cutbacks)//' cutbacks ('//trim(outcome)//')')
-              end if
-              call output_log(out, 'ldfcz: the analysis stopped at step time '//rtoa(s%sc%t)//' of '// &
-                rtoa(st%period)//'; the output of the converged increments is complete')
-              exit_code = exit_no_convergence
-              exit steps
-            end if
-          end do attempts
-          ! converged increment: energy, commit, output
-          call cohesive_ratio(model, an, summary%max_open_ratio)
-          plastic_inc = 0.0_dp
-          if (summary%plastic_statev > 0) then
-            call statev_increment(model, an, summary%plastic_statev, plastic_inc)
-            summary%max_statev_inc = max(summary%max_statev_inc, plastic_inc)
-          end if
-          ! work of the reactions (trapezoidal) and of the external forces on the free dofs
-          do i = 1, an%ndof
-            if (an%prescribed(i)) then
-              summary%w_ext = summary%w_ext + 0.5_dp * (s%rf_old(i) + an%fint(i) - an%fext(i) - an%fdl(i)) * &
-                (an%u(i) - an%u_conv(i))
-            else
-              summary%w_ext = summary%w_ext + 0.5_dp * (s%fext_old(i) + an%fext(i) + an%fdl(i)) * &
-                (an%u(i) - an%u_conv(i))
-            end if
-          end do
-          where (an%prescribed)
-            s%rf_old = an%fint - an%fext - an%fdl
-          elsewhere
-            s%rf_old = 0.0_dp
-          end where
-          s%fext_old = an%fext + an%fdl
-          s%fcl_old = an%fext
-          s%du_prev = an%u - an%u_conv
-          s%dt_prev = dt
-          call analysis_commit(an)
-          an%temp_start = an%temp_end
-          an%field_start = an%field_end
-          do i = 1, an%ndof
-            if (s%bc_vel(i)) s%bc_rate(i) = velocity_value(i, t_end)
-          end do
-          call step_control_converged(s%sc, dt, iter, pnewdt_min, open_inc, opt%max_opening, plastic_inc, &
-            opt%max_plastic)
-          summary%increments = summary%increments + 1
-          s%kinc_total = s%kinc_total + 1
-          run_increments = run_increments + 1
-          call history_columns_values(cols, model, an%u, an%fint, an%fext, an%fdl, an%prescribed, colv)
-          call output_csv_row(out, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, colv)
-          s%csv_rows = s%csv_rows + 1
-          ! rank 0 prints: the states of the other processes' printed elements first (every process takes part),
-          ! released after the tables
-          if (print_tables_any(model)) then
-            printed = print_tables_elements(model, st, s%kinc, step_control_done(s%sc))
-            call gather_converged_states(an, model, printed)
-          end if
-          if (dat /= -1) call print_tables_write(dat, model, an, st, is, s%kinc, s%sc%t, s%t_total0 + s%sc%t, dt, &
-            step_control_done(s%sc))
-          if (print_tables_any(model)) call release_converged_states(an, printed)
-          if (st%field_output) then
-            if (st%field_intervals > 0) then
-              if (s%sc%t >= s%next_mark * (1.0_dp - 1.0e-9_dp) .or. step_control_done(s%sc)) then
-                call write_frame(s%t_total0 + s%sc%t, is)
-                do while (s%next_mark <= s%sc%t * (1.0_dp + 1.0e-9_dp))
-                  s%next_mark = s%next_mark + st%period / st%field_intervals
-                end do
-              end if
-            else if (st%field_frequency > 0) then
-              if (mod(s%kinc, st%field_frequency) == 0 .or. step_control_done(s%sc)) call write_frame(s%t_total0 + s%sc%t, is)
-            end if
-          end if
-          call system_clock(c1)
-          call output_progress(out, is, model%nstep, s%kinc, s%sc%t, st%period, real(c1 - cs0, dp) / real(rate, dp))
-          ! restart data after every n-th increment and at the end of the step (Abaqus *RESTART, WRITE, FREQUENCY=n)
-          k = st%restart_frequency
-          if (opt%restart_write >= 0) k = opt%restart_write
-          lrestart = 0
-          if (k > 0) then
-            if (mod(s%kinc, k) == 0 .or. step_control_done(s%sc)) then
-              call save_restart()
-              lrestart = 1
-            end if
-          end if
-          t_reached = [s%sc%t, s%t_total0 + s%sc%t]
-          call external_db(2, lrestart, t_reached, dt, is, s%kinc)
-          if (opt%stop_after > 0 .and. run_increments >= opt%stop_after) then
-            call output_log(out, 'ldfcz: stopped after '//itoa(run_increments)//' increments as asked '// &
-              '(--stop-after-increments), at step '//itoa(is)//' time '//rtoa(s%sc%t)//' of '//rtoa(st%period))
-            exit_code = exit_no_convergence
-            exit steps
-          end if
-          ! a signal to any process stops every one after this increment
-          sig = nint(parallel_max(an%par, real(stop_signal_received(), dp)))
-          if (sig /= 0 .and. .not. (is == model%nstep .and. step_control_done(s%sc))) then
-            ! SIGTERM/SIGINT (stop_signal): end here as a complete run ends; the restart data first, so that a
-            ! restart from them replaces the extra frame below with the uninterrupted run's frames
-            call output_log(out, 'ldfcz: '//stop_signal_name(sig)//' received: stopped after increment '// &
-              itoa(s%kinc)//' of step '//itoa(is)//' at step time '//rtoa(s%sc%t)//' of '//rtoa(st%period)// &
-              '; the output of every converged increment is complete')
-            call output_sta_note(out, 'stopped by '//stop_signal_name(sig)//' after step '//itoa(is)// &
-              ' increment '//itoa(s%kinc))
-            if (k > 0) then
-              if (mod(s%kinc, k) /= 0) call save_restart()
-            end if
-            if (st%field_output) call write_frame(s%t_total0 + s%sc%t, is)
-            exit_code = 128 + sig
-            exit steps
-          end if
-        end do increments
-        s%t_total0 = s%t_total0 + st%period
-        call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(s%kinc)//' increments')
-      end associate
-    end do steps
-    call external_db(3, 0, t_reached, 0.0_dp, min(is, model%nstep), s%kinc)
-    if (dat /= -1) flush (dat)
-    if (ns%tangents_skipped > 0) call output_log(out, 'ldfcz: Newton auto: '//itoa(ns%tangents_skipped)// &
-      ' iterations expected to converge assembled without a tangent, '//itoa(ns%stale_solves)// &
-      ' of them not converged and solved with the previous iterate''s tangent (this run)')
-
-  contains
-
-    !> Restart: the solver state of the restart file (read above) replaces the initial one; is_first is the step
-    !> to continue (the next one when the restart point ended its step).
-    subroutine resume_state()
-      an%u_conv = rs%u_conv
-      an%u = rs%u_conv
-      an%fint = rs%fint
-      an%trial = an%conv
-      s = rs%state
-      ns%reuse_count = s%reuse_count
-      fact_offset = rs%summary%factorizations
-      call run_summary_continue(summary, rs%summary)
-      call output_frames_resume(out, rs%frame_times)
-      is_first = s%step
-      if (s%sc%t >= s%sc%period) then
-        ! the restart point ended step s%step: the next step starts as in the uninterrupted run
-        is_first = s%step + 1
-        s%t_total0 = s%t_total0 + model%steps(s%step)%period
-        restarting = .false.
       end if
-      call output_sta_note(out, 'restart from '//opt%restart_from//' after step '//itoa(s%step)//' increment '// &
-        itoa(s%kinc))
-      call output_log(out, 'ldfcz: restart from '//opt%restart_from//': step '//itoa(s%step)//', increment '// &
-        itoa(s%kinc)//', total time '//rtoa(rs%state%t_total0 + s%sc%t)//'; '//itoa(s%csv_rows)//' CSV rows and '// &
-        itoa(size(rs%frame_times))//' VTU frames kept; summary counters continue, times are of this run only')
-    end subroutine resume_state
-
-    !> JOB.rst with the state after the increment just converged and written (restart_file).
-    subroutine save_restart()
-      type(restart_state_t) :: w
-      integer :: st2
-      character(len=:), allocatable :: em
-      integer(i8) :: r0, r1
-      call system_clock(r0)
-      w%nnode = model%nnode
-      w%nelem = model%nelem
-      w%ndof = an%ndof
-      if (fp%checksum == 0) fp%checksum = ieor(restart_checksum(model), an%partition_sig)
-      w%checksum = fp%checksum
-      s%reuse_count = ns%reuse_count
-      w%state = s
-      w%u_conv = an%u_conv
-      w%fint = an%fint
-      w%summary = summary
-      w%summary%factorizations = fact_offset + an%n_factor_done
-      if (an%sys_ready) w%summary%factorizations = w%summary%factorizations + sparse_factor_count(an%sys)
-      if (allocated(out%frame_times)) then
-        w%frame_times = out%frame_times(1:out%nframe)
-      else
-        allocate (w%frame_times(0))
-      end if
-      call restart_write(parallel_file(an%par, out%dir//'/'//out%job//'.rst'), w, an%conv, st2, em)
-      if (st2 /= 0) call output_log(out, 'ldfcz: warning: restart file not written: '//em)
-      call system_clock(r1)
-      out%t_output = out%t_output + real(r1 - r0, dp) / real(rate, dp)
-    end subroutine save_restart
-
-    subroutine apply_bc_list(list, n, initial)
-      use model_types, only: boundary_t
-      type(boundary_t), intent(in) :: list(:)
-      integer, intent(in) :: n
-      logical, intent(in) :: initial
-      integer :: k, a, d, dof
-      do k = 1, n
-        do a = 1, size(list(k)%nodes)
-          do d = list(k)%first_dof, min(list(k)%last_dof, model%ndim)
-            dof = (list(k)%nodes(a) - 1) * model%ndim + d
-            s%bc_on(dof) = .true.
-            s%bc_val(dof) = list(k)%value
-            s%bc_amp(dof) = list(k)%amplitude
-            s%bc_vel(dof) = list(k)%velocity
-            s%bc_user(dof) = list(k)%user
-            if (initial) s%bc_init(dof) = .true.
-          end do
-        end do
-      end do
-    end subroutine apply_bc_list
-
-    !> Prescribed value at step time t: amplitude * value, or a linear ramp from the step-start value (Abaqus).
-    real(dp) function prescribed_value(dof, t) result(v)
-      integer, intent(in) :: dof
-      real(dp), intent(in) :: t
-      if (s%bc_vel(dof)) then
-        ! TYPE=VELOCITY: u = u of the last converged increment + v(t) dt, v a STEP unless an amplitude is given
-        v = an%u_conv(dof) + velocity_value(dof, t) * dt
+      an%eqs%prescribed = an%state%bc%on .and. an%used
+      call analysis_number_equations(an, model, stat, errmsg)
+      if (stat /= 0) then
+        call halt_on_error(out, run, 'step '//itoa(is)//': '//errmsg, exit_input, echo=.false.)
         return
       end if
-      if (s%bc_amp(dof) > 0) then
-        v = amplitude_factor(model%amplitudes(s%bc_amp(dof)), t, s%t_total0) * s%bc_val(dof)
-      else if (model%steps(is)%amp_step) then
-        v = s%bc_val(dof)
+      summary%neq = an%eqs%neq
+      if (allocated(run%r)) deallocate (run%r)
+      allocate (run%r(max(an%eqs%neq, 1)))
+      if (resumed) then
+        ! restart within this step: increment control, q_avg history and output marks as they were
+        call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': resumed from '//opt%restart_from// &
+          ' after increment '//itoa(p%kinc)//' at step time '//rtoa(p%sc%t)//' of '//rtoa(st%period)//', '// &
+          itoa(an%eqs%neq)//' equations')
       else
-        v = s%u_start(dof) + (t / model%steps(is)%period) * (s%bc_val(dof) - s%u_start(dof))
+        call output_log(out, 'ldfcz: step '//itoa(is)//trim(' '//st%name)//': period '//rtoa(st%period)// &
+          ', NLGEOM '//merge('YES', 'NO ', st%nlgeom)//', '//itoa(an%eqs%neq)//' equations')
+        call step_control_init(p%sc, st%dt_initial, st%period, st%dt_min, st%dt_max, st%direct)
+        p%step = is
+        p%kinc = 0
+        p%q_sum = 0.0_dp
+        an%state%last%dt = 0.0_dp  ! Abaqus: no extrapolation into the first increment of a step
+        call output_step_begin(run%os, st)
       end if
-      if (s%bc_user(dof)) v = user_disp(dof, t, v)
-    end function prescribed_value
+    end associate
+    call system_clock(run%step_clock)
+  end subroutine begin_step
 
-    !> *BOUNDARY, USER: the value of DISP for dof at step time t (the end of the increment), U(1) passed in as v;
-    !> COORDS the node's coordinates at the start of the increment (current ones under NLGEOM); JDOF in the node's
-    !> *TRANSFORM system where it has one. NOEL = 0 (a node's boundary).
-    real(dp) function user_disp(dof, t, v) result(w)
-      integer, intent(in) :: dof
-      real(dp), intent(in) :: t, v
-      real(dp) :: c_u(3), c_time(3), c_coords(3)
-      integer :: c_kstep, c_kinc, c_node, c_noel, c_jdof, nd
-      nd = (dof - 1) / model%ndim + 1
-      c_u = [v, 0.0_dp, 0.0_dp]
-      c_time = [t, s%t_total0 + t, dt]
-      c_coords = model%x(:, nd)
-      if (model%steps(is)%nlgeom) c_coords(1:model%ndim) = c_coords(1:model%ndim) + &
-        node_vector_global(an%nr, an%u_conv, nd)
-      c_kstep = is
-      c_kinc = s%kinc
-      c_node = model%node_id(nd)
-      c_noel = 0
-      c_jdof = dof - (nd - 1) * model%ndim
-      call routines%disp(c_u, c_kstep, c_kinc, c_time, c_node, c_noel, c_jdof, c_coords)
-      w = c_u(1)
-    end function user_disp
+  !> Begin the next increment of the step (INC= of *STEP bounds their number).
+  subroutine begin_increment(model, an, run, out, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(increment_t), intent(out) :: inc          !< the increment
+    associate (p => an%state%progress, st => model%steps(an%state%progress%step))
+      p%kinc = p%kinc + 1
+      if (p%kinc > st%max_inc) then
+        call output_log(out, 'ldfcz: step '//itoa(p%step)//': the maximum number of increments (INC='// &
+          itoa(st%max_inc)//') is reached before the end of the step')
+        run%exit_code = exit_no_convergence
+        run%halt = .true.
+        return
+      end if
+      inc = increment_t(step=p%step, kinc=p%kinc, t_total0=p%t_total0, period=st%period, nlgeom=st%nlgeom)
+    end associate
+  end subroutine begin_increment
 
-    !> Prescribed velocity of dof at step time t: amplitude * value, else the value (Abaqus' default for velocity
-    !> boundaries in a static step is a STEP function whatever *STEP, AMPLITUDE says).
-    real(dp) function velocity_value(dof, t) result(v)
-      integer, intent(in) :: dof
-      real(dp), intent(in) :: t
-      v = s%bc_val(dof)
-      if (s%bc_amp(dof) > 0) v = amplitude_factor(model%amplitudes(s%bc_amp(dof)), t, s%t_total0) * s%bc_val(dof)
-    end function velocity_value
+  !> Predict the next attempt: its size (step_control), UEXTERNALDB's LOP 1, the start (the converged state, or
+  !> with *STEP, EXTRAPOLATION=LINEAR, Abaqus' default, the last converged increment's change scaled to this one;
+  !> a failed extrapolated start is retried once, then from the converged state), the prescribed values at the end
+  !> of the increment (what they add to the start, the first Newton iteration carries through the tangent) and the
+  !> loads and predefined fields there.
+  subroutine predict(model, an, run, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(increment_t), intent(inout) :: inc        !< the increment
+    associate (s => an%state, st => model%steps(inc%step))
+      inc%attempt = inc%attempt + 1
+      inc%t_step = s%progress%sc%t
+      inc%dt = step_control_dt(s%progress%sc)
+      inc%iter = 0
+      inc%cause = ''
+      call external_db(an%routines, 1, 0, increment_time(inc), inc%dt, inc%step, inc%kinc)
+      an%work%u = s%u_conv
+      inc%extrapolated = st%extrapolate .and. s%last%dt > 0.0_dp .and. inc%attempt <= extrapolated_attempts
+      if (inc%extrapolated) an%work%u = s%u_conv + (inc%dt / s%last%dt) * s%last%du
+      if (an%eqs%cs%n > 0) call constraints_apply(an%eqs%cs, an%work%u)
+      run%u_carry = an%work%u
+      call boundary_prescribe(s%bc, model, inc, s%u_conv, an%nr, an%routines, an%eqs%prescribed, an%work%u)
+      if (an%eqs%cs%n > 0) call constraints_apply(an%eqs%cs, an%work%u)
+      run%u_carry = an%work%u - run%u_carry
+      call loads_at_end(s%loads, model, inc, an%work%fext, an%work%temp_end, an%work%field_end)
+    end associate
+  end subroutine predict
 
-    !> A step of the model has a velocity boundary.
-    logical function any_velocity()
-      integer :: js, kb
-      any_velocity = .false.
-      do js = 1, model%nstep
-        do kb = 1, model%steps(js)%nbc
-          if (model%steps(js)%bcs(kb)%velocity) any_velocity = .true.
-        end do
+  !> Iterate: Newton from the predicted start (newton_iteration); a converged attempt whose cohesive opening
+  !> increment exceeds --max-opening-increment (paper section 7) is rejected; a stop asked by a user routine ends
+  !> the analysis. The status line of a converged attempt.
+  subroutine iterate(model, opt, an, run, out, summary, inc, converged)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures
+    type(increment_t), intent(inout) :: inc        !< the increment
+    logical, intent(out) :: converged              !< the attempt converged and is accepted
+    real(dp) :: q_now
+    logical :: stopped, redo
+    associate (p => an%state%progress, st => model%steps(inc%step))
+      summary%attempts = summary%attempts + 1
+      call newton_solve(an, model, inc, opt%newton, run%verbose, out, run%ns, summary, run%r, run%ratios, p%q_sum, &
+        converged, stopped, q_now, run%u_carry)
+      if (stopped) then
+        call output_sta(out, inc%step, inc%kinc, inc%attempt, inc%iter, increment_end(inc), inc%dt, &
+          'stopped: XIT/STDB_ABQERR in a user routine')
+        call halt_on_error(out, run, stop_message(model, an%work%stop%elem, an%work%stop%text, inc%step, inc%kinc), &
+          exit_input)
+        if (parallel_distributed(an%par)) call output_log(out, 'ldfcz: the element is computed by process '// &
+          itoa(an%work%stop%rank)//' of '//itoa(an%par%nranks)//'; every process stopped')
+        converged = .false.
+        return
+      end if
+      summary%iterations = summary%iterations + inc%iter
+      inc%opening = 0.0_dp
+      if (converged .and. opt%max_opening > 0.0_dp .and. .not. st%direct) then
+        ! accuracy: the cohesive opening increment bound (paper section 7); redo the increment if exceeded
+        call cohesive_ratio(model, an, inc%opening)
+        call step_control_accuracy(p%sc, inc%dt, inc%opening, opt%max_opening, redo, inc%pnewdt)
+        if (redo) then
+          converged = .false.
+          p%q_sum = p%q_sum - q_now
+          inc%cause = 'cutback: opening increment '//rtoa(inc%opening)//' delta'
+          summary%accuracy_cutbacks = summary%accuracy_cutbacks + 1
+        end if
+      end if
+      if (.not. converged) return
+      if (model%monitor_node > 0) then
+        ! *MONITOR: the dof's displacement at the end of the increment, on the converged line
+        call output_sta(out, inc%step, inc%kinc, inc%attempt, inc%iter, increment_end(inc), inc%dt, &
+          'converged  monitor U'//itoa(model%monitor_dof)//' '// &
+          rtoa(an%work%u((model%monitor_node - 1) * model%ndim + model%monitor_dof)), run%ratios(1:inc%iter + 1))
+      else
+        call output_sta(out, inc%step, inc%kinc, inc%attempt, inc%iter, increment_end(inc), inc%dt, 'converged', &
+          run%ratios(1:inc%iter + 1))
+      end if
+    end associate
+  end subroutine iterate
+
+  !> Cut back after a failed attempt: its status line, back to the converged state, the smaller increment
+  !> (step_control: 0.25, or the PNEWDT asked for); the analysis ends below the minimum increment, after
+  !> max_cutbacks cutbacks of one increment or with DIRECT (fixed) increments.
+  subroutine cut_back(model, an, run, out, summary, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures
+    type(increment_t), intent(in) :: inc           !< the failed attempt
+    logical :: ok
+    character(len=:), allocatable :: head
+    call newton_forget_factors(run%ns)
+    call output_sta(out, inc%step, inc%kinc, inc%attempt, inc%iter, increment_end(inc), inc%dt, trim(inc%cause), &
+      run%ratios(1:min(inc%iter + 1, size(run%ratios))))
+    call analysis_restore(an)
+    associate (p => an%state%progress, st => model%steps(inc%step))
+      call step_control_cutback(p%sc, inc%dt, inc%pnewdt, ok)
+      summary%cutbacks = summary%cutbacks + 1
+      if (ok .and. .not. step_control_exhausted(p%sc)) return
+      head = 'ldfcz: step '//itoa(inc%step)//' increment '//itoa(inc%kinc)//': no convergence'
+      if (st%direct) then
+        call output_log(out, head//' with DIRECT (fixed) increments ('//trim(inc%cause)//')')
+      else if (.not. ok) then
+        call output_log(out, head//'; the increment '//rtoa(p%sc%dt)//' would be below the minimum '// &
+          rtoa(st%dt_min)//' ('//trim(inc%cause)//')')
+      else
+        call output_log(out, head//' after '//itoa(max_cutbacks)//' cutbacks ('//trim(inc%cause)//')')
+      end if
+      call output_log(out, 'ldfcz: the analysis stopped at step time '//rtoa(p%sc%t)//' of '//rtoa(st%period)// &
+        '; the output of the converged increments is complete')
+    end associate
+    run%exit_code = exit_no_convergence
+    run%halt = .true.
+  end subroutine cut_back
+
+  !> Accept the converged increment: the largest opening and plastic increments, the work of the external forces
+  !> and reactions, the trial state committed, the predefined fields and velocities reached, the next increment's
+  !> size (step_control: growth, PNEWDT, accuracy bounds).
+  subroutine accept(model, opt, an, run, summary, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(run_summary_t), intent(inout) :: summary  !< counters and measures
+    type(increment_t), intent(in) :: inc           !< the converged increment
+    real(dp) :: plastic_inc
+    call cohesive_ratio(model, an, summary%max_open_ratio)
+    plastic_inc = 0.0_dp
+    if (summary%plastic_statev > 0) then
+      call statev_increment(model, an, summary%plastic_statev, plastic_inc)
+      summary%max_statev_inc = max(summary%max_statev_inc, plastic_inc)
+    end if
+    call work_of_increment(an, inc, summary%w_ext)
+    call analysis_commit(an)
+    an%state%temp_start = an%work%temp_end
+    an%state%field_start = an%work%field_end
+    call boundary_rates_update(an%state%bc, model, inc)
+    call step_control_converged(an%state%progress%sc, inc%dt, inc%iter, inc%pnewdt, inc%opening, opt%max_opening, &
+      plastic_inc, opt%max_plastic)
+    summary%increments = summary%increments + 1
+    an%state%progress%kinc_total = an%state%progress%kinc_total + 1
+    run%increments = run%increments + 1
+  end subroutine accept
+
+  !> The work of the reactions (trapezoidal) and of the external forces on the free dofs over the converged
+  !> increment, and what the next increment takes from it (an%state%last), before the commit.
+  subroutine work_of_increment(an, inc, w_ext)
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(increment_t), intent(in) :: inc           !< the converged increment
+    real(dp), intent(inout) :: w_ext               !< external work so far
+    integer :: i
+    associate (last => an%state%last, w => an%work, u_conv => an%state%u_conv, prescribed => an%eqs%prescribed)
+      do i = 1, an%ndof
+        if (prescribed(i)) then
+          w_ext = w_ext + 0.5_dp * (last%rf(i) + w%fint(i) - w%fext(i) - w%fdl(i)) * (w%u(i) - u_conv(i))
+        else
+          w_ext = w_ext + 0.5_dp * (last%fext(i) + w%fext(i) + w%fdl(i)) * (w%u(i) - u_conv(i))
+        end if
       end do
-    end function any_velocity
+      where (prescribed)
+        last%rf = w%fint - w%fext - w%fdl
+      elsewhere
+        last%rf = 0.0_dp
+      end where
+      last%fext = w%fext + w%fdl
+      last%fcl = w%fext
+      last%du = w%u - u_conv
+      last%dt = inc%dt
+    end associate
+  end subroutine work_of_increment
 
-    !> Calls the user library's UEXTERNALDB, if it has one, with copies of the arguments (a routine may write to
-    !> them).
-    subroutine external_db(lop, lrestart_, tm, dtm, kstep, kinc_)
-      integer, intent(in) :: lop, lrestart_, kstep, kinc_  !< Abaqus' LOP, LRESTART, KSTEP, KINC
-      real(dp), intent(in) :: tm(2), dtm                    !< TIME (step, total), DTIME
-      integer :: c_lop, c_lrestart, c_kstep, c_kinc
-      real(dp) :: c_time(2), c_dtime
-      if (.not. associated(routines%uexternaldb)) return
-      c_lop = lop
-      c_lrestart = lrestart_
-      c_kstep = kstep
-      c_kinc = kinc_
-      c_time = tm
-      c_dtime = dtm
-      call routines%uexternaldb(c_lop, c_lrestart, c_time, c_dtime, c_kstep, c_kinc)
-    end subroutine external_db
+  !> Write the output of the converged increment (step_output) and the progress line.
+  subroutine write_output(model, an, run, out, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(increment_t), intent(in) :: inc           !< the converged increment
+    integer(i8) :: c1, rate
+    call write_increment_output(run%os, out, model, an, inc)
+    call system_clock(c1, rate)
+    call output_progress(out, inc%step, model%nstep, inc%kinc, an%state%progress%sc%t, model%steps(inc%step)%period, &
+      real(c1 - run%step_clock, dp) / real(rate, dp))
+  end subroutine write_output
 
-    !> A VTU frame of the converged state, once per converged increment.
-    subroutine write_frame(ttot, istep)
-      real(dp), intent(in) :: ttot  !< total time of the frame
-      integer, intent(in) :: istep  !< step whose field request applies
-      if (s%kinc_total == s%last_frame_inc) return
-      s%last_frame_inc = s%kinc_total
-      call write_field_frame(out, model, an, ttot, model%steps(istep))
-    end subroutine write_frame
+  !> Checkpoint: the restart file after every n-th increment of the step and its last (Abaqus *RESTART, WRITE,
+  !> FREQUENCY=n; --restart-write), then UEXTERNALDB's LOP 2 (LRESTART 1 when the file was written).
+  subroutine checkpoint(model, opt, an, run, out, summary, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(in) :: summary     !< counters and measures
+    type(increment_t), intent(in) :: inc           !< the converged increment
+    integer :: k, lrestart
+    k = restart_frequency(model, opt, inc%step)
+    lrestart = 0
+    if (k > 0) then
+      if (mod(inc%kinc, k) == 0 .or. step_control_done(an%state%progress%sc)) then
+        call save_checkpoint(model, an, run, out, summary)
+        lrestart = 1
+      end if
+    end if
+    run%t_reached = [an%state%progress%sc%t, an%state%progress%t_total0 + an%state%progress%sc%t]
+    call external_db(an%routines, 2, lrestart, run%t_reached, inc%dt, inc%step, inc%kinc)
+  end subroutine checkpoint
 
-  end subroutine run_steps
+  !> Write the restart file (restart_file) of the state after the increment just converged and written: the
+  !> analysis state whole and the record of the output marks, summary and frames.
+  subroutine save_checkpoint(model, an, run, out, summary)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(in) :: summary     !< counters and measures
+    type(checkpoint_t) :: ck
+    integer :: stat
+    character(len=:), allocatable :: errmsg
+    integer(i8) :: r0, r1, rate
+    call system_clock(r0, rate)
+    ck%nnode = model%nnode
+    ck%nelem = model%nelem
+    ck%ndof = an%ndof
+    if (run%checksum == 0) run%checksum = ieor(restart_checksum(model), an%partition_sig)
+    ck%checksum = run%checksum
+    an%state%progress%reuse_count = run%ns%reuse_count
+    ck%marks = run%os%marks
+    ck%summary = summary
+    ck%summary%factorizations = run%fact_offset + an%timing%n_factor_done
+    if (an%eqs%sys_ready) ck%summary%factorizations = ck%summary%factorizations + sparse_factor_count(an%eqs%sys)
+    if (allocated(out%frame_times)) then
+      ck%frame_times = out%frame_times(1:out%nframe)
+    else
+      allocate (ck%frame_times(0))
+    end if
+    call restart_write(parallel_file(an%par, out%dir//'/'//out%job//'.rst'), ck, an%state, stat, errmsg)
+    if (stat /= 0) call output_log(out, 'ldfcz: warning: restart file not written: '//errmsg)
+    call system_clock(r1)
+    out%t_output = out%t_output + real(r1 - r0, dp) / real(rate, dp)
+  end subroutine save_checkpoint
+
+  !> Stop after the increment when asked: --stop-after-increments (exit 3), or a signal to any process (SIGTERM,
+  !> SIGINT, SIGUSR1: stop_signal), which ends the run as a complete one ends, the restart file first (when restart
+  !> data are written at all), so that a restart replaces the extra frame with the uninterrupted run's frames.
+  subroutine stop_if_asked(model, opt, an, run, out, summary, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(in) :: summary     !< counters and measures
+    type(increment_t), intent(in) :: inc           !< the converged increment
+    integer :: sig, k
+    associate (p => an%state%progress, st => model%steps(inc%step))
+      if (opt%stop_after > 0 .and. run%increments >= opt%stop_after) then
+        call output_log(out, 'ldfcz: stopped after '//itoa(run%increments)//' increments as asked '// &
+          '(--stop-after-increments), at step '//itoa(inc%step)//' time '//rtoa(p%sc%t)//' of '//rtoa(st%period))
+        run%exit_code = exit_no_convergence
+        run%halt = .true.
+        return
+      end if
+      sig = nint(parallel_max(an%par, real(stop_signal_received(), dp)))
+      if (sig == 0 .or. (inc%step == model%nstep .and. step_control_done(p%sc))) return
+      call output_log(out, 'ldfcz: '//stop_signal_name(sig)//' received: stopped after increment '// &
+        itoa(inc%kinc)//' of step '//itoa(inc%step)//' at step time '//rtoa(p%sc%t)//' of '//rtoa(st%period)// &
+        '; the output of every converged increment is complete')
+      call output_sta_note(out, 'stopped by '//stop_signal_name(sig)//' after step '//itoa(inc%step)// &
+        ' increment '//itoa(inc%kinc))
+      k = restart_frequency(model, opt, inc%step)
+      if (k > 0) then
+        if (mod(inc%kinc, k) /= 0) call save_checkpoint(model, an, run, out, summary)
+      end if
+      if (st%field_output) call write_frame(run%os, out, model, an, p%t_total0 + p%sc%t, inc%step)
+      run%exit_code = 128 + sig
+      run%halt = .true.
+    end associate
+  end subroutine stop_if_asked
+
+  !> End of step is: the total time moves on by its period.
+  subroutine end_step(model, an, out, is)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(output_t), intent(inout) :: out           !< output files
+    integer, intent(in) :: is                      !< the step
+    an%state%progress%t_total0 = an%state%progress%t_total0 + model%steps(is)%period
+    call output_log(out, 'ldfcz: step '//itoa(is)//' completed in '//itoa(an%state%progress%kinc)//' increments')
+  end subroutine end_step
+
+  !> End of the analysis (also after an error or a stop within it): UEXTERNALDB's LOP 3, JOB.dat flushed, the
+  !> Newton auto counts.
+  subroutine end_analysis(model, an, run, out, is)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(in) :: an             !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    integer, intent(in) :: is                      !< the step where the analysis ended (nstep + 1: completed)
+    call external_db(an%routines, 3, 0, run%t_reached, 0.0_dp, min(is, model%nstep), an%state%progress%kinc)
+    if (run%os%dat /= -1) flush (run%os%dat)
+    if (run%ns%tangents_skipped > 0) call output_log(out, 'ldfcz: Newton auto: '//itoa(run%ns%tangents_skipped)// &
+      ' iterations expected to converge assembled without a tangent, '//itoa(run%ns%stale_solves)// &
+      ' of them not converged and solved with the previous iterate''s tangent (this run)')
+  end subroutine end_analysis
+
+  !> The restart frequency in effect in step is: --restart-write, else the deck's *RESTART, WRITE (0: none).
+  pure integer function restart_frequency(model, opt, is) result(k)
+    type(model_t), intent(in) :: model             !< the model
+    type(solver_options_t), intent(in) :: opt      !< solver choices
+    integer, intent(in) :: is                      !< the step
+    k = model%steps(is)%restart_frequency
+    if (opt%restart_write >= 0) k = opt%restart_write
+  end function restart_frequency
+
+  !> An error that ends the analysis: in the log and, when the log is not echoed (echo), on standard error.
+  subroutine halt_on_error(out, run, text, code, echo)
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_t), intent(inout) :: run              !< the run's working data
+    character(len=*), intent(in) :: text           !< the message
+    integer, intent(in) :: code                    !< exit status
+    logical, intent(in), optional :: echo          !< also on standard error when quiet (default yes)
+    logical :: to_stderr
+    to_stderr = out%quiet .and. .not. out%silent
+    if (present(echo)) to_stderr = to_stderr .and. echo
+    call output_log(out, 'ldfcz: error: '//text)
+    if (to_stderr) write (error_unit, '(a)') 'ldfcz: error: '//text
+    run%exit_code = code
+    run%halt = .true.
+  end subroutine halt_on_error
+
+  !> Calls the user library's UEXTERNALDB, if it has one, with copies of the arguments (a routine may write to
+  !> them).
+  subroutine external_db(routines, lop, lrestart, tm, dtm, kstep, kinc)
+    type(user_routines_t), intent(in) :: routines         !< the user library's routines
+    integer, intent(in) :: lop, lrestart, kstep, kinc     !< Abaqus' LOP, LRESTART, KSTEP, KINC
+    real(dp), intent(in) :: tm(2), dtm                    !< TIME (step, total), DTIME
+    integer :: c_lop, c_lrestart, c_kstep, c_kinc
+    real(dp) :: c_time(2), c_dtime
+    if (.not. associated(routines%uexternaldb)) return
+    c_lop = lop
+    c_lrestart = lrestart
+    c_kstep = kstep
+    c_kinc = kinc
+    c_time = tm
+    c_dtime = dtm
+    call routines%uexternaldb(c_lop, c_lrestart, c_time, c_dtime, c_kstep, c_kinc)
+  end subroutine external_db
 
 end module static_step

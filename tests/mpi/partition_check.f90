@@ -22,6 +22,8 @@ program partition_check
   use model_types, only: model_t
   use deck_reader, only: read_deck
   use analysis_core, only: analysis_t, analysis_init, analysis_number_equations, analysis_assemble
+  use increment, only: increment_t
+  use solver_options, only: solver_options_t
   use user_routines, only: user_routines_t, user_routines_builtin
   use sparse_system, only: sparse_to_dense, sparse_matvec
   use parallel_context, only: parallel_t, parallel_init, parallel_finalize, parallel_sum, parallel_writer
@@ -30,6 +32,8 @@ program partition_check
   type(model_t) :: model
   type(user_routines_t) :: routines
   type(analysis_t) :: dist, ser
+  type(increment_t) :: inc         ! step 1, increment 1 at time 0 of a step of period 1, dt 0.1, NLGEOM
+  type(solver_options_t) :: opt
   character(len=512) :: deck, arg
   character(len=:), allocatable :: errmsg
   real(dp), allocatable :: own(:), kd(:, :), ks(:, :), flat(:), v(:), yd(:), ys(:)
@@ -50,8 +54,9 @@ program partition_check
   call check(stat == 0, 'deck read: '//errmsg)
   call user_routines_builtin(routines)
   dist%par = par
-  dist%partition_pieces = pieces
-  call analysis_init(dist, model, routines, stat, errmsg)
+  opt%partition_pieces = pieces
+  inc = increment_t(step=1, kinc=1, dt=0.1_dp, period=1.0_dp, nlgeom=.true.)
+  call analysis_init(dist, model, routines, stat, errmsg, opt)
   call check(stat == 0, 'distributed analysis_init: '//errmsg)
   call analysis_init(ser, model, routines, stat, errmsg)   ! one process's view: every element
   call check(stat == 0, 'serial analysis_init: '//errmsg)
@@ -72,15 +77,15 @@ program partition_check
   size_model = maxval(model%x(1:model%ndim, 1:model%nnode)) - minval(model%x(1:model%ndim, 1:model%nnode))
   call prepare(dist)
   call prepare(ser)
-  call analysis_assemble(dist, model, 1, 1, [0.0_dp, 0.0_dp], 0.1_dp, 1.0_dp, .true., .true., pn, stat, errmsg)
+  call analysis_assemble(dist, model, inc, .true., pn, stat, errmsg)
   call check(stat == 0, 'distributed assembly: '//errmsg)
-  call analysis_assemble(ser, model, 1, 1, [0.0_dp, 0.0_dp], 0.1_dp, 1.0_dp, .true., .true., pn, stat, errmsg)
+  call analysis_assemble(ser, model, inc, .true., pn, stat, errmsg)
   call check(stat == 0, 'serial assembly: '//errmsg)
-  fmax = maxval(abs(ser%fint))
-  err_f = maxval(abs(dist%fint - ser%fint)) / max(fmax, tiny(1.0_dp))
-  allocate (kd(dist%neq, dist%neq), ks(ser%neq, ser%neq))
-  call sparse_to_dense(dist%sys, kd)
-  call sparse_to_dense(ser%sys, ks)
+  fmax = maxval(abs(ser%work%fint))
+  err_f = maxval(abs(dist%work%fint - ser%work%fint)) / max(fmax, tiny(1.0_dp))
+  allocate (kd(dist%eqs%neq, dist%eqs%neq), ks(ser%eqs%neq, ser%eqs%neq))
+  call sparse_to_dense(dist%eqs%sys, kd)
+  call sparse_to_dense(ser%eqs%sys, ks)
   flat = reshape(kd, [size(kd)])
   call parallel_sum(par, flat)          ! the processes' parts of the matrix
   kd = reshape(flat, shape(kd))
@@ -91,16 +96,16 @@ program partition_check
   call check(err_k <= 1.0e-12_dp, 'distributed tangent differs from the serial one')
 
   ! 4.: products with the tangent
-  allocate (v(ser%neq), yd(ser%neq), ys(ser%neq))
-  v = [(cos(real(i, dp)), i = 1, ser%neq)]
-  call sparse_matvec(dist%sys, v, yd)
-  call sparse_matvec(ser%sys, v, ys)
+  allocate (v(ser%eqs%neq), yd(ser%eqs%neq), ys(ser%eqs%neq))
+  v = [(cos(real(i, dp)), i = 1, ser%eqs%neq)]
+  call sparse_matvec(dist%eqs%sys, v, yd)
+  call sparse_matvec(ser%eqs%sys, v, ys)
   err_y = maxval(abs(yd - ys)) / max(maxval(abs(ys)), tiny(1.0_dp))
   call check(maxval(abs(ys)) > 0.0_dp, 'trivial product')
   call check(err_y <= 1.0e-12_dp, 'distributed product differs from the serial one')
   if (parallel_writer(par)) then
     print '(a,i0,a,i0,a,i0,a,i0,a)', 'partition_check: ', par%nranks, ' processes, ', model%nelem, &
-      ' elements (', nown, ' on rank 0), ', dist%neq, ' equations'
+      ' elements (', nown, ' on rank 0), ', dist%eqs%neq, ' equations'
     print '(a,i0,a,i0,a)', 'partition_check: ', pieces, ' pieces per process asked (0: default), ', &
       nint(ncomp(1)), ' connected pieces in all'
     print '(a,es10.2,a,es10.2,a,es10.2,a)', 'partition_check: force difference ', err_f, ', tangent difference ', &
@@ -151,15 +156,15 @@ contains
 
   subroutine prepare(an)
     type(analysis_t), intent(inout) :: an
-    an%prescribed = .false.
-    an%prescribed(1:model%ndim) = .true.
+    an%eqs%prescribed = .false.
+    an%eqs%prescribed(1:model%ndim) = .true.
     call analysis_number_equations(an, model, stat, errmsg)
     call check(stat == 0, 'equations: '//errmsg)
     do i = 1, an%ndof
-      an%u(i) = 1.0e-3_dp * size_model * sin(real(i, dp))
+      an%work%u(i) = 1.0e-3_dp * size_model * sin(real(i, dp))
     end do
-    an%u(1:model%ndim) = 0.0_dp
-    an%u_conv = 0.0_dp
+    an%work%u(1:model%ndim) = 0.0_dp
+    an%state%u_conv = 0.0_dp
   end subroutine prepare
 
   subroutine check(cond, what)
