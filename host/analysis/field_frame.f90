@@ -3,10 +3,8 @@
 !> elements opening, traction and largest opening (docs/host.md, "Outputs").
 module field_frame
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, &
-    etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, &
-    etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, &
-    etype_cax4r
+  use model_types, only: model_t, step_t, etype_user
+  use element_catalog, only: element_vtk_cell, element_vtk_points
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use node_rotations, only: node_vector_global
@@ -55,7 +53,10 @@ contains
     allocate (fr%cell_conn(fr%cell_ptr(ncell + 1) - 1))
     do c = 1, ncell
       ie = cells(c)
-      fr%cell_conn(fr%cell_ptr(c):fr%cell_ptr(c + 1) - 1) = model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1) - 1
+      nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+      ! the element's nodes in VTK's point order (element_catalog; a user element's as given)
+      fr%cell_conn(fr%cell_ptr(c):fr%cell_ptr(c + 1) - 1) = &
+        model%conn(model%conn_ptr(ie) - 1 + element_vtk_points(model%elem_kind(ie), nn)) - 1
       fr%cell_id(c) = model%elem_id(ie)
     end do
     call sdv_selection(model, an, step, fr%sdv_index)
@@ -85,22 +86,9 @@ contains
     do c = 1, ncell
       ie = cells(c)
       nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
-      ! VTK cell types; Abaqus' node order of these elements is VTK's (corners, then the mid-side nodes edge by edge)
-      select case (model%elem_kind(ie))
-      case (etype_c3d8, etype_c3d8i, etype_c3d8r)
-        fr%cell_type(c) = 12
-      case (etype_c3d20, etype_c3d20r)
-        fr%cell_type(c) = 25
-      case (etype_c3d4)
-        fr%cell_type(c) = 10
-      case (etype_c3d10)
-        fr%cell_type(c) = 24
-      case (etype_cpe4, etype_cpe4i, etype_cpe4r, etype_cps4, etype_cps4i, etype_cps4r, etype_cax4, etype_cax4i, &
-            etype_cax4r)
-        fr%cell_type(c) = 9
-      case (etype_cpe8, etype_cpe8r, etype_cps8, etype_cps8r, etype_cax8, etype_cax8r)
-        fr%cell_type(c) = 23
-      case default
+      ! VTK cell types of the catalogue; a user element: hexahedron (8 nodes, COH3D8 layout), quadrilateral (4)
+      fr%cell_type(c) = element_vtk_cell(model%elem_kind(ie))
+      if (model%elem_kind(ie) == etype_user) then
         if (nn == 8) then
           fr%cell_type(c) = 12
         else if (nn == 4) then
@@ -108,7 +96,7 @@ contains
         else
           fr%cell_type(c) = 2  ! poly-vertex for other user elements
         end if
-      end select
+      end if
       if (model%elem_kind(ie) == etype_user) then
         fr%cohesive(c) = 1
         ! opening = top - bottom (COH3D8: node k+4 over k; COH2D4: 4 over 1, 3 over 2)

@@ -5,7 +5,8 @@
 !> of its step and at the step's last increment (FREQUENCY=0: never).
 module print_tables
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user, etype_c3d8, etype_cpe4
+  use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user
+  use element_catalog, only: element_name
   use analysis_core, only: analysis_t, element_geometry
   use node_rotations, only: node_vector_global
   use stress_measures, only: mises_stress
@@ -257,10 +258,10 @@ contains
     write (u, '(//,a,//)') '                                       E L E M E N T   O U T P U T'
     if (ep%set_index > 0) then
       write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR ELEMENT TYPE '// &
-        trim(type_name(kind))//' AND ELEMENT SET '//trim(ep%elset)
+        trim(element_name(kind))//' AND ELEMENT SET '//trim(ep%elset)
     else
       write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR ELEMENT TYPE '// &
-        trim(type_name(kind))
+        trim(element_name(kind))
     end if
     write (u, '(a28,*(a15))') 'ELEMENT  PT FOOT-', (adjustr(cols(j)), j = 1, size(cols))
     write (u, '(a28,/)') 'NOTE    '
@@ -411,19 +412,4 @@ contains
     character(len=8) :: t
     write (t, '(a,i0)') 'SDV', k
   end function sdv_name
-
-  !> Element type name of a continuum element kind.
-  pure function type_name(kind) result(t)
-    integer, intent(in) :: kind  !< element kind
-    character(len=8) :: t
-    select case (kind)
-    case (etype_c3d8)
-      t = 'C3D8'
-    case (etype_cpe4)
-      t = 'CPE4'
-    case default
-      t = 'SOLID'
-    end select
-  end function type_name
-
 end module print_tables

@@ -1,6 +1,6 @@
-!> The continuum element library as data: for each Abaqus element name its shape-function family, integration rule
-!> and formulation flags (solid_type_t, table solid_types), with the shape functions and rules in Abaqus node and
-!> integration-point order. solid_element.f90 has ONE kinematics and UMAT-calling path for all of them.
+!> Shape functions and integration rules of the element families of the catalogue (element_catalog.f90: the types,
+!> their families, rules and switches), in Abaqus node and integration-point order. solid_element.f90 has ONE
+!> kinematics and UMAT-calling path for all of them.
 !>
 !> Families (parent coordinates, Abaqus node order):
 !>   HEX8   nodes 1-4 on zeta = -1 counter-clockwise seen from +zeta, 5-8 above them on zeta = +1.
@@ -16,54 +16,10 @@
 !> inferred (docs/elements.md).
 module solid_shape
   use ldfcz_kinds, only: dp
+  use element_catalog, only: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, RULE_TET1, RULE_TET4
   implicit none
   private
-  public :: solid_type_t, solid_types, solid_type_index, solid_shape_eval, solid_gauss_point, solid_parent_centre
-  public :: solid_hourglass_base
-  public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8
-
-  integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6
-  integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4   !< tetrahedral rules; n > 0: n Gauss points per direction
-
-  !> One element type: everything that distinguishes it from another is here.
-  type :: solid_type_t
-    character(len=8) :: name = ''
-    integer :: family = 0      !< FAM_*
-    integer :: nnode = 0       !< nodes
-    integer :: ndim = 0        !< coordinates and displacement dofs per node
-    integer :: rule = 0        !< Gauss points per direction (> 0) or RULE_TET1 / RULE_TET4
-    integer :: nip = 0         !< integration points
-    integer :: ndi = 0         !< direct stress components passed to the material
-    integer :: nshr = 0        !< shear stress components
-    logical :: fbar = .false.  !< F-bar (NLGEOM) / mean-dilatation B-bar (small strain) of the linear elements
-    integer :: nmode = 0       !< incompatible displacement modes (each a vector of ndim parameters), condensed
-    logical :: pstress = .false.  !< plane stress (NDI = 2, NSHR = 1: sigma33 = 0, the thickness strain free)
-    logical :: hourglass = .false. !< one point with hourglass stiffness (Flanagan-Belytschko, solid_element)
-    logical :: axisym = .false.    !< axisymmetric (r, z): hoop strain u_r / r, volumes and forces over 2 pi
-  end type solid_type_t
-
-  type(solid_type_t), parameter :: solid_types(21) = [ &
-    solid_type_t('C3D8', FAM_HEX8, 8, 3, 2, 8, 3, 3, .true., 0), &
-    solid_type_t('C3D8I', FAM_HEX8, 8, 3, 2, 8, 3, 3, .false., 3), &
-    solid_type_t('C3D20', FAM_HEX20, 20, 3, 3, 27, 3, 3, .false., 0), &
-    solid_type_t('C3D20R', FAM_HEX20, 20, 3, 2, 8, 3, 3, .false., 0), &
-    solid_type_t('C3D4', FAM_TET4, 4, 3, RULE_TET1, 1, 3, 3, .false., 0), &
-    solid_type_t('C3D10', FAM_TET10, 10, 3, RULE_TET4, 4, 3, 3, .false., 0), &
-    solid_type_t('CPE4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0), &
-    solid_type_t('CPE4I', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .false., 2), &
-    solid_type_t('CPE8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0), &
-    solid_type_t('CPE8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0), &
-    solid_type_t('CPS4', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 0, .true.), &
-    solid_type_t('CPS4I', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 2, .true.), &
-    solid_type_t('CPS8', FAM_QUAD8, 8, 2, 3, 9, 2, 1, .false., 0, .true.), &
-    solid_type_t('CPS8R', FAM_QUAD8, 8, 2, 2, 4, 2, 1, .false., 0, .true.), &
-    solid_type_t('C3D8R', FAM_HEX8, 8, 3, 1, 1, 3, 3, .false., 0, .false., .true.), &
-    solid_type_t('CPE4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true.), &
-    solid_type_t('CPS4R', FAM_QUAD4, 4, 2, 1, 1, 2, 1, .false., 0, .true., .true.), &
-    solid_type_t('CAX4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0, .false., .false., .true.), &
-    solid_type_t('CAX8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0, .false., .false., .true.), &
-    solid_type_t('CAX8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.), &
-    solid_type_t('CAX4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true., .true.)]
+  public :: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
 
   real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &
@@ -79,27 +35,6 @@ module solid_shape
   integer, parameter :: tet_edges(2, 6) = reshape([1, 2, 2, 3, 3, 1, 1, 4, 2, 4, 3, 4], [2, 6])
 
 contains
-
-  !> Index of an element type name in solid_types (case-insensitive, blanks ignored); 0 when unknown.
-  pure integer function solid_type_index(etype) result(it)
-    character(len=*), intent(in) :: etype
-    character(len=16) :: up
-    integer :: i, first, last
-    it = 0
-    first = verify(etype, ' ')
-    last = len_trim(etype)
-    if (first == 0 .or. last - first + 1 > len(up)) return
-    up = etype(first:last)
-    do i = 1, len(up)
-      if (up(i:i) >= 'a' .and. up(i:i) <= 'z') up(i:i) = achar(iachar(up(i:i)) - 32)
-    end do
-    do i = 1, size(solid_types)
-      if (trim(up) == trim(solid_types(i)%name)) then
-        it = i
-        return
-      end if
-    end do
-  end function solid_type_index
 
   !> Parent coordinates of the element centre (centroid for tetrahedra).
   pure function solid_parent_centre(family) result(xi)
