@@ -26,15 +26,16 @@ module element_catalog
   public :: element_kind_of, element_name, element_family, element_nnode, element_ndim, element_ndi, element_nshr
   public :: element_is_axisymmetric, element_is_plane_stress, element_face_nodes, element_vtk_cell
   public :: element_vtk_points, element_names_text, element_rule_text, element_kinematics_text
-  public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8
-  public :: RULE_TET1, RULE_TET4
+  public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6
+  public :: RULE_TET1, RULE_TET4, RULE_WEDGE2
   public :: KIN_3D, KIN_PLANE_STRAIN, KIN_PLANE_STRESS, KIN_AXISYMMETRIC
 
   !> shape-function families (solid_shape: shape functions, parent coordinates, node order)
-  integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6
-  !> integration rules: n > 0 Gauss points per direction; the tetrahedral centroid (1) and 4-point rules
-  !> (solid_shape: solid_gauss_point)
-  integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4
+  integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6, &
+    FAM_WEDGE6 = 7
+  !> integration rules: n > 0 Gauss points per direction; the tetrahedral centroid (1) and 4-point rules; the wedge's
+  !> triangle centroid times 2 Gauss points through the thickness (solid_shape: solid_gauss_point)
+  integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4, RULE_WEDGE2 = -12
   !> kinematic classes: NDI, NSHR of the material call and the meaning of the coordinates
   integer, parameter :: KIN_3D = 1, KIN_PLANE_STRAIN = 2, KIN_PLANE_STRESS = 3, KIN_AXISYMMETRIC = 4
 
@@ -82,6 +83,14 @@ module element_catalog
     1, 4, 3, 8, 10, 7, 0, 0, &
     0, 0, 0, 0, 0, 0, 0, 0, &
     0, 0, 0, 0, 0, 0, 0, 0], [8, 6])
+  ! wedges: S1 1-2-3, S2 4-6-5, S3 1-4-5-2, S4 2-5-6-3, S5 3-6-4-1 (Abaqus), reversed: outward
+  integer, parameter :: wedge_faces(8, 6) = reshape([ &
+    1, 3, 2, 0, 0, 0, 0, 0, &
+    4, 5, 6, 0, 0, 0, 0, 0, &
+    1, 2, 5, 4, 0, 0, 0, 0, &
+    2, 3, 6, 5, 0, 0, 0, 0, &
+    3, 1, 4, 6, 0, 0, 0, 0, &
+    0, 0, 0, 0, 0, 0, 0, 0], [8, 6])
   ! quadrilaterals: S1 1-2, S2 2-3, S3 3-4, S4 4-1; 8 nodes: mid-side nodes 5-8
   integer, parameter :: quad_faces(8, 6) = reshape([ &
     1, 2, 5, 0, 0, 0, 0, 0, &
@@ -92,17 +101,21 @@ module element_catalog
     0, 0, 0, 0, 0, 0, 0, 0], [8, 6])
 
   !> The families. VTK cells: 12 hexahedron, 25 quadratic hexahedron, 10 tetrahedron, 24 quadratic tetrahedron,
-  !> 9 quadrilateral, 23 quadratic quadrilateral (Abaqus' node order is VTK's).
-  type(element_family_t), parameter :: element_families(6) = [ &
+  !> 9 quadrilateral, 23 quadratic quadrilateral (Abaqus' node order is VTK's), 13 wedge: VTK's base triangle
+  !> 0-1-2 has its right-hand normal pointing AWAY from the top triangle 3-4-5, Abaqus' 1-2-3 towards 4-5-6
+  !> (counterclockwise seen from the top), so the frames list the nodes 1, 3, 2, 4, 6, 5.
+  type(element_family_t), parameter :: element_families(7) = [ &
     element_family_t('HEX8', 3, 8, 6, [4, 4, 4, 4, 4, 4], hex_faces, 12, ident20), &
     element_family_t('HEX20', 3, 20, 6, [8, 8, 8, 8, 8, 8], hex_faces, 25, ident20), &
     element_family_t('TET4', 3, 4, 4, [3, 3, 3, 3, 0, 0], tet_faces, 10, ident20), &
     element_family_t('TET10', 3, 10, 4, [6, 6, 6, 6, 0, 0], tet_faces, 24, ident20), &
     element_family_t('QUAD4', 2, 4, 4, [2, 2, 2, 2, 0, 0], quad_faces, 9, ident20), &
-    element_family_t('QUAD8', 2, 8, 4, [3, 3, 3, 3, 0, 0], quad_faces, 23, ident20)]
+    element_family_t('QUAD8', 2, 8, 4, [3, 3, 3, 3, 0, 0], quad_faces, 23, ident20), &
+    element_family_t('WEDGE6', 3, 6, 5, [3, 3, 4, 4, 4, 0], wedge_faces, 13, &
+      [1, 3, 2, 4, 6, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0])]
 
   !> The element types (docs/elements.md: the table generated from these rows).
-  type(element_type_t), parameter :: element_types(21) = [ &
+  type(element_type_t), parameter :: element_types(22) = [ &
     element_type_t('C3D8', FAM_HEX8, KIN_3D, 2, 8, fbar=.true., &
       formulation='F-bar under NLGEOM; mean-dilatation B-bar without'), &
     element_type_t('C3D8I', FAM_HEX8, KIN_3D, 2, 8, nmode=3, &
@@ -113,6 +126,8 @@ module element_catalog
     element_type_t('C3D20R', FAM_HEX20, KIN_3D, 2, 8, formulation='displacement, reduced integration'), &
     element_type_t('C3D4', FAM_TET4, KIN_3D, RULE_TET1, 1, formulation='displacement (constant strain)'), &
     element_type_t('C3D10', FAM_TET10, KIN_3D, RULE_TET4, 4, formulation='displacement'), &
+    element_type_t('C3D6', FAM_WEDGE6, KIN_3D, RULE_WEDGE2, 2, &
+      formulation='displacement (constant strain in the triangle, linear through the thickness)'), &
     element_type_t('CPE4', FAM_QUAD4, KIN_PLANE_STRAIN, 2, 4, fbar=.true., &
       formulation='plane strain, F-bar / B-bar as C3D8'), &
     element_type_t('CPE4I', FAM_QUAD4, KIN_PLANE_STRAIN, 2, 4, nmode=2, &
@@ -287,6 +302,8 @@ contains
       t = '1 (centroid)'
     case (RULE_TET4)
       t = '4 (tetrahedral)'
+    case (RULE_WEDGE2)
+      t = '1x2 (centroid x 2 through the thickness)'
     case (1)
       t = '1'
     case default
