@@ -5,6 +5,7 @@ module field_frame
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, step_t, etype_user
   use element_catalog, only: element_vtk_cell, element_vtk_points
+  use output_registry, only: OV_LE, OV_E, OV_SDV
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use node_rotations, only: node_vector_global
@@ -29,7 +30,7 @@ contains
     integer, allocatable :: cells(:)
     real(dp) :: s(6), e(6), p(3)
     real(dp), allocatable :: rf(:)
-    logical :: want_strain
+    logical :: want_strain, want_le, want_e
     ! the cells of this process's elements (every element in a one-process run): an MPI run writes one piece per
     ! process and rank 0 the .pvtu listing them (output_vtu_frame)
     cells = pack([(ie, ie = 1, model%nelem)], an%owned)
@@ -60,19 +61,25 @@ contains
       fr%cell_id(c) = model%elem_id(ie)
     end do
     call sdv_selection(model, an, step, fr%sdv_index)
-    want_strain = step%out_le .or. step%out_e
+    want_le = .false.
+    want_e = .false.
+    if (step%nfield_request > 0) then
+      want_le = any(step%field_requests(1:step%nfield_request)%var == OV_LE)
+      want_e = any(step%field_requests(1:step%nfield_request)%var == OV_E)
+    end if
+    want_strain = want_le .or. want_e
     allocate (fr%stress(6, ncell), fr%principal(3, ncell), fr%mises(ncell), fr%sdv(size(fr%sdv_index), ncell))
     allocate (fr%opening(3, ncell))
     if (want_strain) then
       allocate (fr%strain(6, ncell))
       fr%strain = 0.0_dp
-      allocate (fr%strain_names(count([step%out_le, step%out_e])))
+      allocate (fr%strain_names(count([want_le, want_e])))
       k = 0
-      if (step%out_le) then
+      if (want_le) then
         k = k + 1
         fr%strain_names(k) = 'LE'
       end if
-      if (step%out_e) fr%strain_names(k + 1) = 'E'
+      if (want_e) fr%strain_names(k + 1) = 'E'
     end if
     allocate (fr%traction(ncell), fr%delta_max(ncell), fr%cohesive(ncell))
     fr%stress = 0.0_dp
@@ -152,16 +159,20 @@ contains
     type(step_t), intent(in) :: step             !< field request
     integer, allocatable, intent(out) :: idx(:)  !< state-variable numbers, ascending, no repeats
     integer :: ie, nmax, k
+    integer, allocatable :: sdv(:)
     nmax = 0
     do ie = 1, model%nelem
       ! every continuum element of the model, not only this process's, so that every piece has the same arrays
       if (model%elem_kind(ie) /= etype_user) nmax = max(nmax, an%mats(model%elem_section(ie))%nstatv, 1)
     end do
-    if (step%out_sdv_all) then
+    allocate (sdv(0))
+    if (step%nfield_request > 0) sdv = pack(step%field_requests(1:step%nfield_request)%comp, &
+      step%field_requests(1:step%nfield_request)%var == OV_SDV)
+    if (any(sdv == 0)) then
       idx = [(k, k = 1, nmax)]
-    else if (allocated(step%out_sdv)) then
-      idx = [(k, k = 1, maxval([0, step%out_sdv]))]
-      idx = pack(idx, [(any(step%out_sdv == k), k = 1, size(idx))])
+    else if (size(sdv) > 0) then
+      idx = [(k, k = 1, maxval(sdv))]
+      idx = pack(idx, [(any(sdv == k), k = 1, size(idx))])
     else if (.not. step%field_vars_named) then
       idx = [(k, k = 1, min(n_sdv_default, nmax))]
     else

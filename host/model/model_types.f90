@@ -11,7 +11,7 @@ module model_types
   public :: etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor, transform_t
-  public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes
+  public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes, output_request_t
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   !> model_t%elem_kind of a user element (UEL); a continuum element's kind is its index in the element catalogue
@@ -201,6 +201,14 @@ module model_types
     type(source_pos_t) :: pos
   end type surface_t
 
+  !> One variable of a field output request (*OUTPUT, FIELD with VARIABLE=, *NODE OUTPUT, *ELEMENT OUTPUT),
+  !> resolved against the output registry (host/output/output_registry.f90) while reading.
+  type :: output_request_t
+    integer :: var = 0                     !< output_registry index (OV_*)
+    integer :: comp = 0                    !< SDVn: n (0: every state variable)
+    type(source_pos_t) :: pos              !< the line that asked for it
+  end type output_request_t
+
   !> *NODE PRINT request: one CSV column per variable (set totals) and a table in JOB.dat.
   type :: node_print_t
     character(len=name_len) :: nset = ''   !< set name
@@ -209,6 +217,7 @@ module model_types
     integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
     logical :: totals = .false.            !< TOTALS=YES: a TOTAL line under the table
     logical :: summary = .true.            !< SUMMARY=YES (default): MAXIMUM/MINIMUM lines
+    type(source_pos_t) :: pos              !< the *NODE PRINT line
   end type node_print_t
 
   !> *EL PRINT request: a table of integration-point values in JOB.dat.
@@ -219,6 +228,7 @@ module model_types
     integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
     logical :: totals = .false.            !< TOTALS=YES
     logical :: summary = .true.            !< SUMMARY=YES (default)
+    type(source_pos_t) :: pos              !< the *EL PRINT line
   end type el_print_t
 
   type :: step_t
@@ -257,10 +267,10 @@ module model_types
                                            !< field request stays in effect, as in Abaqus)
     logical :: field_op_new = .false.      !< *OUTPUT, FIELD, OP=NEW: earlier requests do not carry over
     logical :: field_vars_named = .false.  !< variables were named (VARIABLE=, *ELEMENT/*NODE OUTPUT data lines)
-    logical :: out_le = .false.            !< LE requested (integrated strain STRAN, logarithmic under NLGEOM)
-    logical :: out_e = .false.             !< E requested (the same STRAN, under Abaqus' small-strain name)
-    logical :: out_sdv_all = .false.       !< SDV requested: every state variable
-    integer, allocatable :: out_sdv(:)     !< SDVn requested one by one
+    !> the variables the field request names (output registry), with the lines that named them; a step without
+    !> its own request carries the previous step's (deck_finish)
+    type(output_request_t), allocatable :: field_requests(:)
+    integer :: nfield_request = 0
     type(node_print_t), allocatable :: prints(:)
     integer :: nprint = 0
     type(el_print_t), allocatable :: elprints(:) !< *EL PRINT requests
