@@ -20,12 +20,13 @@
 !> the element on its left (Abaqus' counterclockwise node order), so the outward normal is (dy, -dx) of that edge;
 !> local(3) is its mid-side node (8-node quadrilaterals).
 module element_catalog
+  use ldfcz_kinds, only: dp
   implicit none
   private
   public :: element_family_t, element_type_t, element_families, element_types
   public :: element_kind_of, element_name, element_family, element_nnode, element_ndim, element_ndi, element_nshr
   public :: element_is_axisymmetric, element_is_plane_stress, element_face_nodes, element_vtk_cell
-  public :: element_vtk_points, element_names_text, element_rule_text, element_kinematics_text
+  public :: element_vtk_points, element_names_text, element_rule_text, element_kinematics_text, element_tensor6
   public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6
   public :: RULE_TET1, RULE_TET4, RULE_WEDGE2
   public :: KIN_3D, KIN_PLANE_STRAIN, KIN_PLANE_STRESS, KIN_AXISYMMETRIC
@@ -279,6 +280,22 @@ contains
     if (element_nnode(kind) /= nn) return
     p = element_families(element_types(kind)%family)%vtk_points(1:nn)
   end function element_vtk_points
+
+  !> The 6 components 11, 22, 33, 12, 13, 23 of a symmetric tensor given as the NTENS components a material of
+  !> this kind works with (NDI direct, then NSHR shear: 3D 11..23; plane strain and axisymmetric 11, 22, 33, 12;
+  !> plane stress 11, 22, 12, its 33 component 0).
+  pure function element_tensor6(kind, t) result(f)
+    integer, intent(in) :: kind      !< element kind
+    real(dp), intent(in) :: t(:)     !< NTENS components
+    real(dp) :: f(6)
+    integer :: ndi, nshr
+    f = 0.0_dp
+    ndi = element_ndi(kind)
+    nshr = element_nshr(kind)
+    if (size(t) < ndi + nshr) return
+    f(1:ndi) = t(1:ndi)
+    f(4:3 + nshr) = t(ndi + 1:ndi + nshr)
+  end function element_tensor6
 
   !> The names of the catalogue, comma separated ('C3D8, C3D8I, ...').
   pure function element_names_text() result(t)
