@@ -2,10 +2,13 @@
 !> cannot disagree (tests/regression/check_doc_tables.py compares them with docs/, and rewrites them with --write).
 !>   ldfcz_doc_tables elements       the element type table of docs/elements.md (element_catalog)
 !>   ldfcz_doc_tables element-list   one line per type: name, nodes, dimension, VTK cell (for test scripts)
+!>   ldfcz_doc_tables outputs        the output-variable table of docs/host.md (output_registry)
 program ldfcz_doc_tables
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use element_catalog, only: element_types, element_families, element_ndi, element_nshr, element_nnode, &
     element_ndim, element_vtk_cell, element_rule_text, element_kinematics_text
+  use output_registry, only: output_variable_t, output_variables, output_provider_text, LOC_NODE, LOC_POINT, LOC_ELEMENT, &
+    VTU_ALWAYS, VTU_REQUESTED
   implicit none
   character(len=32) :: what
   integer :: k
@@ -24,8 +27,15 @@ program ldfcz_doc_tables
       write (output_unit, '(a,3(1x,i0))') trim(element_types(k)%name), element_nnode(k), element_ndim(k), &
         element_vtk_cell(k)
     end do
+  case ('outputs')
+    write (output_unit, '(a)') '| variable | components | location | units | meaning | provided by | JOB.csv | '// &
+      'JOB.dat | VTU frames |'
+    write (output_unit, '(a)') '|---|---|---|---|---|---|---|---|---|'
+    do k = 1, size(output_variables)
+      write (output_unit, '(a)') output_row(k)
+    end do
   case default
-    write (error_unit, '(a)') 'usage: ldfcz_doc_tables elements | element-list'
+    write (error_unit, '(a)') 'usage: ldfcz_doc_tables elements | element-list | outputs'
     error stop 2
   end select
 
@@ -41,6 +51,48 @@ contains
       itoa(element_vtk_cell(k))//' ('//vtk_name(element_vtk_cell(k))//') | '// &
       trim(element_types(k)%formulation)//' |'
   end function element_row
+
+  !> One row of the output-variable table.
+  function output_row(v) result(row)
+    integer, intent(in) :: v
+    character(len=:), allocatable :: row, name, comps, loc, vtu
+    type(output_variable_t) :: ov
+    ov = output_variables(v)
+    name = '(written unasked)'
+    if (len_trim(ov%key) > 0) name = '`'//trim(ov%key)//'`'
+    if (len_trim(ov%aliases) > 0) name = name//' (alias `'//trim(ov%aliases)//'`)'
+    comps = trim(ov%components)
+    if (len(comps) == 0) comps = '-'
+    select case (ov%location)
+    case (LOC_NODE)
+      loc = 'node'
+    case (LOC_POINT)
+      loc = 'integration point'
+    case (LOC_ELEMENT)
+      loc = 'element'
+    case default
+      loc = 'user-element SVARS'
+    end select
+    select case (ov%vtu_mode)
+    case (VTU_ALWAYS)
+      vtu = '`'//trim(ov%vtu)//'` (every frame)'
+      if (len_trim(ov%vtu) == 0) vtu = 'the points'
+    case (VTU_REQUESTED)
+      vtu = '`'//trim(ov%vtu)//'` (when requested)'
+      if (trim(ov%components) == 'SDVn') vtu = '`SDV<n>` (when requested; the first 3 when no variable is named)'
+    case default
+      vtu = '-'
+    end select
+    row = '| '//name//' | '//comps//' | '//loc//' | '//trim(ov%units)//' | '//trim(ov%meaning)//' | '// &
+      output_provider_text(v)//' | '//yes_no(ov%csv)//' | '//yes_no(ov%dat)//' | '//vtu//' |'
+  end function output_row
+
+  function yes_no(b) result(t)
+    logical, intent(in) :: b
+    character(len=:), allocatable :: t
+    t = 'no'
+    if (b) t = 'yes'
+  end function yes_no
 
   !> The faces of a family: 'S1..S6: 4 nodes', 'S1..S2: 3 nodes, S3..S5: 4 nodes'.
   function faces_text(f) result(t)

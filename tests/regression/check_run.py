@@ -68,6 +68,17 @@ def case_c3d8_uniaxial(d, job):
     close("BOTTOM.RF3 = -TOP.RF3", row["BOTTOM.RF3"], -row["TOP.RF3"], 1e-9)
 
 
+def case_c3d6_uniaxial(d, job):
+    """The closed form of case_c3d8_uniaxial on the cube of two C3D6 wedges, and its *EL PRINT table in JOB.dat headed
+    with the type's name (element catalogue; earlier versions headed every type but C3D8 and CPE4 'SOLID')."""
+    case_c3d8_uniaxial(d, job)
+    with open(os.path.join(d, job + ".dat")) as f:
+        text = f.read()
+    if "FOR ELEMENT TYPE C3D6 AND ELEMENT SET CUBE" not in text:
+        fail("JOB.dat: no *EL PRINT table headed ELEMENT TYPE C3D6")
+    print("JOB.dat table headed ELEMENT TYPE C3D6: ok")
+
+
 def case_c3d6_faces(d, job):
     """Uniform pressure p = 10 MPa on every outer face S1..S5 of two C3D6 wedges (decks/single/c3d6_faces.inp), only
     rigid-body motions suppressed: u = -e X with e = p (1 - 2 nu) / E = 4e-3 at the corner (1, 1, 1) and no reaction.
