@@ -60,7 +60,7 @@ module output_registry
 
   !> The variables, in the order the frames hold them (point data, then cell data).
   type(output_variable_t), parameter :: output_variables(14) = [ &
-    output_variable_t('COORD', '', '', '1 2 3', 3, '', LOC_NODE, 'mm', &
+    output_variable_t('COORD', '', '', 'COORD1 COORD2 COORD3', 3, '', LOC_NODE, 'mm', &
       'original coordinates (the points of the frames)', PROV_MODEL, vtu_mode=VTU_ALWAYS), &
     output_variable_t('U', '', 'U', 'U1 U2 U3', 3, '', LOC_NODE, 'mm', &
       'displacement (JOB.dat, JOB.csv: local components at a `*TRANSFORM` node; frames: global)', PROV_SOLUTION, &
