@@ -54,13 +54,17 @@ foreach(deck IN LISTS bad_decks)
 endforeach()
 
 # patch tests on distorted meshes (constant state reproduced)
-foreach(patch patch_c3d8 patch_cpe4)
+foreach(patch patch_c3d8 patch_cpe4 patch_c3d6)
   ldfcz_add_deck_test(NAME deck_${patch} DECK ${LDFCZ_DECKS}/patch/${patch}.inp CASE patch)
 endforeach()
 ldfcz_add_deck_test(NAME deck_patch_c3d8_linear DECK ${LDFCZ_DECKS}/patch/patch_c3d8_linear.inp CASE patch_linear)
 
 # single elements against closed-form answers
 ldfcz_add_deck_test(NAME deck_c3d8_uniaxial DECK ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp CASE c3d8_uniaxial)
+# C3D6 (the type added through the element catalogue, docs/extending.md): the same closed form on a cube of two
+# wedges, and its faces S1..S5 under a self-balanced uniform pressure
+ldfcz_add_deck_test(NAME deck_c3d6_uniaxial DECK ${LDFCZ_DECKS}/single/c3d6_uniaxial.inp CASE c3d6_uniaxial)
+ldfcz_add_deck_test(NAME deck_c3d6_faces DECK ${LDFCZ_DECKS}/single/c3d6_faces.inp CASE c3d6_faces)
 foreach(mode I II mixed)
   ldfcz_add_deck_test(NAME deck_cohesive_mode_${mode} DECK ${LDFCZ_DECKS}/single/cohesive_mode_${mode}.inp
     CASE cohesive_${mode})
@@ -203,6 +207,23 @@ ldfcz_add_restart_test(restart_constraints_transform ${LDFCZ_RESTART_DECKS}/cons
 add_test(NAME deck_field_output COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_field_output.py
   --exe $<TARGET_FILE:ldfcz> --deck ${LDFCZ_DECKS}/single/field_output_shear.inp --out ${LDFCZ_RUNS}/deck_field_output)
 set_tests_properties(deck_field_output PROPERTIES LABELS "deck" TIMEOUT 300)
+# the VTU cell of every type of the element catalogue as VTK reads it: cell type, positive size, outward faces
+if(TARGET ldfcz_doc_tables)
+  add_test(NAME deck_vtu_cells COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_vtu_cells.py
+    --exe $<TARGET_FILE:ldfcz> --tables $<TARGET_FILE:ldfcz_doc_tables> --out ${LDFCZ_RUNS}/deck_vtu_cells)
+  set_tests_properties(deck_vtu_cells PROPERTIES LABELS "deck" TIMEOUT 300)
+  # docs/elements.md's type table and docs/host.md's output-variable table are the ones the element catalogue and
+  # the output registry write (ldfcz_doc_tables)
+  add_test(NAME docs_tables COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_doc_tables.py
+    --tables $<TARGET_FILE:ldfcz_doc_tables> --docs ${PROJECT_SOURCE_DIR}/docs)
+  set_tests_properties(docs_tables PROPERTIES LABELS "deck" TIMEOUT 60)
+endif()
+# outputs resolved against the output registry: unprovidable requests warned with their line and not written (no
+# arrays of zeros for a user UEL), declared SVARS written, JOB.dat plane-stress table under the right names
+add_test(NAME deck_output_registry COMMAND Python3::Interpreter
+  ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_output_registry.py --exe $<TARGET_FILE:ldfcz> --decks ${LDFCZ_DECKS}
+  --user-uel ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_uel_elastic.f --out ${LDFCZ_RUNS}/deck_output_registry)
+set_tests_properties(deck_output_registry PROPERTIES LABELS "deck" TIMEOUT 300)
 
 # double-cantilever beam bonded by the LDF element (tools/dcb_deck.py): beam theory within 1 % on the propagation
 # branch; the two classic mis-orientations refused before the analysis, and reordered by --reorient-interfaces

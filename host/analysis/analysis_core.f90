@@ -5,7 +5,8 @@ module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, etype_user, etype_names, orientation_axes
+  use model_types, only: model_t, etype_user, orientation_axes
+  use element_catalog, only: element_name
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
@@ -154,7 +155,7 @@ contains
     integer, intent(in) :: kind
     character(len=8) :: s
     s = 'U'
-    if (kind >= 1 .and. kind <= size(etype_names)) s = etype_names(kind)
+    if (kind /= etype_user) s = element_name(kind)
   end function elem_type_name
 
   !> Dof maps, materials and initial (zero) states.

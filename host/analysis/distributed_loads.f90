@@ -6,9 +6,8 @@
 !> JDLTYP, ADLMAG, DDLMAG arrays of a user element.
 module distributed_loads
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user, &
-    etype_is_axisymmetric
-  use element_faces, only: element_face_nodes
+  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user
+  use element_catalog, only: element_face_nodes, element_is_axisymmetric
   use solver_text, only: itoa
   implicit none
   private
@@ -209,7 +208,7 @@ contains
       case (dload_bx, dload_grav)
         w = 1.0_dp
         ! (axisymmetric elements: wdet is already the volume weight around 2 pi radians)
-        if (ndim == 2 .and. .not. etype_is_axisymmetric(model%elem_kind(ie))) w = thickness
+        if (ndim == 2 .and. .not. element_is_axisymmetric(model%elem_kind(ie))) w = thickness
         if (ds%kind(k) == dload_grav) w = w * density
         do ip = 1, size(wdet)
           do a = 1, nn
@@ -222,7 +221,7 @@ contains
     end do
   end subroutine dload_element
 
-  !> Pressure p on face `face` of an element with current coordinates x: f -= p N_a n dA (n outward, element_faces),
+  !> Pressure p on face `face` of an element with current coordinates x: f -= p N_a n dA (n outward, element_catalog),
   !> and with follower the stiffness -df/du. Face interpolation by the number of face nodes: 2 or 3 (2D line, linear
   !> or quadratic, 3-point Gauss), 4 or 8 (quadrilateral, bilinear or serendipity, 3x3 Gauss), 3 or 6 (triangle,
   !> linear or quadratic, 3-point rule of degree 2). Exact for the nodal forces of a flat face.
@@ -239,7 +238,7 @@ contains
     real(dp) :: s, t, w, nf(8), ds(8), dt(8), xs(3), xe(3), na(3), sx(3, 3), se(3, 3), c, wr
     logical :: axi
     call element_face_nodes(kind, face, loc, nfn)
-    axi = etype_is_axisymmetric(kind)
+    axi = element_is_axisymmetric(kind)
     if (ndim == 2) then
       ! plane elements: per section thickness; axisymmetric: per 2 pi r (totals around the circumference)
       do g = 1, 3
@@ -316,7 +315,7 @@ contains
     end if
   end subroutine line_shape
 
-  !> Face shape functions and derivatives in the face's node order (element_faces): quadrilateral on [-1, 1]^2 with
+  !> Face shape functions and derivatives in the face's node order (element_catalog): quadrilateral on [-1, 1]^2 with
   !> 4 or 8 nodes (corners, then mid-sides of edges 1-2, 2-3, 3-4, 4-1), triangle in area coordinates (s, t) with
   !> 3 or 6 nodes (corners at (0,0), (1,0), (0,1), then mid-sides of edges 1-2, 2-3, 3-1).
   pure subroutine surface_shape(nfn, s, t, nf, ds, dt)

@@ -7,7 +7,7 @@
 module linear_constraints
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
-  use element_faces, only: element_face_nodes
+  use element_catalog, only: element_face_nodes
   implicit none
   private
   public :: constraint_set_t, constraints_build, constraints_extend, constraints_transform, constraints_residual, &

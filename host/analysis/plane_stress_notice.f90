@@ -2,7 +2,8 @@
 !> element gives the UMAT F33 = 1 / det(F_2D) and follows that thickness, an **inferred** Abaqus behaviour; a
 !> compressible material's own thickness change is not represented. One line per section concerned.
 module plane_stress_notice
-  use model_types, only: model_t, etype_cps4, etype_cps4i, etype_cps4r, etype_cps8, etype_cps8r, etype_names
+  use model_types, only: model_t
+  use element_catalog, only: element_types, element_is_plane_stress
   use analysis_core, only: analysis_t
   use solid_element, only: SOLID_MAT_UMAT
   implicit none
@@ -16,7 +17,6 @@ contains
     type(model_t), intent(in) :: model                      !< the model
     type(analysis_t), intent(in) :: an                      !< analysis data (materials per section)
     character(len=512), allocatable, intent(out) :: lines(:) !< the warnings
-    integer, parameter :: ps(5) = [etype_cps4, etype_cps4i, etype_cps4r, etype_cps8, etype_cps8r]
     character(len=:), allocatable :: types
     integer :: is, k
     allocate (lines(0))
@@ -25,9 +25,10 @@ contains
     do is = 1, model%nsection
       if (an%mats(is)%kind /= SOLID_MAT_UMAT) cycle
       types = ''
-      do k = 1, size(ps)
-        if (any(model%elem_kind(1:model%nelem) == ps(k) .and. model%elem_section(1:model%nelem) == is)) &
-          types = types//' '//trim(etype_names(ps(k)))
+      do k = 1, size(element_types)
+        if (.not. element_is_plane_stress(k)) cycle
+        if (any(model%elem_kind(1:model%nelem) == k .and. model%elem_section(1:model%nelem) == is)) &
+          types = types//' '//trim(element_types(k)%name)
       end do
       if (len(types) == 0) cycle
       lines = [character(len=512) :: lines, 'ldfcz: warning: element set '//trim(model%sections(is)%elset)// &

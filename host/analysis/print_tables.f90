@@ -5,7 +5,9 @@
 !> of its step and at the step's last increment (FREQUENCY=0: never).
 module print_tables
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user, etype_c3d8, etype_cpe4
+  use model_types, only: model_t, step_t, node_print_t, el_print_t, etype_user
+  use element_catalog, only: element_name, element_tensor6
+  use output_registry, only: output_lookup, output_component_name, OV_U, OV_RF, OV_S, OV_MISES, OV_LE, OV_E, OV_SDV
   use analysis_core, only: analysis_t, element_geometry
   use node_rotations, only: node_vector_global
   use stress_measures, only: mises_stress
@@ -108,7 +110,7 @@ contains
     type(node_print_t), intent(in) :: np    !< the request
     integer, allocatable :: nodes(:)
     real(dp), allocatable :: val(:, :)
-    integer :: k, j, n, nv, comp, dof
+    integer :: k, j, n, nv, comp, dof, var
     if (np%set_index > 0) then
       nodes = model%nsets(np%set_index)%nodes
     else
@@ -120,12 +122,13 @@ contains
     do k = 1, n
       do j = 1, nv
         val(j, k) = 0.0_dp
-        comp = ichar(np%vars(j)(len_trim(np%vars(j)):len_trim(np%vars(j)))) - ichar('0')
-        if (comp > model%ndim) cycle
+        ! U1..U3, RF1..RF3 (output registry; the reader keeps components within the model's dimension)
+        call output_lookup(np%vars(j), var, comp)
+        if (comp < 1 .or. comp > model%ndim) cycle
         dof = (nodes(k) - 1) * model%ndim + comp
-        if (np%vars(j)(1:1) == 'U') then
+        if (var == OV_U) then
           val(j, k) = an%work%u(dof)
-        else if (an%eqs%prescribed(dof)) then
+        else if (var == OV_RF .and. an%eqs%prescribed(dof)) then
           ! reaction = internal minus applied force on a prescribed dof (as JOB.csv and the VTU frames)
           val(j, k) = an%work%fint(dof) - an%work%fext(dof) - an%work%fdl(dof)
         end if
@@ -182,8 +185,8 @@ contains
     logical, intent(in) :: nlgeom           !< local axes turn with the material
     character(len=8), allocatable :: cols(:)
     real(dp), allocatable :: val(:, :)
-    integer, allocatable :: lab(:), pt(:)
-    integer :: k, j, ie, ip, nrow, row, nsv_max, nsv, nt, c
+    integer, allocatable :: lab(:), pt(:), cvar(:), ccomp(:)
+    integer :: k, j, ie, ip, nrow, row, nsv_max, nsv, c, var
     real(dp) :: s6(6), sl(6), el(6), t(3, 3)
     type(solid_geometry_t) :: g
     logical :: have_geo
@@ -192,14 +195,21 @@ contains
     do k = 1, size(elems)
       nsv_max = max(nsv_max, an%mats(model%elem_section(elems(k)))%nstatv)
     end do
-    allocate (cols(0))
+    allocate (cols(0), cvar(0), ccomp(0))
     do j = 1, size(ep%vars)
-      if (ep%vars(j) == 'SDV') then
+      call output_lookup(ep%vars(j), var, c)
+      if (var == OV_SDV .and. c == 0) then
         do k = 1, nsv_max
-          cols = [character(len=8) :: cols, sdv_name(k)]
+          cols = [character(len=8) :: cols, output_component_name(OV_SDV, k)]
+          cvar = [cvar, OV_SDV]
+          ccomp = [ccomp, k]
         end do
+      else if (var == OV_SDV .and. c > nsv_max) then
+        cycle  ! no element of this table has it (warned when the deck was read if none of the set has)
       else
         cols = [character(len=8) :: cols, ep%vars(j)]
+        cvar = [cvar, var]
+        ccomp = [ccomp, c]
       end if
     end do
     nrow = 0
@@ -212,17 +222,15 @@ contains
     do k = 1, size(elems)
       ie = elems(k)
       have_geo = .false.
-      nt = size(an%state%conv(ie)%stress, 1)
       nsv = an%mats(model%elem_section(ie))%nstatv
       do ip = 1, size(an%state%conv(ie)%stress, 2)
         row = row + 1
         lab(row) = model%elem_id(ie)
         pt(row) = ip
-        s6 = 0.0_dp
-        s6(1:nt) = an%state%conv(ie)%stress(:, ip)
+        ! the 6 components 11, 22, 33, 12, 13, 23 (plane stress: S33 = 0, the thickness strain not kept: 0)
+        s6 = element_tensor6(kind, an%state%conv(ie)%stress(:, ip))
         sl = s6
-        el = 0.0_dp
-        el(1:nt) = an%state%conv(ie)%stran(:, ip)
+        el = element_tensor6(kind, an%state%conv(ie)%stran(:, ip))
         if (allocated(an%axes(ie)%t)) then
           ! an *ORIENTATION: components in its local axes, as Abaqus prints them
           t = an%axes(ie)%t(:, :, ip)
@@ -235,20 +243,15 @@ contains
           el = turned(el, t, 0.5_dp)
         end if
         do j = 1, size(cols)
-          select case (cols(j)(1:1))
-          case ('M')
+          select case (cvar(j))
+          case (OV_MISES)
             val(j, row) = mises_stress(s6)
-          case ('S')
-            if (cols(j)(1:3) == 'SDV') then
-              read (cols(j)(4:), *) c
-              if (c <= nsv) val(j, row) = an%state%conv(ie)%statev(c, ip)
-            else
-              c = component(cols(j)(2:3))
-              if (c <= nt) val(j, row) = sl(c)
-            end if
-          case ('E', 'L')
-            c = component(cols(j)(len_trim(cols(j)) - 1:len_trim(cols(j))))
-            if (c <= nt) val(j, row) = el(c)
+          case (OV_SDV)
+            if (ccomp(j) <= nsv) val(j, row) = an%state%conv(ie)%statev(ccomp(j), ip)
+          case (OV_S)
+            val(j, row) = sl(ccomp(j))
+          case (OV_LE, OV_E)
+            val(j, row) = el(ccomp(j))
           end select
         end do
       end do
@@ -257,10 +260,10 @@ contains
     write (u, '(//,a,//)') '                                       E L E M E N T   O U T P U T'
     if (ep%set_index > 0) then
       write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR ELEMENT TYPE '// &
-        trim(type_name(kind))//' AND ELEMENT SET '//trim(ep%elset)
+        trim(element_name(kind))//' AND ELEMENT SET '//trim(ep%elset)
     else
       write (u, '(a,/)') ' THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR ELEMENT TYPE '// &
-        trim(type_name(kind))
+        trim(element_name(kind))
     end if
     write (u, '(a28,*(a15))') 'ELEMENT  PT FOOT-', (adjustr(cols(j)), j = 1, size(cols))
     write (u, '(a28,/)') 'NOTE    '
@@ -385,45 +388,5 @@ contains
     t = b(max(1, len_trim(b) - 19):len_trim(b))
     t = adjustr(t)
   end function label_text
-
-  !> Index of a tensor component '11', '22', '33', '12', '13', '23' in Abaqus' order.
-  pure integer function component(c)
-    character(len=*), intent(in) :: c  !< two digits
-    select case (c)
-    case ('11')
-      component = 1
-    case ('22')
-      component = 2
-    case ('33')
-      component = 3
-    case ('12')
-      component = 4
-    case ('13')
-      component = 5
-    case default
-      component = 6
-    end select
-  end function component
-
-  !> Column name of state variable k.
-  pure function sdv_name(k) result(t)
-    integer, intent(in) :: k  !< state variable number
-    character(len=8) :: t
-    write (t, '(a,i0)') 'SDV', k
-  end function sdv_name
-
-  !> Element type name of a continuum element kind.
-  pure function type_name(kind) result(t)
-    integer, intent(in) :: kind  !< element kind
-    character(len=8) :: t
-    select case (kind)
-    case (etype_c3d8)
-      t = 'C3D8'
-    case (etype_cpe4)
-      t = 'CPE4'
-    case default
-      t = 'SOLID'
-    end select
-  end function type_name
 
 end module print_tables

@@ -7,6 +7,7 @@ module deck_finish
     etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
+  use output_registry, only: output_unprovided_requests
   implicit none
   private
   public :: finish_model
@@ -277,8 +278,23 @@ contains
       call carry_field_requests(model)
       if (ctx%stat == 0) call resolve_surfaces(ctx)
       if (ctx%stat == 0) call resolve_dloads(ctx)
+      if (ctx%stat == 0) call warn_unprovided_outputs(ctx)
     end associate
   end subroutine finish_model
+
+  !> A warning, once per request line, for every output request that nothing in the model provides (output
+  !> registry: e.g. SDV5 with materials of 3 state variables, S in a model of user elements only, SDV of user
+  !> elements); it is not written.
+  subroutine warn_unprovided_outputs(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(source_pos_t), allocatable :: pos(:)
+    character(len=512), allocatable :: msg(:)
+    integer :: k
+    call output_unprovided_requests(ctx%model, pos, msg)
+    do k = 1, size(msg)
+      call ctx_warn_pos(ctx, pos(k), trim(msg(k)))
+    end do
+  end subroutine warn_unprovided_outputs
 
   !> *ORIENTATION, DEFINITION=NODES: the nodes' (reference) coordinates become the points a, b[, c].
   subroutine resolve_orientations(ctx)
@@ -537,12 +553,10 @@ contains
           cycle
         end if
         st%field_vars_named = st%field_vars_named .or. prev%field_vars_named
-        st%out_le = st%out_le .or. prev%out_le
-        st%out_e = st%out_e .or. prev%out_e
-        st%out_sdv_all = st%out_sdv_all .or. prev%out_sdv_all
-        if (allocated(prev%out_sdv)) then
-          if (.not. allocated(st%out_sdv)) allocate (st%out_sdv(0))
-          st%out_sdv = [st%out_sdv, prev%out_sdv]
+        if (prev%nfield_request > 0) then
+          if (.not. allocated(st%field_requests)) allocate (st%field_requests(0))
+          st%field_requests = [st%field_requests(1:st%nfield_request), prev%field_requests(1:prev%nfield_request)]
+          st%nfield_request = size(st%field_requests)
         end if
       end associate
     end do

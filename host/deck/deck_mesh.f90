@@ -3,8 +3,8 @@
 module deck_mesh
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_upper, deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: node_set_t, elem_set_t, etype_user, etype_names, model_find_nset, model_find_elset, &
-    model_find_user_type
+  use model_types, only: node_set_t, elem_set_t, etype_user, model_find_nset, model_find_elset, model_find_user_type
+  use element_catalog, only: element_kind_of, element_nnode, element_ndim, element_names_text
   use deck_lists, only: itoa, add_member, grow_int
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued
@@ -12,11 +12,6 @@ module deck_mesh
   private
   public :: read_node, read_element, read_set, read_system
   public :: get_nset, get_elset, grow_nodes, grow_elems
-
-  !> The continuum element types: nodes and dimension per etype_* of model_types (0: the user kind)
-  ! (CAX4I, kind 20, is not available: its incompatible modes would need the radius weighting of the patch test)
-  integer, parameter :: etype_nnode(23) = [8, 4, 0, 8, 20, 20, 4, 10, 4, 8, 8, 4, 4, 8, 8, 8, 4, 4, 4, 0, 8, 8, 4]
-  integer, parameter :: etype_dim(23) = [3, 2, 0, 3, 3, 3, 3, 3, 2, 2, 2, 2, 2, 2, 2, 3, 2, 2, 2, 2, 2, 2, 2]
 
 contains
 
@@ -134,8 +129,8 @@ contains
     ctx%system_on = .true.
   end subroutine read_system
 
-  !> *ELEMENT, TYPE=, ELSET=: element number and its nodes (a continuum type of etype_names or a user type Un
-  !> defined before).
+  !> *ELEMENT, TYPE=, ELSET=: element number and its nodes (a continuum type of the element catalogue or a user
+  !> type Un defined before).
   subroutine read_element(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=:), allocatable :: tname, setname
@@ -146,13 +141,10 @@ contains
     tname = deck_normalize(ctx_required(ctx, 'TYPE'))
     if (ctx%stat /= 0) return
     iu = 0
-    kind = 0
-    do k = 1, size(etype_names)
-      if (etype_nnode(k) > 0 .and. tname == trim(etype_names(k))) kind = k
-    end do
+    kind = element_kind_of(tname)
     if (kind > 0) then
-      nn = etype_nnode(kind)
-      call set_dim(ctx, etype_dim(kind))
+      nn = element_nnode(kind)
+      call set_dim(ctx, element_ndim(kind))
     else
       iu = model_find_user_type(ctx%model, tname)
       if (iu == 0) then
@@ -177,10 +169,8 @@ contains
             'incompressible materials use C3D8, CPE4 or CAX4 (F-bar under NLGEOM, B-bar without: no volumetric '// &
             'locking; docs/elements.md)')
         else
-          call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported (C3D8, C3D8I, C3D8R, C3D20, C3D20R, '// &
-            'C3D4, C3D10, CPE4, CPE4I, CPE4R, CPE8, CPE8R, CPS4, CPS4I, CPS4R, CPS8, CPS8R, CAX4, CAX4R, '// &
-            'CAX8, CAX8R and user types Un; '// &
-            'docs/elements.md)')
+          call ctx_fail(ctx, ctx%ir, 'element type '//tname//' not supported ('//element_names_text()// &
+            ' and user types Un; docs/elements.md)')
         end if
         return
       end if

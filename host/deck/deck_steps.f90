@@ -1,8 +1,11 @@
-!> History keywords of the deck reader: *STEP, *STATIC, *CONTROLS, *RESTART, *OUTPUT and *NODE PRINT.
+!> History keywords of the deck reader: *STEP, *STATIC, *CONTROLS, *RESTART, *OUTPUT, *NODE PRINT, *EL PRINT (their
+!> variables resolved against the output registry, host/output/output_registry.f90).
 module deck_steps
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: step_t, node_print_t, el_print_t
+  use model_types, only: step_t, node_print_t, el_print_t, output_request_t
+  use output_registry, only: output_lookup, output_variables, output_ncomp, output_component_name, &
+    output_names_text, OV_SDV, LOC_NODE, LOC_POINT, USE_FIELD, USE_NODE_PRINT, USE_EL_PRINT, PRESET_ALL
   use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_find_elset, ctx_fail, ctx_warn, ctx_pos, &
     ctx_allow_params, ctx_need_step, ctx_required, ctx_get_label, ctx_param_int, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_only_value
@@ -322,18 +325,9 @@ contains
       v = deck_normalize(deck_param_value(ctx%params, 'VARIABLE'))
       select case (v)
       case ('')
-      case ('PRESELECT')
-        ! Abaqus' default field list of a static step; here the variables of it that the host has (docs/host.md)
-        call field_variable(ctx, ctx%ir, 'S')
-        call field_variable(ctx, ctx%ir, 'LE')
-        call field_variable(ctx, ctx%ir, 'U')
-        call field_variable(ctx, ctx%ir, 'RF')
-      case ('ALL')
-        call field_variable(ctx, ctx%ir, 'S')
-        call field_variable(ctx, ctx%ir, 'LE')
-        call field_variable(ctx, ctx%ir, 'SDV')
-        call field_variable(ctx, ctx%ir, 'U')
-        call field_variable(ctx, ctx%ir, 'RF')
+      case ('PRESELECT', 'ALL')
+        ! Abaqus' default field list of a static step (or every variable); here those the host has (the registry)
+        call preset_variables(ctx, v == 'ALL', .true., .true.)
       case default
         call ctx_fail(ctx, ctx%ir, 'VARIABLE must be PRESELECT or ALL')
         return
@@ -385,14 +379,7 @@ contains
     select case (v)
     case ('')
     case ('PRESELECT', 'ALL')
-      if (ctx%kw == '*NODE OUTPUT') then
-        call field_variable(ctx, ctx%ir, 'U')
-        call field_variable(ctx, ctx%ir, 'RF')
-      else
-        call field_variable(ctx, ctx%ir, 'S')
-        call field_variable(ctx, ctx%ir, 'LE')
-        if (v == 'ALL') call field_variable(ctx, ctx%ir, 'SDV')
-      end if
+      call preset_variables(ctx, v == 'ALL', ctx%kw == '*NODE OUTPUT', ctx%kw /= '*NODE OUTPUT')
     case default
       call ctx_fail(ctx, ctx%ir, 'VARIABLE must be PRESELECT or ALL')
       return
@@ -406,35 +393,53 @@ contains
     end do
   end subroutine read_field_variables
 
-  !> One requested field variable (upper case) read at record irec.
+  !> The variables of VARIABLE=PRESELECT (or ALL) that the registry marks, at the keyword line: those at the nodes
+  !> and/or those of the elements.
+  subroutine preset_variables(ctx, all, nodal, elemental)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical, intent(in) :: all                  !< VARIABLE=ALL
+    logical, intent(in) :: nodal                !< the node variables
+    logical, intent(in) :: elemental            !< the element variables
+    integer :: v
+    do v = 1, size(output_variables)
+      if (output_variables(v)%preset == 0) cycle
+      if (output_variables(v)%preset == PRESET_ALL .and. .not. all) cycle
+      if (output_variables(v)%location == LOC_NODE) then
+        if (.not. nodal) cycle
+      else if (.not. elemental) then
+        cycle
+      end if
+      call field_variable(ctx, ctx%ir, trim(output_variables(v)%key))
+    end do
+  end subroutine preset_variables
+
+  !> One requested field variable (upper case) read at record irec, resolved against the output registry: a
+  !> variable the host cannot write is warned about with its line (never silently dropped); whether the model can
+  !> provide it is checked when the model is complete (deck_finish).
   subroutine field_variable(ctx, irec, name)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     integer, intent(in) :: irec                 !< record of the request
     character(len=*), intent(in) :: name        !< variable key
-    integer :: n, ios
+    type(output_request_t), allocatable :: tmp(:)
+    integer :: var, comp
     associate (st => ctx%model%steps(ctx%istep))
       st%field_vars_named = .true.
-      select case (name)
-      case ('S', 'MISES', 'SP', 'U', 'RF', 'COORD')
-        ! always written: S (with Mises and principal values), U, RF and the coordinates of the frames
-      case ('LE')
-        st%out_le = .true.
-      case ('E', 'NE')
-        st%out_e = .true.
-      case ('SDV', 'STATEV')
-        st%out_sdv_all = .true.
-      case default
-        if (len(name) > 3 .and. name(1:min(3, len(name))) == 'SDV') then
-          read (name(4:), *, iostat=ios) n
-          if (ios == 0 .and. n >= 1) then
-            if (.not. allocated(st%out_sdv)) allocate (st%out_sdv(0))
-            st%out_sdv = [st%out_sdv, n]
-            return
-          end if
-        end if
+      call output_lookup(name, var, comp)
+      ! field output names whole variables (a component is a *NODE PRINT / *EL PRINT name); SDVn is one
+      if (var == 0 .or. (comp > 0 .and. var /= OV_SDV)) then
         call ctx_warn(ctx, irec, 'output variable '//name//' cannot be written by ldfcz and is not written '// &
-          '(written: S, LE, E, SDV, SDVn, U, RF and the cohesive cell data; docs/host.md, "Outputs")')
-      end select
+          '(written: '//output_names_text(USE_FIELD)//', SDVn and the cohesive cell data; docs/host.md, '// &
+          '"Output variables")')
+        return
+      end if
+      if (.not. allocated(st%field_requests)) allocate (st%field_requests(4))
+      if (st%nfield_request == size(st%field_requests)) then
+        allocate (tmp(2 * size(st%field_requests)))
+        tmp(1:st%nfield_request) = st%field_requests(1:st%nfield_request)
+        call move_alloc(tmp, st%field_requests)
+      end if
+      st%nfield_request = st%nfield_request + 1
+      st%field_requests(st%nfield_request) = output_request_t(var, comp, ctx_pos(ctx, irec))
     end associate
   end subroutine field_variable
 
@@ -446,7 +451,8 @@ contains
     type(node_print_t), allocatable :: tmp(:)
     character(len=flen), allocatable :: f(:)
     character(len=8), allocatable :: vars(:)
-    integer :: i, n, k, nv, ir, ir_next
+    integer :: i, n, k, nv, ir, ir_next, nd, j, var, comp
+    logical :: ok
     character(len=:), allocatable :: name
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
@@ -467,26 +473,27 @@ contains
     if (ctx%stat /= 0) return
     allocate (vars(3 * (ir_next - ir) * 8 + 6))
     nv = 0
+    nd = merge(2, 3, ctx%model%ndim == 2)
     do i = ir + 1, ir_next - 1
       call ctx_split(ctx, i, f, n)
       do k = 1, n
         name = deck_normalize(f(k))
         if (len(name) == 0) cycle
-        select case (name)
-        case ('U1', 'U2', 'U3', 'RF1', 'RF2', 'RF3')
+        call output_lookup(name, var, comp)
+        ok = var > 0
+        if (ok) ok = output_variables(var)%dat .and. output_variables(var)%location == LOC_NODE
+        if (.not. ok) then
+          call ctx_warn(ctx, i, 'variable '//name//' not supported by *NODE PRINT ('//output_names_text(USE_NODE_PRINT)// &
+            ' and their components): ignored')
+        else if (comp > nd) then
+          call ctx_warn(ctx, i, 'variable '//name//' not written: the model is 2D')
+        else if (comp > 0) then
           call add_var(vars, nv, name)
-        case ('U')
-          call add_var(vars, nv, 'U1')
-          call add_var(vars, nv, 'U2')
-          if (ctx%model%ndim /= 2) call add_var(vars, nv, 'U3')
-        case ('RF')
-          call add_var(vars, nv, 'RF1')
-          call add_var(vars, nv, 'RF2')
-          if (ctx%model%ndim /= 2) call add_var(vars, nv, 'RF3')
-        case default
-          call ctx_warn(ctx, i, 'variable '//name//' not supported by *NODE PRINT (U, RF and their components): '// &
-            'ignored')
-        end select
+        else
+          do j = 1, min(nd, output_ncomp(var))
+            call add_var(vars, nv, output_component_name(var, j))
+          end do
+        end if
       end do
     end do
     if (nv == 0) then
@@ -494,6 +501,7 @@ contains
       return
     end if
     np%vars = vars(1:nv)
+    np%pos = ctx_pos(ctx, ir)
     associate (s => ctx%model%steps(ctx%istep))
       if (s%nprint == size(s%prints)) then
         allocate (tmp(2 * size(s%prints)))
@@ -566,8 +574,7 @@ contains
     type(el_print_t), allocatable :: tmp(:)
     character(len=flen), allocatable :: f(:)
     character(len=8), allocatable :: vars(:)
-    character(len=4), parameter :: comp(6) = ['11', '22', '33', '12', '13', '23']
-    integer :: i, n, k, j, nv, nc, iv
+    integer :: i, n, k, j, nv, nc, var, ic
     character(len=:), allocatable :: name
     logical :: ok
     call ctx_need_step(ctx)
@@ -595,32 +602,23 @@ contains
       do k = 1, n
         name = deck_normalize(f(k))
         if (len(name) == 0) cycle
-        select case (name)
-        case ('S', 'E', 'LE')
+        call output_lookup(name, var, ic)
+        ok = var > 0
+        if (ok) ok = output_variables(var)%dat .and. output_variables(var)%location == LOC_POINT
+        ! in 2D the tensors have the components 11, 22, 33, 12
+        if (ok .and. var /= OV_SDV) ok = ic <= nc
+        if (.not. ok) then
+          call ctx_warn(ctx, i, 'variable '//name//' not supported by *EL PRINT ('//output_names_text(USE_EL_PRINT)// &
+            ' and their components): ignored')
+        else if (ic == 0 .and. output_ncomp(var) > 0) then
           do j = 1, nc
-            call add_var(vars, nv, name//trim(comp(j)))
+            call add_var(vars, nv, output_component_name(var, j))
           end do
-        case ('MISES', 'SDV')
-          call add_var(vars, nv, name)
-        case default
-          ok = .false.
-          do j = 1, nc
-            if (name == 'S'//trim(comp(j)) .or. name == 'E'//trim(comp(j)) .or. name == 'LE'//trim(comp(j))) &
-              ok = .true.
-          end do
-          if (len(name) > 3 .and. len(name) <= 8) then
-            if (name(1:3) == 'SDV' .and. verify(name(4:), '0123456789') == 0) then
-              read (name(4:), *) iv
-              ok = iv >= 1
-            end if
-          end if
-          if (ok) then
-            call add_var(vars, nv, name)
-          else
-            call ctx_warn(ctx, i, 'variable '//name//' not supported by *EL PRINT (S, MISES, E, LE, SDV and '// &
-              'their components): ignored')
-          end if
-        end select
+        else if (ic == 0) then
+          call add_var(vars, nv, output_variables(var)%key)
+        else
+          call add_var(vars, nv, output_component_name(var, ic))
+        end if
       end do
     end do
     if (nv == 0) then
@@ -628,6 +626,7 @@ contains
       return
     end if
     ep%vars = vars(1:nv)
+    ep%pos = ctx_pos(ctx, ctx%ir)
     associate (s => ctx%model%steps(ctx%istep))
       if (.not. allocated(s%elprints)) allocate (s%elprints(2))
       if (s%nelprint == size(s%elprints)) then

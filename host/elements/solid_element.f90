@@ -1,6 +1,6 @@
-!> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the library in
-!> solid_shape.f90 (C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, CPE4/CPE4I/CPE4R/CPE8/CPE8R, CPS4/CPS4I/CPS4R/
-!> CPS8/CPS8R, CAX4/CAX4R/CAX8/CAX8R), calling their material exactly as Abaqus/Standard calls a UMAT
+!> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the element catalogue
+!> (element_catalog.f90: C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, C3D6, CPE4/CPE4I/CPE4R/CPE8/CPE8R,
+!> CPS4/CPS4I/CPS4R/CPS8/CPS8R, CAX4/CAX4R/CAX8/CAX8R; shape functions and rules in solid_shape.f90), calling their material exactly as Abaqus/Standard calls a UMAT
 !> (docs/conventions.md). Types differ only by data: shape functions, integration rule, and the switches
 !> F-bar (C3D8, CPE4, CAX4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
 !> incompatible modes (condensed pseudo-nodes, element-level Newton), one point with Flanagan-Belytschko hourglass
@@ -46,8 +46,9 @@ module solid_element
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
-  use solid_shape, only: solid_type_t, solid_types, solid_type_index, solid_shape_eval, solid_gauss_point, &
-    solid_parent_centre, solid_hourglass_base
+  use element_catalog, only: element_types, element_kind_of, element_nnode, element_ndim, element_ndi, &
+    element_nshr, element_is_axisymmetric, element_is_plane_stress
+  use solid_shape, only: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
   use solid_elastic, only: elastic_update, elastic_check
   use solid_tangent_kernel, only: k_point_c3d8
   implicit none
@@ -124,16 +125,17 @@ contains
     integer, intent(out) :: nshr           !< shear stress components
     integer, intent(out), optional :: nextra  !< STATEV rows per point after NSTATV used by the element itself
     integer :: it
-    it = solid_type_index(etype)
+    it = element_kind_of(etype)
     nnode = 0; ndim = 0; nip = 0; ntens = 0; ndi = 0; nshr = 0
     if (present(nextra)) nextra = 0
     if (it == 0) return
-    associate (tp => solid_types(it))
-      nnode = tp%nnode; ndim = tp%ndim; nip = tp%nip; ndi = tp%ndi; nshr = tp%nshr; ntens = ndi + nshr
+    associate (tp => element_types(it))
+      nnode = element_nnode(it); ndim = element_ndim(it); nip = tp%nip; ndi = element_ndi(it); nshr = element_nshr(it)
+      ntens = ndi + nshr
       if (present(nextra)) then
-        nextra = (tp%ndim * tp%nmode + tp%nip - 1) / tp%nip
+        nextra = (ndim * tp%nmode + tp%nip - 1) / tp%nip
         if (tp%hourglass) nextra = max(nextra, 1)   ! the hourglass shear modulus, fixed at the first increment
-        if (tp%pstress) nextra = nextra + 1         ! plane stress: ln of the thickness stretch (the last row)
+        if (element_is_plane_stress(it)) nextra = nextra + 1         ! plane stress: ln of the thickness stretch (the last row)
       end if
     end associate
   end subroutine solid_element_info
@@ -148,11 +150,11 @@ contains
     type(solid_geometry_t), intent(out) :: geo        !< reference data
     integer :: it, nnode, ndim, nip, nne, ip, m
     real(dp) :: xi(3), w, detj, det0, nc(maxnode), j0inv(3, 3), jinv(3, 3)
-    it = solid_type_index(etype)
+    it = element_kind_of(etype)
     if (it == 0) return
-    associate (tp => solid_types(it))
-      nnode = tp%nnode
-      ndim = tp%ndim
+    associate (tp => element_types(it))
+      nnode = element_nnode(it)
+      ndim = element_ndim(it)
       nip = tp%nip
       nne = nnode + tp%nmode
       allocate (geo%nfun(nne, nip), geo%dndx_ref(nne, 3, nip), geo%wdet(nip), geo%dndx_0c(nne, 3), &
@@ -177,7 +179,7 @@ contains
         end do
         geo%dndx_0m = geo%dndx_0m + geo%wdet(ip) * geo%dndx_ref(:, :, ip)
       end do
-      if (tp%axisym) then
+      if (element_is_axisymmetric(it)) then
         ! axisymmetric: wdet becomes the reference volume weight 2 pi R x (Gauss weight x det), so that volumes,
         ! forces and energies are totals around the circumference (Abaqus); hoop operator N_a / R
         allocate (geo%hoop(nne, nip), geo%hoop_0c(nne), geo%hoop_0m(nne))
@@ -218,14 +220,14 @@ contains
           geo%dndx_ref(:, :, 1) = 0.0_dp
           vq = 0.0_dp
           hq = 0.0_dp
-          if (tp%axisym) allocate (geo%hoop_fl(nnode, 2**ndim))
+          if (element_is_axisymmetric(it)) allocate (geo%hoop_fl(nnode, 2**ndim))
           do iq = 1, 2**ndim
             call solid_gauss_point(2, ndim, iq, xq, wq)
             call solid_reference_derivatives(tp%family, nnode, ndim, coords0, xq, nq(1:nnode), dq(1:nnode, :), detj, &
               jinv)
             if (.not. (detj > 0.0_dp)) return
             wq = wq * detj
-            if (tp%axisym) then
+            if (element_is_axisymmetric(it)) then
               rq = dot_product(nq(1:nnode), coords0(1, :))
               if (.not. (rq > 0.0_dp)) return
               wq = 2 * acos(-1.0_dp) * rq * wq
@@ -239,7 +241,7 @@ contains
           geo%dndx_ref(:, :, 1) = geo%dndx_ref(:, :, 1) / vq
           geo%wdet(1) = vq
           geo%dndx_0m = geo%dndx_ref(:, :, 1)
-          if (tp%axisym) then
+          if (element_is_axisymmetric(it)) then
             geo%hoop(1:nnode, 1) = hq(1:nnode) / vq
             do iq = 1, 2**ndim
               geo%hoop_fl(:, iq) = sqrt(wall(iq)) * (geo%hoop_fl(:, iq) - geo%hoop(1:nnode, 1))
@@ -296,7 +298,7 @@ contains
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
       energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient, field_nodes, dfield_nodes)
-    character(len=*), intent(in) :: etype             !< element type name (solid_shape: solid_types)
+    character(len=*), intent(in) :: etype             !< element type name (element_catalog)
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
     real(dp), intent(in) :: du(:)                     !< (ndim*nnode) increment since the last converged state
@@ -360,7 +362,7 @@ contains
     energy = 0.0_dp
     if (present(energy_hg)) energy_hg = 0.0_dp
     g_shear = 0.0_dp
-    it = solid_type_index(etype)
+    it = element_kind_of(etype)
     call solid_element_info(etype, nnode, ndim, nip, ntens, ndi, nshr, nextra)
     ndof = ndim * nnode
     nsv = mat%nstatv
@@ -371,10 +373,10 @@ contains
       call fail(2, here // 'unknown element type "' // trim(etype) // '"')
       return
     end if
-    nne = nnode + solid_types(it)%nmode
+    nne = nnode + element_types(it)%nmode
     ndofe = ndim * nne
     nalpha = ndofe - ndof
-    fbar = solid_types(it)%fbar
+    fbar = element_types(it)%fbar
     if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
         size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
         size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
@@ -419,7 +421,7 @@ contains
 
     eye = identity()
     m = real(ndim, dp)
-    nf = merge(3, ndim, solid_types(it)%axisym)
+    nf = merge(3, ndim, element_is_axisymmetric(it))
     mf = real(nf, dp)
     xref = 0.0_dp
     un = 0.0_dp
@@ -452,7 +454,7 @@ contains
     ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
     fc0 = def_grad(un, gp%dndx_0c)
     fc1 = def_grad(u1, gp%dndx_0c)
-    if (solid_types(it)%axisym) then
+    if (element_is_axisymmetric(it)) then
       ! hoop stretch at the centre r_c / R_c: J_c is the 3D volume ratio there
       fc0(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), un(1, 1:nne))
       fc1(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), u1(1, 1:nne))
@@ -469,10 +471,10 @@ contains
       if (nlgeom) then
         finv = inv3(fc1)
         dndx_c(1:nne, 1:ndim) = matmul(gp%dndx_0c(1:nne, 1:ndim), finv(1:ndim, 1:ndim))
-        if (solid_types(it)%axisym) hcc(1:nne) = gp%hoop_0c(1:nne) / fc1(3, 3)   ! N_a / r_c, current
+        if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0c(1:nne) / fc1(3, 3)   ! N_a / r_c, current
       else
         dndx_c(1:nne, :) = gp%dndx_0m
-        if (solid_types(it)%axisym) hcc(1:nne) = gp%hoop_0m(1:nne)
+        if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0m(1:nne)
       end if
     end if
 
@@ -485,7 +487,7 @@ contains
       if (stat /= 0) return
       f_int = fe(1:ndof)
       if (want_k) k_e = ke(1:ndof, 1:ndof)
-      if (solid_types(it)%hourglass) then
+      if (element_types(it)%hourglass) then
         ! ---- hourglass stiffness (Flanagan-Belytschko stiffness form on the total displacement, reference
         ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
         ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
@@ -498,7 +500,7 @@ contains
         end if
         statev_new(nsv + 1, 1) = ghg
         ! (axisymmetric: hg_vsum has the 2 pi R weighted volume; no section thickness)
-        khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, solid_types(it)%axisym)
+        khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, element_is_axisymmetric(it))
         do mh = 1, gp%nhg
           qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
           do a = 1, nnode
@@ -611,7 +613,7 @@ contains
       real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3), s_unit(6), col_g(6, 6)
       integer :: icol
       logical :: k8, axi, local
-      axi = solid_types(it)%axisym
+      axi = element_is_axisymmetric(it)
       ! section thickness of plane elements; axisymmetric volumes are per 2 pi radians already (geometry)
       thk = merge(1.0_dp, mat%thickness, axi)
       lt1 = 0.0_dp
@@ -628,7 +630,7 @@ contains
           fg0(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), un(1, 1:nne))
           fg1(3, 3, ip) = 1.0_dp + dot_product(gp%hoop(:, ip), u1(1, 1:nne))
         end if
-        if (solid_types(it)%pstress .and. nlgeom .and. mat%kind /= SOLID_MAT_ELASTIC) then
+        if (element_is_plane_stress(it) .and. nlgeom .and. mat%kind /= SOLID_MAT_ELASTIC) then
           ! plane stress with a UMAT under NLGEOM (**inferred** Abaqus behaviour, docs/elements.md): the NTENS = 3
           ! contract returns no thickness strain, so DFGRD0/DFGRD1 get F33 = 1 / det(F_2D) (J = 1, the value a
           ! user report gives for Abaqus), off-plane terms 0, and the element's thickness follows the same F33:
@@ -645,7 +647,7 @@ contains
             if (i == 0) fg0(3, 3, ip) = 1.0_dp / j1
           end do
           lt1(ip) = log(fg1(3, 3, ip))
-        else if (solid_types(it)%pstress .and. nlgeom) then
+        else if (element_is_plane_stress(it) .and. nlgeom) then
           ! plane stress under NLGEOM (*ELASTIC): the thickness stretch lambda_3 from the plane-stress
           ! condition of the hypoelastic law, d eps_33 = -nu/(1 - nu) (d eps_11 + d eps_22) + (1 + nu)/(1 - nu)
           ! alpha dT (sigma_33 = 0 with the mechanical strain), the in-plane increments being the Hughes-Winget
@@ -842,7 +844,7 @@ contains
         end if
         if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
         if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
-        if (solid_types(it)%pstress .and. nlgeom) statev_new(nsv + nextra, ip) = lt1(ip)
+        if (element_is_plane_stress(it) .and. nlgeom) statev_new(nsv + nextra, ip) = lt1(ip)
         stress_new(:, ip) = stress(1:ntens)
         stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
         if (present(energy_ip_new)) then

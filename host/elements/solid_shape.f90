@@ -1,6 +1,6 @@
-!> The continuum element library as data: for each Abaqus element name its shape-function family, integration rule
-!> and formulation flags (solid_type_t, table solid_types), with the shape functions and rules in Abaqus node and
-!> integration-point order. solid_element.f90 has ONE kinematics and UMAT-calling path for all of them.
+!> Shape functions and integration rules of the element families of the catalogue (element_catalog.f90: the types,
+!> their families, rules and switches), in Abaqus node and integration-point order. solid_element.f90 has ONE
+!> kinematics and UMAT-calling path for all of them.
 !>
 !> Families (parent coordinates, Abaqus node order):
 !>   HEX8   nodes 1-4 on zeta = -1 counter-clockwise seen from +zeta, 5-8 above them on zeta = +1.
@@ -8,62 +8,23 @@
 !>          17-20 on 1-5, 2-6, 3-7, 4-8 (serendipity).
 !>   TET4   corners 1 (0,0,0), 2 (1,0,0), 3 (0,1,0), 4 (0,0,1): 1-2-3 counter-clockwise seen from node 4.
 !>   TET10  corners as TET4; mid-side 5 on 1-2, 6 on 2-3, 7 on 3-1, 8 on 1-4, 9 on 2-4, 10 on 3-4.
+!>   WEDGE6 (g, h, r), g, h >= 0, g + h <= 1, -1 <= r <= 1: nodes 1 (0,0,-1), 2 (1,0,-1), 3 (0,1,-1) counter-clockwise
+!>          seen from +r, 4-6 above them on r = +1; N_a = L_a (1 - r)/2, N_(a+3) = L_a (1 + r)/2 with L = (1 - g - h,
+!>          g, h) (the Abaqus Theory Manual's first-order wedge).
 !>   QUAD4  counter-clockwise (-1,-1), (1,-1), (1,1), (-1,1).
 !>   QUAD8  corners as QUAD4; mid-side 5 on 1-2, 6 on 2-3, 7 on 3-4, 8 on 4-1.
 !> Rules: Gauss n x n (x n) with xi fastest, then eta, then zeta (points at -g, [0,] +g in that order); tetrahedra:
-!> 1 point at the centroid, or 4 points (volume coordinates a = 0.5854..., b = 0.1382...), point k nearest corner k.
-!> The 2x2x2 order is Abaqus' documented one; for 3x3x3, 3x3 and the 4-point tetrahedron the same convention is
-!> inferred (docs/elements.md).
+!> 1 point at the centroid, or 4 points (volume coordinates a = 0.5854..., b = 0.1382...), point k nearest corner k;
+!> wedge: the triangle's centroid at r = -1/sqrt(3) (point 1, nodes 1-3 side) and r = +1/sqrt(3) (point 2).
+!> The 2x2x2 order is Abaqus' documented one; for 3x3x3, 3x3, the 4-point tetrahedron and the wedge the same
+!> convention is inferred (docs/elements.md).
 module solid_shape
   use ldfcz_kinds, only: dp
+  use element_catalog, only: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6, &
+    RULE_TET1, RULE_TET4, RULE_WEDGE2
   implicit none
   private
-  public :: solid_type_t, solid_types, solid_type_index, solid_shape_eval, solid_gauss_point, solid_parent_centre
-  public :: solid_hourglass_base
-  public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8
-
-  integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6
-  integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4   !< tetrahedral rules; n > 0: n Gauss points per direction
-
-  !> One element type: everything that distinguishes it from another is here.
-  type :: solid_type_t
-    character(len=8) :: name = ''
-    integer :: family = 0      !< FAM_*
-    integer :: nnode = 0       !< nodes
-    integer :: ndim = 0        !< coordinates and displacement dofs per node
-    integer :: rule = 0        !< Gauss points per direction (> 0) or RULE_TET1 / RULE_TET4
-    integer :: nip = 0         !< integration points
-    integer :: ndi = 0         !< direct stress components passed to the material
-    integer :: nshr = 0        !< shear stress components
-    logical :: fbar = .false.  !< F-bar (NLGEOM) / mean-dilatation B-bar (small strain) of the linear elements
-    integer :: nmode = 0       !< incompatible displacement modes (each a vector of ndim parameters), condensed
-    logical :: pstress = .false.  !< plane stress (NDI = 2, NSHR = 1: sigma33 = 0, the thickness strain free)
-    logical :: hourglass = .false. !< one point with hourglass stiffness (Flanagan-Belytschko, solid_element)
-    logical :: axisym = .false.    !< axisymmetric (r, z): hoop strain u_r / r, volumes and forces over 2 pi
-  end type solid_type_t
-
-  type(solid_type_t), parameter :: solid_types(21) = [ &
-    solid_type_t('C3D8', FAM_HEX8, 8, 3, 2, 8, 3, 3, .true., 0), &
-    solid_type_t('C3D8I', FAM_HEX8, 8, 3, 2, 8, 3, 3, .false., 3), &
-    solid_type_t('C3D20', FAM_HEX20, 20, 3, 3, 27, 3, 3, .false., 0), &
-    solid_type_t('C3D20R', FAM_HEX20, 20, 3, 2, 8, 3, 3, .false., 0), &
-    solid_type_t('C3D4', FAM_TET4, 4, 3, RULE_TET1, 1, 3, 3, .false., 0), &
-    solid_type_t('C3D10', FAM_TET10, 10, 3, RULE_TET4, 4, 3, 3, .false., 0), &
-    solid_type_t('CPE4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0), &
-    solid_type_t('CPE4I', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .false., 2), &
-    solid_type_t('CPE8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0), &
-    solid_type_t('CPE8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0), &
-    solid_type_t('CPS4', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 0, .true.), &
-    solid_type_t('CPS4I', FAM_QUAD4, 4, 2, 2, 4, 2, 1, .false., 2, .true.), &
-    solid_type_t('CPS8', FAM_QUAD8, 8, 2, 3, 9, 2, 1, .false., 0, .true.), &
-    solid_type_t('CPS8R', FAM_QUAD8, 8, 2, 2, 4, 2, 1, .false., 0, .true.), &
-    solid_type_t('C3D8R', FAM_HEX8, 8, 3, 1, 1, 3, 3, .false., 0, .false., .true.), &
-    solid_type_t('CPE4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true.), &
-    solid_type_t('CPS4R', FAM_QUAD4, 4, 2, 1, 1, 2, 1, .false., 0, .true., .true.), &
-    solid_type_t('CAX4', FAM_QUAD4, 4, 2, 2, 4, 3, 1, .true., 0, .false., .false., .true.), &
-    solid_type_t('CAX8', FAM_QUAD8, 8, 2, 3, 9, 3, 1, .false., 0, .false., .false., .true.), &
-    solid_type_t('CAX8R', FAM_QUAD8, 8, 2, 2, 4, 3, 1, .false., 0, .false., .false., .true.), &
-    solid_type_t('CAX4R', FAM_QUAD4, 4, 2, 1, 1, 3, 1, .false., 0, .false., .true., .true.)]
+  public :: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
 
   real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &
@@ -80,33 +41,13 @@ module solid_shape
 
 contains
 
-  !> Index of an element type name in solid_types (case-insensitive, blanks ignored); 0 when unknown.
-  pure integer function solid_type_index(etype) result(it)
-    character(len=*), intent(in) :: etype
-    character(len=16) :: up
-    integer :: i, first, last
-    it = 0
-    first = verify(etype, ' ')
-    last = len_trim(etype)
-    if (first == 0 .or. last - first + 1 > len(up)) return
-    up = etype(first:last)
-    do i = 1, len(up)
-      if (up(i:i) >= 'a' .and. up(i:i) <= 'z') up(i:i) = achar(iachar(up(i:i)) - 32)
-    end do
-    do i = 1, size(solid_types)
-      if (trim(up) == trim(solid_types(i)%name)) then
-        it = i
-        return
-      end if
-    end do
-  end function solid_type_index
-
   !> Parent coordinates of the element centre (centroid for tetrahedra).
   pure function solid_parent_centre(family) result(xi)
     integer, intent(in) :: family
     real(dp) :: xi(3)
     xi = 0.0_dp
     if (family == FAM_TET4 .or. family == FAM_TET10) xi = 0.25_dp
+    if (family == FAM_WEDGE6) xi(1:2) = 1.0_dp / 3
   end function solid_parent_centre
 
   !> Hourglass base vectors h(a, m) of the linear hexahedron (xi eta, eta zeta, zeta xi, xi eta zeta at the nodes:
@@ -197,6 +138,22 @@ contains
           dndxi(a, :) = 4 * (dl(i, :) * l(j) + l(i) * dl(j, :))
         end do
       end if
+    case (FAM_WEDGE6)
+      ! L = (1 - g - h, g, h) in the triangle times the linear (1 -+ r)/2 through the thickness
+      l(1:3) = [1 - xi(1) - xi(2), xi(1), xi(2)]
+      dl = 0.0_dp
+      dl(1, 1:2) = -1.0_dp
+      dl(2, 1) = 1.0_dp
+      dl(3, 2) = 1.0_dp
+      do a = 1, 3
+        do k = 1, 2
+          r = 0.5_dp * (1 + (2 * k - 3) * xi(3))   ! (1 - r)/2 for the bottom nodes, (1 + r)/2 for the top ones
+          i = a + 3 * (k - 1)
+          n(i) = l(a) * r
+          dndxi(i, 1:2) = dl(a, 1:2) * r
+          dndxi(i, 3) = 0.5_dp * (2 * k - 3) * l(a)
+        end do
+      end do
     case (FAM_QUAD4)
       do a = 1, 4
         p = 1 + quad_nodes(1, a) * xi(1)
@@ -231,7 +188,7 @@ contains
 
   !> Parent coordinates xi and weight w of integration point ip of a rule (Abaqus numbering, see the module header).
   pure subroutine solid_gauss_point(rule, ndim, ip, xi, w)
-    integer, intent(in) :: rule    !< Gauss points per direction (1..3) or RULE_TET1 / RULE_TET4
+    integer, intent(in) :: rule    !< Gauss points per direction (1..3) or RULE_TET1 / RULE_TET4 / RULE_WEDGE2
     integer, intent(in) :: ndim    !< 2 or 3
     integer, intent(in) :: ip      !< integration point
     real(dp), intent(out) :: xi(3) !< parent coordinates (xi(3) = 0 in 2D)
@@ -251,6 +208,10 @@ contains
       xi = tb
       if (ip > 1) xi(ip - 1) = ta
       w = 1.0_dp / 24
+    case (RULE_WEDGE2)
+      ! the triangle's centroid (weight its area 1/2) x 2 Gauss points through the thickness (weight 1)
+      xi = [1.0_dp / 3, 1.0_dp / 3, merge(-g2, g2, ip == 1)]
+      w = 0.5_dp
     case (1, 2, 3)
       select case (rule)
       case (1)

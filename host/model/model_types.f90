@@ -8,42 +8,15 @@ module model_types
   public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
   public :: dload_bx, dload_grav, dload_pressure, dload_user, model_find_surface
   public :: initial_condition_t, init_stress, init_solution, equation_t, tie_t
-  public :: etype_c3d8, etype_cpe4, etype_user, name_len, max_node_dof
-  public :: etype_c3d8i, etype_c3d20, etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r
-  public :: etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_names
-  public :: etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, etype_cax4r, etype_is_axisymmetric
+  public :: etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor, transform_t
-  public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes
+  public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes, output_request_t
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
-  integer, parameter :: etype_c3d8 = 1     !< 8-node hexahedron, F-bar
-  integer, parameter :: etype_cpe4 = 2     !< 4-node plane-strain quadrilateral, F-bar
-  integer, parameter :: etype_user = 3     !< user element (UEL)
-  integer, parameter :: etype_c3d8i = 4    !< 8-node hexahedron, incompatible modes
-  integer, parameter :: etype_c3d20 = 5    !< 20-node hexahedron, 27 points
-  integer, parameter :: etype_c3d20r = 6   !< 20-node hexahedron, 8 points
-  integer, parameter :: etype_c3d4 = 7     !< 4-node tetrahedron, 1 point
-  integer, parameter :: etype_c3d10 = 8    !< 10-node tetrahedron, 4 points
-  integer, parameter :: etype_cpe4i = 9    !< 4-node plane-strain quadrilateral, incompatible modes
-  integer, parameter :: etype_cpe8 = 10    !< 8-node plane-strain quadrilateral, 9 points
-  integer, parameter :: etype_cpe8r = 11   !< 8-node plane-strain quadrilateral, 4 points
-  integer, parameter :: etype_cps4 = 12    !< 4-node plane-stress quadrilateral
-  integer, parameter :: etype_cps4i = 13   !< 4-node plane-stress quadrilateral, incompatible modes
-  integer, parameter :: etype_cps8 = 14    !< 8-node plane-stress quadrilateral, 9 points
-  integer, parameter :: etype_cps8r = 15   !< 8-node plane-stress quadrilateral, 4 points
-  integer, parameter :: etype_c3d8r = 16   !< 8-node hexahedron, 1 point, hourglass stiffness
-  integer, parameter :: etype_cpe4r = 17   !< 4-node plane-strain quadrilateral, 1 point, hourglass stiffness
-  integer, parameter :: etype_cps4r = 18   !< 4-node plane-stress quadrilateral, 1 point, hourglass stiffness
-  integer, parameter :: etype_cax4 = 19    !< 4-node axisymmetric quadrilateral
-  integer, parameter :: etype_cax4i = 20   !< 4-node axisymmetric quadrilateral, incompatible modes
-  integer, parameter :: etype_cax8 = 21    !< 8-node axisymmetric quadrilateral, 9 points
-  integer, parameter :: etype_cax8r = 22   !< 8-node axisymmetric quadrilateral, 4 points
-  integer, parameter :: etype_cax4r = 23   !< 4-node axisymmetric quadrilateral, 1 point, hourglass stiffness
-  !> Abaqus name of each continuum element kind (index = etype_*; the user kind is 'U')
-  character(len=8), parameter :: etype_names(23) = [character(len=8) :: 'C3D8', 'CPE4', 'U', 'C3D8I', 'C3D20', &
-    'C3D20R', 'C3D4', 'C3D10', 'CPE4I', 'CPE8', 'CPE8R', 'CPS4', 'CPS4I', 'CPS8', 'CPS8R', 'C3D8R', 'CPE4R', 'CPS4R', &
-    'CAX4', 'CAX4I', 'CAX8', 'CAX8R', 'CAX4R']
+  !> model_t%elem_kind of a user element (UEL); a continuum element's kind is its index in the element catalogue
+  !> (element_catalog.f90: element_types), which holds everything about the continuum types
+  integer, parameter :: etype_user = 0
   integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
   integer, parameter :: init_stress = 1    !< *INITIAL CONDITIONS, TYPE=STRESS
   integer, parameter :: init_solution = 2  !< *INITIAL CONDITIONS, TYPE=SOLUTION
@@ -228,6 +201,14 @@ module model_types
     type(source_pos_t) :: pos
   end type surface_t
 
+  !> One variable of a field output request (*OUTPUT, FIELD with VARIABLE=, *NODE OUTPUT, *ELEMENT OUTPUT),
+  !> resolved against the output registry (host/output/output_registry.f90) while reading.
+  type :: output_request_t
+    integer :: var = 0                     !< output_registry index (OV_*)
+    integer :: comp = 0                    !< SDVn: n (0: every state variable)
+    type(source_pos_t) :: pos              !< the line that asked for it
+  end type output_request_t
+
   !> *NODE PRINT request: one CSV column per variable (set totals) and a table in JOB.dat.
   type :: node_print_t
     character(len=name_len) :: nset = ''   !< set name
@@ -236,6 +217,7 @@ module model_types
     integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
     logical :: totals = .false.            !< TOTALS=YES: a TOTAL line under the table
     logical :: summary = .true.            !< SUMMARY=YES (default): MAXIMUM/MINIMUM lines
+    type(source_pos_t) :: pos              !< the *NODE PRINT line
   end type node_print_t
 
   !> *EL PRINT request: a table of integration-point values in JOB.dat.
@@ -246,6 +228,7 @@ module model_types
     integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
     logical :: totals = .false.            !< TOTALS=YES
     logical :: summary = .true.            !< SUMMARY=YES (default)
+    type(source_pos_t) :: pos              !< the *EL PRINT line
   end type el_print_t
 
   type :: step_t
@@ -284,10 +267,10 @@ module model_types
                                            !< field request stays in effect, as in Abaqus)
     logical :: field_op_new = .false.      !< *OUTPUT, FIELD, OP=NEW: earlier requests do not carry over
     logical :: field_vars_named = .false.  !< variables were named (VARIABLE=, *ELEMENT/*NODE OUTPUT data lines)
-    logical :: out_le = .false.            !< LE requested (integrated strain STRAN, logarithmic under NLGEOM)
-    logical :: out_e = .false.             !< E requested (the same STRAN, under Abaqus' small-strain name)
-    logical :: out_sdv_all = .false.       !< SDV requested: every state variable
-    integer, allocatable :: out_sdv(:)     !< SDVn requested one by one
+    !> the variables the field request names (output registry), with the lines that named them; a step without
+    !> its own request carries the previous step's (deck_finish)
+    type(output_request_t), allocatable :: field_requests(:)
+    integer :: nfield_request = 0
     type(node_print_t), allocatable :: prints(:)
     integer :: nprint = 0
     type(el_print_t), allocatable :: elprints(:) !< *EL PRINT requests
@@ -317,7 +300,7 @@ module model_types
     ! elements
     integer :: nelem = 0
     integer, allocatable :: elem_id(:)     !< user element numbers
-    integer, allocatable :: elem_kind(:)   !< etype_* (continuum kinds, etype_user)
+    integer, allocatable :: elem_kind(:)   !< element_catalog kind (continuum) or etype_user
     integer, allocatable :: elem_utype(:)  !< index into utypes for user elements
     integer, allocatable :: conn_ptr(:)    !< (nelem+1) CSR pointers into conn
     integer, allocatable :: conn(:)        !< node indices
@@ -457,12 +440,6 @@ contains
       w = [p(2) * q(3) - p(3) * q(2), p(3) * q(1) - p(1) * q(3), p(1) * q(2) - p(2) * q(1)]
     end function cross
   end subroutine orientation_axes
-
-  !> True for the axisymmetric element kinds (CAX*: x1 = r, x2 = z, loads and forces per 2 pi radians).
-  pure logical function etype_is_axisymmetric(kind)
-    integer, intent(in) :: kind  !< etype_*
-    etype_is_axisymmetric = kind >= etype_cax4 .and. kind <= etype_cax4r
-  end function etype_is_axisymmetric
 
   !> Index of a node set by (upper-case) name, 0 if absent.
   pure integer function model_find_nset(model, name) result(k)

@@ -1,8 +1,10 @@
 !> The columns of JOB.csv: one per (node set, variable) that a *NODE PRINT of any step requests, in the order of
-!> first request, and their values at a converged increment (U: the set's mean, RF: its sum over prescribed dofs).
+!> first request, and their values at a converged increment (U: the set's mean, RF: its sum over prescribed dofs;
+!> the variables and components of the output registry, host/output/output_registry.f90).
 module history_columns
   use ldfcz_kinds, only: dp
   use model_types, only: model_t
+  use output_registry, only: output_lookup, OV_RF
   implicit none
   private
   public :: history_columns_t, history_columns_build, history_columns_values
@@ -25,7 +27,7 @@ contains
   pure subroutine history_columns_build(model, cols)
     type(model_t), intent(in) :: model            !< the model
     type(history_columns_t), intent(out) :: cols  !< its columns
-    integer :: is, i, j, k
+    integer :: is, i, j, k, var, comp
     character(len=column_name_len) :: name
     k = 0
     do is = 1, model%nstep
@@ -44,9 +46,10 @@ contains
             cols%n = cols%n + 1
             cols%names(cols%n) = name
             cols%set_index(cols%n) = pr%set_index
-            ! the reader accepts U1..U3 and RF1..RF3 only
-            cols%reaction(cols%n) = pr%vars(j)(1:2) == 'RF'
-            cols%component(cols%n) = index('123', pr%vars(j)(len_trim(pr%vars(j)):len_trim(pr%vars(j))))
+            ! the reader keeps the components of the registry's JOB.csv variables (U1..U3, RF1..RF3)
+            call output_lookup(pr%vars(j), var, comp)
+            cols%reaction(cols%n) = var == OV_RF
+            cols%component(cols%n) = comp
           end do
         end associate
       end do

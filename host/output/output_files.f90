@@ -10,30 +10,31 @@ module output_files
   implicit none
   private
   public :: output_t, output_open, output_close, output_log, output_csv_header, output_csv_row, output_sta
-  public :: output_progress, output_progress_clear, output_vtu_frame, output_vtu_t, stdout_is_terminal
+  public :: output_progress, output_progress_clear, output_vtu_frame, output_vtu_t, output_vtu_array_t
+  public :: stdout_is_terminal
   public :: output_csv_resume, output_frames_resume, output_sta_note
 
-  !> Cell and point data of one VTU frame. Tensors are held in Abaqus' component order (11, 22, 33, 12, 13, 23,
-  !> tensor shear components) and written in VTK's (XX, YY, ZZ, XY, YZ, XZ) with component names.
+  !> One data array of a VTU frame (point or cell data): its name, component names (none for a scalar or a
+  !> vector written without names) and values, Float64 or Int32. The writer (field_frame) fills them from the
+  !> output registry, in VTK's component order.
+  type :: output_vtu_array_t
+    character(len=16) :: name = ''           !< array name
+    integer :: ncomp = 1                     !< components
+    character(len=8), allocatable :: comp_names(:) !< (ncomp) ComponentName attributes (absent: none written)
+    logical :: int32 = .false.               !< integer values (written as Int32)
+    real(dp), allocatable :: v(:, :)         !< (ncomp, npoint or ncell) values
+  end type output_vtu_array_t
+
+  !> The mesh and the data arrays of one VTU frame.
   type :: output_vtu_t
     real(dp), allocatable :: x(:, :)         !< (3, npoint) original coordinates
-    real(dp), allocatable :: u(:, :)         !< (3, npoint) displacement
-    real(dp), allocatable :: rf(:, :)        !< (3, npoint) reaction force
     integer, allocatable :: cell_type(:)     !< VTK cell type per cell
     integer, allocatable :: cell_ptr(:)      !< (ncell+1) into cell_conn
     integer, allocatable :: cell_conn(:)     !< 0-based point indices
-    integer, allocatable :: cell_id(:)       !< element label
-    real(dp), allocatable :: stress(:, :)    !< (6, ncell) mean Cauchy stress 11,22,33,12,13,23 (0 for cohesive cells)
-    real(dp), allocatable :: principal(:, :) !< (3, ncell) principal values of the mean stress, min, mid, max
-    real(dp), allocatable :: mises(:)        !< (ncell)
-    real(dp), allocatable :: strain(:, :)    !< (6, ncell) mean integrated strain STRAN, tensor shear (if requested)
-    character(len=2), allocatable :: strain_names(:) !< names the strain is written under (LE and/or E)
-    real(dp), allocatable :: sdv(:, :)       !< (nsdv, ncell) state variables (mean over the points)
-    integer, allocatable :: sdv_index(:)     !< (nsdv) which state variable each row of sdv is
-    real(dp), allocatable :: opening(:, :)   !< (3, ncell) cohesive opening top - bottom (global frame), mean
-    real(dp), allocatable :: traction(:)     !< (ncell) |T| from SVARS (mean over the points)
-    real(dp), allocatable :: delta_max(:)    !< (ncell) Delta_max from SVARS (mean over the points)
-    integer, allocatable :: cohesive(:)      !< (ncell) 1 for cohesive (user) cells
+    type(output_vtu_array_t), allocatable :: points(:) !< point data
+    type(output_vtu_array_t), allocatable :: cells(:)  !< cell data
+    character(len=16) :: vectors = ''        !< the point data's active vectors ('' none)
+    character(len=16) :: scalars = ''        !< the cell data's active scalars ('' none)
   end type output_vtu_t
 
   type :: output_t
@@ -398,36 +399,8 @@ contains
     write (u, '(a)') '</DataArray><DataArray type="UInt8" Name="types" format="ascii">'
     write (u, '(*(i0,1x))') frame%cell_type
     write (u, '(a)') '</DataArray></Cells>'
-    write (u, '(a)') '<PointData Vectors="U">'
-    call vec('U', frame%u)
-    call vec('RF', frame%rf)
-    write (u, '(a)') '</PointData>'
-    write (u, '(a)') '<CellData Scalars="Mises">'
-    write (u, '(a)') '<DataArray type="Int32" Name="element" format="ascii">'
-    write (u, '(*(i0,1x))') frame%cell_id
-    write (u, '(a)') '</DataArray>'
-    call sym_tensor('S', frame%stress)
-    write (u, '(a)') '<DataArray type="Float64" Name="S_principal" NumberOfComponents="3" '// &
-      'ComponentName0="min" ComponentName1="mid" ComponentName2="max" format="ascii">'
-    write (u, '(3es16.8)') frame%principal
-    write (u, '(a)') '</DataArray>'
-    call sca('Mises', frame%mises)
-    if (allocated(frame%strain) .and. allocated(frame%strain_names)) then
-      do k = 1, size(frame%strain_names)
-        call sym_tensor(trim(frame%strain_names(k)), frame%strain)
-      end do
-    end if
-    do k = 1, size(frame%sdv, 1)
-      write (b, '(i0)') frame%sdv_index(k)
-      call sca('SDV'//trim(b), frame%sdv(k, :))
-    end do
-    write (u, '(a)') '<DataArray type="Int32" Name="cohesive" format="ascii">'
-    write (u, '(*(i0,1x))') frame%cohesive
-    write (u, '(a)') '</DataArray>'
-    call vec('opening', frame%opening)
-    call sca('traction', frame%traction)
-    call sca('Delta_max', frame%delta_max)
-    write (u, '(a)') '</CellData>'
+    call write_arrays('PointData', frame%points, frame%vectors, 'Vectors')
+    call write_arrays('CellData', frame%cells, frame%scalars, 'Scalars')
     write (u, '(a)') '</Piece></UnstructuredGrid></VTKFile>'
     close (u)
     ! the PVD collection, rewritten so that it is complete after every frame
@@ -449,25 +422,8 @@ contains
       write (v, '(a)') '<VTKFile type="PUnstructuredGrid" version="0.1" byte_order="LittleEndian">'
       write (v, '(a)') '<PUnstructuredGrid GhostLevel="0">'
       write (v, '(a)') '<PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>'
-      write (v, '(a)') '<PPointData Vectors="U"><PDataArray type="Float64" Name="U" NumberOfComponents="3"/>'// &
-        '<PDataArray type="Float64" Name="RF" NumberOfComponents="3"/></PPointData>'
-      write (v, '(a)') '<PCellData Scalars="Mises"><PDataArray type="Int32" Name="element"/>'
-      write (v, '(a)') '<PDataArray type="Float64" Name="S" NumberOfComponents="6"/>'
-      write (v, '(a)') '<PDataArray type="Float64" Name="S_principal" NumberOfComponents="3"/>'
-      write (v, '(a)') '<PDataArray type="Float64" Name="Mises"/>'
-      if (allocated(frame%strain) .and. allocated(frame%strain_names)) then
-        do j = 1, size(frame%strain_names)
-          write (v, '(a)') '<PDataArray type="Float64" Name="'//trim(frame%strain_names(j))//'" NumberOfComponents="6"/>'
-        end do
-      end if
-      do j = 1, size(frame%sdv, 1)
-        write (bj, '(i0)') frame%sdv_index(j)
-        write (v, '(a)') '<PDataArray type="Float64" Name="SDV'//trim(bj)//'"/>'
-      end do
-      write (v, '(a)') '<PDataArray type="Int32" Name="cohesive"/>'
-      write (v, '(a)') '<PDataArray type="Float64" Name="opening" NumberOfComponents="3"/>'
-      write (v, '(a)') '<PDataArray type="Float64" Name="traction"/>'
-      write (v, '(a)') '<PDataArray type="Float64" Name="Delta_max"/></PCellData>'
+      call pvtu_arrays(v, 'PPointData', frame%points, frame%vectors, 'Vectors')
+      call pvtu_arrays(v, 'PCellData', frame%cells, frame%scalars, 'Scalars')
       do j = 0, out%npieces - 1
         write (bj, '(i0)') j
         write (v, '(a)') '<Piece Source="'//stem//'_'//trim(bj)//'.vtu"/>'
@@ -476,34 +432,66 @@ contains
       close (v)
     end subroutine write_pvtu
 
-    !> A symmetric tensor held in Abaqus order (11, 22, 33, 12, 13, 23), written in VTK's order (XX, YY, ZZ, XY,
-    !> YZ, XZ) with component names, so that ParaView's tensor filters read it as the same tensor.
-    subroutine sym_tensor(label, a)
-      character(len=*), intent(in) :: label
-      real(dp), intent(in) :: a(:, :)
-      integer :: c
-      write (u, '(a)') '<DataArray type="Float64" Name="'//label//'" NumberOfComponents="6" '// &
-        'ComponentName0="XX" ComponentName1="YY" ComponentName2="ZZ" ComponentName3="XY" ComponentName4="YZ" '// &
-        'ComponentName5="XZ" format="ascii">'
-      do c = 1, size(a, 2)
-        write (u, '(6es16.8)') a(1:4, c), a(6, c), a(5, c)
+    !> The <PPointData>/<PCellData> block of the .pvtu.
+    subroutine pvtu_arrays(v, tag, arrays, active, attr)
+      integer, intent(in) :: v
+      character(len=*), intent(in) :: tag, active, attr
+      type(output_vtu_array_t), intent(in) :: arrays(:)
+      integer :: j
+      character(len=16) :: bc
+      if (len_trim(active) > 0) then
+        write (v, '(a)') '<'//tag//' '//attr//'="'//trim(active)//'">'
+      else
+        write (v, '(a)') '<'//tag//'>'
+      end if
+      do j = 1, size(arrays)
+        write (bc, '(i0)') arrays(j)%ncomp
+        write (v, '(a)') '<PDataArray type="'//trim(merge('Int32  ', 'Float64', arrays(j)%int32))//'" Name="'// &
+          trim(arrays(j)%name)//'"'//trim(merge(' NumberOfComponents="'//trim(bc)//'"', repeat(' ', 30), &
+          arrays(j)%ncomp > 1))//'/>'
       end do
-      write (u, '(a)') '</DataArray>'
-    end subroutine sym_tensor
-    subroutine vec(label, a)
-      character(len=*), intent(in) :: label
-      real(dp), intent(in) :: a(:, :)
-      write (u, '(a)') '<DataArray type="Float64" Name="'//label//'" NumberOfComponents="3" format="ascii">'
-      write (u, '(3es16.8)') a
-      write (u, '(a)') '</DataArray>'
-    end subroutine vec
-    subroutine sca(label, a)
-      character(len=*), intent(in) :: label
-      real(dp), intent(in) :: a(:)
-      write (u, '(a)') '<DataArray type="Float64" Name="'//label//'" format="ascii">'
-      write (u, '(6es16.8)') a
-      write (u, '(a)') '</DataArray>'
-    end subroutine sca
+      write (v, '(a)') '</'//tag//'>'
+    end subroutine pvtu_arrays
+
+    !> The <PointData>/<CellData> block: each array with its components (Float64: 6 values a line, or one point's
+    !> or cell's components a line for 3 and 6 components; Int32: one line).
+    subroutine write_arrays(tag, arrays, active, attr)
+      character(len=*), intent(in) :: tag, active, attr
+      type(output_vtu_array_t), intent(in) :: arrays(:)
+      integer :: j, c
+      character(len=:), allocatable :: head
+      character(len=16) :: bc
+      if (len_trim(active) > 0) then
+        write (u, '(a)') '<'//tag//' '//attr//'="'//trim(active)//'">'
+      else
+        write (u, '(a)') '<'//tag//'>'
+      end if
+      do j = 1, size(arrays)
+        associate (a => arrays(j))
+          head = '<DataArray type="'//trim(merge('Int32  ', 'Float64', a%int32))//'" Name="'//trim(a%name)//'"'
+          if (a%ncomp > 1) then
+            write (bc, '(i0)') a%ncomp
+            head = head//' NumberOfComponents="'//trim(bc)//'"'
+          end if
+          if (allocated(a%comp_names)) then
+            do c = 1, size(a%comp_names)
+              write (bc, '(i0)') c - 1
+              head = head//' ComponentName'//trim(bc)//'="'//trim(a%comp_names(c))//'"'
+            end do
+          end if
+          write (u, '(a)') head//' format="ascii">'
+          if (a%int32) then
+            write (u, '(*(i0,1x))') nint(a%v)
+          else if (a%ncomp == 3) then
+            write (u, '(3es16.8)') a%v
+          else
+            write (u, '(6es16.8)') a%v
+          end if
+          write (u, '(a)') '</DataArray>'
+        end associate
+      end do
+      write (u, '(a)') '</'//tag//'>'
+    end subroutine write_arrays
   end subroutine output_vtu_frame
 
   !> JOB.pvd with the frames 1..out%nframe.

@@ -61,6 +61,10 @@ def nodes_of(etype):
     if etype.startswith("C3D4") or etype.startswith("C3D10"):
         x = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
         edges = TET_EDGES if etype == "C3D10" else []
+    elif etype == "C3D6":
+        # the wedge: triangle 1-2-3 counter-clockwise seen from the top face 4-5-6 (Abaqus), volume 1/2
+        x = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (0, 1, 1)]
+        edges = []
     elif etype.startswith("C3D"):
         x = list(CORNERS3)
         edges = HEX20_EDGES if etype.startswith("C3D20") else []
@@ -194,7 +198,7 @@ def main():
     ap.add_argument("--mp", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--types",
-                    default="C3D8,C3D8I,C3D8R,C3D20,C3D20R,C3D4,C3D10,CPE4,CPE4I,CPE4R,CPE8,CPE8R,CAX4,CAX4R,"
+                    default="C3D8,C3D8I,C3D8R,C3D20,C3D20R,C3D4,C3D10,C3D6,CPE4,CPE4I,CPE4R,CPE8,CPE8R,CAX4,CAX4R,"
                     "CAX8,CAX8R,CPS4,CPS4I,CPS4R,CPS8,CPS8R,CPS4-uniaxial")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
@@ -218,7 +222,7 @@ def main():
         nd = len(x[0])
         axi = etype.startswith("CAX")
         pstress = etype.startswith("CPS")
-        vol = 1.0 / 6.0 if etype in ("C3D4", "C3D10") else (3.0 * math.pi if axi else 1.0)
+        vol = 1.0 / 6.0 if etype in ("C3D4", "C3D10") else (3.0 * math.pi if axi else (0.5 if etype == "C3D6" else 1.0))
         res = subprocess.run([a.exe, "-q", path], cwd=a.out, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                              text=True)
         if res.returncode != 0:

@@ -68,6 +68,29 @@ def case_c3d8_uniaxial(d, job):
     close("BOTTOM.RF3 = -TOP.RF3", row["BOTTOM.RF3"], -row["TOP.RF3"], 1e-9)
 
 
+def case_c3d6_uniaxial(d, job):
+    """The closed form of case_c3d8_uniaxial on the cube of two C3D6 wedges, and its *EL PRINT table in JOB.dat headed
+    with the type's name (element catalogue; earlier versions headed every type but C3D8 and CPE4 'SOLID')."""
+    case_c3d8_uniaxial(d, job)
+    with open(os.path.join(d, job + ".dat")) as f:
+        text = f.read()
+    if "FOR ELEMENT TYPE C3D6 AND ELEMENT SET CUBE" not in text:
+        fail("JOB.dat: no *EL PRINT table headed ELEMENT TYPE C3D6")
+    print("JOB.dat table headed ELEMENT TYPE C3D6: ok")
+
+
+def case_c3d6_faces(d, job):
+    """Uniform pressure p = 10 MPa on every outer face S1..S5 of two C3D6 wedges (decks/single/c3d6_faces.inp), only
+    rigid-body motions suppressed: u = -e X with e = p (1 - 2 nu) / E = 4e-3 at the corner (1, 1, 1) and no reaction.
+    Tolerance 1e-9 relative (linear elements and consistent face loads are exact; one linear solve), reactions
+    1e-8 N, 1e-9 of the 10 N on a face: a face with wrong nodes leaves a resultant of the order of p x 1 mm^2."""
+    row, _ = last_row(d, job)
+    e = 10.0 * (1.0 - 2.0 * 0.3) / 1000.0
+    for i in (1, 2, 3):
+        close("N7.U%d = -e" % i, row["N7.U%d" % i], -e, 1e-9)
+        close("FIXED.RF%d = 0" % i, row["FIXED.RF%d" % i], 0.0, 0.0, 1e-8)
+
+
 def case_cohesive_I(d, job):
     """Mode I: RF3 = T(0.0075) A0 (A0 = 1 mm^2); Eq. 20. The RF is summed from the UEL's RHS exactly."""
     row, _ = last_row(d, job)
@@ -114,6 +137,7 @@ PATCH = {
     "patch_c3d8": ([[0.10, 0.02, -0.03], [-0.04, -0.05, 0.02], [0.03, 0.01, 0.06]], (0.57, 0.45, 0.54)),
     "patch_c3d8_linear": ([[0.10, 0.02, -0.03], [-0.04, -0.05, 0.02], [0.03, 0.01, 0.06]], (0.57, 0.45, 0.54)),
     "patch_cpe4": ([[0.10, 0.02], [-0.04, -0.05]], (0.57, 0.45)),
+    "patch_c3d6": ([[0.10, 0.02, -0.03], [-0.04, -0.05, 0.02], [0.03, 0.01, 0.06]], (0.57, 0.45, 0.54)),
 }
 
 
