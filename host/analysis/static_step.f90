@@ -396,7 +396,7 @@ contains
             call output_sta(out, is, s%kinc, attempt, iter, s%sc%t + dt, dt, trim(outcome), ratios(1:min(iter + 1, size(ratios))))
             call analysis_restore(an)
             call step_control_cutback(s%sc, dt, pnewdt_min, ok)
-            summary%cutbacks = summary%cutbacks + 1
+            call summary%add_cutback(is, outcome)
             if (.not. ok .or. step_control_exhausted(s%sc)) then
               if (st%direct) then
                 call output_log(out, 'ldfcz: step '//itoa(is)//' increment '//itoa(s%kinc)//': no convergence '// &
@@ -449,7 +449,7 @@ contains
           end do
           call step_control_converged(s%sc, dt, iter, pnewdt_min, open_inc, opt%max_opening, plastic_inc, &
             opt%max_plastic)
-          summary%increments = summary%increments + 1
+          call summary%add_increment(is, s%kinc, s%t_total0 + s%sc%t, step_control_done(s%sc))
           s%kinc_total = s%kinc_total + 1
           run_increments = run_increments + 1
           call history_columns_values(cols, model, an%u, an%fint, an%fext, an%fdl, an%prescribed, colv)
