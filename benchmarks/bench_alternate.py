@@ -42,9 +42,8 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, 'tools'))
-from peel_study import frame_front, last_u1  # noqa: E402  (a frame's front; LOAD.U1 of the last CSV row)
+from ldfcz_tools.paths import ROOT
+from ldfcz_tools.peel_study import frame_front, last_u1  # a frame's front; LOAD.U1 of the last CSV row
 
 GEN = ['--3d', '--rigid-substrate', '--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.001',
        '--dgamma-max', '1.0', '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72',

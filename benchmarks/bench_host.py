@@ -10,7 +10,7 @@ Prints and writes (reports/bench/ by default): bench.csv (one row per run), benc
 estimate of the paper's application scene), bench.png (times per Newton iteration against DOFs; matplotlib through
 /usr/bin/python3 when present).
 
-  tools/bench_host.py --exe build-perf/bin/ldfcz [--fine 0.02 0.05 0.1 0.2] [--modes full krylov] [--threads 2]
+  benchmarks/bench_host.py --exe build-perf/bin/ldfcz [--fine 0.02 0.05 0.1 0.2] [--modes full krylov] [--threads 2]
 
 Time per Newton iteration = (assembly + factorization + solve) / iterations; the fitted exponent n of
 t = c DOF^n is the paper's Fig. 11d quantity (paper: n = 1.34 for the time of an increment).
@@ -25,8 +25,7 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+from ldfcz_tools.paths import ROOT, TOOLS
 
 SUMMARY_PATTERNS = {
     'increments': r'^increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), factorizations (\d+)',
@@ -42,7 +41,7 @@ SUMMARY_PATTERNS = {
 
 def peel_deck(args, fine, out, extra=()):
     """Write the deck of one family member with tools/peel_deck.py; returns its --info dictionary."""
-    gen = os.path.join(HERE, 'peel_deck.py')
+    gen = os.path.join(TOOLS, 'peel_deck.py')
     if not os.path.exists(gen):
         sys.exit('bench_host.py: tools/peel_deck.py is needed to generate the peel meshes')
     cmd = [sys.executable, gen, '--3d', '--le', str(args.le), '--ny', str(args.ny), '--nz', str(args.nz),
@@ -161,8 +160,8 @@ def main():
     paper = peel_deck(args, args.paper_fine, os.path.join(work, 'paper_scene.inp'))
     ndof_mesh = paper['dofs']
     ndof_paper = args.paper_dofs
-    lines = ['# ldfcz host benchmark (tools/bench_host.py)', '',
-             'Command: `%s`' % ' '.join(['tools/bench_host.py'] + sys.argv[1:]), '',
+    lines = ['# ldfcz host benchmark (benchmarks/bench_host.py)', '',
+             'Command: `%s`' % ' '.join(['benchmarks/bench_host.py'] + sys.argv[1:]), '',
              'Family: 3D quarter peel scene of tools/peel_deck.py, l_e = %g mm, n_y = %d, n_z = %d, fine region '
              '%s mm; %d increments of %g mm each, `--threads %d`; times are wall seconds from the JOB.log summary.'
              % (args.le, args.ny, args.nz, ', '.join('%g' % v for v in args.fine), args.increments, args.du,

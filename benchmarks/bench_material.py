@@ -24,7 +24,7 @@ import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from ldfcz_tools.paths import ROOT
 
 
 def run_material(binary, deck, out_csv):

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Distributed against threaded on this machine: the 3D quarter peel scene of tools/peel_deck.py (the family of
-tools/bench_host.py: PET coating C3D8 + Leonov UMAT on a C3D8 steel substrate, LDF cohesive layer, l_e = 2 um, 10
+bench_host.py: PET coating C3D8 + Leonov UMAT on a C3D8 steel substrate, LDF cohesive layer, l_e = 2 um, 10
 elements over the width, 3 over the coating) and, with --application, the paper's application mesh (section 8:
 rigid substrate, fine region over 1.05 mm; docs/performance.md), run for a few increments by the LDFCZ_MPI build
 of ldfcz as
@@ -23,7 +23,7 @@ peak memory of a process and the load average before the run; writes the table a
 memory per process against ranks and DOFs, with its prediction for the full-width specimen) to OUT/bench_mpi.md.
 
   cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DLDFCZ_MPI=ON && cmake --build build-mpi -j2 --target ldfcz
-  tools/bench_mpi.py --fine 0.02 0.05 --increments 3 --yield-idle --application --orderings pord amf
+  benchmarks/bench_mpi.py --fine 0.02 0.05 --increments 3 --yield-idle --application --orderings pord amf
 
 With --scaling R1 R2 ... instead (strong scaling, for a machine with more cores): 1 rank x 1 thread and R ranks x
 1 thread for every R listed, plus --hybrid RxT runs (R ranks x T threads), on the same scenes; besides the table,
@@ -32,25 +32,25 @@ factorization and the whole iteration, and compares every run with the predictio
 the 1- and 2-rank runs alone (what a 2-core machine can measure; the rest of an iteration's wall time, setup and
 output included, is taken as not divided):
 
-  tools/bench_mpi.py --scaling 2 4 8 16 --hybrid 1x16 4x4 --fine 0.05 0.2 --application --out reports/bench/scaling
+  benchmarks/bench_mpi.py --scaling 2 4 8 16 --hybrid 1x16 4x4 --fine 0.05 0.2 --application --out reports/bench/scaling
 
 --pieces default 1 runs every R twice, with ldfcz's interleaved partition and with one part per process
 (--partition-pieces 1); the tables then also give the element loop's balance loop by loop (the summary's "slowest
 process of each loop summed", against the mean):
 
-  tools/bench_mpi.py --scaling 16 8 4 2 --pieces default 1 --fine --application --out reports/bench/scaling-interleaved
+  benchmarks/bench_mpi.py --scaling 16 8 4 2 --pieces default 1 --fine --application --out reports/bench/scaling-interleaved
 
 --full-width meshes the application scene over the specimen's full width (the cost model's prediction target);
 `--fine` with no value leaves the peel members out:
 
-  tools/bench_mpi.py --scaling 2 8 16 --fine --application --full-width --out reports/bench/scaling
+  benchmarks/bench_mpi.py --scaling 2 8 16 --fine --application --full-width --out reports/bench/scaling
 
 With --refit MD [MD ...] instead: nothing is run; the tables of earlier runs (their bench_mpi.md files, the rows of
 1 rank x 1 thread and R ranks x 1 thread) are read back and the cost model and the scaling report are fitted to
 them all, e.g. the application mesh and its full width measured in separate commands, so that the prediction for
 the full-width specimen on a cluster uses both sizes (OUT/bench_mpi_refit.md):
 
-  tools/bench_mpi.py --refit reports/bench/scaling-memory/bench_mpi.md \
+  benchmarks/bench_mpi.py --refit reports/bench/scaling-memory/bench_mpi.md \
       reports/bench/scaling-memory/full_width_bench_mpi.md --cluster-ranks 1 2 8 16 32 128 --out DIR
 
 With --ordering-study instead: the first increment of the peel member --fine (last value) and of the application
@@ -68,8 +68,7 @@ import time
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+from ldfcz_tools.paths import ROOT, TOOLS
 
 PATTERNS = {
     'counts': r'^increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), factorizations (\d+)',
@@ -88,13 +87,13 @@ PATTERNS = {
 
 
 def deck(args, fine, out, application=False):
-    cmd = [sys.executable, os.path.join(HERE, 'peel_deck.py'), '--3d', '--le', str(args.le), '--ny', str(args.ny),
+    cmd = [sys.executable, os.path.join(TOOLS, 'peel_deck.py'), '--3d', '--le', str(args.le), '--ny', str(args.ny),
            '--nz', str(args.nz), '--fine-length', str(fine), '--bonded', str(fine + args.margin), '--du',
            str(args.du), '--u-total', str(args.du * args.increments), '--field-frequency', '0', '--info', '-o', out]
     if application:
         # tools/peel_study.py application (paper section 8): rigid substrate, fine region 1.05 mm, bonded 1.2 mm,
         # up to 1 um per increment, PET accuracy bound 1.0
-        cmd = [sys.executable, os.path.join(HERE, 'peel_deck.py'), '--3d', '--rigid-substrate', '--le', '0.002',
+        cmd = [sys.executable, os.path.join(TOOLS, 'peel_deck.py'), '--3d', '--rigid-substrate', '--le', '0.002',
                '--ny', '10', '--nz', '3', '--fine-length', '1.05', '--bonded', '1.2', '--du', '0.001',
                '--dgamma-max', '1.0', '--u-total', str(0.001 * args.increments), '--field-frequency', '0',
                '--info', '-o', out] + (['--full-width'] if args.full_width else [])
@@ -289,7 +288,7 @@ def ordering_study(args, env, work):
                 lines.append(row)
                 print(row, flush=True)
     with open(os.path.join(args.out, 'bench_mpi_orderings.md'), 'w') as f:
-        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
+        f.write('Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
 
 
 def read_tables(paths):
@@ -337,7 +336,7 @@ def refit(args):
     wide = [r['dofs'] for r in results if 'full width' in r['scene']]
     app = [r['dofs'] for r in results if r['scene'] == 'application']
     full_dofs = wide[0] if wide else 2 * (app[0] if app else max(r['dofs'] for r in results))
-    text = (['Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]), '',
+    text = (['Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]), '',
              'Rows read: %d from %s' % (len(results), ', '.join(args.refit)), ''] +
             cost_model(results, 2, full_dofs, args.cluster_ranks) + [''] +
             scaling_report(results, full_dofs, args.cluster_ranks))
@@ -489,11 +488,11 @@ def main():
                        args.cluster_ranks)
     if args.scaling:
         with open(os.path.join(args.out, 'bench_mpi_scaling.md'), 'w') as f:
-            f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' +
+            f.write('Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' +
                     '\n'.join(scaling_report(results, full_dofs, args.cluster_ranks)) + '\n')
     load = open('/proc/loadavg').read().split()[:3] if os.path.exists('/proc/loadavg') else ['?']
     with open(os.path.join(args.out, 'bench_mpi.md'), 'w') as f:
-        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\nLoad average at the end: ' +
+        f.write('Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\nLoad average at the end: ' +
                 ' '.join(load) + ' (other jobs share the cores: wall times inflate, CPU time does not)\n\n' +
                 '\n'.join(lines) + '\n\n' + '\n'.join(model) + '\n')
     print('\n'.join(lines))

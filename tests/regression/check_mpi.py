@@ -181,19 +181,19 @@ def check_trace(ref, procs, np_, nelem):
 
 
 def check_trace_tool(prefix, np_, t_slowest):
-    """tools/loop_trace.py on the distributed run's trace: its slowest process of each loop, summed from the rows
+    """benchmarks/loop_trace.py on the distributed run's trace: its slowest process of each loop, summed from the rows
     (4 digits each), is the closing summary's (summed in double precision): within 0.1 % and 1 ms."""
-    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "loop_trace.py")
+    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "benchmarks", "loop_trace.py")
     p = subprocess.run([sys.executable, tool, prefix, "--pool", "0.1"], capture_output=True, text=True, timeout=120)
     if p.returncode != 0:
-        fail(f"-np {np_}: tools/loop_trace.py failed:\n{p.stdout}{p.stderr}")
+        fail(f"-np {np_}: benchmarks/loop_trace.py failed:\n{p.stdout}{p.stderr}")
     m = re.search(r"slowest process of each loop summed ([\d.]+) s", p.stdout)
     if not m or "a pool of 0.10" not in p.stdout:
-        fail(f"-np {np_}: tools/loop_trace.py printed no loop-by-loop balance or pool line:\n{p.stdout}")
+        fail(f"-np {np_}: benchmarks/loop_trace.py printed no loop-by-loop balance or pool line:\n{p.stdout}")
     got = float(m.group(1))
     if abs(got - t_slowest) > 1e-3 * t_slowest + 1e-3:
-        fail(f"-np {np_}: tools/loop_trace.py sums the slowest loops to {got} s, the summary to {t_slowest} s")
-    print(f"-np {np_}: tools/loop_trace.py: slowest process of each loop summed {got} s (summary {t_slowest} s)")
+        fail(f"-np {np_}: benchmarks/loop_trace.py sums the slowest loops to {got} s, the summary to {t_slowest} s")
+    print(f"-np {np_}: benchmarks/loop_trace.py: slowest process of each loop summed {got} s (summary {t_slowest} s)")
     if np_ >= 3:
         # --rerun pairs each process of one run with the same process of another: a trace against itself
         # correlates exactly (1.00 for every element class it holds)
@@ -201,8 +201,8 @@ def check_trace_tool(prefix, np_, t_slowest):
                            timeout=120)
         corr = re.findall(r"log seconds per call of (\w+) between the two runs: (\S+)", p.stdout)
         if p.returncode != 0 or not corr or any(v != "1.00" for _, v in corr):
-            fail(f"-np {np_}: tools/loop_trace.py --rerun of a trace against itself: {corr}\n{p.stdout}{p.stderr}")
-        print(f"-np {np_}: tools/loop_trace.py --rerun against itself: {corr}")
+            fail(f"-np {np_}: benchmarks/loop_trace.py --rerun of a trace against itself: {corr}\n{p.stdout}{p.stderr}")
+        print(f"-np {np_}: benchmarks/loop_trace.py --rerun against itself: {corr}")
 
 
 NUMBER = re.compile(r"^[-+]?\d+\.\d+E[-+]\d+$")

@@ -6,12 +6,9 @@ mean), front history d(u) = 1.5 (u - 0.01) mm after a start-up of 10 um, l_e = 0
 Exit status 0 when every assertion holds.
 """
 import math
-import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), 'tools'))
-import steady_force as sf  # noqa: E402
+from ldfcz_tools import steady_force as sf
 
 LE, FINE, F0 = 0.005, 0.2, 1.2
 BAD = []

@@ -25,7 +25,7 @@ import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from ldfcz_tools.paths import ROOT
 CRASH = re.compile(r"Fortran runtime error|Backtrace|Segmentation fault|SIGSEGV|SIGABRT|core dumped|"
                    r"Program received signal|Error termination")
 NUM = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?")

@@ -29,10 +29,8 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-import peel_deck  # noqa: E402  (same directory)
+from ldfcz_tools import peel_deck  # noqa: E402
+from ldfcz_tools.paths import ROOT  # noqa: E402
 
 # Parameters that can be fitted: name -> (unit, how it enters the generator). All are positive and fitted in ln p.
 INTERFACE = {'phi': 'N/mm', 'tmax': 'MPa'}

@@ -17,7 +17,7 @@ import subprocess
 import sys
 
 PROPS = [1000.0, 400.0, 250.0, 0.25, 0.15, 0.3, 150.0, 120.0, 90.0]
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from ldfcz_tools.paths import ROOT
 
 
 def deck(path, orient_angle):

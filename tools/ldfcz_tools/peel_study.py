@@ -39,11 +39,9 @@ def run_config():
     if LAUNCH:
         return '`%s`, `-t %d` per process' % (' '.join(LAUNCH), THREADS[0])
     return '`-t %d`' % THREADS[0]
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-import peel_deck  # noqa: E402  (same directory)
-import steady_force as sfe  # noqa: E402
+from ldfcz_tools import peel_deck  # noqa: E402
+from ldfcz_tools import steady_force as sfe  # noqa: E402
+from ldfcz_tools.paths import ROOT  # noqa: E402
 
 # The default plane-strain scene (the main job). Every study starts from these arguments. Pulled 0.1 mm with a fine
 # region of 0.16 mm: the front (about 1.5 um per um of pull once steady) stays in the fine region, and the steady

@@ -20,7 +20,7 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from ldfcz_tools.paths import ROOT
 NONFINITE = re.compile(r"(?i)(?<![a-z])[+-]?(nan|inf|infinity)(?![a-z])")
 
 

@@ -1,0 +1,11 @@
+#!/usr/bin/python3
+"""Command: identification of the interface parameters from a measured peel curve (docs/identify.md).
+
+The code and its options: tools/ldfcz_tools/identify.py (--help).
+"""
+import sys
+
+from ldfcz_tools.identify import main
+
+if __name__ == '__main__':
+    sys.exit(main())

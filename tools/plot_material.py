@@ -1,0 +1,11 @@
+#!/usr/bin/env python3
+"""Command: plots of material-point curves and the PET cases.
+
+The code and its options: tools/ldfcz_tools/plot_material.py (--help).
+"""
+import sys
+
+from ldfcz_tools.plot_material import main
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))
