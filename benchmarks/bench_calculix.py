@@ -23,7 +23,6 @@ CCX_NPROC_EQUATION_SOLVER, which ccx 2.20 reads before OMP_NUM_THREADS).
 import argparse
 import json
 import os
-import re
 import shlex
 import resource
 import shutil
@@ -33,6 +32,7 @@ import sys
 import threading
 import time
 
+from ldfcz_tools import outputs
 from ldfcz_tools.block_deck import block_deck
 
 
@@ -102,17 +102,12 @@ def ccx_increments(stamps):
     return out
 
 
-def summary_split(log_text):
-    """Assembly, factorization, solve and set-up seconds, factorizations and CPU time from ldfcz's closing summary."""
-    vals = {}
-    m = re.search(r'wall time split: assembly\s+([0-9.]+) s, factorization\s+([0-9.]+) s, solve\s+([0-9.]+) s',
-                  log_text)
-    vals['assembly'], vals['factorization'], vals['solve'] = (float(x) for x in m.groups())
-    m = re.search(r'solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([0-9.]+) s', log_text)
-    vals['setup'] = float(m.group(1))
-    m = re.search(r'factorizations (\d+)', log_text)
-    vals['factorizations'] = int(m.group(1))
-    return vals
+def summary_split(doc):
+    """Assembly, factorization, solve and set-up seconds and the factorizations of ldfcz's run summary
+    (JOB.summary.json)."""
+    t = doc['times']
+    return {'assembly': t['element_loop_s'], 'factorization': t['factorization_s'], 'solve': t['solve_s'],
+            'setup': t['solver_setup_s'], 'factorizations': doc['counters']['factorizations']}
 
 
 def load_avg():
@@ -160,8 +155,7 @@ def main():
                     cmd = [exe, '-q', '-t', str(nt)] + a.ldfcz[prog].split() + ['block.inp']
                     wall, cpu, stamps, _ = run_timed(cmd, wd, env, os.path.join(wd, 'block.sta'))
                     incs = ldfcz_increments(stamps)
-                    with open(os.path.join(wd, 'block.log')) as f:
-                        split = summary_split(f.read())
+                    split = summary_split(outputs.read_summary(wd, 'block'))
                 else:
                     env.update(CCX_NPROC_STIFFNESS=str(nt), CCX_NPROC_EQUATION_SOLVER=str(nt),
                                CCX_NPROC_RESULTS=str(nt))

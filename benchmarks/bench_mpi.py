@@ -68,23 +68,8 @@ import time
 import subprocess
 import sys
 
+from ldfcz_tools import outputs
 from ldfcz_tools.paths import ROOT, TOOLS
-
-PATTERNS = {
-    'counts': r'^increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), factorizations (\d+)',
-    'dofs': r'^DOFs (\d+), free equations (\d+)',
-    'wall': r'^wall time\s+([\d.]+) s, CPU time\s+([\d.]+) s',
-    'split': r'^wall time split: assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s, '
-             r'output\s+([\d.]+) s',
-    'setup': r'^solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([\d.]+) s',
-    'entries': r'^solver setup .*entries in the last factors (\d+)',
-    'comm': r'^MPI processes (\d+), communication of the host\s+([\d.]+) s.*peak memory of a process (\d+) kB',
-    'memory': r'^peak memory \(VmHWM\) (\d+) kB',
-    'balance': r'^element loop per process: max\s+([\d.]+) s, mean\s+([\d.]+) s, max/mean\s+([\d.]+)',
-    'slowest': r'^element loop, slowest process of each loop summed:\s+([\d.]+) s, against the mean\s+([\d.]+)',
-    'weights': r'as partition weights: --element-weights (\d+),(\d+),(\d+)',
-}
-
 
 def deck(args, fine, out, application=False):
     cmd = [sys.executable, os.path.join(TOOLS, 'peel_deck.py'), '--3d', '--le', str(args.le), '--ny', str(args.ny),
@@ -103,13 +88,24 @@ def deck(args, fine, out, application=False):
     return json.loads(res.stderr.strip().splitlines()[-1])   # the mesh summary (--info)
 
 
-def parse(path):
-    text = open(path).read()
-    r = {}
-    for key, pat in PATTERNS.items():
-        m = re.search(pat, text, re.M)
-        r[key] = [float(g) for g in m.groups()] if m else None
-    return r
+def parse(outdir, job):
+    """The figures of a run's summary (JOB.summary.json) in the groups this benchmark tabulates: counts (increments,
+    attempts, cutbacks, iterations, factorizations), dofs (DOFs, equations), wall (wall, CPU), split (element loop,
+    factorization, solve, output), setup, entries, memory (kB); for a distributed run comm (processes, host
+    communication, largest process memory in kB), balance (max, mean, max/mean of the element loop), slowest (the
+    slowest process of each loop summed, over the mean); weights (the measured partition weights)."""
+    doc = outputs.read_summary(outdir, job)
+    c, t, m, mpi = doc['counters'], doc['times'], doc['model'], doc['mpi']
+    return {'counts': [c['increments'], c['attempts'], c['cutbacks'], c['iterations'], c['factorizations']],
+            'dofs': [m['dofs'], m['equations']], 'wall': [t['wall_s'], t['cpu_s']],
+            'split': [t['element_loop_s'], t['factorization_s'], t['solve_s'], t['output_s']],
+            'setup': [t['solver_setup_s']], 'entries': [doc['factors']['entries']] if doc['factors']['entries'] else None,
+            'memory': [doc['memory']['peak_kb']],
+            'comm': [mpi['processes'], mpi['communication_s'], doc['memory']['peak_kb_largest_process']] if mpi else None,
+            'balance': [mpi['element_loop_max_s'], mpi['element_loop_mean_s'], mpi['element_loop_max_over_mean']]
+            if mpi else None,
+            'slowest': [mpi['element_loop_slowest_summed_s'], mpi['element_loop_slowest_over_mean']] if mpi else None,
+            'weights': [e['weight'] for e in doc['element_cost'].values()]}
 
 
 def fit_power(xs, ys):
@@ -280,7 +276,7 @@ def ordering_study(args, env, work):
                 res = subprocess.run(cmd, capture_output=True, text=True, env=dict(env, **extra))
                 if res.returncode not in (0, 3):
                     sys.exit('bench_mpi.py: %s failed (exit %d)' % (' '.join(cmd), res.returncode))
-                s = parse(os.path.join(rdir, 'order_%s.log' % tag))
+                s = parse(rdir, 'order_%s' % tag)
                 nf = int(s['counts'][4])
                 row = '| %s | %d | %d | %s | %d | %.2f | %.2f | %.2f | %.2f | %s |' % (
                     label, int(s['dofs'][0]), np_, 'host METIS' if o == 'metis' else 'MUMPS ' + o.upper(), nf,
@@ -457,7 +453,7 @@ def main():
             if res.returncode != 0:
                 sys.exit('bench_mpi.py: %s failed (exit %d):\n%s' % (' '.join(full), res.returncode,
                                                                     (res.stdout + res.stderr)[-2000:]))
-            s = parse(os.path.join(rdir, 'peel_%s.log' % tag))
+            s = parse(rdir, 'peel_%s' % tag)
             inc, its = int(s['counts'][0]), int(s['counts'][3])
             asm, fact, solve = s['split'][0], s['split'][1], s['split'][2]
             comm = s['comm'][1] if s['comm'] else 0.0

@@ -16,7 +16,6 @@ Not a test (minutes); the figures are in docs/performance.md.
 """
 import argparse
 import os
-import re
 import shlex
 import statistics
 import subprocess
@@ -25,6 +24,7 @@ import threading
 import time
 
 from bench_calculix import summary_split
+from ldfcz_tools import outputs
 from ldfcz_tools.block_deck import block_deck
 
 TICK = os.sysconf('SC_CLK_TCK')
@@ -68,10 +68,9 @@ def run(exe, args, env, wd, deck):
     if rc != 0:
         sys.exit('bench_omp_wait: ldfcz exited %d' % rc)
     job = os.path.splitext(os.path.basename(deck))[0]
-    log = open(os.path.join(wd, job + '.log')).read()
-    split = summary_split(log)
-    m = re.search(r'wall time\s+([0-9.]+) s, CPU time\s+([0-9.]+) s', log)
-    split['wall'], split['cpu'] = float(m.group(1)), float(m.group(2))
+    doc = outputs.read_summary(wd, job)
+    split = summary_split(doc)
+    split['wall'], split['cpu'] = doc['times']['wall_s'], doc['times']['cpu_s']
     threads = [last[t][1] for t in sorted(last)]   # the main thread has the lowest id
     return wall, split, threads
 

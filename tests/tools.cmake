@@ -20,3 +20,11 @@ if(TARGET ldfcz)
       PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
   endif()
 endif()
+# The package's unit tests (tests/tools: readers against a real run, deck generator invariants, the package's shape)
+add_test(NAME tools_package
+  COMMAND Python3::Interpreter -m unittest discover -s "${CMAKE_CURRENT_SOURCE_DIR}/tools" -v)
+set_tests_properties(tools_package PROPERTIES LABELS "tools" TIMEOUT 120
+  ENVIRONMENT "LDFCZ_DECKS=${PROJECT_SOURCE_DIR}/decks")
+if(TARGET ldfcz)
+  set_property(TEST tools_package APPEND PROPERTY ENVIRONMENT "LDFCZ_EXE=$<TARGET_FILE:ldfcz>")
+endif()

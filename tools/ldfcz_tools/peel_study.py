@@ -39,6 +39,7 @@ def run_config():
     if LAUNCH:
         return '`%s`, `-t %d` per process' % (' '.join(LAUNCH), THREADS[0])
     return '`-t %d`' % THREADS[0]
+from ldfcz_tools import outputs  # noqa: E402
 from ldfcz_tools import peel_deck  # noqa: E402
 from ldfcz_tools import steady_force as sfe  # noqa: E402
 from ldfcz_tools.paths import ROOT  # noqa: E402
@@ -247,24 +248,26 @@ def read_history(csv_path, info=None):
     return u, f
 
 
-def read_summary(log_path):
-    """Numbers of the host's closing summary in JOB.log (whatever of them are present)."""
+# the figures of the closing summary the reports keep, and where JOB.summary.json has them (docs/summary.md)
+SUMMARY_FIGURES = {
+    'increments': 'counters.increments', 'attempts': 'counters.attempts', 'cutbacks': 'counters.cutbacks',
+    'iterations': 'counters.iterations', 'dofs': 'model.dofs', 'wall_s': 'times.wall_s',
+    't_assembly_s': 'times.element_loop_s', 't_factor_s': 'times.factorization_s',
+    'w_ext': 'energy.external_work', 'e_int': 'energy.stored_dissipated',
+    'energy_rel_diff': 'energy.relative_difference', 'max_open_ratio': 'accuracy.max_opening_ratio',
+}
+
+
+def read_summary(outdir, job):
+    """Numbers of the host's closing summary (JOB.summary.json; whatever of them are present)."""
+    doc = outputs.read_summary(outdir, job)
+    if doc is None:
+        return {}
     out = {}
-    if not os.path.exists(log_path):
-        return out
-    text = open(log_path).read()
-    pats = {
-        'increments': r'increments\s+(\d+),', 'attempts': r'attempts\s+(\d+)', 'cutbacks': r'cutbacks\s+(\d+)',
-        'iterations': r'Newton iterations\s+(\d+)', 'dofs': r'DOFs\s+(\d+)', 'wall_s': r'wall time\s+([0-9.Ee+-]+) s',
-        't_assembly_s': r'assembly\s+([0-9.Ee+-]+) s', 't_factor_s': r'factorization\s+([0-9.Ee+-]+) s',
-        'w_ext': r'external work\s+([0-9.Ee+-]+)', 'e_int': r'stored \+ dissipated\s+([0-9.Ee+-]+)',
-        'energy_rel_diff': r'relative difference\s+([0-9.Ee+-]+)',
-        'max_open_ratio': r'opening increment / delta\s+([0-9.Ee+-]+)',
-    }
-    for k, pat in pats.items():
-        m = re.search(pat, text)
-        if m:
-            out[k] = float(m.group(1))
+    for k, key in SUMMARY_FIGURES.items():
+        v = outputs.get(doc, key)
+        if v is not None:
+            out[k] = float(v)
     return out
 
 
@@ -431,7 +434,7 @@ def run_case(label, gen_args, workdir, ldfcz, threads, plateau, solver_args=(), 
            'solver': ' '.join(solver_args), 'load_avg_start': load0, 'load_avg_end': os.getloadavg()[0],
            'stopped_at_limit': stopped, 'cpu_busy_before': busy0,
            'cpu_time_s': os.times().children_user + os.times().children_system - cpu0}
-    summ = read_summary(os.path.join(outdir, job + '.log'))
+    summ = read_summary(outdir, job)
     if 'wall_s' not in summ:  # stopped: count from JOB.sta
         summ.update(read_sta(os.path.join(outdir, job + '.sta')))
         summ['wall_s'] = wall
@@ -442,15 +445,13 @@ def run_case(label, gen_args, workdir, ldfcz, threads, plateau, solver_args=(), 
 def reuse_case(label, gen_args, solver_args, outdir, job, info, p, plateau, old):
     """The results of an earlier run in outdir (--reuse: rewrite the reports without running): run time from the
     closing summary, progress and load figures from the earlier report's rows when given."""
-    summ = read_summary(os.path.join(outdir, job + '.log'))
+    summ = read_summary(outdir, job)
     if 'wall_s' not in summ:
         summ.update(read_sta(os.path.join(outdir, job + '.sta')))
-    # the closing summary is written when ldfcz ended by itself or by a graceful stop (SIGTERM: exit 143, said in
-    # JOB.log); older binaries ended by SIGTERM without it
-    log = os.path.join(outdir, job + '.log')
-    term = os.path.exists(log) and 'SIGTERM received' in open(log, errors='replace').read()
-    ended = 'energy_rel_diff' in summ
-    res = {'label': label, 'job': job, 'exit': 143 if term else 0 if ended else int(old.get('exit') or 3),
+    # the summary is written when ldfcz ended by itself or by a graceful stop (SIGTERM: exit 143) and gives the exit
+    # status; older binaries wrote none
+    doc = outputs.read_summary(outdir, job)
+    res = {'label': label, 'job': job, 'exit': doc['exit_code'] if doc else int(old.get('exit') or 3),
            'run_time_s': float(old.get('run_time_s') or summ.get('wall_s', 0.0)), 'elements': info['elements'],
            'dofs': info['dofs'], 'l_e_mm': info['l_e_mm'], 'args': ' '.join(gen_args),
            'solver': ' '.join(solver_args), 'stopped_at_limit': old.get('stopped_at_limit') == 'True'}

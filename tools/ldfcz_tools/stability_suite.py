@@ -6,8 +6,8 @@ reports/stability/{table.md,table.csv}.
   python3 tools/stability_suite.py [--exe build/bin/ldfcz] [--jobs 2] [--only PATTERN ...] [--out DIR] [--no-report]
 
 Columns: outcome (exit status), expected, match (exit status expected AND the check passed), increments, attempts,
-cutbacks, Newton iterations, energy-balance relative error (JOB.log summary), NaN/Inf in any output (CSV, STA, VTU,
-log numbers: must be never), wall time, and the check's note. Exit status of the tool: 0 when every case matches.
+cutbacks, Newton iterations, energy-balance relative error (JOB.summary.json), NaN/Inf in any output (CSV, STA,
+VTU, the summary's figures: must be never), wall time, and the check's note. Exit status of the tool: 0 when every case matches.
 """
 import argparse
 import concurrent.futures
@@ -20,7 +20,9 @@ import subprocess
 import sys
 import time
 
+from ldfcz_tools import outputs
 from ldfcz_tools.paths import ROOT
+
 NONFINITE = re.compile(r"(?i)(?<![a-z])[+-]?(nan|inf|infinity)(?![a-z])")
 
 
@@ -44,29 +46,27 @@ def read_rows(d, job):
 
 
 def summary(d, job):
+    """Counters and the energy balance's relative difference from JOB.summary.json (None: not there)."""
     s = {"increments": None, "attempts": None, "cutbacks": None, "iterations": None, "energy": None}
-    path = os.path.join(d, job + ".log")
-    if not os.path.exists(path):
+    doc = outputs.read_summary(d, job)
+    if doc is None:
         return s
-    log = open(path).read()
-    m = re.search(r"increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+)", log)
-    if m:
-        s.update(increments=int(m.group(1)), attempts=int(m.group(2)), cutbacks=int(m.group(3)),
-                 iterations=int(m.group(4)))
-    m = re.search(r"relative difference\s+(\S+)", log)
-    if m:
-        s["energy"] = float(m.group(1))
+    s.update({k: doc["counters"][k] for k in ("increments", "attempts", "cutbacks", "iterations")})
+    s["energy"] = outputs.get(doc, "energy.relative_difference")
     return s
 
 
-def nonfinite(d):
-    """Names of output files holding a NaN or an Inf."""
+def nonfinite(d, job):
+    """Names of output files holding a NaN or an Inf (in JOB.summary.json: a measured figure written as null)."""
     bad = []
     for p in sorted(glob.glob(os.path.join(d, "*.csv")) + glob.glob(os.path.join(d, "*.sta")) +
-                    glob.glob(os.path.join(d, "*.vtu")) + glob.glob(os.path.join(d, "*.log"))):
+                    glob.glob(os.path.join(d, "*.vtu"))):
         with open(p, errors="replace") as f:
             if NONFINITE.search(f.read()):
                 bad.append(os.path.basename(p))
+    doc = outputs.read_summary(d, job)
+    if doc is not None and outputs.summary_nonfinite(doc):
+        bad.append(os.path.basename(outputs.summary_path(d, job)))
     return bad
 
 
@@ -259,7 +259,7 @@ def main():
         e = parse_expect(d)
         rows = read_rows(out, job)
         s = summary(out, job)
-        bad = nonfinite(out)
+        bad = nonfinite(out, job)
         crash = bool(re.search(r"Fortran runtime error|Backtrace|Segmentation|SIG", err))
         ok_exit = rc in e["exit"] and not crash
         if rows and e["check"] in CHECKS:
