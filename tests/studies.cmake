@@ -14,7 +14,7 @@ if(TARGET ldfcz)
   endforeach()
 endif()
 
-# The steady-force estimator (tools/steady_force.py) on synthetic curves with known answers (no solver needed).
+# The steady-force estimator (tools/ldfcz_tools/steady_force.py) on synthetic curves with known answers (no solver needed).
 add_test(NAME steady_force
   COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_steady_force.py")
 set_tests_properties(steady_force PROPERTIES LABELS "regression;peel" TIMEOUT 60)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Unit checks of tools/steady_force.py on synthetic peel curves with known answers (CTest steady_force).
+"""Unit checks of tools/ldfcz_tools/steady_force.py on synthetic peel curves with known answers (CTest steady_force).
 
 Every curve: pull u in [0, 0.1] mm sampled unevenly (bunched samples imitate cutbacks, which must not weight the
 mean), front history d(u) = 1.5 (u - 0.01) mm after a start-up of 10 um, l_e = 0.005 mm, fine region 0.2 mm.

@@ -10,7 +10,7 @@ collect JOB.csv, compute the steady peel force per unit width, and write reports
   ... --ranks N --threads T --ldfcz build-mpi/bin/ldfcz    every case under `mpirun -np N` (the LDFCZ_MPI build),
                                      T threads per process; --reports DIR keeps these reports apart
 
-Steady peel force: tools/steady_force.py (the plateau window after the front has crossed 3 elements of the fine
+Steady peel force: tools/ldfcz_tools/steady_force.py (the plateau window after the front has crossed 3 elements of the fine
 region, its uncertainty, refused or flagged outside the fine region or before the plateau); the mean over the last
 --plateau fraction of the pull (default 0.3) and its spread are kept as F_w_tail and spread. F/w = the reaction of
 set LOAD along the pull (plane strain per unit thickness; 3D quarter model divided by b, the modelled width = half
@@ -46,7 +46,7 @@ from ldfcz_tools.paths import ROOT  # noqa: E402
 
 # The default plane-strain scene (the main job). Every study starts from these arguments. Pulled 0.1 mm with a fine
 # region of 0.16 mm: the front (about 1.5 um per um of pull once steady) stays in the fine region, and the steady
-# force is read over a plateau of 40-50 um of pull (tools/steady_force.py; issue 17).
+# force is read over a plateau of 40-50 um of pull (tools/ldfcz_tools/steady_force.py; issue 17).
 DEFAULT_PS = ['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.16']
 DEFAULT_3D = ['--3d', '--rigid-substrate']
 # Reading B of Fig. 10 (issue 17): the pre-delaminated flap (0.1 mm: a bend of radius 1.5 h_c to 90 degrees, then
@@ -72,7 +72,7 @@ def studies(quick):
     # section 8 discretisation through the thickness (l_e = 2 um, n_z = 3), plane strain, up to 1 um/inc; the
     # reference: the default bound 0.05 at 0.1 um/inc
     # pulled 0.1 mm over a 0.16 mm fine region (DEFAULT_PS): reading A's plateau from ~40 um (60 um were too short
-    # for the plateau detection of tools/steady_force.py)
+    # for the plateau detection of tools/ldfcz_tools/steady_force.py)
     psb = DEFAULT_PS + ['--le', '0.002', '--nz', '3']
     gms = [0.05, 0.2, 1.0] if quick else [0.05, 0.1, 0.2, 0.5, 1.0]
     s['plastic-bound'] = [('reference: 0.05, 0.1 um/inc', psb + ['--du', '0.0001'], True,
@@ -214,7 +214,7 @@ def studies(quick):
         # front advances ~1.5 mm per mm of pull after the first 60 um: app-settings)
         # Linear algebra: LDL^T factors of the symmetric part in single precision as the GMRES preconditioner
         # (--factors symmetric-single; the Newton iterates hold within the GMRES tolerance): 28 % less time in
-        # factorizations and solves on a window of this scene (tools/bench_window.py, docs/performance.md)
+        # factorizations and solves on a window of this scene (benchmarks/bench_window.py, docs/performance.md)
         s['application'] = [('paper section 8', app_gen + [
             '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72', '--field-frequency', '40'], True,
             app_solver + ['--factors', 'symmetric-single'])]
@@ -482,7 +482,7 @@ def collect(res, outdir, job, info, p, plateau, progress):
     res['vtus'] = [f[0] for f in frames]      # a frame's (first) file: the serial frame, or piece 0 of a .pvtu
     res['frames'] = frames
     res['info'] = info
-    # the steady force with its plateau window and uncertainty (tools/steady_force.py): the front history of the
+    # the steady force with its plateau window and uncertainty (tools/ldfcz_tools/steady_force.py): the front history of the
     # field frames decides where the front is inside the fine region
     hist = front_history(res)
     est = sfe.estimate(u, fw, hist[1:] if len(hist) > 1 else None, info['l_e_mm'],
@@ -534,7 +534,7 @@ def write_report(study, results, outdir):
         fref = ref[0]['F_w'] if ref else float('nan')
         r['F_over_Fr'] = r['F_w'] / fref if fref == fref and fref else float('nan')
         r['error'] = abs(r['F_over_Fr'] - 1.0) if r['F_over_Fr'] == r['F_over_Fr'] else float('nan')
-        # an error is resolved when it exceeds the two steady-force uncertainties (tools/steady_force.py)
+        # an error is resolved when it exceeds the two steady-force uncertainties (tools/ldfcz_tools/steady_force.py)
         ur = ref[0].get('F_unc', float('nan')) if ref else float('nan')
         r['resolved'] = (r['error'] > ur + r.get('F_unc', float('nan'))) if not r.get('reference') else ''
     cols = ['label', 'reference', 'completed', 'exit', 'F_w', 'F_unc', 'F_status', 'F_window_um', 'F_drift',
@@ -572,7 +572,7 @@ def write_report(study, results, outdir):
         busy = 'Machine: %s, %d cores visible.' % (os.uname().nodename, os.cpu_count() or 1)
     lines = ['# Study %s' % study, '', head, '', busy,
              '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
-             'F/w: steady peel force per unit width (N/mm) by tools/steady_force.py: the pull-weighted mean over the '
+             'F/w: steady peel force per unit width (N/mm) by tools/ldfcz_tools/steady_force.py: the pull-weighted mean over the '
              'plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
              'elements of its end, from where a straight-line fit drifts less than 0.5 %), +- its relative '
              'uncertainty (half the drift plus the ripple\'s averaging bias); status: ok, or why the value is not '
@@ -900,7 +900,7 @@ def statements(reports):
            'run times and the machine load). Reading A: the 0-degree bridge (the coating drawn along x); reading B: '
            'the pre-delaminated flap lifted and pulled at 90 degrees (carriage grip, u_x free). Plane strain, rigid substrate, '
            'l_e = 10 um, n_z = 3 unless the statement varies them; 3D: the quarter model at l_e = 20 um, n_z = 2. '
-           'Percentages with +-: the steady-force uncertainties of the two runs added (tools/steady_force.py). '
+           'Percentages with +-: the steady-force uncertainties of the two runs added (tools/ldfcz_tools/steady_force.py). '
            '"%s": the runs were not made (or did not complete) in this pass.' % (time.strftime('%Y-%m-%d %H:%M'), nm),
            '', '| statement | paper | reading A (bridge) | reading B (90-degree peel) |', '|---|---|---|---|']
     for name, paper, key in table:
@@ -923,7 +923,7 @@ def mesh_size(r, study):
 def richardson_lines(study, ok):
     """Richardson estimate and observed order from every three consecutive meshes whose values are plateaus."""
     rows = sorted([(mesh_size(r, study), r) for r in ok if mesh_size(r, study)], key=lambda t: -t[0])
-    out = ['', 'Richardson extrapolation (tools/steady_force.py) from three consecutive meshes (h = %s):' % (
+    out = ['', 'Richardson extrapolation (tools/ldfcz_tools/steady_force.py) from three consecutive meshes (h = %s):' % (
         '1/n_z' if 'mesh-z' in study else 'l_e'), '',
         '| meshes | F/w (N/mm) | all plateaus | observed order p | F_inf (N/mm) | finest against F_inf |',
         '|---|---|---|---|---|---|']
