@@ -5,10 +5,10 @@ continues the counters to the uninterrupted run's.
 
   check_summary_json.py --exe BIN --decks DECKS_DIR --doc docs/summary.md --out DIR [--np N]
 
-Runs (decks/single): cohesive_block completed; nonconvergence (exit 3); cohesive_block stopped after 5 increments
+Runs (decks/single unless said): cohesive_block completed; nonconvergence (exit 3); cohesive_block stopped after 5 increments
 (--stop-after-increments, restart data written) and restarted from them to the end; a restart from another deck's
 restart file (input error found after the deck was read); a deck error in a directory holding an earlier summary
-(the summary goes). With --np N every run is under mpirun -np N (the LDFCZ_MPI build) and the summary must carry the
+(the summary goes); a UEL that calls XIT (decks/bad/runtime/uel_phi_zero.inp). With --np N every run is under mpirun -np N (the LDFCZ_MPI build) and the summary must carry the
 processes' balance (key mpi).
 """
 import argparse
@@ -67,7 +67,7 @@ def check_keys(doc, documented, what):
         fail('%s: documented keys missing: %s' % (what, missing))
 
 
-def summary_of(out, job, what, documented, status, exit_code, procs):
+def summary_of(out, job, what, documented, status, exit_code, procs, stopped_attempt=0):
     """The run's summary, checked for the keys, the status and the consistency of its counters."""
     path = outputs.summary_path(out, job)
     if os.path.exists(path + '.tmp'):
@@ -82,10 +82,10 @@ def summary_of(out, job, what, documented, status, exit_code, procs):
     if doc['processes'] != procs or (procs > 1) != (doc['mpi'] is not None):
         fail('%s: processes %s, mpi %s with %d processes' % (what, doc['processes'], doc['mpi'], procs))
     c = doc['counters']
-    # every failed attempt has one cause; an attempt converges or is cut back
+    # every failed attempt has one cause; an attempt converges or is cut back (or is the one a user routine stopped)
     if sum(doc['cutbacks_by_cause'].values()) != c['cutbacks']:
         fail('%s: cutbacks by cause %s do not sum to %d' % (what, doc['cutbacks_by_cause'], c['cutbacks']))
-    if c['attempts'] != c['increments'] + c['cutbacks']:
+    if c['attempts'] != c['increments'] + c['cutbacks'] + stopped_attempt:
         fail('%s: attempts %d != increments %d + cutbacks %d' % (what, c['attempts'], c['increments'],
                                                                 c['cutbacks']))
     if sum(s['increments'] for s in doc['steps']) != c['increments'] or \
@@ -162,6 +162,14 @@ def main():
     doc = summary_of(bad, 'nonconvergence', 'restart of another deck', documented, 'input_error', 2, a.np)
     if rc != 2 or doc['times']['wall_s'] is not None or doc['counters']['increments'] != 0:
         fail('input error: exit %d, times %s, counters %s' % (rc, doc['times'], doc['counters']))
+
+    # a user routine's XIT in the first increment (its properties rejected): stopped, the attempt counted
+    xit = os.path.join(a.out, 'user_routine')
+    rc = run(a, os.path.join(a.decks, '..', 'bad', 'runtime', 'uel_phi_zero.inp'), xit)
+    doc = summary_of(xit, 'uel_phi_zero', 'XIT in a UEL', documented, 'stopped_by_user_routine', 2, a.np,
+                     stopped_attempt=1)
+    if rc != 2 or doc['counters']['increments'] != 0 or doc['times']['wall_s'] is None:
+        fail('XIT: exit %d, counters %s, times %s' % (rc, doc['counters'], doc['times']))
 
     # a deck error in a directory with an earlier run's summary: that summary goes, none is written
     with open(os.path.join(full, 'cohesive_block.inp'), 'w') as f:
