@@ -2,7 +2,7 @@
 !> the run ended, the job and the build, threads and processes, the model's size, the counters (cutbacks by cause,
 !> increments per step), wall times by phase, memory, the energy balance, element costs, the balance of a
 !> distributed run and the accuracy indicators. The program writes it last, after JOB.log is closed, for every run
-!> that got past reading its deck; a run removes the file of an earlier run when it starts. JOB.log keeps the same
+!> that got as far as its analysis; a run removes the file of an earlier run when it starts. JOB.log keeps the same
 !> figures as text for people.
 module summary_json
   use ldfcz_kinds, only: dp, i8
