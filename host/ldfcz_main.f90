@@ -19,6 +19,8 @@ program ldfcz
     parallel_file, parallel_first_error
   use heap_reuse, only: heap_reuse_default
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
+  use summary_json, only: run_facts_t, summary_json_write, summary_json_clear
+  use summary_commit, only: build_commit
   !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
   implicit none
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc, fflags
@@ -203,6 +205,8 @@ program ldfcz
   if (.not. exists) call die('--out: cannot create directory '//outdir)
   call abaqus_set_job(job, outdir)
   call abaqus_set_processes(par%rank, par%nranks, par%comm)
+  ! JOB.summary.json of an earlier run goes now: the file present after this run is this run's (summary_json)
+  if (parallel_writer(par)) call summary_json_clear(outdir, job)
 
   call checkpoint()   ! the options, the deck's and restart file's presence, the output directory
   call read_deck(deck, model, stat, errmsg)
@@ -258,11 +262,32 @@ program ldfcz
   if (len(heap_note) > 0) call output_log(out, 'ldfcz: '//heap_note)
   call run_analysis(model, routines, out, verbose, summary, exit_code, options, par)
   call output_close(out)
+  if (parallel_writer(par)) call write_summary()
   call abaqus_flush_repeats(error_unit)
   call parallel_finalize(par)
   call exit(exit_code)
 
 contains
+
+  !> JOB.summary.json (summary_json): the run's summary for programs, written last and whole.
+  subroutine write_summary()
+    type(run_facts_t) :: facts
+    facts%job = job
+    facts%deck = deck
+    facts%output_dir = outdir
+    facts%version = ldfcz_version
+    facts%commit = build_commit
+    facts%restart_from = restart_from
+    facts%exit_code = exit_code
+    facts%threads = nthreads
+    facts%processes = par%nranks
+    facts%nodes = model%nnode
+    facts%elements = model%nelem
+    facts%steps = model%nstep
+    facts%stop_after = options%stop_after
+    call summary_json_write(outdir, job, facts, summary, stat, errmsg)
+    if (stat /= 0) write (error_unit, '(a)') 'ldfcz: warning: '//out%job//'.summary.json not written: '//errmsg
+  end subroutine write_summary
 
   pure function itoa_local(i) result(s)
     integer, intent(in) :: i

@@ -43,7 +43,7 @@ ldfcz_add_mpi_test(mpi_cohesive_block ${PROJECT_SOURCE_DIR}/decks/single/cohesiv
 ldfcz_add_mpi_test(mpi_leonov_uniaxial ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp)
 ldfcz_add_mpi_test(mpi_rotation ${PROJECT_SOURCE_DIR}/decks/single/c3d8_rotation_uniaxial.inp)
 # with the element-loop trace (LDFCZ_LOOP_TRACE): the same loops as on one process, every element computed once per
-# loop over the processes, the slowest time the largest process's, tools/loop_trace.py's sum of the slowest loops the
+# loop over the processes, the slowest time the largest process's, benchmarks/loop_trace.py's sum of the slowest loops the
 # summary's; an unwritable trace path only warns
 ldfcz_add_mpi_test(mpi_peel_ps ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp --trace)
 # the interleaved partition (4 pieces per process, 3 with 3 processes; the default gives these small decks one)

@@ -14,15 +14,15 @@ if(TARGET ldfcz)
   endforeach()
 endif()
 
-# The steady-force estimator (tools/steady_force.py) on synthetic curves with known answers (no solver needed).
+# The steady-force estimator (tools/ldfcz_tools/steady_force.py) on synthetic curves with known answers (no solver needed).
 add_test(NAME steady_force
   COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_steady_force.py")
 set_tests_properties(steady_force PROPERTIES LABELS "regression;peel" TIMEOUT 60)
 
-# The MPI benchmark's cost-model refit (tools/bench_mpi.py --refit) on synthetic tables with a known memory and
+# The MPI benchmark's cost-model refit (benchmarks/bench_mpi.py --refit) on synthetic tables with a known memory and
 # element-loop model (no solver, no MPI needed)
 add_test(NAME bench_refit
   COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_bench_refit.py"
-          "${PROJECT_SOURCE_DIR}/tools" "${CMAKE_CURRENT_BINARY_DIR}/bench_refit")
+          "${PROJECT_SOURCE_DIR}/benchmarks" "${CMAKE_CURRENT_BINARY_DIR}/bench_refit")
 set_tests_properties(bench_refit PROPERTIES LABELS "regression" TIMEOUT 60 PASS_REGULAR_EXPRESSION "PASS"
   FAIL_REGULAR_EXPRESSION "FAIL")

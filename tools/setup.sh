@@ -2,7 +2,7 @@
 # Install what is missing (Debian 12 packages), then configure and build ldfcz.
 #   tools/setup.sh [Release|Debug]     build directory: build/ (Release) or build-debug/ (Debug), or $LDFCZ_BUILD_DIR
 #   tools/setup.sh bench               the Release build and what the benchmarks compare against (CalculiX 2.20,
-#                                      Debian's calculix-ccx: tools/bench_calculix.py) or measure with (heaptrack:
+#                                      Debian's calculix-ccx: benchmarks/bench_calculix.py) or measure with (heaptrack:
 #                                      reports/bench/memory/); the tests never need them
 # Extra CMake options may be passed in $LDFCZ_CMAKE_ARGS (e.g. -DCMAKE_PREFIX_PATH=/path/to/pfunit).
 set -euo pipefail

@@ -12,7 +12,15 @@ module run_summary
   implicit none
   private
   public :: run_summary_t, run_summary_collect, run_summary_write, run_summary_continue, peak_memory_kb
-  public :: cohesive_ratio, statev_increment
+  public :: cohesive_ratio, statev_increment, element_costs, cutback_cause, n_cutback_cause, cutback_cause_name
+  public :: max_summary_steps, n_cost_class, energy_balance
+
+  !> steps whose increments, cutbacks, time and work the summary keeps one by one (later steps: counted only)
+  integer, parameter :: max_summary_steps = 500
+  !> causes of a cutback (cutback_cause): the outcomes of newton_iteration and the opening bound, and any other
+  integer, parameter :: n_cutback_cause = 8
+  character(len=*), parameter :: cutback_names(n_cutback_cause) = [character(len=17) :: 'diverging', &
+    'iteration_limit', 'pnewdt', 'element_failure', 'singular_tangent', 'solve_failed', 'opening_increment', 'other']
 
   !> Counters and measures of a run (printed in the closing summary).
   type :: run_summary_t
@@ -40,6 +48,19 @@ module run_summary
     integer :: class_weight(n_cost_class) = 0   !< the partition's weights (MPI)
     integer(i8) :: factor_entries = 0           !< entries in the last factors (MUMPS INFOG(29); 0: none)
     real(dp) :: factor_flops = 0.0_dp           !< operations of the last factorization (MUMPS RINFOG(3); 0: none)
+    integer :: cutbacks_by_cause(n_cutback_cause) = 0  !< cutbacks per cause (cutback_cause)
+    integer :: last_step = 0                    !< the last step with a converged increment or a cutback
+    integer :: step_increments(max_summary_steps) = 0   !< converged increments of each step (its last KINC)
+    integer :: step_cutbacks(max_summary_steps) = 0     !< cutbacks in each step
+    logical :: step_completed(max_summary_steps) = .false.  !< the step reached its end
+    real(dp) :: step_total_time(max_summary_steps) = 0  !< total time at the step's last converged increment
+    real(dp) :: step_work(max_summary_steps) = 0        !< w_ext at the step's last converged increment
+    integer :: increments_resumed = 0           !< increments of the run before the restart point (a restarted run)
+    logical :: collected = .false.              !< run_summary_collect done (times, energy, costs are known)
+    logical :: routine_stop = .false.           !< a user routine asked to end the analysis (XIT, STDB_ABQERR)
+  contains
+    procedure :: add_increment => run_summary_add_increment
+    procedure :: add_cutback => run_summary_add_cutback
   end type run_summary_t
 
 contains
@@ -61,7 +82,92 @@ contains
     summary%w_ext = saved%w_ext
     summary%max_open_ratio = saved%max_open_ratio
     summary%max_statev_inc = saved%max_statev_inc
+    summary%cutbacks_by_cause = saved%cutbacks_by_cause
+    summary%last_step = saved%last_step
+    summary%step_increments = saved%step_increments
+    summary%step_cutbacks = saved%step_cutbacks
+    summary%step_completed = saved%step_completed
+    summary%step_total_time = saved%step_total_time
+    summary%step_work = saved%step_work
+    summary%increments_resumed = saved%increments
   end subroutine run_summary_continue
+
+  !> A converged increment: counted, and the step's record (increments, total time and the external work reached;
+  !> the step completed when the increment ended it). Called after the increment's work is added to w_ext.
+  pure subroutine run_summary_add_increment(summary, step, kinc, total_time, step_done)
+    class(run_summary_t), intent(inout) :: summary  !< counters and measures
+    integer, intent(in) :: step, kinc               !< the step and the increment's number in it (KINC)
+    real(dp), intent(in) :: total_time              !< total time at the end of the increment
+    logical, intent(in) :: step_done                !< the increment ended the step
+    summary%increments = summary%increments + 1
+    summary%last_step = max(summary%last_step, step)
+    if (step < 1 .or. step > max_summary_steps) return
+    summary%step_increments(step) = kinc
+    summary%step_total_time(step) = total_time
+    summary%step_work(step) = summary%w_ext
+    summary%step_completed(step) = step_done
+  end subroutine run_summary_add_increment
+
+  !> A failed attempt (an increment cut back or redone), counted with its cause (the outcome JOB.sta shows).
+  pure subroutine run_summary_add_cutback(summary, step, outcome)
+    class(run_summary_t), intent(inout) :: summary  !< counters and measures
+    integer, intent(in) :: step                     !< the step
+    character(len=*), intent(in) :: outcome         !< the attempt's outcome ('cutback: diverging', ...)
+    integer :: k
+    summary%cutbacks = summary%cutbacks + 1
+    k = cutback_cause(outcome)
+    summary%cutbacks_by_cause(k) = summary%cutbacks_by_cause(k) + 1
+    summary%last_step = max(summary%last_step, step)
+    if (step >= 1 .and. step <= max_summary_steps) summary%step_cutbacks(step) = summary%step_cutbacks(step) + 1
+  end subroutine run_summary_add_cutback
+
+  !> The cause of a cutback from the outcome of the attempt (newton_iteration's 'cutback: diverging', 'cutback: N
+  !> iterations', 'cutback: PNEWDT x', 'cutback: element failure', 'cutback: singular tangent', 'cutback: solve
+  !> failed'; static_step's 'cutback: opening increment x delta'), as an index of cutback_cause_name; 'other' else.
+  pure integer function cutback_cause(outcome) result(k)
+    character(len=*), intent(in) :: outcome  !< the outcome
+    character(len=:), allocatable :: what
+    integer :: c
+    what = adjustl(outcome)
+    c = index(what, 'cutback:')
+    if (c > 0) what = adjustl(what(c + 8:))
+    what = trim(what)
+    if (starts(what, 'diverging')) then
+      k = 1
+    else if (ends(what, ' iterations')) then
+      k = 2
+    else if (starts(what, 'PNEWDT')) then
+      k = 3
+    else if (starts(what, 'element failure')) then
+      k = 4
+    else if (starts(what, 'singular tangent')) then
+      k = 5
+    else if (starts(what, 'solve failed')) then
+      k = 6
+    else if (starts(what, 'opening increment')) then
+      k = 7
+    else
+      k = n_cutback_cause
+    end if
+  contains
+    pure logical function starts(text, head)
+      character(len=*), intent(in) :: text, head
+      starts = len(text) >= len(head)
+      if (starts) starts = text(1:len(head)) == head
+    end function starts
+    pure logical function ends(text, tail)
+      character(len=*), intent(in) :: text, tail
+      ends = len(text) >= len(tail)
+      if (ends) ends = text(len(text) - len(tail) + 1:) == tail
+    end function ends
+  end function cutback_cause
+
+  !> The name of cutback cause k (JOB.summary.json's keys of cutbacks_by_cause).
+  pure function cutback_cause_name(k) result(name)
+    integer, intent(in) :: k  !< 1..n_cutback_cause
+    character(len=:), allocatable :: name
+    name = trim(cutback_names(max(1, min(k, n_cutback_cause))))
+  end function cutback_cause_name
 
   !> End of the run: internal energy of the converged states and the solver's times and factorization count
   !> (those of an earlier run continued by restart in fact_offset; the times are of this run only).
@@ -109,19 +215,20 @@ contains
     summary%class_weight = an%cost_weight
     summary%t_comm = an%par%t_comm
     if (an%eqs%sys_ready) summary%t_comm = summary%t_comm + sparse_time_comm(an%eqs%sys)
+    summary%routine_stop = an%work%stop%asked
+    summary%collected = .true.
   end subroutine run_summary_collect
 
   !> The measured cost of an element call per class (UMAT continuum, *ELASTIC continuum, user element: wall
-  !> microseconds per call, summed over the processes' calls) and the weights they give for the partition of a
-  !> distributed run (relative to the cheapest class present, at least 1; a class without elements keeps the
-  !> weight of the run), to pass as --element-weights.
-  subroutine cost_line(out, summary)
-    type(output_t), intent(inout) :: out           !< output files
+  !> microseconds per call, summed over the processes' calls; 0 for a class without calls) and the weights they give
+  !> for the partition of a distributed run (relative to the cheapest class present, at least 1; a class without
+  !> elements keeps the weight of the run), to pass as --element-weights.
+  pure subroutine element_costs(summary, us, w)
     type(run_summary_t), intent(in) :: summary     !< counters and measures
-    character(len=300) :: line
-    real(dp) :: us(n_cost_class), cheapest
-    integer :: w(n_cost_class), k
-    if (all(summary%class_calls <= 0.0_dp)) return
+    real(dp), intent(out) :: us(n_cost_class)      !< microseconds per call
+    integer, intent(out) :: w(n_cost_class)        !< the partition weights they give
+    real(dp) :: cheapest
+    integer :: k
     us = 0.0_dp
     where (summary%class_calls > 0.0_dp) us = 1.0e6_dp * summary%class_time / summary%class_calls
     cheapest = minval(us, mask=summary%class_calls > 0.0_dp .and. us > 0.0_dp)
@@ -131,6 +238,17 @@ contains
       if (summary%class_calls(k) > 0.0_dp .and. us(k) > 0.0_dp .and. cheapest > 0.0_dp .and. &
           cheapest < huge(1.0_dp)) w(k) = max(1, nint(us(k) / cheapest))
     end do
+  end subroutine element_costs
+
+  !> The log line of the element costs (element_costs), when any element was called.
+  subroutine cost_line(out, summary)
+    type(output_t), intent(inout) :: out           !< output files
+    type(run_summary_t), intent(in) :: summary     !< counters and measures
+    character(len=300) :: line
+    real(dp) :: us(n_cost_class)
+    integer :: w(n_cost_class)
+    if (all(summary%class_calls <= 0.0_dp)) return
+    call element_costs(summary, us, w)
     write (line, '(a,3(f10.2,a,es9.2,a),3(i0,a))') 'element cost measured (us per call, calls): UMAT continuum ', &
       us(1), ' (', summary%class_calls(1), '), elastic continuum ', us(2), ' (', summary%class_calls(2), &
       '), user element ', us(3), ' (', summary%class_calls(3), '); as partition weights: --element-weights ', &
@@ -138,12 +256,25 @@ contains
     call output_log(out, trim(line))
   end subroutine cost_line
 
+  !> The energy balance: |W_ext - (stored + dissipated)| relative to the larger of the two; not available when the
+  !> routines returned no energy (stored + dissipated 0 against a nonzero work).
+  pure subroutine energy_balance(summary, rel, available)
+    type(run_summary_t), intent(in) :: summary     !< counters and measures
+    real(dp), intent(out) :: rel                   !< the relative difference (0 when not available)
+    logical, intent(out) :: available              !< the routines returned energies
+    available = .not. (summary%e_int == 0.0_dp .and. summary%w_ext /= 0.0_dp)
+    rel = 0.0_dp
+    if (available) rel = abs(summary%w_ext - summary%e_int) / &
+      max(abs(summary%w_ext), abs(summary%e_int), tiny(1.0_dp))
+  end subroutine energy_balance
+
   !> The closing summary of the log: counters, times, memory, energy balance and accuracy indicators.
   subroutine run_summary_write(out, summary)
     type(output_t), intent(inout) :: out           !< output files
     type(run_summary_t), intent(in) :: summary     !< counters and measures
     character(len=200) :: line
     real(dp) :: err
+    logical :: available
     call output_log(out, '')
     call output_log(out, '=== ldfcz summary ===')
     write (line, '(a,i0,a,i0,a,i0,a,i0,a,i0)') 'increments ', summary%increments, ', attempts ', &
@@ -192,12 +323,12 @@ contains
     write (line, '(a,i0,a)') 'peak memory (VmHWM) ', summary%peak_kb, ' kB'
     call output_log(out, trim(line))
     ! energy balance: external work of the reactions against stored + dissipated energy, relative difference
-    if (summary%e_int == 0.0_dp .and. summary%w_ext /= 0.0_dp) then
+    call energy_balance(summary, err, available)
+    if (.not. available) then
       ! no routine filled SSE/SPD (UMAT) or ENERGY (UEL): there is nothing to balance, not a 100 % imbalance
       write (line, '(a,es12.4,a)') 'energy balance: external work ', summary%w_ext, &
         ' N mm; stored + dissipated energy not available (the user routines returned no SSE/SPD or ENERGY)'
     else
-      err = abs(summary%w_ext - summary%e_int) / max(abs(summary%w_ext), abs(summary%e_int), tiny(1.0_dp))
       write (line, '(a,es12.4,a,es12.4,a,es10.2)') 'energy balance: external work ', summary%w_ext, &
         ' N mm, stored + dissipated ', summary%e_int, ' N mm, relative difference ', err
     end if

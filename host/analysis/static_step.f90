@@ -481,7 +481,7 @@ contains
     call analysis_restore(an)
     associate (p => an%state%progress, st => model%steps(inc%step))
       call step_control_cutback(p%sc, inc%dt, inc%pnewdt, ok)
-      summary%cutbacks = summary%cutbacks + 1
+      call summary%add_cutback(inc%step, inc%cause)
       if (ok .and. .not. step_control_exhausted(p%sc)) return
       head = 'ldfcz: step '//itoa(inc%step)//' increment '//itoa(inc%kinc)//': no convergence'
       if (st%direct) then
@@ -523,7 +523,8 @@ contains
     call boundary_rates_update(an%state%bc, model, inc)
     call step_control_converged(an%state%progress%sc, inc%dt, inc%iter, inc%pnewdt, inc%opening, opt%max_opening, &
       plastic_inc, opt%max_plastic)
-    summary%increments = summary%increments + 1
+    call summary%add_increment(inc%step, inc%kinc, an%state%progress%t_total0 + an%state%progress%sc%t, &
+      step_control_done(an%state%progress%sc))
     an%state%progress%kinc_total = an%state%progress%kinc_total + 1
     run%increments = run%increments + 1
   end subroutine accept

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""tools/bench_mpi.py --refit on synthetic tables with a known answer (no solver needed): rows of two scenes of
+"""benchmarks/bench_mpi.py --refit on synthetic tables with a known answer (no solver needed): rows of two scenes of
 N1, N2 DOFs on 1 to 16 processes whose memory per process follows m = m0 + m1 N / R + m2 N exactly on 2 or more
 processes (the one-process rows off that line, as the serial path is) and whose element loop per iteration is
 a N / R. The refit must read every row once (the table written twice, as a run prints it), fit the memory on the

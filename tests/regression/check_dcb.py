@@ -26,8 +26,7 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import dcb_deck  # noqa: E402
+from ldfcz_tools import dcb_deck
 
 GEN = ["--le", "0.2", "--nz", "4", "--opening", "0.5"]
 N_SOLID = 2 * 100 * 4           # C3D8 elements of the deck above: labels 1..800, cohesive from 801 on

@@ -22,9 +22,10 @@ per unit current volume (umat/umat.f, docs/umat.md). Two histories of PET (Table
 Exit status 0 when every assertion holds.
 """
 import os
-import re
 import subprocess
 import sys
+
+from ldfcz_tools import outputs
 
 CLOSE_TOL = 1e-4        # measured 1.6e-5 at 1 s increments
 ORDER_RATIO = 8.0       # measured 14 (second order gives 16)
@@ -79,11 +80,9 @@ def balance(ldfcz, work, kind, dt):
         fh.write(deck(kind, dt))
     out = os.path.join(work, job)
     subprocess.run([ldfcz, '-q', '-t', '1', '-o', out, path], check=True)
-    text = open(os.path.join(out, job + '.log')).read()
-    # the summary's relative difference (3 digits; the energies are printed with 5)
-    m = re.search(r'external work\s+(\S+) N mm, stored \+ dissipated\s+(\S+) N mm, relative difference\s+(\S+)',
-                  text)
-    w, e, rel = float(m.group(1)), float(m.group(2)), float(m.group(3))
+    # the run summary's energy balance (JOB.summary.json)
+    energy = outputs.read_summary(out, job)['energy']
+    w, e, rel = energy['external_work'], energy['stored_dissipated'], energy['relative_difference']
     print('%-8s dt = %-5g W = %.4e N mm, E + D = %.4e N mm, relative difference %.2e' % (kind, dt, w, e, rel))
     return rel
 

@@ -4,7 +4,7 @@
 start of the increment, the prescribed dofs at their start values, instead of evaluating the elements with the
 prescribed dofs already at their end values.
 
-Deck: an 8x4x2 block of 1 mm C3D8 elements (tools/bench_calculix.py block_deck, the benchmark block made small),
+Deck: an 8x4x2 block of 1 mm C3D8 elements (tools/ldfcz_tools/block_deck.py, the benchmark block made small),
 clamped at x = 0 and pulled by 0.1 mm per fixed increment at x = 8 (10 % strain of the element layer beside the
 loaded face, were the increment applied to the boundary nodes alone), EXTRAPOLATION=NO so that every increment
 starts from the converged state and carries its whole prescribed increment.
@@ -27,8 +27,7 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'tools'))
-from bench_calculix import block_deck  # noqa: E402
+from ldfcz_tools.block_deck import block_deck
 
 
 def fail(msg):

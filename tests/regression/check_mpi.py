@@ -27,6 +27,8 @@ import shutil
 import subprocess
 import sys
 
+from ldfcz_tools import outputs
+
 
 def fail(msg):
     print("FAIL: " + msg)
@@ -57,9 +59,11 @@ def job_files(out, deck):
     return os.path.join(out, job)
 
 
-def summary_counts(log):
-    m = re.search(r"increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+)", log)
-    return m.groups() if m else None
+def summary_counts(summary):
+    """Increments, attempts, cutbacks and Newton iterations of a run summary (None without one)."""
+    if summary is None:
+        return None
+    return tuple(summary["counters"][k] for k in ("increments", "attempts", "cutbacks", "iterations"))
 
 
 def sta_lines(path):
@@ -181,19 +185,19 @@ def check_trace(ref, procs, np_, nelem):
 
 
 def check_trace_tool(prefix, np_, t_slowest):
-    """tools/loop_trace.py on the distributed run's trace: its slowest process of each loop, summed from the rows
+    """benchmarks/loop_trace.py on the distributed run's trace: its slowest process of each loop, summed from the rows
     (4 digits each), is the closing summary's (summed in double precision): within 0.1 % and 1 ms."""
-    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "loop_trace.py")
+    tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "benchmarks", "loop_trace.py")
     p = subprocess.run([sys.executable, tool, prefix, "--pool", "0.1"], capture_output=True, text=True, timeout=120)
     if p.returncode != 0:
-        fail(f"-np {np_}: tools/loop_trace.py failed:\n{p.stdout}{p.stderr}")
+        fail(f"-np {np_}: benchmarks/loop_trace.py failed:\n{p.stdout}{p.stderr}")
     m = re.search(r"slowest process of each loop summed ([\d.]+) s", p.stdout)
     if not m or "a pool of 0.10" not in p.stdout:
-        fail(f"-np {np_}: tools/loop_trace.py printed no loop-by-loop balance or pool line:\n{p.stdout}")
+        fail(f"-np {np_}: benchmarks/loop_trace.py printed no loop-by-loop balance or pool line:\n{p.stdout}")
     got = float(m.group(1))
     if abs(got - t_slowest) > 1e-3 * t_slowest + 1e-3:
-        fail(f"-np {np_}: tools/loop_trace.py sums the slowest loops to {got} s, the summary to {t_slowest} s")
-    print(f"-np {np_}: tools/loop_trace.py: slowest process of each loop summed {got} s (summary {t_slowest} s)")
+        fail(f"-np {np_}: benchmarks/loop_trace.py sums the slowest loops to {got} s, the summary to {t_slowest} s")
+    print(f"-np {np_}: benchmarks/loop_trace.py: slowest process of each loop summed {got} s (summary {t_slowest} s)")
     if np_ >= 3:
         # --rerun pairs each process of one run with the same process of another: a trace against itself
         # correlates exactly (1.00 for every element class it holds)
@@ -201,8 +205,8 @@ def check_trace_tool(prefix, np_, t_slowest):
                            timeout=120)
         corr = re.findall(r"log seconds per call of (\w+) between the two runs: (\S+)", p.stdout)
         if p.returncode != 0 or not corr or any(v != "1.00" for _, v in corr):
-            fail(f"-np {np_}: tools/loop_trace.py --rerun of a trace against itself: {corr}\n{p.stdout}{p.stderr}")
-        print(f"-np {np_}: tools/loop_trace.py --rerun against itself: {corr}")
+            fail(f"-np {np_}: benchmarks/loop_trace.py --rerun of a trace against itself: {corr}\n{p.stdout}{p.stderr}")
+        print(f"-np {np_}: benchmarks/loop_trace.py --rerun against itself: {corr}")
 
 
 NUMBER = re.compile(r"^[-+]?\d+\.\d+E[-+]\d+$")
@@ -268,15 +272,17 @@ def main():
     if rc1 != want:
         fail(f"one process: exit {rc1}, expected {want}\n{text1[-3000:]}")
     base1 = job_files(ref_out, a.deck)
-    log1 = open(base1 + ".log").read()
+    summary1 = outputs.read_summary(ref_out, os.path.basename(base1))
+    log1 = open(base1 + ".log").read() if a.xit else ""   # the XIT message users read
     for np in a.np:
         out = os.path.join(a.out, f"np{np}")
         rc, text = run(a.exe, a.deck, out, np, a.user, a.extra, a.threads, trace_of(out))
         if rc != want:
             fail(f"-np {np}: exit {rc}, expected {want}\n{text[-3000:]}")
         base = job_files(out, a.deck)
-        log = open(base + ".log").read()
+        summary = outputs.read_summary(out, os.path.basename(base))
         if a.xit:
+            log = open(base + ".log").read()   # the XIT message users read
             m1 = re.findall(r"ldfcz: error: .*", log1)
             m = re.findall(r"ldfcz: error: .*", log)
             if not m1 or not m or m1[-1] != m[-1]:
@@ -290,32 +296,22 @@ def main():
                 fail(f"-np {np}: the element is rank 0's: the test needs it on another process")
             print(f"-np {np}: exit 2 everywhere, element on process {who[-1]}, message: {m[-1]}")
             continue
-        c1, c = summary_counts(log1), summary_counts(log)
+        c1, c = summary_counts(summary1), summary_counts(summary)
         if c1 is None or c != c1:
             fail(f"-np {np}: increments/attempts/cutbacks/iterations {c} against {c1} on one process")
-        if f"MPI processes {np}" not in log:
+        mpi = summary["mpi"]
+        if summary["processes"] != np or mpi is None or mpi["processes"] != np:
             fail(f"-np {np}: the summary does not report {np} processes")
         # the element loop's balance: the slowest process of each loop, summed over the loops, is at least the
         # largest process total (a sum of maxima bounds the maximum of the sums: both count each loop up to its
-        # first reduction) and at least the mean; allowed below: the printing to 1 ms (0.5 ms each) and the sums'
-        # rounding
-        m = re.search(r"element loop per process: max\s+([\d.]+) s, mean\s+([\d.]+) s", log)
-        m2 = re.search(r"element loop, slowest process of each loop summed:\s+([\d.]+) s, against the mean\s+([\d.]+)",
-                       log)
-        if not m or not m2:
-            fail(f"-np {np}: the summary lacks the element loop's balance lines")
-        t_max, t_slowest = float(m.group(1)), float(m2.group(1))
-        if t_slowest < t_max - 0.0011:
+        # first reduction) and at least the mean; allowed below: the sums' rounding (1 us)
+        t_max, t_slowest = mpi["element_loop_max_s"], mpi["element_loop_slowest_summed_s"]
+        if t_slowest < t_max - 1e-6:
             fail(f"-np {np}: slowest process of each loop summed {t_slowest} s < the largest process total {t_max} s")
         # rank 0's wait for the slowest process at the end of its loops is a part of its host communication: the
-        # two parts printed add up to the communication line's total (1 ms for printing each)
-        m3 = re.search(r"host communication of rank 0: waiting for the slowest process at the end of element loops"
-                       r"\s+([\d.]+) s, reductions, gathers and broadcasts\s+([\d.]+) s", log)
-        mc = re.search(r"communication of the host\s+([\d.]+) s", log)
-        if not m3 or not mc:
-            fail(f"-np {np}: the summary lacks rank 0's split of its communication")
-        wait, rest, comm = float(m3.group(1)), float(m3.group(2)), float(mc.group(1))
-        if wait < 0 or rest < 0 or abs(wait + rest - comm) > 0.002:
+        # two parts add up to the communication's total (to round-off)
+        wait, rest, comm = mpi["loop_end_wait_s"], mpi["reductions_s"], mpi["communication_s"]
+        if wait < 0 or rest < 0 or abs(wait + rest - comm) > 1e-9 * max(comm, 1.0):
             fail(f"-np {np}: waiting {wait} s + the rest {rest} s != the host communication {comm} s")
         s1, s = sta_lines(base1 + ".sta"), sta_lines(base + ".sta")
         if s1 != s:
@@ -354,10 +350,8 @@ def main():
             n = compare_dat(base1 + ".dat", base + ".dat", np)
             print(f"-np {np}: JOB.dat equal to the one-process run's ({n} printed values)")
         if a.trace:
-            m = re.search(r"(\d+) nodes, (\d+) elements", log1)
-            if not m:
-                fail("the log does not say how many elements the model has")
-            check_trace(read_trace(trace_of(ref_out), 1), read_trace(trace_of(out), np), np, int(m.group(2)))
+            check_trace(read_trace(trace_of(ref_out), 1), read_trace(trace_of(out), np), np,
+                        summary1["model"]["elements"])
             check_trace_tool(trace_of(out), np, t_slowest)
     if a.trace:
         # a trace that cannot be written: every process warns and the run goes on, its results unchanged

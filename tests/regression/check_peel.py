@@ -18,10 +18,7 @@ Exit status 0 when every assertion holds, 1 otherwise (each failure printed).
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, 'tools'))
-import peel_study  # noqa: E402
+from ldfcz_tools import peel_study
 
 # Tolerances (measured values in docs/scenes.md, Release and Debug builds give the same numbers):
 # - refinement: the steady force changes by 0.5-1 % from l_e = 20 to 10 um (and 0.2 % from 10 to 5 um); 3 % is

@@ -14,6 +14,8 @@ import re
 import subprocess
 import sys
 
+from ldfcz_tools import outputs
+
 
 def fail(msg):
     print('FAIL: ' + msg)
@@ -33,15 +35,10 @@ def run(a, out, *opts):
     if res.returncode != 0:
         fail('%s exited %d: %s' % (' '.join(cmd), res.returncode, res.stderr))
     rows = list(csv.DictReader(open(os.path.join(out, job + '.csv'))))
-    log = open(os.path.join(out, job + '.log')).read()
-    return rows, log
-
-
-def summary_int(log, pattern):
-    m = re.search(pattern, log, re.M)
-    if not m:
-        fail('summary line not found: ' + pattern)
-    return [float(g) for g in m.groups()]
+    summary = outputs.read_summary(out, job)
+    if summary is None:
+        fail('no run summary in ' + out)
+    return rows, summary
 
 
 def case_umat_uniaxial(a):
@@ -111,10 +108,9 @@ def case_newton_modes(a):
                 'auto': ['--newton', 'auto'], 'auto-symmetric': ['--newton', 'auto', '--factors', 'symmetric'],
                 'auto-single': ['--newton', 'auto', '--factors', 'single']}
     for mode, opts in variants.items():
-        rows, log = run(a, os.path.join(a.out, mode), *opts)
-        inc, att, cut, its, fac = summary_int(log, r'^increments (\d+), attempts (\d+), cutbacks (\d+), '
-                                                   r'Newton iterations (\d+), factorizations (\d+)')
-        res[mode] = (float(rows[-1]['TOP.RF3']), int(its), int(fac))
+        rows, summary = run(a, os.path.join(a.out, mode), *opts)
+        c = summary['counters']
+        res[mode] = (float(rows[-1]['TOP.RF3']), c['iterations'], c['factorizations'])
         print(mode, res[mode])
     rf = res['full'][0]
     for mode in ('modified', 'krylov', 'auto', 'auto-symmetric', 'auto-single'):
@@ -132,10 +128,10 @@ def case_opening_control(a):
     7: F <= 1/3 keeps >= 99% of phi dissipated). Without it this deck's largest increment is 0.34 delta; with
     F = 0.2 the summary must report <= 0.2, and the reaction stays that of the uncontrolled run within the Newton
     tolerance (rtol 5e-3: both runs follow the same reversible-in-loading law, only the increments differ)."""
-    rows0, log0 = run(a, os.path.join(a.out, 'free'))
-    rows1, log1 = run(a, os.path.join(a.out, 'controlled'), '--max-opening-increment', '0.2')
-    r0 = summary_int(log0, r'^largest cohesive opening increment / delta\s+([-\d.Ee+]+)')[0]
-    r1 = summary_int(log1, r'^largest cohesive opening increment / delta\s+([-\d.Ee+]+)')[0]
+    rows0, summary0 = run(a, os.path.join(a.out, 'free'))
+    rows1, summary1 = run(a, os.path.join(a.out, 'controlled'), '--max-opening-increment', '0.2')
+    r0 = summary0['accuracy']['max_opening_ratio']
+    r1 = summary1['accuracy']['max_opening_ratio']
     check('uncontrolled run exceeds 0.2 delta', r0 > 0.2, '%.4f' % r0)
     check('controlled run: largest opening increment <= 0.2 delta', r1 <= 0.2, '%.4f' % r1)
     check('controlled run takes more increments', len(rows1) > len(rows0), '%d vs %d' % (len(rows1), len(rows0)))
@@ -207,11 +203,10 @@ def case_extrapolation(a):
     """On a nonlinear deck with automatic increments (cohesive softening under a C3D8 block) the extrapolated and
     the non-extrapolated runs solve the same equations: the final reaction agrees within the Newton tolerance
     (R_n = 0.005 of the force scale: rtol 5e-3) and the extrapolated run takes no more Newton iterations in all."""
-    rows1, log1 = run(a, os.path.join(a.out, 'extrapolated'))
+    rows1, summary1 = run(a, os.path.join(a.out, 'extrapolated'))
     d_no = variant(a, 'deck_no', no_extrapolation)
-    rows0, log0 = run_deck(a, d_no, os.path.join(a.out, 'not_extrapolated'))
-    pat = r'^increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+)'
-    it1, it0 = summary_int(log1, pat)[3], summary_int(log0, pat)[3]
+    rows0, summary0 = run_deck(a, d_no, os.path.join(a.out, 'not_extrapolated'))
+    it1, it0 = summary1['counters']['iterations'], summary0['counters']['iterations']
     f1, f0 = float(rows1[-1]['TOP.RF3']), float(rows0[-1]['TOP.RF3'])
     check('final reaction unchanged (rtol 5e-3)', abs(f1 - f0) <= 5e-3 * abs(f0), '%.8g vs %.8g' % (f1, f0))
     check('Newton iterations: extrapolated <= not extrapolated', it1 <= it0, '%d vs %d' % (it1, it0))

@@ -17,8 +17,8 @@
 3. restarts from DIR/cut/JOB.rst into DIR/cut (ldfcz --restart-from JOB.rst DECK);
 4. checks: exit status 0 (or --expect-exit); JOB.csv has the reference's header and number of rows; every value
    within --rel relative (and --atol absolute) of the reference's (--rel 0: bit for bit, the VTU frames' contents
-   too); the VTU frame count and JOB.pvd time stamps are the reference's; the summary's energy balance line is the
-   reference's. Prints the largest relative difference and whether the CSV is bit-identical (same text), which it
+   too); the VTU frame count and JOB.pvd time stamps are the reference's; the run summary's energy balance
+   (JOB.summary.json) is the reference's. Prints the largest relative difference and whether the CSV is bit-identical (same text), which it
    is when the restart repeats the uninterrupted arithmetic.
 5. with --other-deck: a restart of DECK's restart file with DECK2 must be refused (exit 2, "different model").
 Also refused (exit 2): a truncated restart file, a file that is not a restart file, one of another format version
@@ -50,6 +50,8 @@ import struct
 import subprocess
 import sys
 import time
+
+from ldfcz_tools import outputs
 
 
 def fail(msg):
@@ -83,9 +85,17 @@ def frame_times(path):
     return re.findall(r'timestep="\s*([^"]+)"', open(path).read())
 
 
-def energy_line(path):
-    lines = [l for l in open(path, errors="replace") if l.startswith("energy balance")]
-    return lines[-1].strip() if lines else ""
+def summary_energy(outdir, job):
+    """The energy balance of the run summary (external work, stored + dissipated; JOB.summary.json)."""
+    doc = outputs.read_summary(outdir, job)
+    return (doc["energy"]["external_work"], doc["energy"]["stored_dissipated"]) if doc else None
+
+
+def stopped_by(outdir, job, sig):
+    """The run summary says the run was stopped by signal sig after its closing summary was complete."""
+    doc = outputs.read_summary(outdir, job)
+    return doc is not None and doc["status"] == "stopped_by_signal" and doc["signal"] == sig and \
+        doc["energy"]["external_work"] is not None
 
 
 def interrupt(a, mode, base, run_deck, write_opt, out, cut, job):
@@ -114,8 +124,8 @@ def interrupt(a, mode, base, run_deck, write_opt, out, cut, job):
         log = open(os.path.join(cut, job + ".log"), errors="replace").read()
         if "SIGUSR1 received: stopped after increment" not in log:
             fail("JOB.log does not report the stop by SIGUSR1 (did the run end first? choose a smaller --stop)")
-        if not energy_line(os.path.join(cut, job + ".log")):
-            fail("no closing summary (energy balance line) after SIGUSR1")
+        if not stopped_by(cut, job, "SIGUSR1"):
+            fail("no closing summary (JOB.summary.json, status stopped_by_signal) after SIGUSR1")
         for r in range(a.np):
             if not os.path.exists(rst + ".%dof%d" % (r, a.np)):
                 fail("no restart file of process %d after SIGUSR1" % r)
@@ -151,8 +161,8 @@ def interrupt(a, mode, base, run_deck, write_opt, out, cut, job):
             log = open(os.path.join(cut, job + ".log"), errors="replace").read()
             if "SIGTERM received: stopped after increment" not in log:
                 fail("JOB.log does not report the stop by SIGTERM")
-            if not energy_line(os.path.join(cut, job + ".log")):
-                fail("no closing summary (energy balance line) after SIGTERM")
+            if not stopped_by(cut, job, "SIGTERM"):
+                fail("no closing summary (JOB.summary.json, status stopped_by_signal) after SIGTERM")
             if "# stopped by SIGTERM" not in open(os.path.join(cut, job + ".sta"), errors="replace").read():
                 fail("JOB.sta does not note the stop by SIGTERM")
             print("stopped by SIGTERM with %d CSV rows seen: exit 143, closing summary written" % rows)
@@ -278,10 +288,13 @@ def compare(a, full, cut, job, mode):
         for f in vtu_ref:
             if open(os.path.join(full, f), "rb").read() != open(os.path.join(cut, f), "rb").read():
                 fail("VTU frame %s differs from the uninterrupted run's" % f)
-    e_ref = energy_line(os.path.join(full, job + ".log"))
-    e_got = energy_line(os.path.join(cut, job + ".log"))
-    if e_ref != e_got:
-        fail("energy balance differs:\n%s\n%s" % (e_got, e_ref))
+    # the summary's energy balance: the external work continues over the restart, the stored and dissipated
+    # energy is summed anew; both the reference's within --rel and --atol (bit for bit with 0)
+    e_ref, e_got = summary_energy(full, job), summary_energy(cut, job)
+    if e_ref is None or e_got is None or any(
+            (x is None) != (y is None) or (x is not None and abs(x - y) > a.rel * abs(y) + a.atol)
+            for x, y in zip(e_got, e_ref)):
+        fail("energy balance differs: %s against %s uninterrupted" % (e_got, e_ref))
     names = ([job + ".dat"] if a.dat else []) + [f for f in (a.compare_files or "").split(",") if f]
     for name in names:
         r, g = os.path.join(full, name), os.path.join(cut, name)
@@ -295,7 +308,7 @@ def compare(a, full, cut, job, mode):
                  % (name, os.path.getsize(g), os.path.getsize(r)))
         same_words(r, g, a.rel, a.atol)
         print("%s: %s within %.1e relative + %.1e (not bit-identical)" % (mode, name, a.rel, a.atol))
-    print("%s: frames %d, %s" % (mode, len(ft_ref), e_ref))
+    print("%s: frames %d, energy balance (external work, stored + dissipated) %r" % (mode, len(ft_ref), e_ref))
 
 
 def main():

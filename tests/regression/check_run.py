@@ -15,6 +15,8 @@ import re
 import subprocess
 import sys
 
+from ldfcz_tools import outputs
+
 PHI, DELTA = 0.2, 3.679e-3  # LDF cohesive properties of the decks (N/mm, mm)
 
 
@@ -125,11 +127,10 @@ def case_cohesive_block(d, job):
     # energy balance of the closing summary: the external work (trapezoidal in the reactions) against the UEL's
     # ENERGY(2) + ENERGY(4) plus the block's SSE. With ~25 increments along a smooth path the trapezoidal error is
     # O(h^2) ~ 1e-3: bound 1e-2.
-    with open(os.path.join(d, job + ".log")) as f:
-        m = re.search(r"energy balance: external work\s+(\S+) N mm, stored \+ dissipated\s+(\S+) N mm", f.read())
-    if not m:
-        fail("no energy balance in the log")
-    close("energy: stored + dissipated vs external work", float(m.group(2)), float(m.group(1)), 1e-2)
+    energy = outputs.get(outputs.read_summary(d, job) or {}, "energy")
+    if not energy or energy["stored_dissipated"] is None:
+        fail("no energy balance in the run summary")
+    close("energy: stored + dissipated vs external work", energy["stored_dissipated"], energy["external_work"], 1e-2)
 
 
 # homogeneous displacement gradients and interior nodes of the patch decks (tests/regression/make_single_decks.py)

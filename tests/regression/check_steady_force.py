@@ -1,17 +1,14 @@
 #!/usr/bin/python3
-"""Unit checks of tools/steady_force.py on synthetic peel curves with known answers (CTest steady_force).
+"""Unit checks of tools/ldfcz_tools/steady_force.py on synthetic peel curves with known answers (CTest steady_force).
 
 Every curve: pull u in [0, 0.1] mm sampled unevenly (bunched samples imitate cutbacks, which must not weight the
 mean), front history d(u) = 1.5 (u - 0.01) mm after a start-up of 10 um, l_e = 0.005 mm, fine region 0.2 mm.
 Exit status 0 when every assertion holds.
 """
 import math
-import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), 'tools'))
-import steady_force as sf  # noqa: E402
+from ldfcz_tools import steady_force as sf
 
 LE, FINE, F0 = 0.005, 0.2, 1.2
 BAD = []

@@ -22,6 +22,8 @@ import shutil
 import subprocess
 import sys
 
+from ldfcz_tools.block_deck import block_deck
+
 
 def fail(msg):
     print("FAIL: " + msg)
@@ -52,17 +54,15 @@ def reaction_difference(r1, r2, what):
 
 def blas_threads_check(exe, out):
     """Every factorization on 2 OpenBLAS threads (LDFCZ_BLAS_MIN_FLOPS=0: host/linalg/blas_threads.f90) on a
-    16x16x8 C3D8 block (fronts large enough for OpenBLAS to split its calls; the deck of tools/bench_calculix.py,
+    16x16x8 C3D8 block (fronts large enough for OpenBLAS to split its calls; the deck of tools/ldfcz_tools/block_deck.py,
     2 increments) against 1 thread: the same increments, every reaction within 1e-10 of the largest one (a
     threaded BLAS sums in another order: 3e-15 relative observed on the pull reaction; the zero components carry
     the solve's round-off of the force scale), and JOB.log says so. Skipped when the BLAS is not OpenBLAS."""
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-    import bench_calculix
     d0 = os.path.join(out, "blas")
     os.makedirs(d0, exist_ok=True)
     deck = os.path.join(d0, "blk.inp")
     with open(deck, "w") as f:
-        f.write(bench_calculix.block_deck(2, 0.1, nx=16, ny=16, nz=8))
+        f.write(block_deck(2, 0.1, nx=16, ny=16, nz=8))
     tables, logs = {}, {}
     for t, flops in ((1, None), (2, "0")):
         d = os.path.join(d0, "t%d" % t)

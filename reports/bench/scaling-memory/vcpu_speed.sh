@@ -1,5 +1,5 @@
 #!/bin/bash
-# The speed of each core (vCPU) of a machine, alone and with the others busy: tools/bench_leonov_calls.f90 (the
+# The speed of each core (vCPU) of a machine, alone and with the others busy: benchmarks/bench_leonov_calls.f90 (the
 # Leonov return, microseconds per plastic call, CPU time) pinned to one core with taskset, one at a time, then on
 # 16, 8 and 2 cores at once. Equal figures: equal cores; figures that differ with the same work on every core: the
 # machine gives its cores unequal speed (what an element loop split in equal parts then waits for).

@@ -4,13 +4,13 @@
 Each member is the 3D quarter peel scene of tools/peel_deck.py (PET coating C3D8 + Leonov UMAT on a steel
 substrate C3D8 *ELASTIC, LDF cohesive layer U1 between them) with the paper's application discretisation (section 8:
 l_e = 2 um, 10 elements over the width, 3 over the coating thickness) and a growing fine region. A few increments of
-each are run with bin/ldfcz for every requested Newton variant; the closing summary of JOB.log is parsed.
+each are run with bin/ldfcz for every requested Newton variant; the figures come from JOB.summary.json.
 
 Prints and writes (reports/bench/ by default): bench.csv (one row per run), bench.md (table, fitted exponents, the
 estimate of the paper's application scene), bench.png (times per Newton iteration against DOFs; matplotlib through
 /usr/bin/python3 when present).
 
-  tools/bench_host.py --exe build-perf/bin/ldfcz [--fine 0.02 0.05 0.1 0.2] [--modes full krylov] [--threads 2]
+  benchmarks/bench_host.py --exe build-perf/bin/ldfcz [--fine 0.02 0.05 0.1 0.2] [--modes full krylov] [--threads 2]
 
 Time per Newton iteration = (assembly + factorization + solve) / iterations; the fitted exponent n of
 t = c DOF^n is the paper's Fig. 11d quantity (paper: n = 1.34 for the time of an increment).
@@ -20,29 +20,16 @@ import csv
 import json
 import math
 import os
-import re
 import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-
-SUMMARY_PATTERNS = {
-    'increments': r'^increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), factorizations (\d+)',
-    'dofs': r'^DOFs (\d+), free equations (\d+)',
-    'wall': r'^wall time\s+([\d.]+) s, CPU time\s+([\d.]+) s',
-    'split': r'^wall time split: assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s, '
-             r'output\s+([\d.]+) s',
-    'setup': r'^solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([\d.]+) s',
-    'krylov': r'GMRES solves (\d+) \((\d+) GMRES iterations, (\d+) refactorized\)',
-    'memory': r'^peak memory \(VmHWM\) (\d+) kB',
-}
-
+from ldfcz_tools import outputs
+from ldfcz_tools.paths import ROOT, TOOLS
 
 def peel_deck(args, fine, out, extra=()):
     """Write the deck of one family member with tools/peel_deck.py; returns its --info dictionary."""
-    gen = os.path.join(HERE, 'peel_deck.py')
+    gen = os.path.join(TOOLS, 'peel_deck.py')
     if not os.path.exists(gen):
         sys.exit('bench_host.py: tools/peel_deck.py is needed to generate the peel meshes')
     cmd = [sys.executable, gen, '--3d', '--le', str(args.le), '--ny', str(args.ny), '--nz', str(args.nz),
@@ -58,15 +45,6 @@ def peel_deck(args, fine, out, extra=()):
         if res.returncode != 0:
             sys.exit('bench_host.py: peel_deck.py failed: ' + res.stderr)
     return json.loads(res.stderr.strip().splitlines()[-1])
-
-
-def parse_log(path):
-    text = open(path).read()
-    r = {}
-    for key, pat in SUMMARY_PATTERNS.items():
-        m = re.search(pat, text, re.M)
-        r[key] = [float(g) for g in m.groups()] if m else None
-    return r
 
 
 def fit_exponent(xs, ys):
@@ -116,25 +94,25 @@ def main():
         for mode in args.modes:
             rdir = os.path.join(work, 'run_%g_%s' % (fine, mode))
             t0 = time.time()
-            logf = os.path.join(rdir, os.path.splitext(os.path.basename(deck))[0] + '.log')
-            if args.reuse and os.path.exists(logf):
+            job = os.path.splitext(os.path.basename(deck))[0]
+            if args.reuse and os.path.exists(outputs.summary_path(rdir, job)):
                 res = subprocess.CompletedProcess([], 0, '', '')
             else:
                 res = subprocess.run([args.exe, '--quiet', '--threads', str(args.threads), '--newton', mode,
                                       '--out', rdir, deck], capture_output=True, text=True)
             wall = time.time() - t0
-            s = parse_log(os.path.join(rdir, os.path.splitext(os.path.basename(deck))[0] + '.log'))
-            if s['increments'] is None:
+            s = outputs.read_summary(rdir, job)
+            if s is None or s['times']['wall_s'] is None:
                 print('run failed (exit %d): %s' % (res.returncode, res.stderr), file=sys.stderr)
                 continue
-            inc, att, cut, its, fac = s['increments']
-            asm, fct, sol, outp = s['split']
-            kry = s['krylov'] or [0, 0, 0]
-            row = dict(fine_mm=fine, mode=mode, dofs=int(s['dofs'][0]), equations=int(s['dofs'][1]),
-                       elements=info['elements'], exit=res.returncode, increments=int(inc), iterations=int(its),
-                       factorizations=int(fac), gmres_iterations=int(kry[1]), wall_s=s['wall'][0], cpu_s=s['wall'][1],
-                       assembly_s=asm, factor_s=fct, solve_s=sol, output_s=outp, setup_s=s['setup'][0],
-                       peak_mb=(s['memory'][0] / 1024.0 if s['memory'] else 0.0), run_s=wall)
+            c, t = s['counters'], s['times']
+            inc, its, fac = c['increments'], c['iterations'], c['factorizations']
+            asm, fct, sol, outp = t['element_loop_s'], t['factorization_s'], t['solve_s'], t['output_s']
+            row = dict(fine_mm=fine, mode=mode, dofs=s['model']['dofs'], equations=s['model']['equations'],
+                       elements=info['elements'], exit=s['exit_code'], increments=inc, iterations=its,
+                       factorizations=fac, gmres_iterations=c['gmres_iterations'], wall_s=t['wall_s'],
+                       cpu_s=t['cpu_s'], assembly_s=asm, factor_s=fct, solve_s=sol, output_s=outp,
+                       setup_s=t['solver_setup_s'], peak_mb=(s['memory']['peak_kb'] or 0) / 1024.0, run_s=wall)
             it = max(its, 1)
             row['t_iter_s'] = (asm + fct + sol) / it
             row['asm_iter_s'] = asm / it
@@ -161,10 +139,10 @@ def main():
     paper = peel_deck(args, args.paper_fine, os.path.join(work, 'paper_scene.inp'))
     ndof_mesh = paper['dofs']
     ndof_paper = args.paper_dofs
-    lines = ['# ldfcz host benchmark (tools/bench_host.py)', '',
-             'Command: `%s`' % ' '.join(['tools/bench_host.py'] + sys.argv[1:]), '',
+    lines = ['# ldfcz host benchmark (benchmarks/bench_host.py)', '',
+             'Command: `%s`' % ' '.join(['benchmarks/bench_host.py'] + sys.argv[1:]), '',
              'Family: 3D quarter peel scene of tools/peel_deck.py, l_e = %g mm, n_y = %d, n_z = %d, fine region '
-             '%s mm; %d increments of %g mm each, `--threads %d`; times are wall seconds from the JOB.log summary.'
+             '%s mm; %d increments of %g mm each, `--threads %d`; times are wall seconds from the run summary (JOB.summary.json).'
              % (args.le, args.ny, args.nz, ', '.join('%g' % v for v in args.fine), args.increments, args.du,
                 args.threads), '',
              '| fine (mm) | Newton | DOFs | increments | iterations | factorizations | GMRES its | t/iteration (s) '

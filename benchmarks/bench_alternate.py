@@ -20,31 +20,31 @@ seconds from the start) has passed; the pair under way is completed. Each run ke
 starts without factors).
 
 Records per run: the wall time of its segments summed against the pull (LOAD.U1 of JOB.csv, sampled every 2 s:
-DIR/progress_serial.csv, DIR/progress_mpi.csv) and each segment's JOB.log (DIR/RUN/log_NN.txt). The report: wall
-time at equal pull of the two runs and their ratio, and each run's time split summed over its segments (element
-loop, factorization, solve, the host's communication on rank 0) with its mean cost of a Leonov element call, and,
+DIR/progress_serial.csv, DIR/progress_mpi.csv) and each segment's JOB.summary.json (DIR/RUN/summary_NN.json). The
+report: wall time at equal pull of the two runs and their ratio, and each run's time split summed over its segments
+(element loop, factorization, solve, the host's communication on rank 0) with its mean cost of a Leonov element
+call, and,
 for the default deck, the pull and wall time at which each run's field frames show 1.0 mm of delamination (the
 paper's application measure; the front found as tools/peel_study.py finds it, interpolated between frames).
 
 Defaults: the deck of `tools/peel_study.py application` generated into DIR (tools/peel_deck.py), its solver options
 (`--newton auto --max-opening-increment 0.33 --max-plastic-increment 1.0 --factors symmetric-single`), serial
 build/bin/ldfcz with 2 threads, build-mpi/bin/ldfcz under `mpirun -np 2 --bind-to none` with 1 thread each.
-Python standard library only (tools/peel_study.py's CSV and VTU front readers).
+Python standard library only (tools/ldfcz_tools: the run summary, peel_study's CSV and VTU front readers).
 """
 import argparse
 import csv
 import glob
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, 'tools'))
-from peel_study import frame_front, last_u1  # noqa: E402  (a frame's front; LOAD.U1 of the last CSV row)
+from ldfcz_tools import outputs
+from ldfcz_tools.paths import ROOT
+from ldfcz_tools.peel_study import frame_front, last_u1  # a frame's front; LOAD.U1 of the last CSV row
 
 GEN = ['--3d', '--rigid-substrate', '--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.001',
        '--dgamma-max', '1.0', '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72',
@@ -69,23 +69,15 @@ def wall_at(prog, u):
 
 
 def segment_summary(path):
-    """Times of one segment (JOB.log of a run that started or restarted: its times are its own) and the counters
-    at its end (they continue over a restart)."""
-    text = open(path, errors='replace').read().split('=== ldfcz summary ===')[-1]
-    out = {}
-    m = re.search(r'increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), '
-                  r'factorizations (\d+)', text)
-    out['inc'], out['att'], out['cut'], out['its'], out['fac'] = map(int, m.groups())
-    m = re.search(r'\((\d+) GMRES iterations', text)
-    out['gmres'] = int(m.group(1)) if m else 0
-    out['wall'] = float(re.search(r'wall time\s+([\d.]+) s', text).group(1))
-    m = re.search(r'assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s', text)
-    out['asm'], out['fact'], out['solve'] = map(float, m.groups())
-    m = re.search(r'communication of the host\s+([\d.]+) s', text)
-    out['comm'] = float(m.group(1)) if m else 0.0
-    m = re.search(r'UMAT continuum\s+([\d.]+) \(\s*([\d.Ee+]+)\)', text)
-    out['umat_us'], out['umat_calls'] = (float(m.group(1)), float(m.group(2))) if m else (0.0, 0.0)
-    return out
+    """Times of one segment (the run summary of a run that started or restarted: its times are its own) and the
+    counters at its end (they continue over a restart)."""
+    doc = outputs.read_summary_file(path)
+    c, t = doc['counters'], doc['times']
+    umat = doc['element_cost']['umat_continuum']
+    return {'inc': c['increments'], 'att': c['attempts'], 'cut': c['cutbacks'], 'its': c['iterations'],
+            'fac': c['factorizations'], 'gmres': c['gmres_iterations'], 'wall': t['wall_s'],
+            'asm': t['element_loop_s'], 'fact': t['factorization_s'], 'solve': t['solve_s'],
+            'comm': t['communication_s'], 'umat_us': umat['us_per_call'] or 0.0, 'umat_calls': umat['calls']}
 
 
 def front_info():
@@ -101,18 +93,18 @@ def front_history(work, run, info):
     """(pull mm, delaminated mm) of every field frame of a run (JOB.pvd: a .vtu, or a .pvtu whose pieces are
     JOB_NNNN_R.vtu), the front found as tools/peel_study.py finds it, also written to DIR/front_RUN.csv; without
     the frames (a copy of the records only) that file is read instead. [] unless the run is of the default deck
-    (its node and element counts in the log)."""
-    logs = sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))
+    (its node and element counts in the first segment's summary)."""
+    summaries = sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))
     pvds = glob.glob(os.path.join(work, run, '*.pvd'))
     record = os.path.join(work, 'front_%s.csv' % run)
     if not pvds and os.path.exists(record):
         with open(record) as fh:
             return [(float(r['U1_mm']), float(r['delaminated_mm'])) for r in csv.DictReader(fh)]
-    if not logs or len(pvds) != 1 or '%d nodes, %d elements' % (info['nodes'], info['elements']) not in \
-            open(logs[0], errors='replace').read():
+    model = outputs.read_summary_file(summaries[0])['model'] if summaries else {}
+    if len(pvds) != 1 or (model.get('nodes'), model.get('elements')) != (info['nodes'], info['elements']):
         return []
     hist = []
-    for t, f in re.findall(r'timestep="\s*([0-9.Ee+-]+)"[^>]*file="([^"]+)"', open(pvds[0]).read()):
+    for t, f in outputs.pvd_frames(pvds[0]):
         path = os.path.join(work, run, f)
         pieces = sorted(glob.glob(path[:-5] + '_*.vtu')) if f.endswith('.pvtu') else [path]
         x = frame_front(pieces, info['delta_mm']) if pieces and all(map(os.path.exists, pieces)) else None
@@ -151,7 +143,7 @@ def report(work, delamination=1.0):
             '| wall (s) | element loop (s) | factorization (s) | solve (s) | host communication (s) | Leonov call '
             '(us, mean) |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     for run in RUNS:
-        segs = [segment_summary(f) for f in sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))]
+        segs = [segment_summary(f) for f in sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))]
         if not segs:
             continue
         tot = {k: sum(s[k] for s in segs) for k in ('wall', 'asm', 'fact', 'solve', 'comm')}
@@ -174,7 +166,7 @@ def report(work, delamination=1.0):
                 '| run | pull (um) | wall (s) | wall (h) |', '|---|---|---|---|'] + rows
     out += ['', 'Leonov call per segment (us; the machine speed each segment met): ' + '; '.join(
         '%s %s' % (run, ', '.join('%.1f' % segment_summary(f)['umat_us']
-                                  for f in sorted(glob.glob(os.path.join(work, run, 'log_*.txt')))))
+                                  for f in sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))))
         for run in RUNS)]
     return '\n'.join(out) + '\n'
 
@@ -235,10 +227,10 @@ def main():
     for run in RUNS:
         d = os.path.join(a.work, run)
         if a.resume:
-            # the segments so far (one JOB.log copy each) and the wall time summed over them
-            segs = len(glob.glob(os.path.join(d, 'log_*.txt')))
+            # the segments so far (one copy of JOB.summary.json each) and the wall time summed over them
+            segs = len(glob.glob(os.path.join(d, 'summary_*.json')))
             if segs == 0 or not glob.glob(os.path.join(d, job + '.rst*')):     # JOB.rst, or JOB.rst.KofN per rank
-                sys.exit('bench_alternate.py: nothing to resume in %s (no log_NN.txt or no %s.rst)' % (d, job))
+                sys.exit('bench_alternate.py: nothing to resume in %s (no summary_NN.json or no %s.rst)' % (d, job))
             state[run] = {'wall': progress(a.work, run)[-1][0], 'seg': segs}
             continue
         shutil.rmtree(d, ignore_errors=True)
@@ -282,15 +274,15 @@ def main():
                     prog.write('%.2f,%.6g\n' % (st['wall'], u))
         if p.returncode not in (0, 3):
             # a failed segment leaves no trace that a --resume would count: its progress rows are dropped, its
-            # JOB.log is not kept as a segment (the console file says why it failed)
+            # summary is not kept as a segment (the console file says why it failed)
             with open(prog_path, 'r+') as prog:
                 prog.truncate(prog_size)
             log.write('%s %s segment %d: failed, exit %d (not counted)\n' % (time.strftime('%H:%M:%S'), run,
                                                                             st['seg'], p.returncode))
             log.flush()
             return p.returncode
-        if os.path.exists(os.path.join(d, job + '.log')):
-            shutil.copy(os.path.join(d, job + '.log'), os.path.join(d, 'log_%02d.txt' % st['seg']))
+        if os.path.exists(outputs.summary_path(d, job)):
+            shutil.copy(outputs.summary_path(d, job), os.path.join(d, 'summary_%02d.json' % st['seg']))
         log.write('%s %s segment %d: exit %d, %.1f s, %.1f s in all, pull %.6g mm, load %.2f\n' % (
             time.strftime('%H:%M:%S'), run, st['seg'], p.returncode, time.time() - t0, st['wall'], u,
             os.getloadavg()[0]))

@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 """Do the element loop's idle OpenMP workers take CPU during the (sequential) MUMPS factorization? (issue 20)
 
-Runs ldfcz on a deck (default: the benchmark block of tools/bench_calculix.py with 2 increments of 0.1 mm, 52 767
-equations) in several configurations (threads and OpenMP environment), and samples every thread's CPU time from
+Runs ldfcz on a deck (default: the benchmark block of bench_calculix.py, tools/ldfcz_tools/block_deck.py, with 2
+increments of 0.1 mm, 52 767 equations) in several configurations (threads and OpenMP environment), and samples every thread's CPU time from
 /proc/PID/task/TID/stat every 0.1 s. Reported per run: wall and CPU time of the run, the closing summary's
 assembly / factorization / solve wall times, and the CPU time of each thread (main thread first). A worker that
 spins beside the factorization shows a CPU time near assembly + factorization; one that sleeps, near assembly
 (its share of the element loop).
 
-  /usr/bin/python3 tools/bench_omp_wait.py --exe build/bin/ldfcz --repeat 2 \\
+  /usr/bin/python3 benchmarks/bench_omp_wait.py --exe build/bin/ldfcz --repeat 2 \\
       --config "t1=-t 1" --config "t2=-t 2" --config "t2-active=-t 2" --env t2-active=OMP_WAIT_POLICY=active \\
       --config "t2-passive=-t 2" --env t2-passive=OMP_WAIT_POLICY=passive
 
@@ -16,7 +16,6 @@ Not a test (minutes); the figures are in docs/performance.md.
 """
 import argparse
 import os
-import re
 import shlex
 import statistics
 import subprocess
@@ -24,8 +23,9 @@ import sys
 import threading
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_calculix import block_deck, summary_split  # noqa: E402
+from bench_calculix import summary_split
+from ldfcz_tools import outputs
+from ldfcz_tools.block_deck import block_deck
 
 TICK = os.sysconf('SC_CLK_TCK')
 
@@ -68,10 +68,9 @@ def run(exe, args, env, wd, deck):
     if rc != 0:
         sys.exit('bench_omp_wait: ldfcz exited %d' % rc)
     job = os.path.splitext(os.path.basename(deck))[0]
-    log = open(os.path.join(wd, job + '.log')).read()
-    split = summary_split(log)
-    m = re.search(r'wall time\s+([0-9.]+) s, CPU time\s+([0-9.]+) s', log)
-    split['wall'], split['cpu'] = float(m.group(1)), float(m.group(2))
+    doc = outputs.read_summary(wd, job)
+    split = summary_split(doc)
+    split['wall'], split['cpu'] = doc['times']['wall_s'], doc['times']['cpu_s']
     threads = [last[t][1] for t in sorted(last)]   # the main thread has the lowest id
     return wall, split, threads
 
@@ -117,7 +116,7 @@ def main():
                                                 ' '.join('%.1f' % t for t in thr), rows[-1]['load']), flush=True)
     if a.md:
         out = ['# Idle OpenMP workers beside the MUMPS factorization', '',
-               '`/usr/bin/python3 tools/bench_omp_wait.py %s`' % shlex.join(sys.argv[1:]), '',
+               '`/usr/bin/python3 benchmarks/bench_omp_wait.py %s`' % shlex.join(sys.argv[1:]), '',
                'Median of %d repeats [min-max]. Thread CPU: seconds of each thread of the process (main first; '
                'OpenBLAS and MUMPS run on the main thread, the element loop on all OpenMP threads).' % a.repeat, '',
                '| configuration | options | environment | wall (s) | CPU (s) | assembly (s) | factorization (s) | '

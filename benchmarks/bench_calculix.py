@@ -14,7 +14,7 @@ ldfcz also the closing summary's assembly / factorization / solve split. The rep
 spread of the repeats, so the noise of a shared machine shows.
 
   tools/setup.sh bench      (Release build and calculix-ccx)
-  /usr/bin/python3 tools/bench_calculix.py --exe build/bin/ldfcz --threads 1 2 --repeat 3 \\
+  /usr/bin/python3 benchmarks/bench_calculix.py --exe build/bin/ldfcz --threads 1 2 --repeat 3 \\
       --md reports/bench/calculix.md
 
 Not a test: a run takes minutes. Threads: ldfcz -t N, CalculiX OMP_NUM_THREADS=N (and CCX_NPROC_STIFFNESS /
@@ -23,7 +23,6 @@ CCX_NPROC_EQUATION_SOLVER, which ccx 2.20 reads before OMP_NUM_THREADS).
 import argparse
 import json
 import os
-import re
 import shlex
 import resource
 import shutil
@@ -33,47 +32,8 @@ import sys
 import threading
 import time
 
-NX, NY, NZ = 40, 40, 10     # elements along x, y, z (1 mm each) of the benchmark block
-
-
-def block_deck(increments, du, nx=NX, ny=NY, nz=NZ, nlgeom=True, extrapolation=None):
-    """The deck text: an nx x ny x nz block of 1 mm C3D8 elements, clamped at x = 0, increments fixed increments of
-    du mm of pull on the face x = nx (u2 = u3 = 0 there). extrapolation: None (the default, LINEAR) or 'NO'.
-    (Also the deck of the test deck_first_iteration, tests/regression/check_first_iteration.py.)"""
-    def node_id(i, j, k):
-        return 1 + i + (nx + 1) * (j + (ny + 1) * k)
-    lines = ['*HEADING', '%dx%dx%d C3D8 elastic block, clamped at x=0, pulled at x=%d (tools/bench_calculix.py)'
-             % (nx, ny, nz, nx), '*NODE, NSET=NALL']
-    for k in range(nz + 1):
-        for j in range(ny + 1):
-            for i in range(nx + 1):
-                lines.append('%d, %.1f, %.1f, %.1f' % (node_id(i, j, k), i, j, k))
-    lines.append('*ELEMENT, TYPE=C3D8, ELSET=EALL')
-    e = 0
-    for k in range(nz):
-        for j in range(ny):
-            for i in range(nx):
-                e += 1
-                n = [node_id(i, j, k), node_id(i + 1, j, k), node_id(i + 1, j + 1, k), node_id(i, j + 1, k),
-                     node_id(i, j, k + 1), node_id(i + 1, j, k + 1), node_id(i + 1, j + 1, k + 1),
-                     node_id(i, j + 1, k + 1)]
-                lines.append('%d, %s' % (e, ', '.join(map(str, n))))
-
-    def nset(name, i):
-        ids = [node_id(i, j, k) for k in range(nz + 1) for j in range(ny + 1)]
-        out = ['*NSET, NSET=%s' % name]
-        for a in range(0, len(ids), 16):
-            out.append(', '.join(map(str, ids[a:a + 16])))
-        return out
-    lines += nset('FIXED', 0) + nset('LOAD', nx)
-    step = '*STEP, NLGEOM=%s, INC=%d' % ('YES' if nlgeom else 'NO', increments + 10)
-    if extrapolation:
-        step += ', EXTRAPOLATION=%s' % extrapolation
-    lines += ['*MATERIAL, NAME=STEEL', '*ELASTIC', '210000., 0.3', '*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL',
-              '*BOUNDARY', 'FIXED, 1, 3, 0.', 'LOAD, 2, 3, 0.', step, '*STATIC, DIRECT',
-              '1.0, %d.0' % increments, '*BOUNDARY', 'LOAD, 1, 1, %.6g' % (du * increments),
-              '*NODE PRINT, NSET=LOAD, TOTALS=YES', 'RF', '*END STEP']
-    return '\n'.join(lines) + '\n'
+from ldfcz_tools import outputs
+from ldfcz_tools.block_deck import block_deck
 
 
 class StaWatch:
@@ -142,17 +102,12 @@ def ccx_increments(stamps):
     return out
 
 
-def summary_split(log_text):
-    """Assembly, factorization, solve and set-up seconds, factorizations and CPU time from ldfcz's closing summary."""
-    vals = {}
-    m = re.search(r'wall time split: assembly\s+([0-9.]+) s, factorization\s+([0-9.]+) s, solve\s+([0-9.]+) s',
-                  log_text)
-    vals['assembly'], vals['factorization'], vals['solve'] = (float(x) for x in m.groups())
-    m = re.search(r'solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([0-9.]+) s', log_text)
-    vals['setup'] = float(m.group(1))
-    m = re.search(r'factorizations (\d+)', log_text)
-    vals['factorizations'] = int(m.group(1))
-    return vals
+def summary_split(doc):
+    """Assembly, factorization, solve and set-up seconds and the factorizations of ldfcz's run summary
+    (JOB.summary.json)."""
+    t = doc['times']
+    return {'assembly': t['element_loop_s'], 'factorization': t['factorization_s'], 'solve': t['solve_s'],
+            'setup': t['solver_setup_s'], 'factorizations': doc['counters']['factorizations']}
 
 
 def load_avg():
@@ -200,8 +155,7 @@ def main():
                     cmd = [exe, '-q', '-t', str(nt)] + a.ldfcz[prog].split() + ['block.inp']
                     wall, cpu, stamps, _ = run_timed(cmd, wd, env, os.path.join(wd, 'block.sta'))
                     incs = ldfcz_increments(stamps)
-                    with open(os.path.join(wd, 'block.log')) as f:
-                        split = summary_split(f.read())
+                    split = summary_split(outputs.read_summary(wd, 'block'))
                 else:
                     env.update(CCX_NPROC_STIFFNESS=str(nt), CCX_NPROC_EQUATION_SOLVER=str(nt),
                                CCX_NPROC_RESULTS=str(nt))
@@ -229,7 +183,7 @@ def write_md(a, rows):
     def med(xs):
         return statistics.median(xs)
     out = ['# ldfcz against CalculiX 2.20: the 40x40x10 C3D8 elastic NLGEOM block', '',
-           'Written by `/usr/bin/python3 tools/bench_calculix.py %s` (see the tool\'s docstring for the deck).'
+           'Written by `/usr/bin/python3 benchmarks/bench_calculix.py %s` (see the tool\'s docstring for the deck).'
            % shlex.join(sys.argv[1:]), '',
            'Per increment: the wall time between the increment\'s line in JOB.sta and the previous one (the first '
            'increment from the program\'s start: it includes reading the deck and the set-up). "later" is the median '

@@ -6,8 +6,8 @@
 1. Material point: runs every decks/material/*.txt with BIN/material_point (output to a scratch directory) and
    reports the wall time of each case (minimum over the repeats).
 2. Element loop: generates the small 3D quarter peel deck `tools/peel_deck.py --3d --u-total U` (2388 equations,
-   216 C3D8 Leonov + 320 C3D8 steel + 64 cohesive elements), runs `BIN/ldfcz -t T -q` on it and reads the closing
-   summary of JOB.log: Newton iterations and the "assembly" wall time (element loop and sparse assembly), minimum
+   216 C3D8 Leonov + 320 C3D8 steel + 64 cohesive elements), runs `BIN/ldfcz -t T -q` on it and reads the run
+   summary (JOB.summary.json): Newton iterations and the "assembly" wall time (element loop and sparse assembly), minimum
    over the repeats. OPENBLAS_NUM_THREADS=1 keeps MUMPS' BLAS threads from spinning on the shared cores.
 With --baseline the same runs are made with the other build and the table gives the speed-up and the largest
 difference of the results (material-point stress curves: max |sigma - sigma_baseline| in MPa; peel: max relative
@@ -18,13 +18,13 @@ import argparse
 import csv
 import glob
 import os
-import re
 import subprocess
 import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from ldfcz_tools import outputs
+from ldfcz_tools.paths import ROOT
 
 
 def run_material(binary, deck, out_csv):
@@ -44,10 +44,8 @@ def run_peel(binary, deck, outdir, threads):
     t0 = time.perf_counter()
     subprocess.run([binary, "-t", str(threads), "-q", "-o", outdir, deck], check=True, env=env)
     wall = time.perf_counter() - t0
-    log = open(os.path.join(outdir, os.path.splitext(os.path.basename(deck))[0] + ".log")).read()
-    its = int(re.search(r"Newton iterations (\d+)", log).group(1))
-    asm = float(re.search(r"wall time split: assembly\s+([0-9.eE+-]+) s", log).group(1))
-    return wall, its, asm
+    doc = outputs.read_summary(outdir, os.path.splitext(os.path.basename(deck))[0])
+    return wall, doc["counters"]["iterations"], doc["times"]["element_loop_s"]
 
 
 def peel_force(outdir, deck):

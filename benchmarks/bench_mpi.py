@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Distributed against threaded on this machine: the 3D quarter peel scene of tools/peel_deck.py (the family of
-tools/bench_host.py: PET coating C3D8 + Leonov UMAT on a C3D8 steel substrate, LDF cohesive layer, l_e = 2 um, 10
+bench_host.py: PET coating C3D8 + Leonov UMAT on a C3D8 steel substrate, LDF cohesive layer, l_e = 2 um, 10
 elements over the width, 3 over the coating) and, with --application, the paper's application mesh (section 8:
 rigid substrate, fine region over 1.05 mm; docs/performance.md), run for a few increments by the LDFCZ_MPI build
 of ldfcz as
@@ -23,7 +23,7 @@ peak memory of a process and the load average before the run; writes the table a
 memory per process against ranks and DOFs, with its prediction for the full-width specimen) to OUT/bench_mpi.md.
 
   cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DLDFCZ_MPI=ON && cmake --build build-mpi -j2 --target ldfcz
-  tools/bench_mpi.py --fine 0.02 0.05 --increments 3 --yield-idle --application --orderings pord amf
+  benchmarks/bench_mpi.py --fine 0.02 0.05 --increments 3 --yield-idle --application --orderings pord amf
 
 With --scaling R1 R2 ... instead (strong scaling, for a machine with more cores): 1 rank x 1 thread and R ranks x
 1 thread for every R listed, plus --hybrid RxT runs (R ranks x T threads), on the same scenes; besides the table,
@@ -32,25 +32,25 @@ factorization and the whole iteration, and compares every run with the predictio
 the 1- and 2-rank runs alone (what a 2-core machine can measure; the rest of an iteration's wall time, setup and
 output included, is taken as not divided):
 
-  tools/bench_mpi.py --scaling 2 4 8 16 --hybrid 1x16 4x4 --fine 0.05 0.2 --application --out reports/bench/scaling
+  benchmarks/bench_mpi.py --scaling 2 4 8 16 --hybrid 1x16 4x4 --fine 0.05 0.2 --application --out reports/bench/scaling
 
 --pieces default 1 runs every R twice, with ldfcz's interleaved partition and with one part per process
 (--partition-pieces 1); the tables then also give the element loop's balance loop by loop (the summary's "slowest
 process of each loop summed", against the mean):
 
-  tools/bench_mpi.py --scaling 16 8 4 2 --pieces default 1 --fine --application --out reports/bench/scaling-interleaved
+  benchmarks/bench_mpi.py --scaling 16 8 4 2 --pieces default 1 --fine --application --out reports/bench/scaling-interleaved
 
 --full-width meshes the application scene over the specimen's full width (the cost model's prediction target);
 `--fine` with no value leaves the peel members out:
 
-  tools/bench_mpi.py --scaling 2 8 16 --fine --application --full-width --out reports/bench/scaling
+  benchmarks/bench_mpi.py --scaling 2 8 16 --fine --application --full-width --out reports/bench/scaling
 
 With --refit MD [MD ...] instead: nothing is run; the tables of earlier runs (their bench_mpi.md files, the rows of
 1 rank x 1 thread and R ranks x 1 thread) are read back and the cost model and the scaling report are fitted to
 them all, e.g. the application mesh and its full width measured in separate commands, so that the prediction for
 the full-width specimen on a cluster uses both sizes (OUT/bench_mpi_refit.md):
 
-  tools/bench_mpi.py --refit reports/bench/scaling-memory/bench_mpi.md \
+  benchmarks/bench_mpi.py --refit reports/bench/scaling-memory/bench_mpi.md \
       reports/bench/scaling-memory/full_width_bench_mpi.md --cluster-ranks 1 2 8 16 32 128 --out DIR
 
 With --ordering-study instead: the first increment of the peel member --fine (last value) and of the application
@@ -68,33 +68,17 @@ import time
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-
-PATTERNS = {
-    'counts': r'^increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), factorizations (\d+)',
-    'dofs': r'^DOFs (\d+), free equations (\d+)',
-    'wall': r'^wall time\s+([\d.]+) s, CPU time\s+([\d.]+) s',
-    'split': r'^wall time split: assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s, '
-             r'output\s+([\d.]+) s',
-    'setup': r'^solver setup \(pattern, METIS ordering, MUMPS analysis\)\s+([\d.]+) s',
-    'entries': r'^solver setup .*entries in the last factors (\d+)',
-    'comm': r'^MPI processes (\d+), communication of the host\s+([\d.]+) s.*peak memory of a process (\d+) kB',
-    'memory': r'^peak memory \(VmHWM\) (\d+) kB',
-    'balance': r'^element loop per process: max\s+([\d.]+) s, mean\s+([\d.]+) s, max/mean\s+([\d.]+)',
-    'slowest': r'^element loop, slowest process of each loop summed:\s+([\d.]+) s, against the mean\s+([\d.]+)',
-    'weights': r'as partition weights: --element-weights (\d+),(\d+),(\d+)',
-}
-
+from ldfcz_tools import outputs
+from ldfcz_tools.paths import ROOT, TOOLS
 
 def deck(args, fine, out, application=False):
-    cmd = [sys.executable, os.path.join(HERE, 'peel_deck.py'), '--3d', '--le', str(args.le), '--ny', str(args.ny),
+    cmd = [sys.executable, os.path.join(TOOLS, 'peel_deck.py'), '--3d', '--le', str(args.le), '--ny', str(args.ny),
            '--nz', str(args.nz), '--fine-length', str(fine), '--bonded', str(fine + args.margin), '--du',
            str(args.du), '--u-total', str(args.du * args.increments), '--field-frequency', '0', '--info', '-o', out]
     if application:
         # tools/peel_study.py application (paper section 8): rigid substrate, fine region 1.05 mm, bonded 1.2 mm,
         # up to 1 um per increment, PET accuracy bound 1.0
-        cmd = [sys.executable, os.path.join(HERE, 'peel_deck.py'), '--3d', '--rigid-substrate', '--le', '0.002',
+        cmd = [sys.executable, os.path.join(TOOLS, 'peel_deck.py'), '--3d', '--rigid-substrate', '--le', '0.002',
                '--ny', '10', '--nz', '3', '--fine-length', '1.05', '--bonded', '1.2', '--du', '0.001',
                '--dgamma-max', '1.0', '--u-total', str(0.001 * args.increments), '--field-frequency', '0',
                '--info', '-o', out] + (['--full-width'] if args.full_width else [])
@@ -104,13 +88,24 @@ def deck(args, fine, out, application=False):
     return json.loads(res.stderr.strip().splitlines()[-1])   # the mesh summary (--info)
 
 
-def parse(path):
-    text = open(path).read()
-    r = {}
-    for key, pat in PATTERNS.items():
-        m = re.search(pat, text, re.M)
-        r[key] = [float(g) for g in m.groups()] if m else None
-    return r
+def parse(outdir, job):
+    """The figures of a run's summary (JOB.summary.json) in the groups this benchmark tabulates: counts (increments,
+    attempts, cutbacks, iterations, factorizations), dofs (DOFs, equations), wall (wall, CPU), split (element loop,
+    factorization, solve, output), setup, entries, memory (kB); for a distributed run comm (processes, host
+    communication, largest process memory in kB), balance (max, mean, max/mean of the element loop), slowest (the
+    slowest process of each loop summed, over the mean); weights (the measured partition weights)."""
+    doc = outputs.read_summary(outdir, job)
+    c, t, m, mpi = doc['counters'], doc['times'], doc['model'], doc['mpi']
+    return {'counts': [c['increments'], c['attempts'], c['cutbacks'], c['iterations'], c['factorizations']],
+            'dofs': [m['dofs'], m['equations']], 'wall': [t['wall_s'], t['cpu_s']],
+            'split': [t['element_loop_s'], t['factorization_s'], t['solve_s'], t['output_s']],
+            'setup': [t['solver_setup_s']], 'entries': [doc['factors']['entries']] if doc['factors']['entries'] else None,
+            'memory': [doc['memory']['peak_kb']],
+            'comm': [mpi['processes'], mpi['communication_s'], doc['memory']['peak_kb_largest_process']] if mpi else None,
+            'balance': [mpi['element_loop_max_s'], mpi['element_loop_mean_s'], mpi['element_loop_max_over_mean']]
+            if mpi else None,
+            'slowest': [mpi['element_loop_slowest_summed_s'], mpi['element_loop_slowest_over_mean']] if mpi else None,
+            'weights': [e['weight'] for e in doc['element_cost'].values()]}
 
 
 def fit_power(xs, ys):
@@ -281,7 +276,7 @@ def ordering_study(args, env, work):
                 res = subprocess.run(cmd, capture_output=True, text=True, env=dict(env, **extra))
                 if res.returncode not in (0, 3):
                     sys.exit('bench_mpi.py: %s failed (exit %d)' % (' '.join(cmd), res.returncode))
-                s = parse(os.path.join(rdir, 'order_%s.log' % tag))
+                s = parse(rdir, 'order_%s' % tag)
                 nf = int(s['counts'][4])
                 row = '| %s | %d | %d | %s | %d | %.2f | %.2f | %.2f | %.2f | %s |' % (
                     label, int(s['dofs'][0]), np_, 'host METIS' if o == 'metis' else 'MUMPS ' + o.upper(), nf,
@@ -289,7 +284,7 @@ def ordering_study(args, env, work):
                 lines.append(row)
                 print(row, flush=True)
     with open(os.path.join(args.out, 'bench_mpi_orderings.md'), 'w') as f:
-        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
+        f.write('Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' + '\n'.join(lines) + '\n')
 
 
 def read_tables(paths):
@@ -337,7 +332,7 @@ def refit(args):
     wide = [r['dofs'] for r in results if 'full width' in r['scene']]
     app = [r['dofs'] for r in results if r['scene'] == 'application']
     full_dofs = wide[0] if wide else 2 * (app[0] if app else max(r['dofs'] for r in results))
-    text = (['Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]), '',
+    text = (['Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]), '',
              'Rows read: %d from %s' % (len(results), ', '.join(args.refit)), ''] +
             cost_model(results, 2, full_dofs, args.cluster_ranks) + [''] +
             scaling_report(results, full_dofs, args.cluster_ranks))
@@ -458,7 +453,7 @@ def main():
             if res.returncode != 0:
                 sys.exit('bench_mpi.py: %s failed (exit %d):\n%s' % (' '.join(full), res.returncode,
                                                                     (res.stdout + res.stderr)[-2000:]))
-            s = parse(os.path.join(rdir, 'peel_%s.log' % tag))
+            s = parse(rdir, 'peel_%s' % tag)
             inc, its = int(s['counts'][0]), int(s['counts'][3])
             asm, fact, solve = s['split'][0], s['split'][1], s['split'][2]
             comm = s['comm'][1] if s['comm'] else 0.0
@@ -489,11 +484,11 @@ def main():
                        args.cluster_ranks)
     if args.scaling:
         with open(os.path.join(args.out, 'bench_mpi_scaling.md'), 'w') as f:
-            f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' +
+            f.write('Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\n' +
                     '\n'.join(scaling_report(results, full_dofs, args.cluster_ranks)) + '\n')
     load = open('/proc/loadavg').read().split()[:3] if os.path.exists('/proc/loadavg') else ['?']
     with open(os.path.join(args.out, 'bench_mpi.md'), 'w') as f:
-        f.write('Command: tools/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\nLoad average at the end: ' +
+        f.write('Command: benchmarks/bench_mpi.py ' + ' '.join(sys.argv[1:]) + '\n\nLoad average at the end: ' +
                 ' '.join(load) + ' (other jobs share the cores: wall times inflate, CPU time does not)\n\n' +
                 '\n'.join(lines) + '\n\n' + '\n'.join(model) + '\n')
     print('\n'.join(lines))

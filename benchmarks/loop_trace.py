@@ -3,7 +3,7 @@
 per element loop; docs/host.md "Diagnostics") and say where the loop-by-loop imbalance of a distributed run comes
 from.
 
-    tools/loop_trace.py PREFIX [--reference SERIAL_PREFIX] [--rerun PREFIX2] [--class all|user|umat|elastic]
+    benchmarks/loop_trace.py PREFIX [--reference SERIAL_PREFIX] [--rerun PREFIX2] [--class all|user|umat|elastic]
                         [--slow 1.3] [--pool F ...]
 
 Printed:

@@ -29,7 +29,9 @@ import shutil
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from ldfcz_tools import outputs
+from ldfcz_tools.paths import ROOT
+
 GEN = ['--3d', '--rigid-substrate', '--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.001',
        '--dgamma-max', '1.0', '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72',
        '--field-frequency', '40']
@@ -37,20 +39,13 @@ COMMON = ['--max-opening-increment', '0.33', '--max-plastic-increment', '1.0']
 JOB = 'app'
 
 
-def summary(log_path):
-    """Counters and times of the last closing summary in JOB.log."""
-    text = open(log_path).read().split('=== ldfcz summary ===')[-1]
-    out = {}
-    m = re.search(r'increments (\d+), attempts (\d+), cutbacks (\d+), Newton iterations (\d+), '
-                  r'factorizations (\d+)', text)
-    out['inc'], _, out['cut'], out['its'], out['fac'] = map(int, m.groups())
-    m = re.search(r'GMRES solves (\d+) \((\d+) GMRES iterations', text)
-    out['gmres'] = int(m.group(2)) if m else 0
-    m = re.search(r'wall time\s+([\d.]+) s', text)
-    out['wall'] = float(m.group(1))
-    m = re.search(r'assembly\s+([\d.]+) s, factorization\s+([\d.]+) s, solve\s+([\d.]+) s', text)
-    out['asm'], out['fact'], out['solve'] = map(float, m.groups())
-    return out
+def summary(outdir):
+    """Counters (continued over restarts) and times (of the last run) of JOB.summary.json."""
+    doc = outputs.read_summary(outdir, JOB)
+    c, t = doc['counters'], doc['times']
+    return {'inc': c['increments'], 'cut': c['cutbacks'], 'its': c['iterations'], 'fac': c['factorizations'],
+            'gmres': c['gmres_iterations'], 'wall': t['wall_s'], 'asm': t['element_loop_s'],
+            'fact': t['factorization_s'], 'solve': t['solve_s']}
 
 
 def last_row(csv_path):
@@ -102,7 +97,7 @@ def main():
         if r.returncode not in (0, 3) or not os.path.exists(rst):
             sys.exit('bench_window.py: the base run failed (exit %d)' % r.returncode)
         open(stamp, 'w').write(str(a.start))
-    b = summary(os.path.join(base, JOB + '.log'))
+    b = summary(base)
     rows = []
     for label, opts in configs:
         d = os.path.join(a.work, 'w_' + re.sub(r'[^A-Za-z0-9_.-]', '_', label))
@@ -118,7 +113,7 @@ def main():
         r = subprocess.run(cmd, env=env)
         if r.returncode not in (0, 3):
             sys.exit('bench_window.py: configuration %s failed (exit %d)' % (label, r.returncode))
-        s = summary(os.path.join(d, JOB + '.log'))
+        s = summary(d)
         t, rf = last_row(os.path.join(d, JOB + '.csv'))
         w = {k: s[k] - b[k] for k in ('inc', 'cut', 'its', 'fac', 'gmres')}
         w.update({k: s[k] for k in ('wall', 'asm', 'fact', 'solve')})

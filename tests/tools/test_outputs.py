@@ -1,0 +1,106 @@
+"""ldfcz_tools.outputs against the outputs of a real short run (decks/single/cohesive_block.inp, 23 increments,
+about 0.1 s): the summary's counters against the CSV, the status file and the frames the same run wrote, and the
+reader's refusals (another JSON, another layout, a truncated file). LDFCZ_EXE names the program (CTest sets it);
+LDFCZ_DECKS the deck folder (default decks/ of the source tree)."""
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+from ldfcz_tools import outputs
+from ldfcz_tools.paths import ROOT
+
+JOB = 'cohesive_block'
+
+
+def setUpModule():
+    global WORK, SUMMARY
+    exe = os.environ.get('LDFCZ_EXE', os.path.join(ROOT, 'build', 'bin', 'ldfcz'))
+    if not os.path.exists(exe):
+        raise unittest.SkipTest('no ldfcz program (set LDFCZ_EXE)')
+    deck = os.path.join(os.environ.get('LDFCZ_DECKS', os.path.join(ROOT, 'decks')), 'single', JOB + '.inp')
+    WORK = tempfile.mkdtemp(prefix='ldfcz_tools_')
+    subprocess.run([exe, '-q', '-t', '1', '-o', WORK, deck], check=True, timeout=120)
+    SUMMARY = outputs.read_summary(WORK, JOB)
+
+
+def tearDownModule():
+    shutil.rmtree(WORK, ignore_errors=True)
+
+
+class RealRun(unittest.TestCase):
+
+    def test_summary(self):
+        self.assertEqual(SUMMARY['status'], 'completed')
+        self.assertEqual(SUMMARY['exit_code'], 0)
+        self.assertEqual(outputs.get(SUMMARY, 'model.nodes'), 12)
+        self.assertIsNone(outputs.get(SUMMARY, 'restart.from'))
+        self.assertEqual(outputs.get(SUMMARY, 'no.such.key', 'x'), 'x')
+        self.assertIn('steps[].external_work', outputs.summary_keys(SUMMARY))
+        self.assertEqual(outputs.summary_nonfinite(SUMMARY), [])
+
+    def test_csv_against_summary(self):
+        # one row per converged increment; the last row is the last step's last increment at its total time (the
+        # CSV's 16 digits against the summary's 17)
+        rows = outputs.read_csv(os.path.join(WORK, JOB + '.csv'))
+        self.assertEqual(len(rows), SUMMARY['counters']['increments'])
+        last = SUMMARY['steps'][-1]
+        self.assertEqual((rows[-1]['step'], rows[-1]['inc']), (last['step'], last['increments']))
+        self.assertAlmostEqual(rows[-1]['total_time'], last['total_time'], delta=1e-15 * abs(last['total_time']))
+        header, data = outputs.read_csv_columns(os.path.join(WORK, JOB + '.csv'))
+        self.assertEqual(header[:4], ['step', 'inc', 'step_time', 'total_time'])
+        self.assertEqual(len(data), len(rows))
+
+    def test_sta_against_summary(self):
+        # one line per attempt, converged or cut back; the iterations add up to the summary's
+        sta = outputs.read_sta(os.path.join(WORK, JOB + '.sta'))
+        self.assertEqual(len(sta), SUMMARY['counters']['attempts'])
+        self.assertTrue(all(r['outcome'] == 'converged' and len(r['ratios']) == r['iterations'] + 1 for r in sta))
+        counts = outputs.sta_counts(os.path.join(WORK, JOB + '.sta'))
+        self.assertEqual(counts, {k: SUMMARY['counters'][k] for k in counts})
+
+    def test_frames(self):
+        # frame 1 is the initial state; the times increase to the last increment's
+        frames = outputs.pvd_frames(os.path.join(WORK, JOB + '.pvd'))
+        self.assertEqual(len(frames), len([f for f in os.listdir(WORK) if f.endswith('.vtu')]))
+        times = [t for t, _ in frames]
+        self.assertEqual(times[0], 0.0)
+        self.assertEqual(times, sorted(times))
+        self.assertAlmostEqual(times[-1], SUMMARY['steps'][-1]['total_time'], delta=1e-15)
+
+
+class Refusals(unittest.TestCase):
+
+    def write(self, name, text):
+        path = os.path.join(self.dir, name)
+        with open(path, 'w') as f:
+            f.write(text)
+        return path
+
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix='ldfcz_tools_')
+
+    def tearDown(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def test_refusals(self):
+        self.assertIsNone(outputs.read_summary(self.dir, 'none'))
+        with open(outputs.summary_path(WORK, JOB)) as f:
+            text = f.read()
+        with self.assertRaises(outputs.SummaryError):
+            outputs.read_summary_file(self.write('half.summary.json', text[:len(text) // 2]))
+        with self.assertRaises(outputs.SummaryError):
+            outputs.read_summary_file(self.write('other.json', json.dumps({'schema': 'something else'})))
+        doc = json.loads(text)
+        doc['schema_version'] = 99
+        with self.assertRaises(outputs.SummaryError):
+            outputs.read_summary_file(self.write('future.summary.json', json.dumps(doc)))
+        doc['schema_version'] = 1
+        doc['energy']['external_work'] = None
+        self.assertEqual(outputs.summary_nonfinite(doc), ['energy.external_work'])
+
+
+if __name__ == '__main__':
+    unittest.main()
