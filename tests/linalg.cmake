@@ -8,6 +8,7 @@ endif()
 # The heap setting of the host (host/linalg/heap_reuse.c): freed large blocks reused without new page faults.
 if(TARGET ldfcz_linalg)
   add_executable(test_heap_reuse test_heap_reuse.c "${PROJECT_SOURCE_DIR}/host/linalg/heap_reuse.c")
+  ldfcz_warnings(test_heap_reuse)
   set_target_properties(test_heap_reuse PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests")
   add_test(NAME test_heap_reuse COMMAND test_heap_reuse)
   set_tests_properties(test_heap_reuse PROPERTIES SKIP_RETURN_CODE 77 LABELS unit)

@@ -13,6 +13,7 @@ set(LDFCZ_MPI_ENV OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI
   OMPI_MCA_mpi_yield_when_idle=1)
 
 add_executable(partition_check mpi/partition_check.f90)
+ldfcz_warnings(partition_check)
 target_link_libraries(partition_check PRIVATE ldfcz_host "$<LINK_LIBRARY:WHOLE_ARCHIVE,ldfcz_abaqus_utils>")
 set_target_properties(partition_check PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests/bin")
 foreach(np 2 3)

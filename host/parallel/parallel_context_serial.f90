@@ -133,7 +133,7 @@ contains
     integer, intent(inout) :: code                         !< this process's status (unchanged)
     character(len=:), allocatable, intent(inout) :: text   !< this process's message (unchanged)
     if (.not. allocated(text)) text = ''
-    if (.false.) par%t_comm = 0.0_dp   ! par unused: one process
+    if (.false.) par%t_comm = real(code, dp)   ! par and code unused: one process
   end subroutine parallel_first_error
 
 end module parallel_context

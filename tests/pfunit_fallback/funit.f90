@@ -107,7 +107,7 @@ contains
     end select
   end subroutine to_real
 
-  logical function is_integer(x)
+  pure logical function is_integer(x)
     class(*), intent(in) :: x
     select type (x)
     type is (integer(int32))
