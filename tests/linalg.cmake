@@ -3,7 +3,7 @@ if(TARGET ldfcz_linalg)
   ldfcz_add_pf_suite(NAME test_sparse_system PF test_sparse_system.pf LINK ldfcz_linalg)
 endif()
 if(TARGET ldfcz_abaqus_utils)
-  ldfcz_add_pf_suite(NAME test_abaqus_utils PF test_abaqus_utils.pf LINK ldfcz_abaqus_utils)
+  ldfcz_add_pf_suite(NAME test_abaqus_utils PF test_abaqus_utils.pf LINK ldfcz_test_support ldfcz_abaqus_utils)
 endif()
 # The heap setting of the host (host/linalg/heap_reuse.c): freed large blocks reused without new page faults.
 if(TARGET ldfcz_linalg)

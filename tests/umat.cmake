@@ -1,5 +1,5 @@
 # Unit tests of the compressible Leonov model: the pure core and the Abaqus/Marc adapters.
-ldfcz_add_pf_suite(NAME test_leonov PF test_leonov.pf LINK ldfcz_umat)
+ldfcz_add_pf_suite(NAME test_leonov PF test_leonov.pf LINK ldfcz_test_support ldfcz_umat)
 # The finiteness test the UMAT and UEL cores use instead of ieee_is_finite (common/ldfcz_finite.f90)
 ldfcz_add_pf_suite(NAME test_finite PF test_finite.pf LINK ldfcz_kinds)
 # HYPELA2 (umat/hypela2.f) built against test doubles of Marc's include files 'concom' and 'creeps' and of QUIT
