@@ -20,7 +20,7 @@ if(TARGET ldfcz)
   add_test(NAME umat_energy_balance
     COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_energy_pet.py"
             $<TARGET_FILE:ldfcz> "${CMAKE_CURRENT_BINARY_DIR}/umat_energy_balance")
-  set_tests_properties(umat_energy_balance PROPERTIES LABELS "regression;umat" TIMEOUT 300)
+  set_tests_properties(umat_energy_balance PROPERTIES LABELS "umat" TIMEOUT 300)
 endif()
 
 # The Leonov UMAT's plane-stress branch (NTENS = 3, the UMAT solves sigma_33 = 0) in uniaxial stress against the
@@ -29,5 +29,5 @@ if(TARGET material_point)
   add_test(NAME umat_plane_stress_uniaxial
     COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_plane_stress_uniaxial.py"
             --mp $<TARGET_FILE:material_point> --out "${CMAKE_CURRENT_BINARY_DIR}/umat_plane_stress_uniaxial")
-  set_tests_properties(umat_plane_stress_uniaxial PROPERTIES LABELS "regression;umat" TIMEOUT 120)
+  set_tests_properties(umat_plane_stress_uniaxial PROPERTIES LABELS "umat" TIMEOUT 120)
 endif()
