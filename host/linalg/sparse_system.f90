@@ -47,7 +47,7 @@ module sparse_system
   public :: sparse_time_solve, sparse_factor_count, sparse_analysis_count, sparse_solve_count
   public :: sparse_ordering, sparse_pivot_order, sparse_to_dense, sparse_is_symmetric
   public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count, sparse_factors_exact, sparse_time_comm
-  public :: sparse_set_factor_threads, sparse_factor_flops
+  public :: sparse_set_factor_threads, sparse_factor_flops, sparse_iteration_flops
 
   !> A sparse system with its pattern, values, ordering and MUMPS instance (components private).
   type :: sparse_system_t
@@ -73,6 +73,7 @@ module sparse_system
     real(dp) :: factor_min_flops = huge(1.0_dp)     !< operations from which a factorization is large
     type(parallel_t) :: par                         !< processes of the run (distributed: several)
     logical :: distributed = .false.                !< this process adds its own elements only
+    real(dp) :: product_entries = 0.0_dp            !< stored entries of every process's part (the product's work)
     real(dp) :: t_analysis = 0.0_dp                 !< wall seconds in setup (pattern, ordering, analysis)
     real(dp) :: t_factor = 0.0_dp                   !< wall seconds in factorizations
     real(dp) :: t_solve = 0.0_dp                    !< wall seconds in solves
@@ -105,6 +106,7 @@ contains
     integer :: nnode, nelem, i, k, m, j
     integer(i8) :: c0
     logical :: metis
+    real(dp) :: entries(1)
 
     stat = 0
     errmsg = ''
@@ -233,8 +235,16 @@ contains
         single=sys%single_factors)
     end if
     sys%n_analysis = sys%n_analysis + 1
+    if (stat /= 0) then
+      sys%t_analysis = sys%t_analysis + seconds_since(c0)
+      return
+    end if
+    ! the work of a product counts every process's entries: the same number on every process (collective, after
+    ! the analysis, whose failure every process sees alike)
+    entries = real(size(sys%jcn), dp)
+    if (sys%distributed) call parallel_sum(sys%par, entries)
+    sys%product_entries = entries(1)
     sys%t_analysis = sys%t_analysis + seconds_since(c0)
-    if (stat /= 0) return
     sys%ready = .true.
   end subroutine sparse_setup
 
@@ -331,6 +341,23 @@ contains
     type(sparse_system_t), intent(in) :: sys        !< system
     flops = mumps_factor_flops(sys%solver)
   end function sparse_factor_flops
+
+  !> Floating-point operations of one GMRES iteration of sparse_solve_krylov with the last factors, counted from the
+  !> sizes of the factors and the matrix: the two triangular sweeps (2 per factor entry and sweep: LU uses each
+  !> entry of L or U in one sweep, LDL^T each entry of L in both) and the product (2 per stored entry, 4 for the
+  !> upper triangle of a symmetric matrix, whose off-diagonal entries act twice). The orthogonalisation (4 n j at
+  !> iteration j) is left out. The same number on every run, thread count and process (MUMPS' global entry count,
+  !> the processes' entries summed at set-up): a measure of work that decisions may use (newton_iteration);
+  !> 0 before a factorization.
+  real(dp) function sparse_iteration_flops(sys) result(flops)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    real(dp) :: sweeps, product
+    flops = 0.0_dp
+    if (.not. sparse_is_factored(sys)) return
+    sweeps = merge(4.0_dp, 2.0_dp, sys%symmetric .or. sys%sym_factors)
+    product = merge(4.0_dp, 2.0_dp, sys%symmetric)
+    flops = sweeps * real(sparse_factor_entries(sys), dp) + product * sys%product_entries
+  end function sparse_iteration_flops
 
   !> True when the factors are those of the stored matrix (sparse_solve solves it), false when they are the
   !> symmetric part's or in single precision (a preconditioner for sparse_solve_krylov only).
