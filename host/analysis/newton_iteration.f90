@@ -26,7 +26,7 @@ module newton_iteration
   ! same 30 um), and converted to time by krylov_speed, a GMRES iteration's operations per second relative to a
   ! factorization's, measured on the application scene (89 595 DOFs, its options, SkylakeX kernels, the idle 2-core
   ! machine; docs/performance.md "OpenBLAS kernels"): 0.345 s per factorization of 3.50e9 operations, 28.3 ms per
-  ! iteration of 6.74e7, i.e. 1.01e10 and 2.38e9 per second. The budget there is int(0.5 0.235 52.0) = 6, what
+  ! iteration of 6.74e7, i.e. 1.01e10 and 2.38e9 per second. The budget there is int(0.5 x 0.235 x 52.0) = 6, what
   ! half the measured time ratio gave on that machine (0.345 / 0.0283 / 2 = 6.1).
   real(dp), parameter :: krylov_budget_share = 0.5_dp   !< GMRES time with older factors, of a factorization's
   real(dp), parameter :: krylov_speed = 0.235_dp        !< operations per second: GMRES iteration / factorization
