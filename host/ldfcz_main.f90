@@ -398,7 +398,7 @@ contains
       '  --newton MODE      full (default: new tangent and factorization every iteration), modified (factors', &
       '                     kept while the residual contracts), krylov (new tangent, GMRES preconditioned by', &
       '                     the last factors), auto (inexact Newton-Krylov: GMRES to Eisenstat-Walker', &
-      '                     tolerances, budget from the measured costs; for large 3D models)', &
+      '                     tolerances, budget from the factors'' operation counts; for large 3D models)', &
       '  --factors KIND     exact (default: LU/LDL^T of the tangent), symmetric (unsymmetric tangents: LDL^T', &
       '                     of (K+K^T)/2), single (single precision) or symmetric-single: factors that only', &
       '                     precondition GMRES (half the factor work or memory traffic; needs krylov/auto)', &

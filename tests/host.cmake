@@ -151,7 +151,7 @@ set(LDFCZ_CHECK_RESTART "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py
 function(ldfcz_add_restart_test name deck)
   add_test(NAME ${name} COMMAND Python3::Interpreter ${LDFCZ_CHECK_RESTART} --exe $<TARGET_FILE:ldfcz> --deck ${deck}
     --out ${LDFCZ_RUNS}/${name} ${ARGN})
-  set_tests_properties(${name} PROPERTIES LABELS "deck;restart" TIMEOUT 300)
+  set_tests_properties(${name} PROPERTIES LABELS "restart" TIMEOUT 300)
 endfunction()
 # UEL (cohesive element, SVARS/ENERGY) under a C3D8 block, automatic increments; restart refused for another deck
 ldfcz_add_restart_test(restart_cohesive_block ${LDFCZ_DECKS}/single/cohesive_block.inp --stop 9 --freq 1
@@ -325,12 +325,12 @@ add_test(NAME dropins_abaqus COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE
   --exe $<TARGET_FILE:ldfcz> --dropins ${PROJECT_BINARY_DIR}/dropin --include ${PROJECT_SOURCE_DIR}/host/abaqus
   --marc-include ${CMAKE_CURRENT_SOURCE_DIR}/support/marc --marc-stubs ${CMAKE_CURRENT_SOURCE_DIR}/support/marc/marc_test_stubs.f
   --deck ${LDFCZ_DECKS}/peel/peel_ps.inp --out ${LDFCZ_RUNS}/dropins_abaqus "--fflags=${_dropin_fflags}" ${_dropin_exact})
-set_tests_properties(dropins_abaqus PROPERTIES LABELS "deck" TIMEOUT 600)
+set_tests_properties(dropins_abaqus PROPERTIES LABELS "package" TIMEOUT 600)
 
 # the CMake package: install, find_package(ldfcz) from another project, call UEL and UMAT; pkg-config
 add_test(NAME package_find_ldfcz COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/package/check_package.sh ${PROJECT_BINARY_DIR}
   ${LDFCZ_RUNS}/package_find_ldfcz ${CMAKE_Fortran_COMPILER})
-set_tests_properties(package_find_ldfcz PROPERTIES LABELS "deck" TIMEOUT 300)
+set_tests_properties(package_find_ldfcz PROPERTIES LABELS "package" TIMEOUT 300)
 
 # model structure and syntax (tests/regression/check_assembly.py): two instances of a part, one translated and
 # rotated, tied in the assembly, against closed form and the deck flattened by hand; decks in Abaqus/CAE's style

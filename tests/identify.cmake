@@ -6,6 +6,6 @@ if(TARGET ldfcz)
     add_test(NAME identify_${_case}
       COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_identify.py" ${_case}
               $<TARGET_FILE:ldfcz> "${CMAKE_CURRENT_BINARY_DIR}/identify_${_case}")
-    set_tests_properties(identify_${_case} PROPERTIES LABELS "regression;identify" TIMEOUT 600)
+    set_tests_properties(identify_${_case} PROPERTIES LABELS "identify" TIMEOUT 600)
   endforeach()
 endif()

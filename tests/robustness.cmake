@@ -26,7 +26,7 @@ foreach(case IN LISTS robust_cases)
   add_test(NAME robust_${kind}_${name}
     COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_bad_cases.py" --exe $<TARGET_FILE:ldfcz>
             --case "${case}" --out "${LDFCZ_ROBUST_RUNS}/${kind}_${name}")
-  set_tests_properties(robust_${kind}_${name} PROPERTIES LABELS "robustness;deck" TIMEOUT 120)
+  set_tests_properties(robust_${kind}_${name} PROPERTIES LABELS "robustness" TIMEOUT 120)
 endforeach()
 
 # mutation fuzzing of the reader: fixed seed, at most 30 s, crashing inputs not saved from CTest
@@ -49,4 +49,4 @@ add_test(NAME robust_threads_agree
   COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_threads.py" --exe $<TARGET_FILE:ldfcz>
           --deck "${PROJECT_SOURCE_DIR}/decks/stability/stab_peel_brittle_viscous.inp" --increments 40
           --out "${LDFCZ_ROBUST_RUNS}/threads")
-set_tests_properties(robust_threads_agree PROPERTIES LABELS "robustness;deck" TIMEOUT 300)
+set_tests_properties(robust_threads_agree PROPERTIES LABELS "robustness" TIMEOUT 300)

@@ -1,5 +1,5 @@
 # Unit tests of the compressible Leonov model: the pure core and the Abaqus/Marc adapters.
-ldfcz_add_pf_suite(NAME test_leonov PF test_leonov.pf LINK ldfcz_umat)
+ldfcz_add_pf_suite(NAME test_leonov PF test_leonov.pf LINK ldfcz_test_support ldfcz_umat)
 # The finiteness test the UMAT and UEL cores use instead of ieee_is_finite (common/ldfcz_finite.f90)
 ldfcz_add_pf_suite(NAME test_finite PF test_finite.pf LINK ldfcz_kinds)
 # HYPELA2 (umat/hypela2.f) built against test doubles of Marc's include files 'concom' and 'creeps' and of QUIT
@@ -7,6 +7,7 @@ ldfcz_add_pf_suite(NAME test_finite PF test_finite.pf LINK ldfcz_kinds)
 add_library(marc_hypela2_test STATIC "${PROJECT_SOURCE_DIR}/umat/hypela2.f" support/marc/marc_test_stubs.f)
 target_include_directories(marc_hypela2_test PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/support/marc")
 target_link_libraries(marc_hypela2_test PUBLIC ldfcz_umat)
+ldfcz_warnings(marc_hypela2_test)
 if(CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
   target_compile_options(marc_hypela2_test PRIVATE ${LDFCZ_FIXED_FORM_FLAGS} -Wno-unused-dummy-argument)
 endif()
@@ -19,7 +20,7 @@ if(TARGET ldfcz)
   add_test(NAME umat_energy_balance
     COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_energy_pet.py"
             $<TARGET_FILE:ldfcz> "${CMAKE_CURRENT_BINARY_DIR}/umat_energy_balance")
-  set_tests_properties(umat_energy_balance PROPERTIES LABELS "regression;umat" TIMEOUT 300)
+  set_tests_properties(umat_energy_balance PROPERTIES LABELS "umat" TIMEOUT 300)
 endif()
 
 # The Leonov UMAT's plane-stress branch (NTENS = 3, the UMAT solves sigma_33 = 0) in uniaxial stress against the
@@ -28,5 +29,5 @@ if(TARGET material_point)
   add_test(NAME umat_plane_stress_uniaxial
     COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_plane_stress_uniaxial.py"
             --mp $<TARGET_FILE:material_point> --out "${CMAKE_CURRENT_BINARY_DIR}/umat_plane_stress_uniaxial")
-  set_tests_properties(umat_plane_stress_uniaxial PROPERTIES LABELS "regression;umat" TIMEOUT 120)
+  set_tests_properties(umat_plane_stress_uniaxial PROPERTIES LABELS "umat" TIMEOUT 120)
 endif()

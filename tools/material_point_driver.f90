@@ -56,7 +56,6 @@ program material_point
   character(len=8) :: seg_kind(max_seg)
   real(dp) :: seg_target(max_seg), seg_time(max_seg), t0, x0_seg, s0_seg, x_goal
   integer :: seg_steps(max_seg)
-  real(dp) :: s_target_now
 
   f_end = identity3()
   props = [1250.0_dp, 0.4_dp, 28.4_dp, 0.486_dp, 0.95_dp, 0.047_dp, 28.2_dp, 0.990_dp, 200.0_dp, -4.0_dp]
@@ -392,8 +391,10 @@ contains
 
   function solve3(a, b) result(x)
     real(dp), intent(in) :: a(3, 3), b(3)
-    real(dp) :: x(3)
-    x = matmul(inv3(a), b)
+    real(dp) :: x(3), a_inv(3, 3)
+    ! (the inverse in a variable: gfortran 12 warns about its own temporary for a function result inside MATMUL)
+    a_inv = inv3(a)
+    x = matmul(a_inv, b)
   end function solve3
 
   function solve2(a, b) result(x)

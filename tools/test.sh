@@ -5,6 +5,9 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 jobs=$(nproc 2>/dev/null || echo 2)
+# The project's sources build without a warning: here (and so in CI) a new warning fails the build
+# (LDFCZ_WERROR, off for users: cmake/LdfczCompilerFlags.cmake).
+export LDFCZ_CMAKE_ARGS="-DLDFCZ_WERROR=ON ${LDFCZ_CMAKE_ARGS:-}"
 # LLVM flang: the user routines must also compile with a second compiler (tests/portability).
 LDFCZ_EXTRA_PACKAGES="flang-16 ${LDFCZ_EXTRA_PACKAGES:-}" bash "$root/tools/setup.sh" Debug
 build_dir=${LDFCZ_BUILD_DIR:-$root/build-debug}

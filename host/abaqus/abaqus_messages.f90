@@ -19,8 +19,8 @@ module abaqus_host_state
   integer :: process_count = 1                   !< processes of the analysis (GETNUMCPUS)
   integer :: process_comm = 0                    !< MPI communicator (GETCOMMUNICATOR; 0 without MPI)
   logical :: stop_flag = .false.                 !< a user routine asked to end the analysis
-  character(len=1024) :: stop_text = ''          !< the message that came with the first request
-  character(len=2048) :: last_message = ''       !< the last STDB_ABQERR message printed, numbers masked
+  character(len=:), allocatable :: stop_text     !< the message that came with the first request
+  character(len=:), allocatable :: last_message  !< the last STDB_ABQERR message printed, numbers masked
   integer :: message_repeats = 0                 !< times it came again since (not printed)
   integer :: caller = 0                          !< element whose routine this thread is calling (0: none)
   !$omp threadprivate(caller)
@@ -81,14 +81,15 @@ contains
   logical function abaqus_message_is_new(text, unit) result(is_new)
     character(len=*), intent(in) :: text  !< the message as it would be printed
     integer, intent(in) :: unit           !< where messages go
-    character(len=2048) :: key
+    character(len=:), allocatable :: key
     integer :: k
-    key = text
-    do k = 1, len_trim(key)
+    key = trim(text)
+    do k = 1, len(key)
       if (index('0123456789', key(k:k)) > 0) key(k:k) = '#'
     end do
     !$omp critical (abaqus_message_log)
-    if (trim(key) == trim(last_message)) then
+    if (.not. allocated(last_message)) last_message = ''
+    if (key == last_message) then
       message_repeats = message_repeats + 1
       is_new = .false.
     else
@@ -128,6 +129,7 @@ contains
   subroutine abaqus_request_stop(text)
     character(len=*), intent(in) :: text  !< why (may be empty)
     !$omp critical (abaqus_host_state_lock)
+    if (.not. allocated(stop_text)) stop_text = ''
     if (.not. stop_flag) then
       stop_text = text
       stop_elem = caller
@@ -151,7 +153,8 @@ contains
   !> The message recorded with the stop request.
   function abaqus_stop_message() result(text)
     character(len=:), allocatable :: text
-    text = trim(stop_text)
+    text = ''
+    if (allocated(stop_text)) text = trim(stop_text)
   end function abaqus_stop_message
 
   !> Forget a stop request (used by tests and by drivers that call routines more than once).
@@ -182,11 +185,10 @@ subroutine stdb_abqerr(lop, string, intv, realv, charv)
   integer, intent(in) :: intv(*)             !< integers for %I
   double precision, intent(in) :: realv(*)   !< reals for %R
   character(len=8), intent(in) :: charv(*)   !< 8-character strings for %S
-  character(len=2048) :: text
+  character(len=:), allocatable :: text, body
   character(len=32) :: item
-  integer :: i, n, ni, nr, ns
-  text = ''
-  n = 0
+  integer :: i, ni, nr, ns
+  body = ''
   ni = 0
   nr = 0
   ns = 0
@@ -206,23 +208,22 @@ subroutine stdb_abqerr(lop, string, intv, realv, charv)
       case default
         item = string(i:i+1)
       end select
-      text = text(1:n) // trim(adjustl(item))
-      n = len_trim(text)
+      body = trim(body // trim(adjustl(item)))
       i = i + 2
     else
-      n = n + 1
-      if (n <= len(text)) text(n:n) = string(i:i)
+      body = body // string(i:i)
       i = i + 1
     end if
   end do
+  ! the whole message, however long: the level's prefix and the text after substitution
   select case (lop)
   case (1)
-    text = '***NOTE: ' // text
+    text = '***NOTE: ' // body
   case (-1)
-    text = '***WARNING: ' // text
+    text = '***WARNING: ' // body
   case default
-    text = '***ERROR: ' // text
+    text = '***ERROR: ' // body
   end select
-  if (abaqus_message_is_new(text, error_unit)) write (error_unit, '(a)') trim(text)
-  if (lop == -3) call abaqus_request_stop(trim(text(11:)))
+  if (abaqus_message_is_new(text, error_unit)) write (error_unit, '(a)') text
+  if (lop == -3) call abaqus_request_stop(body)
 end subroutine stdb_abqerr

@@ -187,8 +187,11 @@ subroutine rotsig(s, r, sprime, lstr, ndi, nshr)
   real(dp), intent(in) :: r(3, 3)              !< rotation matrix
   real(dp), intent(out) :: sprime(ndi + nshr)  !< rotated components
   integer, intent(in) :: lstr                  !< 1 stress, 2 strain (engineering shears)
-  real(dp) :: f
+  real(dp) :: f, t(3, 3), tr(3, 3)
 
   f = merge(1.0_dp, 0.5_dp, lstr == 1)
-  sprime = tensor_to_voigt(matmul(r, matmul(voigt_to_tensor(s, ndi, nshr, f), transpose(r))), ndi, nshr, f)
+  ! R T R^T in steps (nested MATMULs of function results: gfortran 12 warns about its own temporaries)
+  t = voigt_to_tensor(s, ndi, nshr, f)
+  tr = matmul(t, transpose(r))
+  sprime = tensor_to_voigt(matmul(r, tr), ndi, nshr, f)
 end subroutine rotsig

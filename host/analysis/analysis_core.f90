@@ -627,7 +627,7 @@ contains
     integer, intent(out) :: stat
     character(len=*), intent(out) :: msg
     integer :: nn, a, iu, ip, mcrd, nsv, nf, nd
-    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8), svars(1)
+    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8)
     real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
     integer :: jdltyp(mdload, 1), lflags(5), ndload, im
@@ -683,7 +683,7 @@ contains
       nsv = model%utypes(iu)%nsvars
       ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
       sv = an%state%conv(ie)%svars
-      if (size(sv) == 0) sv = svars
+      if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
       energy = an%state%conv(ie)%energy
       rhs = 0.0_dp
       ke = 0.0_dp

@@ -7,13 +7,12 @@ module newton_iteration
   use increment, only: increment_t
   use linear_constraints, only: constraints_residual, constraints_apply
   use convergence_check, only: newton_converged, typical_force
-  use sparse_system, only: sparse_factorize, sparse_solve, sparse_time_factor, sparse_time_solve, &
-    sparse_is_factored, sparse_solve_krylov, sparse_factors_exact
+  use sparse_system, only: sparse_system_t, sparse_factorize, sparse_solve, sparse_is_factored, &
+    sparse_solve_krylov, sparse_factors_exact, sparse_factor_flops, sparse_iteration_flops
   use output_files, only: output_t, output_log
   use solver_options, only: newton_modified, newton_krylov, newton_auto
   use run_summary, only: run_summary_t
   use solver_text, only: itoa, rtoa
-  use parallel_context, only: parallel_distributed, parallel_min
   implicit none
   private
   public :: newton_state_t, newton_solve, newton_forget_factors
@@ -22,6 +21,16 @@ module newton_iteration
   integer, parameter :: modified_max_reuse = 8          !< modified Newton: new tangent after this many reuses
   real(dp), parameter :: krylov_rel_tol = 1.0e-8_dp     !< GMRES relative residual (an exact Newton step)
   integer, parameter :: krylov_max_iter = 30            !< GMRES budget of mode krylov (restart = budget)
+  ! Mode auto's GMRES budget with older factors (krylov_budget below): the iterations that take about
+  ! krylov_budget_share of a factorization's time. Counted in operations, so that the same deck takes the same path
+  ! on every run (the budget once came from measured times: the application scene took 55-64 increments for the
+  ! same 30 um), and converted to time by krylov_speed, a GMRES iteration's operations per second relative to a
+  ! factorization's, measured on the application scene (89 595 DOFs, its options, SkylakeX kernels, the idle 2-core
+  ! machine; docs/performance.md "OpenBLAS kernels"): 0.345 s per factorization of 3.50e9 operations, 28.3 ms per
+  ! iteration of 6.74e7, i.e. 1.01e10 and 2.38e9 per second. The budget there is int(0.5 x 0.235 x 52.0) = 6, what
+  ! half the measured time ratio gave on that machine (0.345 / 0.0283 / 2 = 6.1).
+  real(dp), parameter :: krylov_budget_share = 0.5_dp   !< GMRES time with older factors, of a factorization's
+  real(dp), parameter :: krylov_speed = 0.235_dp        !< operations per second: GMRES iteration / factorization
   ! Mode auto is an inexact Newton-Krylov method: GMRES is stopped at the relative residual eta_k of
   ! Eisenstat & Walker (1996, SIAM J. Sci. Comput. 17:16-32, "choice 2": eta_k = gamma (|r_k| / |r_(k-1)|)^2,
   ! safeguarded by gamma eta_(k-1)^2 when that exceeds 0.1, capped by eta_max), and never solved more accurately
@@ -52,8 +61,6 @@ module newton_iteration
   !> What the variants carry from one iteration, attempt and increment to the next.
   type :: newton_state_t
     integer :: reuse_count = 0          !< modified Newton: solves with the current factors (saved in restarts)
-    real(dp) :: t_fact_last = 0.0_dp    !< wall time of the last factorization
-    real(dp) :: t_solve_last = 0.0_dp   !< wall time of one solve (GMRES iteration) with the factors
     integer :: tangents_skipped = 0     !< mode auto: iterations assembled without a tangent (this run)
     integer :: stale_solves = 0         !< of those, not converged: solved with the previous iterate's tangent
     character(len=:), allocatable :: last_reason  !< the last cutback reason logged at default verbosity
@@ -61,6 +68,20 @@ module newton_iteration
   end type newton_state_t
 
 contains
+
+  !> Mode auto's GMRES budget with the last factors (a fresh tangent preconditioned by an older factorization): as
+  !> many iterations as cost krylov_budget_share of a factorization, the work counted in floating-point
+  !> operations from the sizes of the factors and the matrix (sparse_system), so that the same deck takes the same
+  !> path on every run, thread count and process count; between 2 and krylov_max_iter.
+  integer function krylov_budget(sys) result(kbudget)
+    type(sparse_system_t), intent(in) :: sys  !< factored system
+    real(dp) :: f_fact, f_iter
+    kbudget = krylov_max_iter
+    f_fact = sparse_factor_flops(sys)
+    f_iter = sparse_iteration_flops(sys)
+    if (f_fact > 0.0_dp .and. f_iter > 0.0_dp) &
+      kbudget = max(2, min(krylov_max_iter, int(krylov_budget_share * krylov_speed * f_fact / f_iter)))
+  end function krylov_budget
 
   !> After a failed attempt: modified Newton starts the next one with a fresh tangent.
   pure subroutine newton_forget_factors(ns)
@@ -93,7 +114,7 @@ contains
     integer :: i, stat, kit, kbudget
     character(len=:), allocatable :: errmsg, pnewdt_who
     character(len=256) :: smsg
-    real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, t0s, r_norm, r_norm_prev, eta, eta_prev, tol
+    real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, r_norm, r_norm_prev, eta, eta_prev, tol
     real(dp) :: pnewdt_min   ! smallest PNEWDT of the user routines (inc%pnewdt at the end)
     real(dp), allocatable :: r_copy(:), k_carry(:)
     logical :: want_k, k_fresh, k_skip, k_stale, carrying
@@ -252,15 +273,9 @@ contains
         else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%eqs%sys)) then
           ! fresh tangent, GMRES preconditioned by the last factorization
           kbudget = krylov_max_iter
-          if (newton == newton_auto .and. ns%t_solve_last > 0.0_dp) &
-            kbudget = max(2, min(krylov_max_iter, int(0.5_dp * ns%t_fact_last / ns%t_solve_last)))
-          ! the budget comes from measured times, which differ between processes: the smallest, on every process
-          ! (GMRES runs collective solves and products: all must take the same iterations)
-          if (parallel_distributed(an%par)) kbudget = nint(parallel_min(an%par, real(kbudget, dp)))
+          if (newton == newton_auto) kbudget = krylov_budget(an%eqs%sys)
           r_copy = r(1:an%eqs%neq)
-          t0s = sparse_time_solve(an%eqs%sys)
           call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, kbudget, kbudget, kit, stat, smsg)
-          if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%eqs%sys) - t0s) / real(kit, dp)
           summary%krylov_iterations = summary%krylov_iterations + kit
           if (stat == 0) then
             summary%krylov_solves = summary%krylov_solves + 1
@@ -275,24 +290,19 @@ contains
             outcome = 'cutback: solve failed'
             exit newton_loop
           end if
-          t0s = sparse_time_factor(an%eqs%sys)
           call sparse_factorize(an%eqs%sys, stat, smsg)
-          ns%t_fact_last = sparse_time_factor(an%eqs%sys) - t0s
           ns%reuse_count = 0
           if (stat /= 0) then
             outcome = 'cutback: singular tangent'
             if (verbose) call output_log(out, '  '//trim(smsg))
             exit newton_loop
           end if
-          t0s = sparse_time_solve(an%eqs%sys)
           if (sparse_factors_exact(an%eqs%sys)) then
             call sparse_solve(an%eqs%sys, r, stat, smsg)
-            if (ns%t_solve_last <= 0.0_dp) ns%t_solve_last = sparse_time_solve(an%eqs%sys) - t0s
           else
             ! preconditioning factors only (--factors symmetric/single): GMRES with them, the whole budget; when
             ! it does not reach tol, its best iterate (the residual only decreases in GMRES) is an inexact step
             call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, krylov_max_iter, krylov_max_iter, kit, stat, smsg)
-            if (kit > 0) ns%t_solve_last = (sparse_time_solve(an%eqs%sys) - t0s) / real(kit, dp)
             summary%krylov_iterations = summary%krylov_iterations + kit
             summary%krylov_solves = summary%krylov_solves + 1
             if (stat == 1) then

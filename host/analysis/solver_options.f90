@@ -13,7 +13,7 @@ module solver_options
   !> a fresh tangent when the residual contracts poorly; krylov = fresh tangent every iteration, solved by GMRES
   !> preconditioned with the last factorization to 1e-8 (the iterates of full Newton), refactorized when GMRES
   !> does not converge quickly; auto = inexact Newton-Krylov: GMRES stopped at the forcing terms of Eisenstat and
-  !> Walker (newton_iteration), its budget set from the measured cost of a factorization against a solve.
+  !> Walker (newton_iteration), its budget set from the operation counts of a factorization and of a GMRES iteration.
   integer, parameter :: newton_full = 1, newton_modified = 2, newton_krylov = 3, newton_auto = 4
 
   !> Run-time choices of the solver (command line; defaults: Abaqus-like full Newton, no accuracy control).

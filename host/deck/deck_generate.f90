@@ -82,6 +82,7 @@ contains
       nstep = (b - a) / inc
       xa = ctx%model%x(:, ia)
       xb = ctx%model%x(:, ib)
+      has_normal = .false.
       if (line /= 'L') then
         ! the extra point: a node (field 4) or coordinates (fields 5-7); a normal (fields 8-10)
         v = 0.0_dp
@@ -92,7 +93,6 @@ contains
           end if
         end if
         has_point = .false.
-        has_normal = .false.
         do k = 5, n
           if (len_trim(f(k)) == 0) cycle
           if (.not. ctx_get_real(ctx, i, f(k), v(k - 4))) return

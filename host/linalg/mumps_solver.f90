@@ -100,7 +100,8 @@ contains
     ms%distributed = present(comm) .and. present(rank)
     ms%host = .true.
     if (ms%distributed) ms%host = rank == 0
-    ms%dist_vectors = ms%distributed .and. .not. env_set('LDFCZ_MUMPS_CENTRAL_RHS')
+    ms%dist_vectors = .false.
+    if (ms%distributed) ms%dist_vectors = .not. env_set('LDFCZ_MUMPS_CENTRAL_RHS')
     if (ms%single) then
       call analyse_single(ms, symmetric, n, irn, jcn, pivot_position, stat, errmsg, comm)
       return

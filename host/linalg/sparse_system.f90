@@ -29,11 +29,18 @@
 !> gathered on every process (one all-gather; the solution comes back on rank 0 and is broadcast only when
 !> LDFCZ_MUMPS_CENTRAL_RHS asks for MUMPS' central vectors); products A x sum the processes' parts
 !> (parallel_context), so every process holds the same vectors and the Newton decisions built on them agree.
+!> MUMPS' parallel factorization and solve add the contributions of the processes in the order its messages arrive,
+!> so two identical distributed runs differ in the last bits (1e-14 to 1e-11 relative, then possibly in the path).
+!> With LDFCZ_REPRODUCIBLE set (to anything but '' or '0') a distributed system is factorized and solved on rank 0
+!> alone instead (solo): the processes' entries gathered there in rank order (MPI_Gatherv), one MUMPS instance of
+!> rank 0 alone (MPI_COMM_SELF, centralized input, duplicates summed in input order), the solution broadcast:
+!> identical runs give identical bits, at the price of a sequential factorization (docs/host.md).
 module sparse_system
   use ldfcz_kinds, only: dp, i8
   use sparse_pattern, only: build_pattern, build_slot_map, find_in_row
   use metis_ordering, only: node_graph_from_elements, metis_node_order, equation_order_from_nodes, is_permutation
-  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_bcast, parallel_gather_pieces
+  use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_bcast, parallel_gather_pieces, &
+    parallel_concat_first, parallel_comm_self, parallel_first_error
   use mumps_solver, only: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy, &
                           mumps_factor_entries, mumps_pivot_order, mumps_is_factored, mumps_solution_rows, &
                           mumps_solution_distributed, mumps_factor_flops
@@ -47,7 +54,7 @@ module sparse_system
   public :: sparse_time_solve, sparse_factor_count, sparse_analysis_count, sparse_solve_count
   public :: sparse_ordering, sparse_pivot_order, sparse_to_dense, sparse_is_symmetric
   public :: sparse_is_factored, sparse_solve_krylov, sparse_krylov_count, sparse_factors_exact, sparse_time_comm
-  public :: sparse_set_factor_threads, sparse_factor_flops
+  public :: sparse_set_factor_threads, sparse_factor_flops, sparse_iteration_flops
 
   !> A sparse system with its pattern, values, ordering and MUMPS instance (components private).
   type :: sparse_system_t
@@ -73,6 +80,11 @@ module sparse_system
     real(dp) :: factor_min_flops = huge(1.0_dp)     !< operations from which a factorization is large
     type(parallel_t) :: par                         !< processes of the run (distributed: several)
     logical :: distributed = .false.                !< this process adds its own elements only
+    real(dp) :: product_entries = 0.0_dp            !< stored entries of every process's part (the product's work)
+    logical :: solo = .false.                       !< distributed, factorized and solved on rank 0 alone (above)
+    logical :: solo_factored = .false.              !< solo: the last factorization succeeded (on every process)
+    real(dp) :: solo_flops = 0.0_dp                 !< solo: rank 0's factorization operations, on every process
+    integer(i8) :: solo_entries = 0                 !< solo: rank 0's factor entries, on every process
     real(dp) :: t_analysis = 0.0_dp                 !< wall seconds in setup (pattern, ordering, analysis)
     real(dp) :: t_factor = 0.0_dp                   !< wall seconds in factorizations
     real(dp) :: t_solve = 0.0_dp                    !< wall seconds in solves
@@ -105,6 +117,7 @@ contains
     integer :: nnode, nelem, i, k, m, j
     integer(i8) :: c0
     logical :: metis
+    real(dp) :: entries(1)
 
     stat = 0
     errmsg = ''
@@ -145,6 +158,8 @@ contains
       sys%par = par
       sys%distributed = parallel_distributed(par) .and. present(owned)
     end if
+    sys%solo = .false.
+    if (sys%distributed) sys%solo = env_set('LDFCZ_REPRODUCIBLE')
 
     ! a process of a distributed run builds its part of the matrix only: the pattern of its own elements (the others
     ! as if all their dofs were constrained). Its entries are its MUMPS input (MUMPS sums the entries that several
@@ -218,13 +233,17 @@ contains
         end if
       end do
       sys%val_sym = 0.0_dp
-      if (sys%distributed) then
+      if (sys%solo) then
+        call solo_analyse(sys, .true., sys%irn(sys%up_entry), sys%jcn(sys%up_entry), stat, errmsg)
+      else if (sys%distributed) then
         call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
           sys%eq_position, stat, errmsg, single=sys%single_factors, comm=sys%par%comm, rank=sys%par%rank)
       else
         call mumps_analyse(sys%solver, .true., neq, sys%irn(sys%up_entry), sys%jcn(sys%up_entry), &
           sys%eq_position, stat, errmsg, single=sys%single_factors)
       end if
+    else if (sys%solo) then
+      call solo_analyse(sys, symmetric, sys%irn, sys%jcn, stat, errmsg)
     else if (sys%distributed) then
       call mumps_analyse(sys%solver, symmetric, neq, sys%irn, sys%jcn, sys%eq_position, stat, errmsg, &
         single=sys%single_factors, comm=sys%par%comm, rank=sys%par%rank)
@@ -233,8 +252,16 @@ contains
         single=sys%single_factors)
     end if
     sys%n_analysis = sys%n_analysis + 1
+    if (stat /= 0) then
+      sys%t_analysis = sys%t_analysis + seconds_since(c0)
+      return
+    end if
+    ! the work of a product counts every process's entries: the same number on every process (collective, after
+    ! the analysis, whose failure every process sees alike)
+    entries = real(size(sys%jcn), dp)
+    if (sys%distributed) call parallel_sum(sys%par, entries)
+    sys%product_entries = entries(1)
     sys%t_analysis = sys%t_analysis + seconds_since(c0)
-    if (stat /= 0) return
     sys%ready = .true.
   end subroutine sparse_setup
 
@@ -304,7 +331,14 @@ contains
     wide = sys%factor_threads > 1 .and. mumps_factor_flops(sys%solver) >= sys%factor_min_flops
     if (wide) wide = blas_threads_set(sys%factor_threads)
     ! (distributed: a process's values, of its own elements' pattern, are its MUMPS input)
-    if (sys%sym_factors) then
+    if (sys%solo) then
+      if (sys%sym_factors) then
+        sys%val_sym = 0.5_dp * (sys%val(sys%up_entry) + sys%val(sys%lo_entry))
+        call solo_factorize(sys, sys%val_sym, stat, errmsg)
+      else
+        call solo_factorize(sys, sys%val, stat, errmsg)
+      end if
+    else if (sys%sym_factors) then
       sys%val_sym = 0.5_dp * (sys%val(sys%up_entry) + sys%val(sys%lo_entry))
       call mumps_factorize(sys%solver, sys%val_sym, stat, errmsg)
     else
@@ -329,8 +363,97 @@ contains
   !> of the last); 0 before the setup.
   real(dp) function sparse_factor_flops(sys) result(flops)
     type(sparse_system_t), intent(in) :: sys        !< system
-    flops = mumps_factor_flops(sys%solver)
+    if (sys%solo) then
+      flops = sys%solo_flops
+    else
+      flops = mumps_factor_flops(sys%solver)
+    end if
   end function sparse_factor_flops
+
+  !> Solo (LDFCZ_REPRODUCIBLE, distributed): the processes' MUMPS input (row and column of each of their entries)
+  !> gathered on rank 0 in rank order and analysed there by an instance of rank 0 alone; the outcome on every
+  !> process.
+  subroutine solo_analyse(sys, symmetric, irn, jcn, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< system being set up
+    logical, intent(in) :: symmetric                !< LDL^T of the upper triangle (else LU)
+    integer, intent(in) :: irn(:), jcn(:)           !< this process's entries
+    integer, intent(out) :: stat                    !< 0 on success (the same on every process)
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    integer, allocatable :: all_irn(:), all_jcn(:)
+    call parallel_concat_first(sys%par, irn, all_irn)
+    call parallel_concat_first(sys%par, jcn, all_jcn)
+    stat = 0
+    errmsg = ''
+    if (sys%par%rank == 0) call mumps_analyse(sys%solver, symmetric, sys%neq, all_irn, all_jcn, sys%eq_position, &
+      stat, errmsg, single=sys%single_factors, comm=parallel_comm_self())
+    call agree(sys, stat, errmsg)
+    sys%solo_factored = .false.
+    call share_counts(sys)
+  end subroutine solo_analyse
+
+  !> Solo: the processes' values gathered on rank 0 (the order of solo_analyse) and factorized there.
+  subroutine solo_factorize(sys, values, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< analysed system
+    real(dp), intent(in) :: values(:)               !< this process's entries
+    integer, intent(out) :: stat                    !< 0 on success (the same on every process)
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    real(dp), allocatable :: all_values(:)
+    call parallel_concat_first(sys%par, values, all_values)
+    stat = 0
+    errmsg = ''
+    if (sys%par%rank == 0) call mumps_factorize(sys%solver, all_values, stat, errmsg)
+    call agree(sys, stat, errmsg)
+    sys%solo_factored = stat == 0
+    call share_counts(sys)
+  end subroutine solo_factorize
+
+  !> Solo: rank 0's status and message on every process (collective).
+  subroutine agree(sys, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< system
+    integer, intent(inout) :: stat                  !< rank 0's status out
+    character(len=*), intent(inout) :: errmsg       !< rank 0's message out
+    character(len=:), allocatable :: text
+    text = trim(errmsg)
+    call parallel_first_error(sys%par, stat, text)
+    errmsg = text
+  end subroutine agree
+
+  !> Solo: rank 0's operation count and factor entries on every process (the GMRES budget and the summary use
+  !> them).
+  subroutine share_counts(sys)
+    type(sparse_system_t), intent(inout) :: sys     !< system
+    real(dp) :: v(2)
+    v = [mumps_factor_flops(sys%solver), real(mumps_factor_entries(sys%solver), dp)]
+    call parallel_bcast(sys%par, v)
+    sys%solo_flops = v(1)
+    sys%solo_entries = nint(v(2), i8)
+  end subroutine share_counts
+
+  !> True when the environment variable is set to something other than '' or '0'.
+  logical function env_set(name)
+    character(len=*), intent(in) :: name            !< variable
+    character(len=16) :: val
+    integer :: length, status
+    call get_environment_variable(name, val, length, status)
+    env_set = status == 0 .and. length > 0 .and. trim(val) /= '0'
+  end function env_set
+
+  !> Floating-point operations of one GMRES iteration of sparse_solve_krylov with the last factors, counted from the
+  !> sizes of the factors and the matrix: the two triangular sweeps (2 per factor entry and sweep: LU uses each
+  !> entry of L or U in one sweep, LDL^T each entry of L in both) and the product (2 per stored entry, 4 for the
+  !> upper triangle of a symmetric matrix, whose off-diagonal entries act twice). The orthogonalisation (4 n j at
+  !> iteration j) is left out. The same number on every run, thread count and process (MUMPS' global entry count,
+  !> the processes' entries summed at set-up): a measure of work that decisions may use (newton_iteration);
+  !> 0 before a factorization.
+  real(dp) function sparse_iteration_flops(sys) result(flops)
+    type(sparse_system_t), intent(in) :: sys        !< system
+    real(dp) :: sweeps, product
+    flops = 0.0_dp
+    if (.not. sparse_is_factored(sys)) return
+    sweeps = merge(4.0_dp, 2.0_dp, sys%symmetric .or. sys%sym_factors)
+    product = merge(4.0_dp, 2.0_dp, sys%symmetric)
+    flops = sweeps * real(sparse_factor_entries(sys), dp) + product * sys%product_entries
+  end function sparse_iteration_flops
 
   !> True when the factors are those of the stored matrix (sparse_solve solves it), false when they are the
   !> symmetric part's or in single precision (a preconditioner for sparse_solve_krylov only).
@@ -367,6 +490,14 @@ contains
     integer, intent(out) :: stat                    !< 0 on success (the same on every process: MUMPS INFOG)
     character(len=*), intent(out) :: errmsg         !< reason on failure
     integer, allocatable :: rows(:)
+    if (sys%solo) then
+      stat = 0
+      errmsg = ''
+      if (sys%par%rank == 0) call mumps_solve(sys%solver, rhs, stat, errmsg)
+      call agree(sys, stat, errmsg)
+      if (stat == 0) call parallel_bcast(sys%par, rhs)
+      return
+    end if
     call mumps_solve(sys%solver, rhs, stat, errmsg)
     if (.not. sys%distributed .or. stat /= 0) return
     if (mumps_solution_distributed(sys%solver)) then
@@ -424,7 +555,11 @@ contains
   !> True when factors from an earlier sparse_factorize are available (possibly of older values).
   logical function sparse_is_factored(sys)
     type(sparse_system_t), intent(in) :: sys        !< system
-    sparse_is_factored = sys%ready .and. mumps_is_factored(sys%solver)
+    if (sys%solo) then
+      sparse_is_factored = sys%ready .and. sys%solo_factored
+    else
+      sparse_is_factored = sys%ready .and. mumps_is_factored(sys%solver)
+    end if
   end function sparse_is_factored
 
   !> Solve A x = rhs for the CURRENT values A by restarted GMRES(m), right-preconditioned by the LAST factors
@@ -552,6 +687,10 @@ contains
     if (allocated(sys%lo_entry)) deallocate(sys%lo_entry)
     if (allocated(sys%val_sym)) deallocate(sys%val_sym)
     sys%distributed = .false.
+    sys%solo = .false.
+    sys%solo_factored = .false.
+    sys%solo_flops = 0.0_dp
+    sys%solo_entries = 0
     sys%sym_factors = .false.
     sys%single_factors = .false.
     sys%neq = 0
@@ -593,7 +732,11 @@ contains
   !> Entries in the factors (MUMPS INFOG(29) after a factorization, the INFOG(20) estimate before).
   integer(i8) function sparse_factor_entries(sys)
     type(sparse_system_t), intent(in) :: sys        !< system
-    sparse_factor_entries = mumps_factor_entries(sys%solver)
+    if (sys%solo) then
+      sparse_factor_entries = sys%solo_entries
+    else
+      sparse_factor_entries = mumps_factor_entries(sys%solver)
+    end if
   end function sparse_factor_entries
 
   !> Cumulative wall seconds in setup (pattern, slot maps, ordering, MUMPS analysis).

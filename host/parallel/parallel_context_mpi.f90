@@ -11,6 +11,12 @@ module parallel_context
   public :: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed
   public :: parallel_sum, parallel_max, parallel_min, parallel_any, parallel_lowest, parallel_bcast
   public :: parallel_file, parallel_barrier, parallel_first_error, parallel_gather_pieces, parallel_build_is_mpi
+  public :: parallel_concat_first, parallel_comm_self
+
+  !> The processes' lists one after the other (rank order) on rank 0: MPI_Gatherv, the same order on every run.
+  interface parallel_concat_first
+    module procedure concat_first_int, concat_first_real
+  end interface parallel_concat_first
 
   !> Where this process stands among the processes of the run.
   type :: parallel_t
@@ -240,6 +246,59 @@ contains
     end if
     par%t_comm = par%t_comm + since(c0)
   end subroutine parallel_first_error
+
+  !> all <- on rank 0 the lists of every process in rank order (size 0 elsewhere).
+  subroutine concat_first_int(par, mine, all)
+    type(parallel_t), intent(inout) :: par               !< context
+    integer, intent(in) :: mine(:)                       !< this process's list
+    integer, allocatable, intent(inout) :: all(:)        !< rank 0: the lists of every process, in rank order
+    integer, allocatable :: counts(:), displs(:)
+    integer :: ierr
+    integer(i8) :: c0
+    c0 = clock()
+    call gather_layout(par, size(mine), counts, displs)
+    if (allocated(all)) deallocate (all)
+    allocate (all(merge(sum(counts), 0, par%rank == 0)))
+    call MPI_Gatherv(mine, size(mine), MPI_INTEGER, all, counts, displs, MPI_INTEGER, 0, par%comm, ierr)
+    par%t_comm = par%t_comm + since(c0)
+  end subroutine concat_first_int
+
+  !> all <- on rank 0 the lists of every process in rank order (size 0 elsewhere).
+  subroutine concat_first_real(par, mine, all)
+    type(parallel_t), intent(inout) :: par               !< context
+    real(dp), intent(in) :: mine(:)                      !< this process's list
+    real(dp), allocatable, intent(inout) :: all(:)       !< rank 0: the lists of every process, in rank order
+    integer, allocatable :: counts(:), displs(:)
+    integer :: ierr
+    integer(i8) :: c0
+    c0 = clock()
+    call gather_layout(par, size(mine), counts, displs)
+    if (allocated(all)) deallocate (all)
+    allocate (all(merge(sum(counts), 0, par%rank == 0)))
+    call MPI_Gatherv(mine, size(mine), MPI_DOUBLE_PRECISION, all, counts, displs, MPI_DOUBLE_PRECISION, 0, &
+      par%comm, ierr)
+    par%t_comm = par%t_comm + since(c0)
+  end subroutine concat_first_real
+
+  !> The processes' list sizes and their offsets in the concatenation (on rank 0; zeros elsewhere).
+  subroutine gather_layout(par, n, counts, displs)
+    type(parallel_t), intent(in) :: par                  !< context
+    integer, intent(in) :: n                             !< this process's list size
+    integer, allocatable, intent(out) :: counts(:), displs(:)
+    integer :: ierr, p
+    allocate (counts(par%nranks), displs(par%nranks))
+    counts = 0
+    call MPI_Gather(n, 1, MPI_INTEGER, counts, 1, MPI_INTEGER, 0, par%comm, ierr)
+    displs(1) = 0
+    do p = 2, par%nranks
+      displs(p) = displs(p - 1) + counts(p - 1)
+    end do
+  end subroutine gather_layout
+
+  !> The communicator of this process alone.
+  integer function parallel_comm_self() result(comm)
+    comm = MPI_COMM_SELF
+  end function parallel_comm_self
 
   integer(i8) function clock() result(c)
     call system_clock(c)

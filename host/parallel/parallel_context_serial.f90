@@ -9,6 +9,12 @@ module parallel_context
   public :: parallel_t, parallel_init, parallel_finalize, parallel_writer, parallel_distributed
   public :: parallel_sum, parallel_max, parallel_min, parallel_any, parallel_lowest, parallel_bcast
   public :: parallel_file, parallel_barrier, parallel_first_error, parallel_gather_pieces, parallel_build_is_mpi
+  public :: parallel_concat_first, parallel_comm_self
+
+  !> The processes' lists one after the other (rank order) on rank 0.
+  interface parallel_concat_first
+    module procedure concat_first_int, concat_first_real
+  end interface parallel_concat_first
 
   !> Where this process stands among the processes of the run.
   type :: parallel_t
@@ -133,7 +139,30 @@ contains
     integer, intent(inout) :: code                         !< this process's status (unchanged)
     character(len=:), allocatable, intent(inout) :: text   !< this process's message (unchanged)
     if (.not. allocated(text)) text = ''
-    if (.false.) par%t_comm = 0.0_dp   ! par unused: one process
+    if (.false.) par%t_comm = real(code, dp)   ! par and code unused: one process
   end subroutine parallel_first_error
+
+  !> all <- mine (one process).
+  subroutine concat_first_int(par, mine, all)
+    type(parallel_t), intent(inout) :: par               !< context
+    integer, intent(in) :: mine(:)                       !< this process's list
+    integer, allocatable, intent(inout) :: all(:)        !< the lists of every process, in rank order
+    all = mine
+    if (.false.) par%t_comm = 0.0_dp   ! par unused: one process
+  end subroutine concat_first_int
+
+  !> all <- mine (one process).
+  subroutine concat_first_real(par, mine, all)
+    type(parallel_t), intent(inout) :: par               !< context
+    real(dp), intent(in) :: mine(:)                      !< this process's list
+    real(dp), allocatable, intent(inout) :: all(:)       !< the lists of every process, in rank order
+    all = mine
+    if (.false.) par%t_comm = 0.0_dp   ! par unused: one process
+  end subroutine concat_first_real
+
+  !> The communicator of this process alone (MPI_COMM_SELF in the MPI build).
+  integer function parallel_comm_self() result(comm)
+    comm = 0
+  end function parallel_comm_self
 
 end module parallel_context

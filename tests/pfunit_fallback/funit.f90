@@ -7,8 +7,8 @@ module funit
   implicit none
   private
   public :: assertEqual, assertRelativelyEqual, assertTrue, assertFalse
-  public :: assertLessThan, assertLessThanOrEqual, assertGreaterThan, assertGreaterThanOrEqual, assertIsFinite
-  public :: anyExceptions, pf_begin_test, pf_end_test, pf_summary
+  public :: pf_ordering, assertIsFinite
+  public :: anyExceptions, pf_begin_test, pf_end_test, pf_summary, pf_selected
 
   integer, parameter :: dp = real64
 
@@ -32,10 +32,19 @@ module funit
     module procedure finite_s
   end interface assertIsFinite
 
+  !> The ordering assertions (@assertLessThan, ...; pfpp.py passes the assertion's name as KIND): only the pairs of
+  !> kinds pFUnit accepts (see the specific procedures).
+  interface pf_ordering
+    module procedure ord_i4i4, ord_i8i8, ord_i4i8, ord_i4r4, ord_i4r8, ord_r4r4, ord_r4r8, ord_r8r8
+  end interface pf_ordering
+
   character(len=:), allocatable :: current_test  !< name of the running test
   integer :: failures_in_test = 0                 !< failed assertions in the running test
   integer :: n_passed = 0                         !< tests that passed
   integer :: n_failed = 0                         !< tests that failed
+  logical :: args_read = .false.                  !< the command line has been read
+  character(len=:), allocatable :: name_filter    !< -f/--filter PATTERN: only tests whose name contains it
+  integer :: n_selected = 0                       !< tests the filter let through
 
 contains
 
@@ -45,6 +54,62 @@ contains
   logical function anyExceptions()
     anyExceptions = failures_in_test > 0
   end function anyExceptions
+
+  !> Whether the test procedure NAME (as written in its suite) runs: every test, or with -f PATTERN (--filter
+  !> PATTERN, --filter=PATTERN) those whose name contains PATTERN, as pFUnit 4's driver selects (its NameFilter: a
+  !> substring of the test method's name, case-sensitive). The command line is read at the first call.
+  logical function pf_selected(name)
+    character(len=*), intent(in) :: name
+    if (.not. args_read) call read_arguments()
+    pf_selected = .true.
+    if (allocated(name_filter)) pf_selected = index(name, name_filter) > 0
+    if (pf_selected) n_selected = n_selected + 1
+  end function pf_selected
+
+  !> The options of pFUnit 4's driver that the fallback supports: -f/--filter PATTERN, -d/-v/--debug/--verbose
+  !> (accepted; every test's PASS/FAIL line is printed anyway), -h/--help. Anything else ends the run (status 2).
+  subroutine read_arguments()
+    integer :: i, n, length
+    character(len=:), allocatable :: arg
+    args_read = .true.
+    n = command_argument_count()
+    i = 1
+    do while (i <= n)
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: arg)
+      call get_command_argument(i, arg)
+      select case (arg)
+      case ('-f', '--filter')
+        if (i == n) call usage('option ' // arg // ' needs a PATTERN')
+        i = i + 1
+        call get_command_argument(i, length=length)
+        allocate (character(len=length) :: name_filter)
+        call get_command_argument(i, name_filter)
+      case ('-d', '-v', '--debug', '--verbose')
+      case ('-h', '--help')
+        call usage('')
+      case default
+        if (index(arg, '--filter=') == 1) then
+          name_filter = arg(10:)
+        else
+          call usage('unknown argument ' // arg)
+        end if
+      end select
+      deallocate (arg)
+      i = i + 1
+    end do
+  end subroutine read_arguments
+
+  subroutine usage(problem)
+    character(len=*), intent(in) :: problem
+    if (len(problem) > 0) write (output_unit, '(a)') 'pFUnit fallback: ' // problem
+    write (output_unit, '(a)') 'usage: SUITE [-h] [-d] [-f PATTERN]'
+    write (output_unit, '(a)') '  -f, --filter PATTERN   only run the tests whose name contains PATTERN'
+    write (output_unit, '(a)') '  -d, -v, --debug, --verbose   accepted (every test is reported)'
+    flush (output_unit)
+    if (len(problem) > 0) error stop 2
+    stop
+  end subroutine usage
 
   subroutine pf_begin_test(name)
     character(len=*), intent(in) :: name
@@ -63,10 +128,17 @@ contains
     flush (output_unit)
   end subroutine pf_end_test
 
+  !> The closing line and the exit status: 1 when a test failed; 2 when a filter selected no test (pFUnit runs no
+  !> test and succeeds; here a misspelt name does not pass silently).
   subroutine pf_summary()
     write (output_unit, '(i0,a,i0,a)') n_passed, ' passed, ', n_failed, ' failed'
     flush (output_unit)
     if (n_failed > 0) error stop 1
+    if (allocated(name_filter) .and. n_selected == 0) then
+      write (output_unit, '(a)') 'pFUnit fallback: no test name contains "' // name_filter // '"'
+      flush (output_unit)
+      error stop 2
+    end if
   end subroutine pf_summary
 
   subroutine fail(kind, detail, message, pf_file, pf_line)
@@ -107,7 +179,7 @@ contains
     end select
   end subroutine to_real
 
-  logical function is_integer(x)
+  pure logical function is_integer(x)
     class(*), intent(in) :: x
     select type (x)
     type is (integer(int32))
@@ -425,20 +497,41 @@ contains
 
   ! ---------------------------------------------------------------- ordering assertions
 
-  subroutine ordered(kind, a, b, message, pf_file, pf_line)
+  !> Core of the ordering assertions on two numbers of any kind the specific procedures accept.
+  subroutine ordered(kind, x, y, message, pf_file, pf_line)
     character(len=*), intent(in) :: kind
-    class(*), intent(in) :: a, b
+    real(dp), intent(in) :: x, y
     character(len=*), intent(in), optional :: message
     character(len=*), intent(in) :: pf_file
     integer, intent(in) :: pf_line
-    real(dp) :: x, y
-    logical :: ok1, ok2, holds
-    call to_real(a, x, ok1)
-    call to_real(b, y, ok2)
-    if (.not. (ok1 .and. ok2)) then
-      call fail(kind, 'unsupported argument types', message, pf_file, pf_line)
-      return
-    end if
+    if (.not. holds(kind, x, y)) call fail(kind, 'not true for ' // fmt(x) // ' and ' // fmt(y), message, pf_file, &
+                                            pf_line)
+  end subroutine ordered
+
+  !> The same on two integers (compared as integers: no rounding of large values).
+  subroutine ordered_int(kind, i, j, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    integer(int64), intent(in) :: i, j
+    character(len=*), intent(in), optional :: message
+    character(len=*), intent(in) :: pf_file
+    integer, intent(in) :: pf_line
+    logical :: ok
+    select case (kind)
+    case ('assertLessThan')
+      ok = i < j
+    case ('assertLessThanOrEqual')
+      ok = i <= j
+    case ('assertGreaterThan')
+      ok = i > j
+    case default
+      ok = i >= j
+    end select
+    if (.not. ok) call fail(kind, 'not true for ' // itoa8(i) // ' and ' // itoa8(j), message, pf_file, pf_line)
+  end subroutine ordered_int
+
+  pure logical function holds(kind, x, y)
+    character(len=*), intent(in) :: kind
+    real(dp), intent(in) :: x, y
     select case (kind)
     case ('assertLessThan')
       holds = x < y
@@ -449,40 +542,97 @@ contains
     case default
       holds = x >= y
     end select
-    if (.not. holds) call fail(kind, 'not true for ' // fmt(x) // ' and ' // fmt(y), message, pf_file, pf_line)
-  end subroutine ordered
+  end function holds
 
-  subroutine assertLessThan(a, b, message, pf_file, pf_line)
-    class(*), intent(in) :: a, b
+  function itoa8(i) result(s)
+    integer(int64), intent(in) :: i
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    write (buf, '(i0)') i
+    s = trim(buf)
+  end function itoa8
+
+  ! The specific procedures of pf_ordering: the pairs of kinds pFUnit 4 accepts in an ordering assertion (its
+  ! Assert_Integer "useful" and Assert_Real "no_tol" lists): both integers of one kind or a default integer before a
+  ! 64-bit one; an integer or a real before a real of the same or a higher kind. A first argument of a higher kind
+  ! than the second (a real64 before an integer, a real64 before a real32) has no procedure, as in pFUnit: the suite
+  ! does not compile ("no specific subroutine for the generic 'pf_ordering'").
+
+  subroutine ord_i4i4(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    integer(int32), intent(in) :: a, b
     character(len=*), intent(in), optional :: message
     character(len=*), intent(in) :: pf_file
     integer, intent(in) :: pf_line
-    call ordered('assertLessThan', a, b, message, pf_file, pf_line)
-  end subroutine assertLessThan
+    call ordered_int(kind, int(a, int64), int(b, int64), message, pf_file, pf_line)
+  end subroutine ord_i4i4
 
-  subroutine assertLessThanOrEqual(a, b, message, pf_file, pf_line)
-    class(*), intent(in) :: a, b
+  subroutine ord_i8i8(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    integer(int64), intent(in) :: a, b
     character(len=*), intent(in), optional :: message
     character(len=*), intent(in) :: pf_file
     integer, intent(in) :: pf_line
-    call ordered('assertLessThanOrEqual', a, b, message, pf_file, pf_line)
-  end subroutine assertLessThanOrEqual
+    call ordered_int(kind, a, b, message, pf_file, pf_line)
+  end subroutine ord_i8i8
 
-  subroutine assertGreaterThan(a, b, message, pf_file, pf_line)
-    class(*), intent(in) :: a, b
+  subroutine ord_i4i8(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    integer(int32), intent(in) :: a
+    integer(int64), intent(in) :: b
     character(len=*), intent(in), optional :: message
     character(len=*), intent(in) :: pf_file
     integer, intent(in) :: pf_line
-    call ordered('assertGreaterThan', a, b, message, pf_file, pf_line)
-  end subroutine assertGreaterThan
+    call ordered_int(kind, int(a, int64), b, message, pf_file, pf_line)
+  end subroutine ord_i4i8
 
-  subroutine assertGreaterThanOrEqual(a, b, message, pf_file, pf_line)
-    class(*), intent(in) :: a, b
+  subroutine ord_i4r4(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    integer(int32), intent(in) :: a
+    real(real32), intent(in) :: b
     character(len=*), intent(in), optional :: message
     character(len=*), intent(in) :: pf_file
     integer, intent(in) :: pf_line
-    call ordered('assertGreaterThanOrEqual', a, b, message, pf_file, pf_line)
-  end subroutine assertGreaterThanOrEqual
+    call ordered(kind, real(a, dp), real(b, dp), message, pf_file, pf_line)
+  end subroutine ord_i4r4
+
+  subroutine ord_i4r8(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    integer(int32), intent(in) :: a
+    real(real64), intent(in) :: b
+    character(len=*), intent(in), optional :: message
+    character(len=*), intent(in) :: pf_file
+    integer, intent(in) :: pf_line
+    call ordered(kind, real(a, dp), b, message, pf_file, pf_line)
+  end subroutine ord_i4r8
+
+  subroutine ord_r4r4(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    real(real32), intent(in) :: a, b
+    character(len=*), intent(in), optional :: message
+    character(len=*), intent(in) :: pf_file
+    integer, intent(in) :: pf_line
+    call ordered(kind, real(a, dp), real(b, dp), message, pf_file, pf_line)
+  end subroutine ord_r4r4
+
+  subroutine ord_r4r8(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    real(real32), intent(in) :: a
+    real(real64), intent(in) :: b
+    character(len=*), intent(in), optional :: message
+    character(len=*), intent(in) :: pf_file
+    integer, intent(in) :: pf_line
+    call ordered(kind, real(a, dp), b, message, pf_file, pf_line)
+  end subroutine ord_r4r8
+
+  subroutine ord_r8r8(kind, a, b, message, pf_file, pf_line)
+    character(len=*), intent(in) :: kind
+    real(real64), intent(in) :: a, b
+    character(len=*), intent(in), optional :: message
+    character(len=*), intent(in) :: pf_file
+    integer, intent(in) :: pf_line
+    call ordered(kind, a, b, message, pf_file, pf_line)
+  end subroutine ord_r8r8
 
   ! ---------------------------------------------------------------- assertIsFinite
 

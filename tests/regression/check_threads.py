@@ -13,8 +13,8 @@ CSV value within --rel relative; the same with every factorization on 2 OpenBLAS
 Then the kernels of OpenBLAS (host/linalg/blas_kernels.c): those JOB.log names fit the CPU's instructions, and a
 user's OPENBLAS_CORETYPE is kept. Then the warning of host/linalg/omp_wait.f90 in JOB.log: present with 2 threads
 and OMP_WAIT_POLICY=active or GOMP_SPINCOUNT=infinite, absent with 1 thread, the passive or the default policy.
-Use a deck with the default full Newton: `--newton auto` sizes its GMRES budget
-from measured times, which may take another path to the same tolerance.
+(`--newton auto` is as reproducible: its GMRES budget is counted in operations, not measured times; test
+reproducible_peel3d, tests/regression/check_reproducible.py.)
 """
 import argparse
 import os
