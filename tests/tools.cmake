@@ -4,19 +4,18 @@
 # error; under mpirun -np 2 in the LDFCZ_MPI build); the package's own unit tests (tests/tools, no network, seconds).
 if(TARGET ldfcz_host)
   ldfcz_add_pf_suite(NAME test_json_writer PF test_json_writer.pf LINK ldfcz_host)
-  set_property(TEST test_json_writer APPEND PROPERTY LABELS "tools")
 endif()
 if(TARGET ldfcz)
   set(_ldfcz_summary_check "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_summary_json.py"
       --exe $<TARGET_FILE:ldfcz> --decks "${PROJECT_SOURCE_DIR}/decks/single" --doc "${PROJECT_SOURCE_DIR}/docs/summary.md")
   add_test(NAME summary_json_keys COMMAND Python3::Interpreter ${_ldfcz_summary_check}
            --out "${CMAKE_CURRENT_BINARY_DIR}/summary_json_keys")
-  set_tests_properties(summary_json_keys PROPERTIES LABELS "tools;deck" TIMEOUT 300
+  set_tests_properties(summary_json_keys PROPERTIES LABELS "tools" TIMEOUT 300
     PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
   if(LDFCZ_MPI)
     add_test(NAME summary_json_mpi COMMAND Python3::Interpreter ${_ldfcz_summary_check}
              --out "${CMAKE_CURRENT_BINARY_DIR}/summary_json_mpi" --np 2)
-    set_tests_properties(summary_json_mpi PROPERTIES LABELS "tools;mpi" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}"
+    set_tests_properties(summary_json_mpi PROPERTIES LABELS "mpi" TIMEOUT 300 ENVIRONMENT "${LDFCZ_MPI_ENV}"
       PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
   endif()
 endif()
