@@ -4,7 +4,8 @@
 program ldfcz
   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
-  use ldfcz_config, only: ldfcz_version, ldfcz_abaqus_include_dir, ldfcz_install_include_rel
+  use ldfcz_config, only: ldfcz_version, ldfcz_commit, ldfcz_build_type, ldfcz_abaqus_include_dir, &
+    ldfcz_install_include_rel
   use model_types, only: model_t
   use deck_reader, only: read_deck
   use user_routines, only: user_routines_connect_units, user_routines_t, user_routines_builtin, user_routines_load
@@ -70,7 +71,8 @@ program ldfcz
       call parallel_finalize(par)
       stop
     case ('-V', '--version')
-      if (parallel_writer(par)) write (output_unit, '(a)') 'ldfcz '//ldfcz_version
+      if (parallel_writer(par)) write (output_unit, '(a)') 'ldfcz '//ldfcz_version//' (commit '// &
+        ldfcz_commit//', '//ldfcz_build_type//' build)'
       call parallel_finalize(par)
       stop
     case ('-q', '--quiet')
@@ -216,7 +218,8 @@ program ldfcz
   out%npieces = par%nranks   ! VTU frames: one piece per process (JOB_NNNN.pvtu)
   if (stat /= 0) call die(errmsg)
   out_open = .true.
-  call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
+  call output_log(out, 'ldfcz '//ldfcz_version//' (commit '//ldfcz_commit//', '//ldfcz_build_type// &
+    ' build): job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
     ! each process of an MPI run compiles into a directory of its own (no two compilers writing one file)
     user_dir = outdir
