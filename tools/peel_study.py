@@ -60,6 +60,15 @@ READING_B = ['--rigid-substrate', '--reading', 'peel', '--flap', '0.1', '--grip'
 # region, long enough for its plateau (from about 110-140 um of pull; stmt-3d-long pulls 0.32 mm for the same value
 # within the uncertainties)
 MAIN_B = READING_B + ['--u-total', '0.2', '--fine-length', '0.25', '--bonded', '0.35']
+# Reading A as the scene of the studies of issue 35 (main-mesh): pulled 0.1 mm over a 0.2 mm fine region (the front,
+# about 125 um delaminated at the end, stays 75 um, more than twice its process zone, inside the fine region).
+SCENE_A = ['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.2']
+# The main scene (issue 35): reading A, the paper's text (u_x on one end of the coating), on the mesh of the
+# main-mesh study
+MAIN_A_MESH = ['--le', '0.005', '--nz', '5']
+MAIN_A = SCENE_A + MAIN_A_MESH
+# Reading B pulled until every run reads its plateau (0.32 mm over a 0.4 mm fine region; issue 17)
+LONG_B = READING_B + ['--u-total', '0.32', '--fine-length', '0.4', '--bonded', '0.5']
 
 
 def studies(quick):
@@ -173,6 +182,54 @@ def studies(quick):
                             ('%s/%s phi=0.4' % (k, pet), g + ['--phi', '0.4'], False),
                             ('%s/%s rate=1e-4' % (k, pet), g + ['--rate', '1e-4'], False),
                             ('%s/%s rate=1e-2' % (k, pet), g + ['--rate', '1e-2'], False)]
+    # ---- issue 35: the main scene (reading A) without the ripple. Element length l_e x elements through the
+    # thickness n_z x element formulation (CPE4: full integration, F-bar; CPE4I: incompatible modes, free of
+    # shear locking in bending), so that the thickness error is separated from l_e; reference: the finest of each
+    # formulation (marked *, one per formulation)
+    mm_les = [0.01, 0.005] if quick else [0.01, 0.005, 0.0025]
+    mm_nzs = [3, 5] if quick else [3, 5, 9]
+    s['main-mesh'] = []
+    for el, ea in (('CPE4', []), ('CPE4I', ['--incompatible'])):
+        s['main-mesh'] += [('%s le=%g nz=%d' % (el, le, nz), SCENE_A + ['--le', str(le), '--nz', str(nz)] + ea,
+                            le == mm_les[-1] and nz == mm_nzs[-1]) for nz in mm_nzs for le in mm_les]
+    # the three unloading behaviours of the cohesive law (paper Fig. 6, section 8: no noticeable influence) on the
+    # main scene; reference: 2 (elastic damage, the decks' default)
+    s['unloading'] = [('A unloading=%d' % k, MAIN_A + ['--unloading', str(k)], k == 2) for k in (1, 2, 3)]
+    s['unloading'] += [('B unloading=%d' % k, LONG_B + ['--unloading', str(k)], k == 2)
+                       for k in ((2,) if quick else (1, 2, 3))]
+    # reading B on the elastic steel substrate against the rigid one (reading A: simplifications study)
+    steel_b = [a for a in LONG_B if a != '--rigid-substrate']
+    s['steel-b'] = [('B rigid substrate', LONG_B, True), ('B steel substrate', steel_b, False)]
+    # the plane-strain/3D gap (section 9) and the lateral contraction: plane strain, 3D quarter models of growing
+    # width b (element width 10 um), and the 3D quarter with its free edge y = b held in y (u_y = 0: no lateral
+    # contraction at the edge); l_e = 10 um, n_z = 3. Reference: plane strain
+    wb = [0.02, 0.04] if quick else [0.02, 0.04, 0.08, 0.16]
+    s['width-3d'] = [('A plane strain', SCENE_A, True)]
+    s['width-3d'] += [('A 3D b=%g ny=%d' % (b, round(b / 0.01)), SCENE_A + ['--3d', '--width', str(b), '--ny',
+                                                                           str(round(b / 0.01))], False,
+                       ['--newton', 'auto']) for b in wb]
+    s['width-3d'] += [('A 3D b=0.04 ny=4 edge held in y', SCENE_A + ['--3d', '--width', '0.04', '--ny', '4',
+                                                                     '--edge-fixed-y'], False, ['--newton', 'auto'])]
+    if not quick:
+        s['width-3d'] += [('B plane strain', LONG_B, True),
+                          ('B 3D b=0.04 ny=2', LONG_B + ['--3d', '--width', '0.04', '--ny', '2'], False,
+                           ['--newton', 'auto']),
+                          ('B 3D b=0.04 ny=2 edge held in y', LONG_B + ['--3d', '--width', '0.04', '--ny', '2',
+                                                                         '--edge-fixed-y'], False,
+                           ['--newton', 'auto'])]
+    # the alternative reading of Table 1 (--pet alt) on the plane-strain/3D statement, both readings (Table 1 as
+    # printed: stmt-3d-fine and stmt-3d-long); reference per reading: 3D
+    s['pet-alt'] = [('A plane strain', SCENE_A + ['--pet', 'alt'], False),
+                    ('A 3D b=0.04 ny=2', SCENE_A + ['--pet', 'alt', '--3d', '--width', '0.04', '--ny', '2'], True,
+                     ['--newton', 'auto']),
+                    ('B plane strain', LONG_B + ['--pet', 'alt'], False),
+                    ('B 3D b=0.04 ny=2', LONG_B + ['--pet', 'alt', '--3d', '--width', '0.04', '--ny', '2'], True,
+                     ['--newton', 'auto'])]
+    # Fig. 13: the main scene's reading and mesh pulled until 1.0 mm has delaminated (plane strain; the 3D quarter
+    # of section 8 is the application study), with the Mises picture of the last frame
+    s['fig13'] = [('A plane strain 1.0 mm', MAIN_A_MESH + ['--rigid-substrate', '--fine-length', '1.1', '--bonded',
+                                                           '1.25', '--u-total', '0.75', '--field-frequency', '200'],
+                   True)]
     s['dofs'] = [('le=%g nz=%d' % (le, nz), DEFAULT_PS + ['--le', str(le), '--nz', str(nz), '--u-total', '0.01'],
                   False) for le, nz in ((0.02, 2), (0.01, 3), (0.005, 3), (0.0025, 5))]
     # 3D members (short pulls): a wider range of DOFs, where the factorization begins to show.
@@ -220,6 +277,39 @@ def studies(quick):
             '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72', '--field-frequency', '40'], True,
             app_solver + ['--factors', 'symmetric-single'])]
     return s
+
+
+def stamp():
+    """Provenance of a report: the source tree's commit (and whether tracked files differed from it), the ldfcz
+    program's own `ldfcz -V` line (its commit at configure time and build type), the command, the date and the
+    machine. Returned as (markdown line, dict)."""
+    def git(*args):
+        try:
+            return subprocess.run(['git', '-C', ROOT] + list(args), capture_output=True, text=True,
+                                  timeout=30).stdout.strip()
+        except (OSError, subprocess.SubprocessError):
+            return ''
+    commit = git('rev-parse', '--short=12', 'HEAD') or 'unknown'
+    dirty = bool(git('status', '--porcelain', '--untracked-files=no')) if commit != 'unknown' else False
+    try:
+        version = subprocess.run([LDFCZ[0], '-V'], capture_output=True, text=True,
+                                 timeout=30).stdout.strip() if LDFCZ[0] else ''
+    except (OSError, subprocess.SubprocessError):
+        version = ''
+    cpu = ''
+    try:
+        with open('/proc/cpuinfo') as fh:
+            cpu = next((ln.split(':', 1)[1].strip() for ln in fh if ln.startswith('model name')), '')
+    except OSError:
+        pass
+    d = {'commit': commit + (' with uncommitted changes to tracked files' if dirty else ''),
+         'ldfcz': version or 'unknown', 'command': '/usr/bin/python3 tools/peel_study.py ' + ' '.join(
+             os.path.relpath(a, ROOT) if os.path.isabs(a) and a.startswith(ROOT) else a for a in sys.argv[1:]),
+         'date': time.strftime('%Y-%m-%d %H:%M %Z'),
+         'machine': '%s, %d cores visible%s' % (os.uname().nodename, os.cpu_count() or 1, ', ' + cpu if cpu else '')}
+    line = ('Stamp: commit %s; program `%s`; command `%s`; %s; machine %s.' % (
+        d['commit'], d['ldfcz'], d['command'], d['date'], d['machine']))
+    return line, d
 
 
 def find_ldfcz(path):
@@ -571,7 +661,7 @@ def write_report(study, results, outdir):
                 'times are the runs\' own closing summaries; no load figures were recorded for these runs).' % (
                     cmd, time.strftime('%Y-%m-%d %H:%M'), study))
         busy = 'Machine: %s, %d cores visible.' % (os.uname().nodename, os.cpu_count() or 1)
-    lines = ['# Study %s' % study, '', head, '', busy,
+    lines = ['# Study %s' % study, '', stamp()[0], '', head, '', busy,
              '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
              'F/w: steady peel force per unit width (N/mm) by tools/steady_force.py: the pull-weighted mean over the '
              'plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
