@@ -191,7 +191,13 @@ def studies(quick):
     s['main-mesh'] = []
     for el, ea in (('CPE4', []), ('CPE4I', ['--incompatible'])):
         s['main-mesh'] += [('%s le=%g nz=%d' % (el, le, nz), SCENE_A + ['--le', str(le), '--nz', str(nz)] + ea,
-                            le == mm_les[-1] and nz == mm_nzs[-1]) for nz in mm_nzs for le in mm_les]
+                            le == mm_les[-1] and nz == mm_nzs[-1] and el == 'CPE4I') for nz in mm_nzs
+                           for le in mm_les]
+    if not quick:
+        # beyond the grid, with the full-integration element: half the finest l_e at n_z = 9, and n_z = 13 at
+        # l_e = 2.5 um (does the force settle when both are refined further?)
+        s['main-mesh'] += [('CPE4 le=0.00125 nz=9', SCENE_A + ['--le', '0.00125', '--nz', '9'], False),
+                           ('CPE4 le=0.0025 nz=13', SCENE_A + ['--le', '0.0025', '--nz', '13'], False)]
     # the three unloading behaviours of the cohesive law (paper Fig. 6, section 8: no noticeable influence) on the
     # main scene; reference: 2 (elastic damage, the decks' default)
     s['unloading'] = [('A unloading=%d' % k, MAIN_A + ['--unloading', str(k)], k == 2) for k in (1, 2, 3)]
@@ -417,6 +423,74 @@ def read_vtu_front(vtu_path, delta):
     return min(xs) if xs else None
 
 
+def read_vtu_arrays(vtu_path, names):
+    """Reference points (flat x, y, z list) and the named DataArrays (None where absent) of a VTU frame."""
+    text = open(vtu_path).read()
+    pm = re.search(r'<Points><DataArray[^>]*>(.*?)</DataArray>', text, re.S)
+    out = {}
+    for name in names:
+        m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % name, text, re.S)
+        out[name] = [float(v) for v in m.group(1).split()] if m else None
+    return [float(v) for v in pm.group(1).split()], out
+
+
+def process_zone(files, delta, rows=1):
+    """The softening part of the cohesive zone in a frame: the cohesive cells whose opening lies between delta
+    (the peak traction) and 6 delta (4 % of it left), counted per row of cells along x (rows: elements over the
+    width). Returns (number of cells per row, their extent along x in mm); (0, 0) when none."""
+    n, xs = 0, []
+    for v in files:
+        pts, a = read_vtu_arrays(v, ('connectivity', 'offsets', 'cohesive', 'opening'))
+        if None in a.values():
+            continue
+        start = 0
+        for i, o in enumerate(a['offsets']):
+            o = int(o)
+            if a['cohesive'][i] >= 1:
+                d = math.sqrt(sum(c * c for c in a['opening'][3 * i:3 * i + 3]))
+                if delta < d < 6.0 * delta:
+                    ids = [int(c) for c in a['connectivity'][start:o]]
+                    n += 1
+                    xs.append(sum(pts[3 * j] for j in ids) / len(ids))
+            start = o
+    return (n / float(max(rows, 1)), (max(xs) - min(xs)) if xs else 0.0)
+
+
+def lateral_contraction(vtu_path, info):
+    """3D quarter model: the lateral stretch of the coating's top face, lambda_y = 1 + (u_y(b) - u_y(0)) / b, and
+    the axial stretch lambda_x = 1 + du_x/dx, per column of nodes along x (reference x, lambda_x, lambda_y mid-width,
+    lambda_y at the edge), from the node numbering of tools/peel_deck.py (coating nodes first, x fastest, then y,
+    then z). None for a plane-strain frame."""
+    if info['dimension'] != 3:
+        return None
+    pts, a = read_vtu_arrays(vtu_path, ('U',))
+    uu = a['U']
+    nxt = info['n_far_x'] + info['n_fine_x'] + info['n_flap_x']
+    nyn = info['ny'] + 1
+    iz = info['nz_coating']
+
+    def node(ix, iy):
+        return ix + (nxt + 1) * (iy + nyn * iz)         # 0-based VTU point of coating node (ix, iy, top face)
+    out = []
+    for ix in range(nxt + 1):
+        k0, kb, k1 = node(ix, 0), node(ix, nyn - 1), node(ix, 1)
+        b = pts[3 * kb + 1] - pts[3 * k0 + 1]
+        dy = pts[3 * k1 + 1] - pts[3 * k0 + 1]
+        kb1 = node(ix, nyn - 2)
+        lam_mid = 1.0 + (uu[3 * k1 + 1] - uu[3 * k0 + 1]) / dy
+        lam_edge = 1.0 + (uu[3 * kb + 1] - uu[3 * kb1 + 1]) / (pts[3 * kb + 1] - pts[3 * kb1 + 1])
+        lam_mean = 1.0 + (uu[3 * kb + 1] - uu[3 * k0 + 1]) / b
+        if ix < nxt:
+            j = node(ix + 1, 0)
+            dx = math.dist(pts[3 * j:3 * j + 3], pts[3 * k0:3 * k0 + 3])
+            lam_x = math.dist([pts[3 * j + c] + uu[3 * j + c] for c in range(3)],
+                              [pts[3 * k0 + c] + uu[3 * k0 + c] for c in range(3)]) / dx
+        else:
+            lam_x = out[-1][1] if out else 1.0
+        out.append((pts[3 * k0], lam_x, lam_mid, lam_edge, lam_mean))
+    return out
+
+
 def vtu_frames(outdir):
     """The ParaView frames of a run directory in order, each as the list of its files: JOB_NNNN.vtu of a serial
     run, or the pieces JOB_NNNN_R.vtu of a distributed one (one per process, each with its own elements)."""
@@ -585,6 +659,24 @@ def collect(res, outdir, job, info, p, plateau, progress):
     res['F_ripple'] = est['ripple']
     res['F_status'] = est['status']
     res['F_window_um'] = '%.1f-%.1f' % (1e3 * est['window'][0], 1e3 * est['window'][1])
+    res['F_curvature'] = est.get('curvature')
+    res['F_sem'] = est.get('sem')
+    res['F_ripple_period_um'] = 1e3 * est['period'] if est.get('period') else float('nan')
+    res['F_ripple_elements'] = est.get('ripple_elements')
+    res['F_cycles'] = len(est.get('cycle_means') or [])
+    res['F_quarter_change'] = est['quarter_change'] if est.get('quarter_change') is not None else float('nan')
+    res['F_vs_quarters'] = est['value_vs_quarters'] if est.get('value_vs_quarters') is not None else float('nan')
+    res['front_speed'] = est.get('front_speed')
+    # the fine region left ahead of the front at the end, and the softening part of the cohesive zone (delta to
+    # 6 delta) in the frames of the plateau window (at most the last five), in cohesive elements along x
+    res['fine_margin_um'] = 1e3 * (info['fine_length_mm'] - res['delaminated_mm'])
+    times = [h[0] for h in hist[1:]]
+    inwin = [k for k, t in enumerate(times) if est['window'][0] <= t <= est['window'][1] + 1e-9][-5:]
+    pz = [process_zone(frames[k], info['delta_mm'], info.get('ny') or 1) for k in inwin if k < len(frames)]
+    res['pz_cells'] = sum(p_[0] for p_ in pz) / len(pz) if pz else float('nan')
+    res['pz_length_um'] = 1e3 * sum(p_[1] for p_ in pz) / len(pz) if pz else float('nan')
+    res['lateral'] = lateral_contraction(frames[-1][0], info) if frames and info['dimension'] == 3 and \
+        len(frames[-1]) == 1 else None
     if res.get('increments') and res.get('wall_s'):
         res['t_inc_s'] = res['wall_s'] / res['attempts'] if res.get('attempts') else res['wall_s'] / res['increments']
     if res.get('iterations') and res.get('wall_s'):
@@ -629,7 +721,9 @@ def write_report(study, results, outdir):
         ur = ref[0].get('F_unc', float('nan')) if ref else float('nan')
         r['resolved'] = (r['error'] > ur + r.get('F_unc', float('nan'))) if not r.get('reference') else ''
     cols = ['label', 'reference', 'completed', 'exit', 'F_w', 'F_unc', 'F_status', 'F_window_um', 'F_drift',
-            'F_ripple', 'F_w_tail', 'F_over_Fr', 'error', 'resolved', 'spread', 'delaminated_mm', 'run_time_s',
+            'F_curvature', 'F_sem', 'F_ripple', 'F_ripple_period_um', 'F_ripple_elements', 'F_cycles',
+            'F_quarter_change', 'F_vs_quarters', 'front_speed', 'fine_margin_um', 'pz_cells', 'pz_length_um',
+            'F_w_tail', 'F_over_Fr', 'error', 'resolved', 'spread', 'delaminated_mm', 'run_time_s',
             'increments', 'cutbacks', 'iterations', 'elements', 'dofs', 't_inc_s', 't_assembly_s', 't_factor_s',
             't_iter_s', 'attempts', 'energy_rel_diff', 'max_open_ratio', 'du_min_um', 'du_median_um', 'du_max_um',
             'cpu_busy_before', 'cpu_time_s',
@@ -663,22 +757,32 @@ def write_report(study, results, outdir):
         busy = 'Machine: %s, %d cores visible.' % (os.uname().nodename, os.cpu_count() or 1)
     lines = ['# Study %s' % study, '', stamp()[0], '', head, '', busy,
              '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
-             'F/w: steady peel force per unit width (N/mm) by tools/steady_force.py: the pull-weighted mean over the '
-             'plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
-             'elements of its end, from where a straight-line fit drifts less than 0.5 %), +- its relative '
-             'uncertainty (half the drift plus the ripple\'s averaging bias); status: ok, or why the value is not '
-             'a plateau (no-plateau, front-not-in-fine-region); error: |F/F_r - 1| against the reference case '
-             '(marked *); resolved: the error exceeds the two uncertainties together.', '',
-             '| case | F/w (N/mm) | +- | window (um of pull) | status | F/F_r | error | resolved | delaminated (mm) '
-             '| run time (s) | increments | cutbacks | elements | DOFs | energy balance |',
-             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+             'F/w: steady peel force per unit width (N/mm) by tools/steady_force.py: the mean of the cycle means '
+             '(the force averaged over whole ripple periods, one cohesive element crossed by the front each) over '
+             'the plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
+             'elements of its end, from where the cycle means drift and curve by less than 0.5 %), +- its relative '
+             'uncertainty of the averaging (half the drift and the curvature plus the standard error of the cycle '
+             'means); ripple: half the peak-to-peak oscillation about them, a resolution error of the cohesive '
+             'discretisation; Q4/Q3: the cycle means of the last quarter of the pull against the quarter before; '
+             'status: ok, or why the value is not a plateau (no-plateau, front-not-in-fine-region); error: '
+             '|F/F_r - 1| against the reference case (marked *); resolved: the error exceeds the two uncertainties '
+             'together. CPU time: the ldfcz process\'s user + system time.', '',
+             '| case | F/w (N/mm) | +- | window (um of pull) | status | ripple | Q4/Q3 - 1 | F/F_r | error | resolved '
+             '| delaminated (mm) | run time (s) | CPU time (s) | increments | cutbacks | elements | DOFs '
+             '| energy balance |',
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     for r in results:
-        lines.append('| %s%s | %.4f | %.2f %% | %s | %s | %.4f | %.2e | %s | %.3f | %.1f | %s | %s | %d | %d | %s |' % (
-            r['label'], ' *' if r.get('reference') else '', r['F_w'], 100 * r.get('F_unc', float('nan')),
-            r.get('F_window_um', '-'), r.get('F_status', '-'), r['F_over_Fr'], r['error'],
-            {True: 'yes', False: 'no'}.get(r['resolved'], '-'),
-            r['delaminated_mm'], r['run_time_s'], int(r.get('increments', 0)), int(r.get('cutbacks', 0)),
-            r['elements'], r['dofs'], '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-'))
+        lines.append('| %s%s | %.4f | %.2f %% | %s | %s | %.2f %% | %s | %.4f | %.2e | %s | %.3f | %.1f | %s | %s | %s '
+                     '| %d | %d | %s |' % (
+                         r['label'], ' *' if r.get('reference') else '', r['F_w'],
+                         100 * r.get('F_unc', float('nan')), r.get('F_window_um', '-'), r.get('F_status', '-'),
+                         100 * r.get('F_ripple', float('nan')),
+                         '%+.2f %%' % (100 * r['F_quarter_change']) if r.get('F_quarter_change') == r.get(
+                             'F_quarter_change') and r.get('F_quarter_change') is not None else '-',
+                         r['F_over_Fr'], r['error'], {True: 'yes', False: 'no'}.get(r['resolved'], '-'),
+                         r['delaminated_mm'], r['run_time_s'], '%.1f' % r['cpu_time_s'] if r.get('cpu_time_s')
+                         else '-', int(r.get('increments', 0)), int(r.get('cutbacks', 0)), r['elements'], r['dofs'],
+                         '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-'))
         if not r['completed']:
             lines[-1] += ' (not completed: %s, U = %.4g of %.4g mm%s)' % (
                 stop_text(r), r['u_end_mm'], r['u_total_mm'], ', stopped at the time limit' if r.get('stopped_at_limit')
@@ -689,9 +793,88 @@ def write_report(study, results, outdir):
     plot(study, results, outdir)
 
 
+def main_band(r, reports=os.path.join(ROOT, 'reports')):
+    """The discretisation band of the main scene from the main-mesh study's report (no runs): the main mesh's value
+    there against every mesh of the study at least as fine in l_e and n_z, in either element formulation. Returns
+    a dict: band (the largest relative difference, the band's half-width), parts (relative differences of the
+    single refinements: CPE4I on the same mesh, n_z = 9, the finest l_e), finer (label, relative difference) of
+    every finer mesh, the main mesh's study value and its label, the report's stamp line; None without the
+    report."""
+    rows = load_rows(reports, 'main-mesh')
+    le, nz = float(MAIN_A_MESH[1]), int(MAIN_A_MESH[3])
+    key = 'CPE4 le=%g nz=%d' % (le, nz)
+    if key not in rows:
+        return None
+    f_m = fnum(rows[key], 'F_w')
+    mesh = {}
+    for lab in rows:
+        m = re.match(r'(CPE4I?) le=([0-9.e-]+) nz=(\d+)$', lab)
+        if m and rows[lab].get('completed') == 'True':
+            mesh[lab] = (m.group(1), float(m.group(2)), int(m.group(3)))
+    finer = [(lab, fnum(rows[lab], 'F_w') / f_m - 1.0) for lab, (el, l_, n_) in sorted(mesh.items())
+             if l_ <= le * (1 + 1e-9) and n_ >= nz and lab != key]
+    le_min = min(l_ for _, l_, _ in mesh.values())
+    nz_max = max(n_ for _, _, n_ in mesh.values())
+    parts = {}
+    for name, lab in (('element formulation (CPE4I)', 'CPE4I le=%g nz=%d' % (le, nz)),
+                      ('elements through the thickness (n_z = %d)' % nz_max, 'CPE4 le=%g nz=%d' % (le, nz_max)),
+                      ('element length (l_e = %g um)' % (1e3 * le_min), 'CPE4 le=%g nz=%d' % (le_min, nz))):
+        if lab in mesh and lab != key:
+            parts[name] = fnum(rows[lab], 'F_w') / f_m - 1.0
+    md = os.path.join(reports, 'main-mesh', 'main-mesh.md')
+    st = next((ln.strip() for ln in open(md) if ln.startswith('Stamp:')), '') if os.path.exists(md) else ''
+    return {'band': max([abs(d) for _, d in finer] or [float('nan')]), 'parts': parts, 'finer': finer,
+            'F_study': f_m, 'label': key, 'stamp': st,
+            'finest': ('CPE4I le=%g nz=%d' % (le_min, nz_max),
+                       fnum(rows.get('CPE4I le=%g nz=%d' % (le_min, nz_max)), 'F_w') / f_m - 1.0)}
+
+
+def main_lines(r):
+    """What the main job prints (and its report holds): the steady force with its averaging uncertainty and its
+    discretisation band, what the band is made of, the ripple as resolution error, the plateau check."""
+    est = r['steady']
+    out = ['steady peel force per unit width: %s' % sfe.describe(est)]
+    b = r.get('band')
+    if b:
+        out.append('F/w = %.4f N/mm +- %.2f %% (averaging) +- %.1f %% (discretisation band, reports/main-mesh/)' % (
+            est['value'], 100 * est['uncertainty'], 100 * b['band']))
+        out.append('  the band: the largest difference between this mesh (%s, %.4f N/mm in the study%s) and the %d '
+                   'meshes of the study at least as fine in l_e and n_z, in either formulation: %s' % (
+                       b['label'], b['F_study'], '' if abs(b['F_study'] / est['value'] - 1) < 1e-9 else
+                       ' [this run: %+.2e]' % (est['value'] / b['F_study'] - 1), len(b['finer']),
+                       ', '.join('%s %+.2f %%' % (lab, 100 * d) for lab, d in b['finer'])))
+        out.append('  made of: %s; the finest mesh (%s) %+.2f %%' % (
+            ', '.join('%s %+.2f %%' % (k, 100 * v) for k, v in b['parts'].items()), b['finest'][0],
+            100 * b['finest'][1]))
+    elif r['info'].get('reading') != 'peel':
+        out.append('  (no discretisation band: reports/main-mesh/main-mesh.csv not found; run tools/peel_study.py '
+                   'main-mesh)')
+    if est.get('period'):
+        out.append('  ripple +-%.2f %% of the force with a period of %.2f um of pull = %.2f cohesive elements of front '
+                   'advance: a resolution error of the cohesive discretisation (l_e = %g um), averaged out over '
+                   'whole periods' % (100 * est['ripple'], 1e3 * est['period'] * est['ripple_elements'] if
+                                      est['ripple_elements'] == est['ripple_elements'] else float('nan'),
+                                      est['ripple_elements'], 1e3 * r['l_e_mm']))
+    if est.get('quarter_change') is not None:
+        out.append('  plateau check: cycle means of the last quarter of the pull %+.3f %% against the quarter before; '
+                   'the value within %.3f %% of both' % (100 * est['quarter_change'], 100 * est['value_vs_quarters']))
+    out.append('  delamination %.3f mm (the fine region reaches %.0f um beyond the front at the end; the softening '
+               'zone spans %.1f cohesive elements = %.1f um), energy balance %s, run time %.1f s (CPU %.1f s)' % (
+                   r['delaminated_mm'], r['fine_margin_um'], r['pz_cells'], r['pz_length_um'],
+                   '%.2f %%' % (100 * r['energy_rel_diff']) if 'energy_rel_diff' in r else '-', r['run_time_s'],
+                   r.get('cpu_time_s', float('nan'))))
+    for fl in est['flags']:
+        out.append('  flag: ' + fl)
+    return out
+
+
 def study_extras(study, results, outdir):
     """Study-specific lines under the table of STUDY.md."""
     out = []
+    if study == 'main':
+        out += [''] + ['    ' + ln for ln in main_lines(results[0])]
+        if results[0].get('band') and results[0]['band']['stamp']:
+            out += ['', 'The band comes from reports/main-mesh/main-mesh.csv (%s).' % results[0]['band']['stamp']]
     ok = [r for r in results if r['F_w'] == r['F_w']]
     if 'mesh-x' in study or 'mesh-z' in study:
         for g in sorted(set(group(r['label']) for r in ok)):
@@ -744,6 +927,108 @@ def study_extras(study, results, outdir):
     elif study == 'application':
         for r in results:
             out += application_extras(r, outdir)
+    elif study == 'main-mesh':
+        out += main_mesh_extras(ok, outdir)
+    elif study == 'width-3d':
+        out += width_extras(ok, outdir)
+    elif study == 'pet-alt':
+        out += pet_alt_extras(ok)
+    elif study == 'fig13':
+        for r in results:
+            out += application_extras(r, outdir, 'fig13')
+    return out
+
+
+def main_mesh_extras(ok, outdir):
+    """The l_e x n_z grid per element formulation (F/w, ripple, CPU time), the band of the main mesh, and every
+    mesh's difference from the finest."""
+    by = {r['label']: r for r in ok}
+    les = sorted({r['l_e_mm'] for r in ok}, reverse=True)
+    nzs = sorted({int(re.search(r'nz=(\d+)', r['label']).group(1)) for r in ok})
+    out = []
+    for el in ('CPE4', 'CPE4I'):
+        out += ['', '%s: F/w (N/mm) +- averaging uncertainty, ripple, Q4/Q3 - 1, CPU time; rows l_e, columns n_z:' % el,
+                '', '| l_e (um) | ' + ' | '.join('n_z = %d' % n for n in nzs) + ' |',
+                '|---|' + '---|' * len(nzs)]
+        for le in les:
+            cells = []
+            for n in nzs:
+                r = by.get('%s le=%g nz=%d' % (el, le, n))
+                cells.append('%.4f +- %.2f %%, ripple %.2f %%, %s, %.0f s' % (
+                    r['F_w'], 100 * r['F_unc'], 100 * r['F_ripple'], '%+.2f %%' % (100 * r['F_quarter_change'])
+                    if r.get('F_quarter_change') == r.get('F_quarter_change') else '-', r.get('cpu_time_s', 0))
+                             if r else '-')
+            out.append('| %g | %s |' % (1e3 * le, ' | '.join(cells)))
+    b = main_band({'label': ''}, os.path.dirname(outdir))
+    if b:
+        out += ['', 'The main scene\'s mesh (`MAIN_A_MESH` of tools/peel_study.py: %s) against every mesh at least as '
+                'fine in l_e and n_z, in either formulation: %s; the band (the largest of them): **+-%.2f %%**. '
+                'Single refinements: %s. The finest mesh (%s): %+.2f %%.' % (
+                    b['label'], ', '.join('%s %+.2f %%' % (lab, 100 * d) for lab, d in b['finer']), 100 * b['band'],
+                    ', '.join('%s %+.2f %%' % (k, 100 * v) for k, v in b['parts'].items()), b['finest'][0],
+                    100 * b['finest'][1])]
+    return out
+
+
+def width_extras(ok, outdir):
+    """The plane-strain/3D gap per reading and the lateral contraction of the detached coating: the mean lateral
+    stretch lambda_y of the top face in the peeled part (reference x between the initial front and half the
+    delaminated length behind it) at mid-width and at the edge, its axial stretch lambda_x, and what uniaxial
+    tension (lambda_y = lambda_x^-1/2, incompressible) and plane strain (lambda_y = 1) would give; a PNG of lambda_y
+    along x."""
+    out = ['', 'Lateral contraction of the peeled coating (top face, last frame; lambda = current / reference length):',
+           '', '| case | F/F_ps - 1 | lambda_x | lambda_y mid-width | lambda_y edge | lambda_y across b | uniaxial '
+           'lambda_x^-1/2 |', '|---|---|---|---|---|---|---|']
+    curves = []
+    for g in ('A', 'B'):
+        ps = next((r for r in ok if r['label'] == '%s plane strain' % g), None)
+        for r in ok:
+            if group(r['label']) != g or not r.get('lateral'):
+                continue
+            x0, d = r['info']['x_front_mm'], r['delaminated_mm']
+            sel = [c for c in r['lateral'] if x0 - 0.5 * d <= c[0] <= x0]
+            if not sel:
+                continue
+            mean = [sum(c[k] for c in sel) / len(sel) for k in range(1, 5)]
+            out.append('| %s | %s | %.3f | %.3f | %.3f | %.3f | %.3f |' % (
+                r['label'], '%+.2f %%' % (100 * (r['F_w'] / ps['F_w'] - 1)) if ps else '-', mean[0], mean[1],
+                mean[2], mean[3], mean[0] ** -0.5))
+            curves.append((r['label'], r['lateral'], x0))
+    try:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(8, 4.2))
+        for lab, lat, x0 in curves:
+            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[2] for c in lat], '-', label=lab + ', mid-width')
+            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[3] for c in lat], ':', label=lab + ', edge')
+        ax.set_xlabel('reference x - initial front (um)')
+        ax.set_ylabel('lateral stretch lambda_y of the top face')
+        ax.legend(fontsize=6)
+        ax.grid(alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(os.path.join(outdir, 'width-3d_lateral.png'), dpi=110)
+        plt.close(fig)
+        out += ['', '![lateral stretch](width-3d_lateral.png)']
+    except ImportError:
+        pass
+    return out
+
+
+def pet_alt_extras(ok):
+    """Plane strain against 3D with the alternative PET set, beside the same with Table 1 as printed (stmt-3d-fine
+    for reading A is the 0.16 mm fine region, stmt-3d-long for reading B)."""
+    by = {r['label']: r for r in ok}
+    out = ['', '| reading | plane strain / 3D - 1, --pet alt | the same, Table 1 as printed (report) |', '|---|---|---|']
+    for g, rep in (('A', 'stmt-3d-fine'), ('B', 'stmt-3d-long')):
+        ps, d3 = by.get('%s plane strain' % g), by.get('%s 3D b=0.04 ny=2' % g)
+        old = load_rows(os.path.join(ROOT, 'reports'), rep)
+        o_ps, o_3 = old.get('%s plane strain' % g), old.get('%s 3D b=0.04 ny=2' % g)
+        out.append('| %s | %s | %s |' % (
+            g, '%+.2f %% (+-%.2f)' % (100 * (ps['F_w'] / d3['F_w'] - 1), 100 * (ps['F_unc'] + d3['F_unc']))
+            if ps and d3 else '-',
+            '%+.2f %% (+-%.2f) (%s)' % (100 * (fnum(o_ps, 'F_w') / fnum(o_3, 'F_w') - 1),
+                                        100 * (fnum(o_ps, 'F_unc') + fnum(o_3, 'F_unc')), rep) if o_ps and o_3 else '-'))
     return out
 
 
@@ -1072,7 +1357,7 @@ def front_history(r):
     return hist
 
 
-def application_extras(r, outdir):
+def application_extras(r, outdir, name='application'):
     """Cost per um of pull over the second half of the run, delamination against pull, the wall time to the
     paper's 1.0 mm of delamination (measured, or estimated when not reached), and the rendered Mises PNG of the
     last frame."""
@@ -1088,12 +1373,12 @@ def application_extras(r, outdir):
     cost = (half[-1][0] - half[0][0]) / (1e3 * (half[-1][1] - half[0][1])) \
         if len(half) > 1 and half[-1][1] > half[0][1] else float('nan')
     hist = front_history(r)
-    with open(os.path.join(outdir, 'application_front.csv'), 'w', newline='') as fh:
+    with open(os.path.join(outdir, name + '_front.csv'), 'w', newline='') as fh:
         wr = csv.writer(fh)
         wr.writerow(['U1_mm', 'delaminated_mm'])
         for a, b in hist:
             wr.writerow(['%.6g' % a, '%.6g' % b])
-    with open(os.path.join(outdir, 'application_progress.csv'), 'w', newline='') as fh:
+    with open(os.path.join(outdir, name + '_progress.csv'), 'w', newline='') as fh:
         wr = csv.writer(fh)
         wr.writerow(['wall_s', 'U1_mm'])
         for a, b in prog:
@@ -1105,7 +1390,7 @@ def application_extras(r, outdir):
     out.append('')
     out.append('Delamination %.1f um at %.1f um of pull; over the second half of the run the front advanced %.2f um '
                'per um of pull. Wall time per um of pull over the second half of the pull: **%.1f s/um** '
-               '(application_progress.csv: wall time against pull).' % (1e3 * d_end, 1e3 * hist[-1][0], rate, cost))
+               '(%s_progress.csv: wall time against pull).' % (1e3 * d_end, 1e3 * hist[-1][0], rate, cost, name))
     # the paper's 1.0 mm of delamination: when the run reached it, the wall time at which it did (pull at 1.0 mm
     # interpolated in the front history, wall time at that pull in the progress record); otherwise the time to
     # reach it at the measured cost per um of pull and front advance per um of pull (same model, same DOFs)
@@ -1118,8 +1403,9 @@ def application_extras(r, outdir):
         t_t = interp([b for _, b in prog], [a for a, _ in prog], u_t)
         r['time_to_1mm_s'] = t_t
         out += ['', '**1.0 mm of delamination reached** at %.1f um of pull, after **%.0f s = %.2f h** of wall time on '
-                'this machine with %s (front history of the VTU frames, application_front.csv, interpolated; '
-                'wall time against pull, application_progress.csv).' % (1e3 * u_t, t_t, t_t / 3600, run_config())]
+                'this machine with %s (front history of the VTU frames, %s_front.csv, interpolated; '
+                'wall time against pull, %s_progress.csv).' % (1e3 * u_t, t_t, t_t / 3600, run_config(), name,
+                                                              name)]
         if not r['completed']:
             out[-1] += (' The run was ended (%s) at %.1f um of pull, %.1f um after that point: the rest of the '
                         'planned pull was not needed.' % (stop_text(r), 1e3 * u_end, 1e3 * (u_end - u_t)))
@@ -1136,10 +1422,10 @@ def application_extras(r, outdir):
     if r['vtus'] and len((r.get('frames') or [[None]])[-1]) > 1:
         out += ['', 'No Mises picture: the frames of a distributed run are pieces (open JOB.pvd in ParaView).']
     elif r['vtus']:
-        png = os.path.join(outdir, 'application_mises.png')
+        png = os.path.join(outdir, name + '_mises.png')
         if render_mises(r['vtus'][-1], r['info'], png, hist[-1]):
-            out += ['', '![deformed coating, von Mises stress](application_mises.png)', '',
-                    'application_mises.png: the last ParaView frame (`%s`), deformed (scale 1), coating coloured by '
+            out += ['', '![deformed coating, von Mises stress](%s_mises.png)' % name, '',
+                    name + '_mises.png: the last ParaView frame (`%s`), deformed (scale 1), coating coloured by '
                     'the von Mises stress (cell values), side views of the free edge y = b and of the symmetry '
                     'plane y = 0, and the top view.' % os.path.relpath(r['vtus'][-1], ROOT)]
     return out
@@ -1238,8 +1524,9 @@ def render_mises(vtu_path, info, png, last):
         ax.set_ylabel(('y' if av == 1 else 'z') + ' (um)')
         ax.axvline(1e3 * info['x_front_mm'], color='k', lw=0.6, ls='--')
         fig.colorbar(pc, ax=ax, label='von Mises (MPa)', fraction=0.03, pad=0.01)
-    fig.suptitle('ldfcz application (section 8 mesh): pull %.1f um, delaminated %.1f um (dashed: initial front)' % (
-        1e3 * last[0], 1e3 * last[1]), fontsize=10)
+    fig.suptitle('ldfcz %s: pull %.1f um, delaminated %.1f um (dashed: initial front)' % (
+        'application (section 8 mesh)' if three_d else 'plane strain, l_e = %g um, n_z = %d' % (
+            1e3 * info['l_e_mm'], info['nz_coating']), 1e3 * last[0], 1e3 * last[1]), fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
     fig.savefig(png, dpi=120)
     plt.close(fig)
@@ -1297,8 +1584,8 @@ def old_rows(outdir, study):
         with open(path) as fh:
             for r in csv.DictReader(fh):
                 rows[r['label']] = r
-    prog = os.path.join(outdir, 'application_progress.csv')
-    if study == 'application' and os.path.exists(prog) and len(rows) == 1:
+    prog = os.path.join(outdir, study + '_progress.csv')
+    if study in ('application', 'fig13') and os.path.exists(prog) and len(rows) == 1:
         with open(prog) as fh:
             pts = [(float(r['wall_s']), float(r['U1_mm'])) for r in csv.DictReader(fh)]
         for r in rows.values():
@@ -1322,7 +1609,8 @@ def main(argv=None):
     ap.add_argument('--scene', choices=('A', 'B'), default='B',
                     help='main: reading B (default: the flap lifted and pulled at 90 degrees, u_x free) or A (the '
                     '0-degree bridge)')
-    ap.add_argument('--only', default='', help='run only cases whose label contains this text')
+    ap.add_argument('--only', default='', help='run only cases whose label contains this text (the report keeps '
+                    'the other cases from their last run files, as --reuse)')
     ap.add_argument('--ldfcz-args', default='', help='extra ldfcz options for every case, e.g. "--newton auto"')
     ap.add_argument('--wait-idle', type=float, default=0.0,
                     help='before each case wait up to this many seconds for the cores to be idle (< 15 %% busy)')
@@ -1353,14 +1641,14 @@ def main(argv=None):
     if a.study == 'main' and not a.reuse:
         outdir = os.path.join(a.reports, 'main')
         work = a.work or os.path.join(ROOT, 'out', 'peel', 'main')
-        job, gen = ('peel_ps_flap90', MAIN_B) if a.scene == 'B' else ('peel_ps', DEFAULT_PS)
+        job, gen = ('peel_ps_flap90', MAIN_B) if a.scene == 'B' else ('peel_main', MAIN_A)
         r = run_case(job, gen, work, ldfcz, a.threads, a.plateau, extra, a.time_limit, a.wait_idle)
         r['reference'] = True
+        if a.scene == 'A':
+            r['band'] = main_band(r)
         write_report('main', [r], outdir)
-        print('steady peel force per unit width: %s; delamination %.3f mm, run time %.1f s' % (
-            sfe.describe(r['steady']), r['delaminated_mm'], r['run_time_s']))
-        for fl in r['steady']['flags']:
-            print('  flag: ' + fl)
+        for line in main_lines(r):
+            print(line)
         print('force-displacement: %s; plot: %s; ParaView frames: %s' % (
             os.path.join(outdir, 'main_curves.csv'), os.path.join(outdir, 'main.png'),
             os.path.join(work, r['job'], r['job'] + '.pvd')))
@@ -1370,13 +1658,19 @@ def main(argv=None):
     outdir = os.path.join(a.reports, a.study)
     work = a.work or os.path.join(ROOT, 'out', 'peel', a.study)
     results = []
+    before = old_rows(outdir, a.study)
     for case in all_studies[a.study]:
         label, args, is_ref = case[:3]
+        reuse = a.reuse
         if a.only and a.only not in label:
-            continue
+            # the other cases stay in the report from their last run (as --reuse), when their run files exist
+            job = re.sub(r'[^A-Za-z0-9_.-]+', '_', label).strip('_') or 'case'
+            if label not in before or not os.path.isdir(os.path.join(work, job)):
+                continue
+            reuse = True
         r = run_case(label, args + a.gen_args.split(), work, ldfcz, a.threads, a.plateau,
                      list(case[3] if len(case) > 3 else []) + extra, a.time_limit, a.wait_idle,
-                     old_rows(outdir, a.study).get(label, {}) if a.reuse else None)
+                     before.get(label, {}) if reuse else None)
         r['reference'] = is_ref
         results.append(r)
         print('%-36s F/w = %.4f N/mm  spread %.1e  %.1f s  %s' % (label, r['F_w'], r['spread'], r['run_time_s'],
