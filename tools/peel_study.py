@@ -2,8 +2,9 @@
 """Peel scenes and studies (paper sections 7-9): generate decks with tools/peel_deck.py, run bin/ldfcz on them,
 collect JOB.csv, compute the steady peel force per unit width, and write reports/<study>/<study>.{csv,md,png}.
 
-  peel_study.py main [--scene A]     the main plane-strain scene (reading B; --scene A the 0-degree bridge): prints the
-                                     steady peel force per unit width
+  peel_study.py main [--scene B]     the main plane-strain scene (reading A, the paper's text; --scene B the flap
+                                     lifted at 90 degrees): prints the steady peel force per unit width with its
+                                     averaging uncertainty and the discretisation band of the main-mesh study
   peel_study.py stmt-mesh-x|stmt-mesh-z|stmt-3d|...|mesh-x|mesh-z|simplifications|dofs|plastic-bound|
                 app-settings|opening-bound|application [--quick]   (the whole list: docs/scenes.md)
   peel_study.py list                 the studies and their cases
@@ -65,7 +66,7 @@ MAIN_B = READING_B + ['--u-total', '0.2', '--fine-length', '0.25', '--bonded', '
 SCENE_A = ['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.2']
 # The main scene (issue 35): reading A, the paper's text (u_x on one end of the coating), on the mesh of the
 # main-mesh study
-MAIN_A_MESH = ['--le', '0.005', '--nz', '5']
+MAIN_A_MESH = ['--le', '0.005', '--nz', '9']
 MAIN_A = SCENE_A + MAIN_A_MESH
 # Reading B pulled until every run reads its plateau (0.32 mm over a 0.4 mm fine region; issue 17)
 LONG_B = READING_B + ['--u-total', '0.32', '--fine-length', '0.4', '--bonded', '0.5']
@@ -1606,9 +1607,9 @@ def main(argv=None):
                     'build, e.g. build-mpi/bin/ldfcz; --threads then counts per process)')
     ap.add_argument('--plateau', type=float, default=0.3, help='fraction of the pull averaged for the steady force')
     ap.add_argument('--quick', action='store_true', help='fewer, cheaper cases')
-    ap.add_argument('--scene', choices=('A', 'B'), default='B',
-                    help='main: reading B (default: the flap lifted and pulled at 90 degrees, u_x free) or A (the '
-                    '0-degree bridge)')
+    ap.add_argument('--scene', choices=('A', 'B'), default='A',
+                    help='main: reading A (default: the paper\'s text, u_x on one end of the coating, the 0-degree '
+                    'bridge) or B (the flap lifted and pulled at 90 degrees, u_x free)')
     ap.add_argument('--only', default='', help='run only cases whose label contains this text (the report keeps '
                     'the other cases from their last run files, as --reuse)')
     ap.add_argument('--ldfcz-args', default='', help='extra ldfcz options for every case, e.g. "--newton auto"')

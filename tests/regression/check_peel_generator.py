@@ -280,6 +280,17 @@ def main(argv):
              ['--3d', '--edge-fixed-y', '--ny', '2', '--le', '0.02']]
     for c in cases:
         check_case(gen, work, c, bad)
+    # the committed main-scene deck is what the main job (tools/peel_study.py main, MAIN_A) generates
+    root = os.path.dirname(os.path.dirname(os.path.abspath(gen)))
+    sys.path.insert(0, os.path.dirname(os.path.abspath(gen)))
+    import peel_study
+    main_deck = os.path.join(work, 'main_scene.inp')
+    subprocess.check_call([sys.executable, gen, '-o', main_deck] + peel_study.MAIN_A)
+    with open(main_deck) as fh, open(os.path.join(root, 'decks', 'peel', 'peel_main.inp')) as fc:
+        if fh.read() != fc.read():
+            bad.append('decks/peel/peel_main.inp is not the main job\'s deck: regenerate it with tools/peel_deck.py '
+                       '%s -o decks/peel/peel_main.inp' % ' '.join(peel_study.MAIN_A))
+    check_case(gen, work, peel_study.MAIN_A, bad)
     for b in bad:
         print('FAIL: ' + b)
     print('check_peel_generator: %s' % ('FAILED (%d)' % len(bad) if bad else 'passed'))
