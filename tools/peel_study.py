@@ -761,7 +761,7 @@ def write_report(study, results, outdir):
              'F/w: steady peel force per unit width (N/mm) by tools/steady_force.py: the mean of the cycle means '
              '(the force averaged over whole ripple periods, one cohesive element crossed by the front each) over '
              'the plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
-             'elements of its end, from where the cycle means drift and curve by less than 0.5 %), +- its relative '
+             'elements of its end, from where the cycle means drift and curve by less than 0.2 %), +- its relative '
              'uncertainty of the averaging (half the drift and the curvature plus the standard error of the cycle '
              'means); ripple: half the peak-to-peak oscillation about them, a resolution error of the cohesive '
              'discretisation; Q4/Q3: the cycle means of the last quarter of the pull against the quarter before; '
@@ -814,20 +814,28 @@ def main_band(r, reports=os.path.join(ROOT, 'reports')):
             mesh[lab] = (m.group(1), float(m.group(2)), int(m.group(3)))
     finer = [(lab, fnum(rows[lab], 'F_w') / f_m - 1.0) for lab, (el, l_, n_) in sorted(mesh.items())
              if l_ <= le * (1 + 1e-9) and n_ >= nz and lab != key]
-    le_min = min(l_ for _, l_, _ in mesh.values())
-    nz_max = max(n_ for _, _, n_ in mesh.values())
+    cpe4 = {(l_, n_): lab for lab, (el, l_, n_) in mesh.items() if el == 'CPE4'}
     parts = {}
-    for name, lab in (('element formulation (CPE4I)', 'CPE4I le=%g nz=%d' % (le, nz)),
-                      ('elements through the thickness (n_z = %d)' % nz_max, 'CPE4 le=%g nz=%d' % (le, nz_max)),
-                      ('element length (l_e = %g um)' % (1e3 * le_min), 'CPE4 le=%g nz=%d' % (le_min, nz))):
-        if lab in mesh and lab != key:
-            parts[name] = fnum(rows[lab], 'F_w') / f_m - 1.0
+    if 'CPE4I le=%g nz=%d' % (le, nz) in mesh:
+        parts['element formulation (CPE4I against CPE4, this mesh)'] = \
+            fnum(rows['CPE4I le=%g nz=%d' % (le, nz)], 'F_w') / f_m - 1.0
+    nz_big = max([n_ for (l_, n_) in cpe4 if n_ > nz] or [0])
+    ls = sorted([l_ for (l_, n_) in cpe4 if n_ == nz_big and (l_, nz) in cpe4], key=lambda v: (v != le, v))
+    if nz_big and ls:
+        parts['elements through the thickness (n_z %d -> %d at l_e = %g um)' % (nz, nz_big, 1e3 * ls[0])] = \
+            fnum(rows[cpe4[(ls[0], nz_big)]], 'F_w') / fnum(rows[cpe4[(ls[0], nz)]], 'F_w') - 1.0
+    l_small = min([l_ for (l_, n_) in cpe4 if n_ == nz] or [le])
+    if l_small < le:
+        parts['element length (l_e %g -> %g um at n_z = %d)' % (1e3 * le, 1e3 * l_small, nz)] = \
+            fnum(rows[cpe4[(l_small, nz)]], 'F_w') / f_m - 1.0
+    ref = [lab for lab in mesh if rows[lab].get('reference') == 'True']
     md = os.path.join(reports, 'main-mesh', 'main-mesh.md')
     st = next((ln.strip() for ln in open(md) if ln.startswith('Stamp:')), '') if os.path.exists(md) else ''
-    return {'band': max([abs(d) for _, d in finer] or [float('nan')]), 'parts': parts, 'finer': finer,
+    ds = [d for _, d in finer]
+    return {'band': max([abs(d) for d in ds] or [float('nan')]), 'band_hi': max(ds + [0.0]),
+            'band_lo': min(ds + [0.0]), 'parts': parts, 'finer': finer,
             'F_study': f_m, 'label': key, 'stamp': st,
-            'finest': ('CPE4I le=%g nz=%d' % (le_min, nz_max),
-                       fnum(rows.get('CPE4I le=%g nz=%d' % (le_min, nz_max)), 'F_w') / f_m - 1.0)}
+            'finest': (ref[0], fnum(rows[ref[0]], 'F_w') / f_m - 1.0) if ref else ('-', float('nan'))}
 
 
 def main_lines(r):
@@ -837,8 +845,10 @@ def main_lines(r):
     out = ['steady peel force per unit width: %s' % sfe.describe(est)]
     b = r.get('band')
     if b:
-        out.append('F/w = %.4f N/mm +- %.2f %% (averaging) +- %.1f %% (discretisation band, reports/main-mesh/)' % (
-            est['value'], 100 * est['uncertainty'], 100 * b['band']))
+        out.append('F/w = %.4f N/mm +- %.2f %% (averaging), discretisation band %+.2f %% / %+.2f %% (%.4f to %.4f '
+                   'N/mm; reports/main-mesh/)' % (est['value'], 100 * est['uncertainty'], 100 * b['band_hi'],
+                                                  100 * b['band_lo'], est['value'] * (1 + b['band_lo']),
+                                                  est['value'] * (1 + b['band_hi'])))
         out.append('  the band: the largest difference between this mesh (%s, %.4f N/mm in the study%s) and the %d '
                    'meshes of the study at least as fine in l_e and n_z, in either formulation: %s' % (
                        b['label'], b['F_study'], '' if abs(b['F_study'] / est['value'] - 1) < 1e-9 else
@@ -952,6 +962,8 @@ def main_mesh_extras(ok, outdir):
                 '', '| l_e (um) | ' + ' | '.join('n_z = %d' % n for n in nzs) + ' |',
                 '|---|' + '---|' * len(nzs)]
         for le in les:
+            if not any(by.get('%s le=%g nz=%d' % (el, le, n)) for n in nzs):
+                continue
             cells = []
             for n in nzs:
                 r = by.get('%s le=%g nz=%d' % (el, le, n))
@@ -963,9 +975,11 @@ def main_mesh_extras(ok, outdir):
     b = main_band({'label': ''}, os.path.dirname(outdir))
     if b:
         out += ['', 'The main scene\'s mesh (`MAIN_A_MESH` of tools/peel_study.py: %s) against every mesh at least as '
-                'fine in l_e and n_z, in either formulation: %s; the band (the largest of them): **+-%.2f %%**. '
-                'Single refinements: %s. The finest mesh (%s): %+.2f %%.' % (
-                    b['label'], ', '.join('%s %+.2f %%' % (lab, 100 * d) for lab, d in b['finer']), 100 * b['band'],
+                'fine in l_e and n_z, in either formulation: %s; the band (from the lowest to the highest of them, '
+                'zero included): **%+.2f %% / %+.2f %%**. Single refinements: %s. The reference (the finest CPE4I '
+                'mesh, %s): %+.2f %%.' % (
+                    b['label'], ', '.join('%s %+.2f %%' % (lab, 100 * d) for lab, d in b['finer']),
+                    100 * b['band_hi'], 100 * b['band_lo'],
                     ', '.join('%s %+.2f %%' % (k, 100 * v) for k, v in b['parts'].items()), b['finest'][0],
                     100 * b['finest'][1])]
     return out
@@ -1259,7 +1273,18 @@ def statements(reports):
             if longer.get('3'):
                 c['ps3d'] = c['ps3d'].replace('n_y = 4: ', 'n_y = 4, pulled 0.32 mm: ', 1)
         cells[k] = c
-    table = [
+    more_rows = statement_rows_35(reports, cells, nm)
+    refs = {'ps3d': ('stmt-3d stmt-3d-fine', 'stmt-3d-width-long stmt-3d-fine stmt-3d-long'),
+            'speed': ('stmt-3d', 'stmt-3d-width-long'), 'nz1': ('stmt-mesh-z', 'stmt-mesh-z-long'),
+            'nz05': ('stmt-mesh-z main-mesh', 'stmt-mesh-z-long'),
+            'le': ('stmt-mesh-x main-mesh', 'stmt-mesh-x-long stmt-mesh-x-long-nz9'),
+            'ny': ('stmt-3d', 'stmt-3d-width-long'), 'widths': ('stmt-3d', 'stmt-3d-width-long'),
+            'dofs': ('stmt-mesh-x stmt-mesh-z stmt-3d', 'stmt-mesh-x stmt-mesh-z stmt-3d'),
+            'inc': ('stmt-increment', 'stmt-increment-long')}
+    for k in ('A', 'B'):
+        for key, (ra, rb) in refs.items():
+            cells[k][key] += ' (%s)' % ', '.join('`%s`' % x for x in (ra if k == 'A' else rb).split())
+    table = more_rows[:4] + [
         ('plane strain against 3D (section 9, Fig. 14)', 'plane strain +4 %', 'ps3d'),
         ('speed-up of plane strain (section 9)', '15-50x', 'speed'),
         ('one element through the thickness (Fig. 11b)', '2 % error', 'nz1'),
@@ -1269,8 +1294,9 @@ def statements(reports):
         ('two model widths (Fig. 11a)', 'almost identical', 'widths'),
         ('CPU time per increment attempt against DOFs (Fig. 11d)', 'exponent 1.34', 'dofs'),
         ('load step (section 7)', 'error < 1 % for all steps; stable up to 100 nm/inc (PET model)', 'inc'),
-    ]
-    out = ['# The paper\'s statements against the two readings of Fig. 10', '',
+    ] + more_rows[4:]
+    out = ['# The paper\'s statements against the two readings of Fig. 10', '', stamp()[0], '',
+           'The reports behind each cell are named in it (reports/NAME/NAME.md). '
            'Written by `tools/peel_study.py statements` on %s from reports/stmt-mesh-x(-long), stmt-mesh-z(-long), '
            'stmt-3d, stmt-3d-width-long, stmt-3d-fine, stmt-3d-long and stmt-increment(-long) (reading B from the '
            '0.32 mm pulls of the -long studies where they have been run; each made by `tools/peel_study.py STUDY --threads 1`; their .md files hold every case, '
@@ -1287,6 +1313,99 @@ def statements(reports):
         fh.write('\n'.join(out) + '\n')
     print('\n'.join(out))
     return 0
+
+
+def statement_rows_35(reports, cells, nm):
+    """The statements of sections 7-9 that issue 35 added to the table, for both readings (cells[k][key], from the
+    reports named in each cell; nm where a report is missing). Returns the rows (name, paper, key): the first four
+    go before the mesh statements."""
+    def rows(study):
+        return load_rows(reports, study)
+
+    def pct(r1, r2, unc=True):
+        if not r1 or not r2 or r1.get('completed') != 'True' or r2.get('completed') != 'True':
+            return nm
+        d = fnum(r1, 'F_w') / fnum(r2, 'F_w') - 1
+        return '%+.2f %%' % (100 * d) + (' (+-%.2f)' % (100 * (fnum(r1, 'F_unc') + fnum(r2, 'F_unc'))) if unc else '')
+    a, b = cells['A'], cells['B']
+    mmr = rows('main-mesh')
+
+    def series(fmt, keys, scale=1.0):
+        got = [(k_, mmr.get(fmt % k_)) for k_ in keys]
+        return ', '.join('%g: %.4f' % (scale * float(k_), fnum(r_, 'F_w')) for k_, r_ in got if r_)
+    if mmr:
+        a['nz05'] += ('; at l_e = 2.5 um (`main-mesh`, 0.2 mm fine region, CPE4) n_z = %s N/mm' %
+                      series('CPE4 le=0.0025 nz=%s', ('3', '5', '9', '13')))
+        a['le'] += ('; at n_z = 9 (`main-mesh`, CPE4) l_e (um) = %s N/mm, not monotone' %
+                    series('CPE4 le=%s nz=9', ('0.01', '0.005', '0.0025', '0.00125'), 1e3))
+    a['loading'] = 'u_x prescribed on the coating\'s end face (u_y, u_z free): as the text says'
+    b['loading'] = 'u_z prescribed on the lifted flap\'s end face, u_x free (carriage grip): not a u_x'
+    a['quarter'] = ('a quarter: the mid-width plane (YSYMM) and the mid-length plane, where the coating bridges the '
+                    'broken substrate (the uniform u_x of the end face)')
+    b['quarter'] = ('half the width: one symmetry plane (a single arm peeled at 90 degrees has no mid-length '
+                    'symmetry), so not a quarter')
+    # stretch of the detached coating from the front's advance v per unit pull: A the drawn length grows by the
+    # pull, (d + u) / d - 1 = 1/v; B (carriage) the pull lifts the peeled length and stretches it, u / d - 1
+    mm = rows('main').get('peel_main') or next(iter(rows('main').values()), None)
+    sb = rows('steel-b').get('B rigid substrate')
+    v_a = fnum(mm, 'front_speed')
+    v_b = fnum(sb, 'front_speed')
+    a['stretch'] = ('%.0f %% (1/v, the front advancing v = %.2f um per um of pull over the plateau; `main`)' % (
+        100 / v_a, v_a) if v_a == v_a and v_a > 0 else nm)
+    b['stretch'] = ('%.0f %% (1/v - 1, v = %.2f um per um of pull; `steel-b`)' % (100 * (1 / v_b - 1), v_b)
+                    if v_b == v_b and v_b > 0 else nm)
+    sim = rows('simplifications')
+    a['steel'] = ('rigid against elastic steel: %s (`simplifications`, l_e = 10 um)' % pct(
+        sim.get('rigid, coarse far field (default)'), sim.get('steel, coarse far field')) if sim else nm)
+    b['steel'] = ('steel against rigid: %s (`steel-b`, pulled 0.32 mm)' % pct(
+        rows('steel-b').get('B steel substrate'), sb) if sb else nm)
+    un = rows('unloading')
+    for k, c in (('A', a), ('B', b)):
+        ref = un.get('%s unloading=2' % k)
+        vals = ['%d: %s' % (n, pct(un.get('%s unloading=%d' % (k, n)), ref)) for n in (1, 3)
+                if un.get('%s unloading=%d' % (k, n))]
+        c['unloading'] = ('%s against 2 (`unloading`%s)' % ('; '.join(vals), ', the main mesh' if k == 'A' else
+                                                             ', pulled 0.32 mm') if vals and ref else nm)
+    app = rows('application')
+    ra = next(iter(app.values()), None)
+    a['app'] = ('3D quarter, n_y = 10, n_z = 3, l_e = 2 um, 1 um/inc at most: F/w = %.3f N/mm (`application`)'
+                % fnum(ra, 'F_w') if ra else nm)
+    b['app'] = 'not run'
+    f13 = rows('fig13')
+    r13 = next(iter(f13.values()), None)
+    a['fig13'] = ('plane strain, the main mesh: %.3f mm delaminated at %.0f um of pull, F/w = %.4f N/mm '
+                  '(`fig13`, Mises picture there); 3D quarter, section 8 mesh: %.3f mm (`application`)' % (
+                      fnum(r13, 'delaminated_mm'), 1e3 * fnum(r13, 'u_end_mm'), fnum(r13, 'F_w'),
+                      fnum(ra, 'delaminated_mm')) if r13 and ra else nm)
+    b['fig13'] = 'not run'
+    wd = rows('width-3d')
+    for k, c in (('A', a), ('B', b)):
+        ps = wd.get('%s plane strain' % k)
+        b4 = 'b=0.04 ny=4' if k == 'A' else 'b=0.04 ny=2'
+        free, held = wd.get('%s 3D %s' % (k, b4)), wd.get('%s 3D %s edge held in y' % (k, b4))
+        widths = ', '.join('b = %s mm: %s' % (lab.split('b=')[1].split()[0], pct(r, ps, False))
+                           for lab, r in sorted(wd.items(), key=lambda t: t[0]) if group(lab) == k and '3D' in lab
+                           and 'edge' not in lab)
+        c['ycontr'] = ('3D against plane strain: %s; the 3D quarter with its free edge held in y: %s '
+                       '(`width-3d`, l_e = 10 um, n_z = 3; the lateral stretch of the peeled coating there)' % (
+                           widths, pct(held, ps)) if ps and free and held else nm)
+    pa = rows('pet-alt')
+    for k, c in (('A', a), ('B', b)):
+        c['petalt'] = ('plane strain against 3D: %s (`pet-alt`, n_y = 2)' % pct(
+            pa.get('%s plane strain' % k), pa.get('%s 3D b=0.04 ny=2' % k)) if pa else nm)
+    return [
+        ('loading (section 7): "a displacement u_x on one end of the polymer coating"', 'u_x', 'loading'),
+        ('model extent (section 7): "only encompasses a quarter of the specimen"', 'a quarter', 'quarter'),
+        ('stretch of the detached coating (section 7): "the coating stretches at least 50 %"', '>= 50 %',
+         'stretch'),
+        ('substrate (section 7): elastic steel, 210 GPa, 0.3', 'elastic steel', 'steel'),
+        ('plane strain against 3D with the alternative Table 1 (`--pet alt`)', '-', 'petalt'),
+        ('the cause of the plane-strain excess (section 9): "prevents deformations in y-direction"',
+         'the y-contraction', 'ycontr'),
+        ('the three unloading behaviours (section 8, Fig. 6)', 'no noticeable influence', 'unloading'),
+        ('the application (section 8)', '3D, n_y = 10, n_z = 3, l_e = 2 um', 'app'),
+        ('deformed geometry after 1.0 mm of delamination (Fig. 13)', 'agrees qualitatively with Fig. 12', 'fig13'),
+    ]
 
 
 def mesh_size(r, study):
