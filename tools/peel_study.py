@@ -234,8 +234,8 @@ def studies(quick):
                      ['--newton', 'auto'])]
     # Fig. 13: the main scene's reading and mesh pulled until 1.0 mm has delaminated (plane strain; the 3D quarter
     # of section 8 is the application study), with the Mises picture of the last frame
-    s['fig13'] = [('A plane strain 1.0 mm', MAIN_A_MESH + ['--rigid-substrate', '--fine-length', '1.1', '--bonded',
-                                                           '1.25', '--u-total', '0.75', '--field-frequency', '200'],
+    s['fig13'] = [('A plane strain 1.0 mm', MAIN_A_MESH + ['--rigid-substrate', '--fine-length', '1.15', '--bonded',
+                                                           '1.3', '--u-total', '0.7', '--field-frequency', '200'],
                    True)]
     s['dofs'] = [('le=%g nz=%d' % (le, nz), DEFAULT_PS + ['--le', str(le), '--nz', str(nz), '--u-total', '0.01'],
                   False) for le, nz in ((0.02, 2), (0.01, 3), (0.005, 3), (0.0025, 5))]
