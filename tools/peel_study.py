@@ -972,6 +972,13 @@ def main_mesh_extras(ok, outdir):
                     if r.get('F_quarter_change') == r.get('F_quarter_change') else '-', r.get('cpu_time_s', 0))
                              if r else '-')
             out.append('| %g | %s |' % (1e3 * le, ' | '.join(cells)))
+    pairs = [(le, n, by['CPE4I le=%g nz=%d' % (le, n)]['F_w'] / by['CPE4 le=%g nz=%d' % (le, n)]['F_w'] - 1)
+             for le in les for n in nzs if 'CPE4I le=%g nz=%d' % (le, n) in by and 'CPE4 le=%g nz=%d' % (le, n) in by]
+    out += ['', 'CPE4I against CPE4 on the same mesh: %s.' % ', '.join(
+        'l_e = %g um, n_z = %d: %+.2f %%' % (1e3 * le, n, 100 * d) for le, n, d in pairs),
+        '', 'Softening part of the cohesive zone (openings delta to 6 delta), cohesive elements along x (mean of the '
+        'last frames of the window; column pz_cells of the CSV): %s.' % ', '.join(
+            '%s: %.1f' % (r['label'], r['pz_cells']) for r in ok if r.get('pz_cells') == r.get('pz_cells'))]
     b = main_band({'label': ''}, os.path.dirname(outdir))
     if b:
         out += ['', 'The main scene\'s mesh (`MAIN_A_MESH` of tools/peel_study.py: %s) against every mesh at least as '
@@ -1014,9 +1021,10 @@ def width_extras(ok, outdir):
         matplotlib.use('Agg')
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(8, 4.2))
-        for lab, lat, x0 in curves:
-            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[2] for c in lat], '-', label=lab + ', mid-width')
-            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[3] for c in lat], ':', label=lab + ', edge')
+        for k, (lab, lat, x0) in enumerate(curves):
+            col = plt.cm.tab10(k % 10)
+            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[2] for c in lat], '-', color=col, label=lab + ', mid-width')
+            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[3] for c in lat], ':', color=col, label=lab + ', edge')
         ax.set_xlabel('reference x - initial front (um)')
         ax.set_ylabel('lateral stretch lambda_y of the top face')
         ax.legend(fontsize=6)
