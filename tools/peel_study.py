@@ -849,12 +849,13 @@ def main_lines(r):
                    'N/mm; reports/main-mesh/)' % (est['value'], 100 * est['uncertainty'], 100 * b['band_hi'],
                                                   100 * b['band_lo'], est['value'] * (1 + b['band_lo']),
                                                   est['value'] * (1 + b['band_hi'])))
-        out.append('  the band: the largest difference between this mesh (%s, %.4f N/mm in the study%s) and the %d '
-                   'meshes of the study at least as fine in l_e and n_z, in either formulation: %s' % (
+        out.append('  the band: from the lowest to the highest difference (zero included) between this mesh (%s, %.4f '
+                   'N/mm in the study%s) and the %d meshes of the study at least as fine in l_e and n_z, in either '
+                   'formulation: %s' % (
                        b['label'], b['F_study'], '' if abs(b['F_study'] / est['value'] - 1) < 1e-9 else
                        ' [this run: %+.2e]' % (est['value'] / b['F_study'] - 1), len(b['finer']),
                        ', '.join('%s %+.2f %%' % (lab, 100 * d) for lab, d in b['finer'])))
-        out.append('  made of: %s; the finest mesh (%s) %+.2f %%' % (
+        out.append('  made of: %s; the finest CPE4I mesh (%s) %+.2f %%' % (
             ', '.join('%s %+.2f %%' % (k, 100 * v) for k, v in b['parts'].items()), b['finest'][0],
             100 * b['finest'][1]))
     elif r['info'].get('reading') != 'peel':
