@@ -1628,7 +1628,16 @@ def render_mises(vtu_path, info, png, last):
             if max(p[0] for p in pts) >= xmin:
                 polys.append(pts)
                 vals.append(m)
-        views.append(('plane strain', polys, vals, 0, 1))
+        views.append(('plane strain, the whole coating', polys, vals, 0, 1))
+        # the drawing front at true scale: from 60 um ahead of the current front to 150 um behind it
+        xf = info['x_front_mm'] - last[1]
+        zp, zv = [], []
+        for pp, m in zip(polys, vals):
+            if any(xf - 0.06 <= p[0] <= xf + 0.15 for p in pp):
+                zp.append(pp)
+                zv.append(m)
+        views.append(('plane strain, the delamination front (current front at x = %.0f um)' % (1e3 * xf), zp, zv,
+                      0, 1))
     allv = [v for vw in views for v in vw[2]]
     if not allv:
         return False
@@ -1638,7 +1647,7 @@ def render_mises(vtu_path, info, png, last):
         vs = [p[1] for pp in vw[1] for p in pp] or [0.0, 1.0]
         spans.append((max(hs) - min(hs), max(vs) - min(vs)))
     lx = max(sp[0] for sp in spans)
-    heights = [max(1.0, 8.0 * sp[1] / lx) + 0.9 for sp in spans]
+    heights = [min(4.0, max(1.0, 8.0 * sp[1] / max(sp[0], 1e-12))) + 0.9 for sp in spans]
     fig, axs = plt.subplots(len(views), 1, figsize=(10, sum(heights) + 0.5), squeeze=False,
                             gridspec_kw={'height_ratios': heights})
     for (title, polys, vals, ah, av), ax in zip(views, axs[:, 0]):
@@ -1650,8 +1659,12 @@ def render_mises(vtu_path, info, png, last):
         ax.set_aspect('equal')
         ax.set_title(title, fontsize=9)
         ax.set_xlabel('x (um)')
-        ax.set_ylabel(('y' if av == 1 else 'z') + ' (um)')
-        ax.axvline(1e3 * info['x_front_mm'], color='k', lw=0.6, ls='--')
+        ax.set_ylabel(('y' if av == 1 and three_d else 'z') + ' (um)')
+        hs = [1e3 * p[0] for pp in polys for p in pp]
+        if hs and 1e3 * info['x_front_mm'] > max(hs):
+            ax.set_xlim(min(hs) - 2.0, max(hs) + 2.0)       # the zoomed front: the initial front is off the view
+        else:
+            ax.axvline(1e3 * info['x_front_mm'], color='k', lw=0.6, ls='--')
         fig.colorbar(pc, ax=ax, label='von Mises (MPa)', fraction=0.03, pad=0.01)
     fig.suptitle('ldfcz %s: pull %.1f um, delaminated %.1f um (dashed: initial front)' % (
         'application (section 8 mesh)' if three_d else 'plane strain, l_e = %g um, n_z = %d' % (
@@ -1687,6 +1700,14 @@ def plot(study, results, outdir):
     for r in results:
         u, fw = r['curve']
         ax[0].plot([1e3 * x for x in u], fw, label=r['label'] + (' *' if r.get('reference') else ''))
+        cm = (r.get('steady') or {}).get('cycle_means') or []
+        if study == 'main' and cm:
+            ax[0].plot([1e3 * c[0] for c in cm], [c[1] for c in cm], 'k.', ms=3, label='cycle means (plateau window)')
+            b = r.get('band')
+            if b:
+                v = r['steady']['value']
+                ax[0].axhspan(v * (1 + b['band_lo']), v * (1 + b['band_hi']), color='0.85', zorder=0,
+                              label='discretisation band (main-mesh)')
     ax[0].set_xlabel('pulled displacement u_x (um)')
     ax[0].set_ylabel('peel force per unit width F/w (N/mm)')
     ax[0].legend(fontsize=7)
