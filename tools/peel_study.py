@@ -33,6 +33,7 @@ import time
 THREADS = [2]  # set by main(), quoted in the reports
 LDFCZ = ['']   # the ldfcz program (main()); material_point is looked for next to it
 LAUNCH = []     # the launcher before ldfcz (--ranks: mpirun -np N), quoted in the reports
+STAMP = ['']    # the reports' stamp, taken when the command starts (main())
 
 
 def run_config():
@@ -756,7 +757,15 @@ def write_report(study, results, outdir):
                 'times are the runs\' own closing summaries; no load figures were recorded for these runs).' % (
                     cmd, time.strftime('%Y-%m-%d %H:%M'), study))
         busy = 'Machine: %s, %d cores visible.' % (os.uname().nodename, os.cpu_count() or 1)
-    lines = ['# Study %s' % study, '', stamp()[0], '', head, '', busy,
+    st = STAMP[0] or stamp()[0]
+    old_md = os.path.join(outdir, study + '.md')
+    if '--reuse' in sys.argv or '--only' in sys.argv:
+        # the report is rewritten from earlier runs (all, or all but the --only cases): keep their stamp
+        prev = [ln.strip() for ln in open(old_md) if ln.startswith('Stamp:')][:1] if os.path.exists(old_md) else []
+        if prev:
+            st += ' Runs not made by this command: %s' % re.sub(r'^Stamp: (.*?)( Runs not made by this command: .*)?$',
+                                                                 r'\1', prev[0])
+    lines = ['# Study %s' % study, '', st, '', head, '', busy,
              '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
              'F/w: steady peel force per unit width (N/mm) by tools/steady_force.py: the mean of the cycle means '
              '(the force averaged over whole ripple periods, one cohesive element crossed by the front each) over '
@@ -1000,8 +1009,8 @@ def width_extras(ok, outdir):
     tension (lambda_y = lambda_x^-1/2, incompressible) and plane strain (lambda_y = 1) would give; a PNG of lambda_y
     along x."""
     out = ['', 'Lateral contraction of the peeled coating (top face, last frame; lambda = current / reference length):',
-           '', '| case | F/F_ps - 1 | lambda_x | lambda_y mid-width | lambda_y edge | lambda_y across b | uniaxial '
-           'lambda_x^-1/2 |', '|---|---|---|---|---|---|---|']
+           '', '| case | F/F_ps - 1 | F_ps/F - 1 | lambda_x | lambda_y mid-width | lambda_y edge | lambda_y across b '
+           '| uniaxial lambda_x^-1/2 |', '|---|---|---|---|---|---|---|---|']
     curves = []
     for g in ('A', 'B'):
         ps = next((r for r in ok if r['label'] == '%s plane strain' % g), None)
@@ -1013,8 +1022,9 @@ def width_extras(ok, outdir):
             if not sel:
                 continue
             mean = [sum(c[k] for c in sel) / len(sel) for k in range(1, 5)]
-            out.append('| %s | %s | %.3f | %.3f | %.3f | %.3f | %.3f |' % (
-                r['label'], '%+.2f %%' % (100 * (r['F_w'] / ps['F_w'] - 1)) if ps else '-', mean[0], mean[1],
+            out.append('| %s | %s | %s | %.3f | %.3f | %.3f | %.3f | %.3f |' % (
+                r['label'], '%+.2f %%' % (100 * (r['F_w'] / ps['F_w'] - 1)) if ps else '-',
+                '%+.2f %%' % (100 * (ps['F_w'] / r['F_w'] - 1)) if ps else '-', mean[0], mean[1],
                 mean[2], mean[3], mean[0] ** -0.5))
             curves.append((r['label'], r['lateral'], x0))
     try:
@@ -1304,7 +1314,7 @@ def statements(reports):
         ('CPU time per increment attempt against DOFs (Fig. 11d)', 'exponent 1.34', 'dofs'),
         ('load step (section 7)', 'error < 1 % for all steps; stable up to 100 nm/inc (PET model)', 'inc'),
     ] + more_rows[4:]
-    out = ['# The paper\'s statements against the two readings of Fig. 10', '', stamp()[0], '',
+    out = ['# The paper\'s statements against the two readings of Fig. 10', '', STAMP[0] or stamp()[0], '',
            'The reports behind each cell are named in it (reports/NAME/NAME.md). '
            'Written by `tools/peel_study.py statements` on %s from reports/stmt-mesh-x(-long), stmt-mesh-z(-long), '
            'stmt-3d, stmt-3d-width-long, stmt-3d-fine, stmt-3d-long and stmt-increment(-long) (reading B from the '
@@ -1392,11 +1402,13 @@ def statement_rows_35(reports, cells, nm):
         ps = wd.get('%s plane strain' % k)
         b4 = 'b=0.04 ny=4' if k == 'A' else 'b=0.04 ny=2'
         free, held = wd.get('%s 3D %s' % (k, b4)), wd.get('%s 3D %s edge held in y' % (k, b4))
-        widths = ', '.join('b = %s mm: %s' % (lab.split('b=')[1].split()[0], pct(r, ps, False))
-                           for lab, r in sorted(wd.items(), key=lambda t: t[0]) if group(lab) == k and '3D' in lab
-                           and 'edge' not in lab)
-        c['ycontr'] = ('3D against plane strain: %s; the 3D quarter with its free edge held in y: %s '
-                       '(`width-3d`, l_e = 10 um, n_z = 3; the lateral stretch of the peeled coating there)' % (
+        widths = ', '.join('b = %s mm: %s' % (lab.split('b=')[1].split()[0], pct(ps, r, False))
+                           for lab, r in sorted(wd.items(), key=lambda t: float(t[0].split('b=')[1].split()[0])
+                                                if 'b=' in t[0] else 0.0)
+                           if group(lab) == k and '3D' in lab and 'edge' not in lab)
+        c['ycontr'] = ('plane strain against the 3D quarter: %s; the 3D quarter with its free edge held in y '
+                       'against plane strain: %s (`width-3d`, l_e = 10 um, n_z = 3; the lateral stretch of the '
+                       'peeled coating there)' % (
                            widths, pct(held, ps)) if ps and free and held else nm)
     pa = rows('pet-alt')
     for k, c in (('A', a), ('B', b)):
@@ -1786,6 +1798,7 @@ def main(argv=None):
         return 0
     ldfcz = find_ldfcz(a.ldfcz)
     LDFCZ[0] = ldfcz
+    STAMP[0] = stamp()[0]
     if a.study == 'statements':
         return statements(a.reports)
     if a.study == 'main' and not a.reuse:
