@@ -678,7 +678,7 @@ def collect(res, outdir, job, info, p, plateau, progress):
     res['pz_cells'] = sum(p_[0] for p_ in pz) / len(pz) if pz else float('nan')
     res['pz_length_um'] = 1e3 * sum(p_[1] for p_ in pz) / len(pz) if pz else float('nan')
     res['lateral'] = lateral_contraction(frames[-1][0], info) if frames and info['dimension'] == 3 and \
-        len(frames[-1]) == 1 else None
+        len(frames[-1]) == 1 and not p.full_width else None
     if res.get('increments') and res.get('wall_s'):
         res['t_inc_s'] = res['wall_s'] / res['attempts'] if res.get('attempts') else res['wall_s'] / res['increments']
     if res.get('iterations') and res.get('wall_s'):
