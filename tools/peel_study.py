@@ -298,7 +298,9 @@ def stamp():
         except (OSError, subprocess.SubprocessError):
             return ''
     commit = git('rev-parse', '--short=12', 'HEAD') or 'unknown'
-    dirty = bool(git('status', '--porcelain', '--untracked-files=no')) if commit != 'unknown' else False
+    # the sources only: the reports being written are not what made them
+    dirty = bool(git('status', '--porcelain', '--untracked-files=no', '--', '.', ':(exclude)reports')) \
+        if commit != 'unknown' else False
     try:
         version = subprocess.run([LDFCZ[0], '-V'], capture_output=True, text=True,
                                  timeout=30).stdout.strip() if LDFCZ[0] else ''
@@ -310,7 +312,7 @@ def stamp():
             cpu = next((ln.split(':', 1)[1].strip() for ln in fh if ln.startswith('model name')), '')
     except OSError:
         pass
-    d = {'commit': commit + (' with uncommitted changes to tracked files' if dirty else ''),
+    d = {'commit': commit + (' with uncommitted changes to tracked source files' if dirty else ''),
          'ldfcz': version or 'unknown', 'command': '/usr/bin/python3 tools/peel_study.py ' + ' '.join(
              os.path.relpath(a, ROOT) if os.path.isabs(a) and a.startswith(ROOT) else a for a in sys.argv[1:]),
          'date': time.strftime('%Y-%m-%d %H:%M %Z'),
