@@ -4,7 +4,8 @@
 program ldfcz
   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
-  use ldfcz_config, only: ldfcz_version, ldfcz_abaqus_include_dir, ldfcz_install_include_rel
+  use ldfcz_config, only: ldfcz_version, ldfcz_commit, ldfcz_build_type, ldfcz_abaqus_include_dir, &
+    ldfcz_install_include_rel
   use model_types, only: model_t
   use deck_reader, only: read_deck
   use user_routines, only: user_routines_connect_units, user_routines_t, user_routines_builtin, user_routines_load
@@ -20,7 +21,6 @@ program ldfcz
   use heap_reuse, only: heap_reuse_default
   use interface_orientation, only: interface_check_t, check_interface_orientation, interface_check_messages
   use summary_json, only: run_facts_t, summary_json_write, summary_json_clear
-  use summary_commit, only: build_commit
   !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
   implicit none
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc, fflags
@@ -72,7 +72,8 @@ program ldfcz
       call parallel_finalize(par)
       stop
     case ('-V', '--version')
-      if (parallel_writer(par)) write (output_unit, '(a)') 'ldfcz '//ldfcz_version
+      if (parallel_writer(par)) write (output_unit, '(a)') 'ldfcz '//ldfcz_version//' (commit '// &
+        ldfcz_commit//', '//ldfcz_build_type//' build)'
       call parallel_finalize(par)
       stop
     case ('-q', '--quiet')
@@ -220,7 +221,8 @@ program ldfcz
   out%npieces = par%nranks   ! VTU frames: one piece per process (JOB_NNNN.pvtu)
   if (stat /= 0) call die(errmsg)
   out_open = .true.
-  call output_log(out, 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir)
+  call output_log(out, 'ldfcz '//ldfcz_version//' (commit '//ldfcz_commit//', '//ldfcz_build_type// &
+    ' build): job '//job//', deck '//deck//', output in '//outdir)
   if (len(user_file) > 0) then
     ! each process of an MPI run compiles into a directory of its own (no two compilers writing one file)
     user_dir = outdir
@@ -276,7 +278,7 @@ contains
     facts%deck = deck
     facts%output_dir = outdir
     facts%version = ldfcz_version
-    facts%commit = build_commit
+    facts%commit = ldfcz_commit
     facts%restart_from = restart_from
     facts%exit_code = exit_code
     facts%threads = nthreads

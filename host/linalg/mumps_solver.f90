@@ -27,7 +27,7 @@
 !> host. Every call is collective: all processes call the same phases in the same order.
 !>
 !> Output of MUMPS is silenced (ICNTL(1:4)) unless the environment variable LDFCZ_MUMPS_VERBOSE is set to a value
-!> other than '' or '0'. Two switches for measurements only (tools/bench_mpi.py, docs/performance.md):
+!> other than '' or '0'. Two switches for measurements only (benchmarks/bench_mpi.py, docs/performance.md):
 !> LDFCZ_MUMPS_ORDERING = pord, amd, amf or qamd replaces the host's METIS ordering by that built-in ordering of
 !> MUMPS (ICNTL(7) = 4, 0, 2, 6); LDFCZ_MUMPS_CENTRAL_RHS = 1 keeps a distributed run's right-hand side and
 !> solution on the host (ICNTL(20) = 0, ICNTL(21) = 0, the solution broadcast: the path before the distributed

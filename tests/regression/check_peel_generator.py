@@ -102,8 +102,12 @@ def check_case(gen, work, args, bad):
     tag = ' '.join(args)
     for eid, (et, es, conn) in elems.items():
         x = [nodes[n] for n in conn]
-        if et in ('C3D8', 'CPE4'):
-            v, jmin = hex_volume_and_min_jac(x) if et == 'C3D8' else quad_area_and_min_jac(x)
+        if et in ('C3D8', 'CPE4', 'C3D8I', 'CPE4I'):
+            # the coating's formulation: incompatible modes with --incompatible, the steel always the plain element
+            want = ('C3D8' if three_d else 'CPE4') + ('I' if es == 'COATING' and '--incompatible' in args else '')
+            if et != want:
+                bad.append('%s: %s element %d is %s, expected %s' % (tag, es, eid, et, want))
+            v, jmin = hex_volume_and_min_jac(x) if et.startswith('C3D8') else quad_area_and_min_jac(x)
             if not jmin > 0:
                 bad.append('%s: element %d has a corner Jacobian %.3e <= 0' % (tag, eid, jmin))
             vol[es] += v
@@ -162,6 +166,16 @@ def check_case(gen, work, args, bad):
                 bad.append('%s: *STEP EXTRAPOLATION=NO %s' % (tag, 'missing' if not has_no else 'unexpected'))
         if kw == '*DEPVAR' and int(data[0]) != 11:
             bad.append('%s: *DEPVAR %s, the UMAT needs 11' % (tag, data[0]))
+    # --edge-fixed-y: YEDGE is every coating (and steel) node on the free edge y = b, held in y in the model data
+    edge = sorted(n for n in {n for et, es, conn in elems.values() if es in ('COATING', 'SUBSTRATE') for n in conn}
+                  if three_d and abs(nodes[n][1] - b) < 1e-12)
+    held = [data for kw, params, data in blocks if kw == '*BOUNDARY' and any(
+        [x.strip() for x in line.split(',')][:3] == ['YEDGE', '2', '2'] for line in data)]
+    if '--edge-fixed-y' in args and (sorted(sets.get('YEDGE', [])) != edge or not edge or not held):
+        bad.append('%s: YEDGE (%d nodes) is not the edge y = b (%d nodes) held in y (%s)' % (
+            tag, len(sets.get('YEDGE', [])), len(edge), 'boundary written' if held else 'no boundary'))
+    if '--edge-fixed-y' not in args and ('YEDGE' in sets or held):
+        bad.append('%s: YEDGE written without --edge-fixed-y' % tag)
     xload = lb + a0
     load = sets.get('LOAD', [])
     if peel:
@@ -260,9 +274,22 @@ def main(argv):
              ['--reading', 'peel', '--flap', '0.12', '--peel-angle', '135', '--bend-radius', '0.04'],
              ['--reading', 'peel', '--flap', '0.1', '--3d', '--ny', '2', '--le', '0.02', '--rigid-substrate'],
              ['--reading', 'peel', '--flap', '0.1', '--3d', '--ny', '2', '--le', '0.02'],
-             ['--pet', 'alt', '--rigid-substrate']]
+             ['--pet', 'alt', '--rigid-substrate'], ['--incompatible', '--nz', '4'],
+             ['--3d', '--incompatible', '--ny', '2', '--le', '0.02'],
+             ['--3d', '--rigid-substrate', '--edge-fixed-y', '--ny', '3', '--le', '0.02'],
+             ['--3d', '--edge-fixed-y', '--ny', '2', '--le', '0.02']]
     for c in cases:
         check_case(gen, work, c, bad)
+    # the committed main-scene deck is what the main job (tools/peel_study.py main, MAIN_A) generates
+    root = os.path.dirname(os.path.dirname(os.path.abspath(gen)))
+    from ldfcz_tools import peel_study  # the package is on PYTHONPATH (tests/CMakeLists.txt)
+    main_deck = os.path.join(work, 'main_scene.inp')
+    subprocess.check_call([sys.executable, gen, '-o', main_deck] + peel_study.MAIN_A)
+    with open(main_deck) as fh, open(os.path.join(root, 'decks', 'peel', 'peel_main.inp')) as fc:
+        if fh.read() != fc.read():
+            bad.append('decks/peel/peel_main.inp is not the main job\'s deck: regenerate it with tools/peel_deck.py '
+                       '%s -o decks/peel/peel_main.inp' % ' '.join(peel_study.MAIN_A))
+    check_case(gen, work, peel_study.MAIN_A, bad)
     for b in bad:
         print('FAIL: ' + b)
     print('check_peel_generator: %s' % ('FAILED (%d)' % len(bad) if bad else 'passed'))

@@ -117,7 +117,46 @@ check(any('front-unknown' in x for x in e['flags']) and abs(e['value'] / F0 - 1)
       'no front history: value within the settling tolerance 0.5 %%, flagged front-unknown (%.2e)' % (
           e['value'] / F0 - 1))
 
-# 5. Richardson: F = 1 + 0.3 h^2 (h = 4, 2, 1): p = 2, F_inf = 1; uneven ratio (3, 2, 1) with p = 1.5;
+# 5. curvature: a U-shaped history F0 (1 + C ((u - 60 um) / 40 um)^2) has no straight-line drift over the
+#    admissible 20-100 um but is no plateau (a test on the line alone accepted it); over whole element periods the
+#    fitted parabola is exact: curvature = c W^2 / 4 / mean, c = C F0 / (40 um)^2
+C = 0.02
+f = [ramp(x) * (1 + C * ((x - 0.06) / 0.04) ** 2) for x in u]
+e = sf.estimate(u, f, fr, LE, FINE)
+print('U-shape:', sf.describe(e))
+check(not e['ok'] and e['status'] == 'no-plateau', 'U-shape: refused as no-plateau (%s)' % e['status'])
+period = LE / 1.5
+wu, wf = sf._cut(u, f, 0.02, 0.1)
+st = sf.window_stats(wu, wf, period)
+w = st['window'][1] - st['window'][0]
+exact = C * F0 / 0.04 ** 2 * w * w / 4 / st['value']
+check(abs(st['curvature'] / exact - 1) < 1e-6, 'U-shape: curvature %.6f = c W^2 / 4 / mean = %.6f' % (
+    st['curvature'], exact))
+check(abs(st['drift']) < 0.1 * C, 'U-shape: the straight line alone sees almost no drift over 20-100 um (%.4f)'
+      % st['drift'])
+
+# 6. quarters (the plateau check): F0 (1 + g (u - 15 um)), g = 0.05 per mm, pulled 100 um: the whole periods of
+#    the last quarter (75-100 um; n = 7 periods of 3.33 um, ending at 100 um) against those of 50-75 um: for a line
+#    the mean of the cycle means is the value at the mean of their centres, the quarter's end minus n P / 2
+g = 0.05
+f = [ramp(x) * (1 + g * max(x - 0.015, 0.0)) for x in u]
+e = sf.estimate(u, f, fr, LE, FINE)
+nq = int(0.025 / period)
+q_exact = (1 + g * (0.1 - nq * period / 2 - 0.015)) / (1 + g * (0.075 - nq * period / 2 - 0.015)) - 1
+check(e['quarter_change'] is not None and abs(e['quarter_change'] / q_exact - 1) < 1e-6,
+      'quarters: last quarter against the one before %.6f = %.6f' % (e['quarter_change'] or 0, q_exact))
+# the element ripple, measured as a period: one element crossed per ripple cycle
+f = [ramp(x) * (1 + A * math.sin(2 * math.pi * max(0.0, 1.5 * (x - 0.01)) / LE)) for x in u]
+e = sf.estimate(u, f, fr_r, LE, FINE)
+check(abs(e['ripple_elements'] - 1) < 0.05, 'ripple: observed period %.3f elements of front advance (1)'
+      % e['ripple_elements'])
+check(abs(e['quarter_change']) < 1e-6, 'ripple: whole-period quarter means agree (%.2e)' % e['quarter_change'])
+# the discretisation band: the sum of the parts' absolute values
+parts = {'element formulation': -0.01, 'n_z': 0.004, 'l_e': 0.002}
+check(abs(sf.band(parts) - 0.016) < 1e-15 and '1.60 %' in sf.describe_band(e, parts),
+      'band: %s' % sf.describe_band(e, parts))
+
+# 7. Richardson: F = 1 + 0.3 h^2 (h = 4, 2, 1): p = 2, F_inf = 1; uneven ratio (3, 2, 1) with p = 1.5;
 #    oscillating differences give no order
 fi, p, why = sf.richardson([4, 2, 1], [1 + 0.3 * h * h for h in (4, 2, 1)])
 check(abs(p - 2) < 1e-12 and abs(fi - 1) < 1e-12, 'Richardson constant ratio: p = %.6f, F_inf = %.9f' % (p, fi))

@@ -156,13 +156,21 @@ def curve_parts(u, y, plateau):
 
 def add_scene_options(ap):
     g = ap.add_argument_group('scene (tools/peel_deck.py, docs/scenes.md)')
-    g.add_argument('--angle', type=float, default=0.0,
-                   help='peel angle (degrees); only the 0-degree (tensile peel) reading of docs/scenes.md is built')
+    g.add_argument('--reading', choices=('bridge', 'peel'), default='bridge',
+                   help='the reading of the paper\'s Fig. 10 (docs/scenes.md): bridge (A, default: the coating pulled '
+                   'along the interface at 0 degrees) or peel (B: the pre-delaminated flap lifted and pulled at '
+                   '--angle)')
+    g.add_argument('--angle', type=float, default=None,
+                   help='peel angle of --reading peel (degrees, (0, 180], default 90); the bridge pulls at 0')
+    g.add_argument('--grip', choices=('fixed', 'carriage'), default='fixed',
+                   help='--reading peel: fixed (the flap end moves along the peel direction) or carriage (90 degrees: '
+                   'vertical pull, u_x free)')
     g.add_argument('--coating', type=float, default=0.030, help='coating thickness h_c (mm), default 0.030')
     g.add_argument('--steel', action='store_true', help='model the steel substrate (default: rigid, 0.01 %% effect)')
     g.add_argument('--substrate', type=float, default=0.210, help='steel thickness (mm) with --steel')
     g.add_argument('--bonded', type=float, default=0.30, help='bonded length L_b (mm), default 0.30')
-    g.add_argument('--flap', type=float, default=0.020, help='pre-delaminated flap a_0 (mm), default 0.020')
+    g.add_argument('--flap', type=float, default=None,
+                   help='pre-delaminated flap a_0 (mm), default 0.020 (bridge) or 0.1 (peel: the bend and an arm)')
     g.add_argument('--fine-length', type=float, default=0.0,
                    help='fine mesh region ahead of the front (mm); default max(0.1, 2 x the largest pull), '
                         'at most --bonded')
@@ -183,9 +191,21 @@ def add_scene_options(ap):
 
 
 def check_scene(a):
-    if a.angle != 0.0:
-        raise InputError('--angle %g: the peel scene is built for the 0-degree (tensile peel) reading only '
-                         '(docs/scenes.md); a bent-arm peel needs another generator' % a.angle)
+    if a.reading == 'bridge':
+        if a.angle not in (None, 0.0):
+            raise InputError('--angle %g belongs to --reading peel (reading B, the flap lifted and pulled at an '
+                             'angle); the bridge (reading A) pulls at 0 degrees (docs/scenes.md)' % a.angle)
+        if a.grip != 'fixed':
+            raise InputError('--grip belongs to --reading peel')
+        a.angle = 0.0
+    else:
+        a.angle = 90.0 if a.angle is None else a.angle
+        if not 0.0 < a.angle <= 180.0:
+            raise InputError('--angle %g: the peel angle must be in (0, 180] degrees' % a.angle)
+        if a.grip == 'carriage' and a.angle != 90.0:
+            raise InputError('--grip carriage needs --angle 90')
+    if a.flap is None:
+        a.flap = 0.1 if a.reading == 'peel' else 0.020
     for name in ('coating', 'bonded', 'le', 'du', 'rate'):
         if getattr(a, name) <= 0.0:
             raise InputError('--%s must be positive' % name.replace('_', '-'))
@@ -232,6 +252,8 @@ class Scene:
              repr(min(a.du, self.u_max)), '--rate', repr(a.rate), '--u-total', repr(self.u_max),
              '--field-frequency', '1000000']
         g += ['--substrate', repr(a.substrate)] if a.steel else ['--rigid-substrate']
+        if a.reading == 'peel':
+            g += ['--reading', 'peel', '--peel-angle', repr(a.angle), '--grip', a.grip]
         if a.dgamma_max > 0:
             g += ['--dgamma-max', repr(a.dgamma_max)]
         pet = dict(item.partition('=')[::2] for item in a.pet)
@@ -300,10 +322,7 @@ class Scene:
         u, fw = [], []
         csv_path = os.path.join(d, 'peel.csv')
         if os.path.exists(csv_path):
-            with open(csv_path) as fh:
-                for row in csv.DictReader(fh):
-                    u.append(float(row['LOAD.U1']))
-                    fw.append(float(row['LOAD.RF1']) / info['width_mm'])
+            u, fw = read_pull_force(csv_path, info)
         reached = bool(u) and u[-1] >= self.u_max * (1.0 - 1e-6)
         ok = rc == 0 and reached
         reason = ''
@@ -323,6 +342,23 @@ class Scene:
                 if os.path.isfile(p):
                     os.remove(p)
         return {'ok': ok, 'reason': reason, 'u': u, 'fw': fw, 'wall_s': wall, 'rc': rc, 'dofs': info['dofs']}
+
+
+def read_pull_force(csv_path, info):
+    """(pull, F/w) of a run's JOB.csv: the displacement and reaction of LOAD along the pull direction d of the deck
+    (reading A: x; reading B: (cos theta, sin theta) in the x, z plane, or z with the carriage grip)."""
+    dx, dz = info.get('pull_dir', (1.0, 0.0))
+    z = info.get('z_dof', 2)
+    u, fw = [], []
+    with open(csv_path) as fh:
+        for row in csv.DictReader(fh):
+            if info.get('reading') == 'peel':
+                u.append(dx * float(row['LOAD.U1']) + dz * float(row['LOAD.U%d' % z]))
+                fw.append((dx * float(row['LOAD.RF1']) + dz * float(row['LOAD.RF%d' % z])) / info['width_mm'])
+            else:
+                u.append(float(row['LOAD.U1']))
+                fw.append(float(row['LOAD.RF1']) / info['width_mm'])
+    return u, fw
 
 
 # ----------------------------------------------------------------------------------------------------------------
@@ -761,8 +797,10 @@ def report(a, out, u, y_meas, y_ps, f_start, f_best, r, parts, log, comments):
     for c in comments:
         w('Curve header: `%s`' % c.lstrip('# '))
     w('')
-    w('Scene: plane strain, 0-degree (tensile) peel, `tools/peel_deck.py %s` (%d DOFs).' % (out['generator'],
-                                                                                         out['dofs']))
+    w('Scene: plane strain, %s, `tools/peel_deck.py %s` (%d DOFs).' % (
+        'reading A (the coating pulled along the interface at 0 degrees)' if a.reading == 'bridge' else
+        'reading B (the flap lifted and pulled at %g degrees, %s grip)' % (a.angle, a.grip), out['generator'],
+        out['dofs']))
     w('')
     w('| parameter | start | result | 95 % CI | change of the curve / noise: doubled, halved (RMS) |')
     w('|---|---|---|---|---|')

@@ -6,7 +6,7 @@ The scene (docs/scenes.md explains the reading of Fig. 10 and every choice):
   x along the specimen, z through the thickness (coordinate 2 in plane strain), y the width (3D only).
   steel substrate   z in [-h_s, 0],  x in [0, L_b]             (C3D8 / CPE4, *ELASTIC 210000, 0.3)
   LDF cohesive layer z = 0,          x in [0, L_b]             (*USER ELEMENT U1: 8-node 3D, U2: 4-node 2D)
-  PET coating        z in [0, h_c],  x in [0, L_b + a_0]       (C3D8 / CPE4, Leonov UMAT, Table 1)
+  PET coating        z in [0, h_c],  x in [0, L_b + a_0]       (C3D8 / CPE4, or C3D8I / CPE4I; Leonov UMAT)
   The coating part x in [L_b, L_b + a_0] is the pre-delaminated flap: it bridges the broken substrate (x = L_b is
   the substrate's fracture face) up to the specimen's mid-plane x = L_b + a_0, where its end face is pulled by a
   uniform u_x (node set LOAD). The substrate's far end x = 0 is held (node set HOLD). 3D: y in [0, b] with YSYMM on
@@ -172,7 +172,8 @@ def build(p):
     # parameters as JSON, split into comment lines of at most 132 characters (Abaqus reads lines up to 256)
     # (--pet only when given: the committed decks' headers stay as they were)
     pj = json.dumps({k: v for k, v in sorted(vars(p).items())
-                     if k not in ('output', 'info') and not (k == 'pet' and not v)}, sort_keys=True)
+                     if k not in ('output', 'info') and not (k in ('pet', 'incompatible', 'edge_fixed_y') and not v)},
+                    sort_keys=True)
     for k in range(0, len(pj), 120):
         w('**PARAMS ' + pj[k:k + 120])
     w('** units: mm, N, s, MPa. x along the specimen, %s through the thickness%s.'
@@ -203,7 +204,9 @@ def build(p):
                 else:
                     w('%d, %.9g, %.9g' % (sid(ix, iy, iz), x, z))
 
-    etype = 'C3D8' if three_d else 'CPE4'
+    etype = ('C3D8' if three_d else 'CPE4') + ('I' if p.incompatible else '')
+    csteel = 'C3D8' if three_d else 'CPE4'   # the elastic steel keeps the plain element (no bending to lock)
+    info['element'] = etype
     eid = 0
     coat_el, steel_el, coh_el = [], [], []
     cont = []
@@ -224,7 +227,7 @@ def build(p):
                 coat_el.append(eid)
                 w('%d, %s' % (eid, ', '.join(str(n) for n in solid(cid, ix, iy, iz))))
     if not p.rigid_substrate:
-        w('*ELEMENT, TYPE=%s, ELSET=SUBSTRATE' % etype)
+        w('*ELEMENT, TYPE=%s, ELSET=SUBSTRATE' % csteel)
         for iz in range(nzs):
             for iy in range(ny_el):
                 for ix in range(nbx):
@@ -273,6 +276,11 @@ def build(p):
     write_set('HOLD', hold)
     front = [cid(nbx, iy, 0) for iy in range(nyn)]
     write_set('FRONT0', front)
+    if p.edge_fixed_y:
+        yedge = [cid(ix, nyn - 1, iz) for iz in range(p.nz + 1) for ix in range(nxt + 1)]
+        if not p.rigid_substrate:
+            yedge += [sid(ix, nyn - 1, iz) for iz in range(nzs + 1) for ix in range(nbx + 1)]
+        write_set('YEDGE', yedge)
     if three_d and not p.full_width:
         ysym = [cid(ix, 0, iz) for iz in range(p.nz + 1) for ix in range(nxt + 1)]
         ysym += [sid(ix, 0, iz) for iz in range(nzs + 1) for ix in range(nbx + 1)]
@@ -301,6 +309,8 @@ def build(p):
     w('HOLD, ENCASTRE')
     if three_d and not p.full_width:
         w('YSYM, YSYMM')
+    if p.edge_fixed_y:
+        w('YEDGE, 2, 2')
 
     period = p.u_total / p.rate
     dt = p.du / p.rate
@@ -374,6 +384,9 @@ def parser():
                    help='3D: modelled width b = half the specimen width (mm), default 0.040')
     g.add_argument('--full-width', action='store_true',
                    help='3D: model y in [-b, b] without the YSYMM plane (checks the quarter model; 2 n_y elements)')
+    g.add_argument('--edge-fixed-y', action='store_true',
+                   help='3D quarter: hold the free edge y = b in y (u_y = 0; node set YEDGE): no lateral contraction '
+                   'at the edge (the plane-strain/3D gap study)')
     g.add_argument('--reading', choices=('bridge', 'peel'), default='bridge',
                    help='Fig. 10 reading: bridge (A, default: the flap bridges the broken substrate and is pulled '
                    'along x) or peel (B: the pre-delaminated flap is lifted and pulled at --peel-angle)')
@@ -407,6 +420,9 @@ def parser():
                    help='length of the fine region ahead of the initial front (mm), default 0.10')
     g.add_argument('--nz', type=int, default=3, help='elements over the coating thickness, default 3')
     g.add_argument('--ny', type=int, default=4, help='3D: elements over the width, default 4')
+    g.add_argument('--incompatible', action='store_true',
+                   help='coating elements with incompatible modes, CPE4I / C3D8I (free of shear locking in bending; '
+                   'docs/elements.md), instead of CPE4 / C3D8')
     g.add_argument('--no-coarse', action='store_true', help='uniform fine mesh over the whole bonded length')
     g.add_argument('--coarse-ratio', type=float, default=1.5, help='growth ratio of the far field, default 1.5')
     g.add_argument('--coarse-max', type=float, default=0.05, help='largest far-field element (mm), default 0.05')
@@ -436,6 +452,8 @@ def check(p):
         raise SystemExit('peel_deck: --flap must not be negative')
     if p.nz < 1 or p.ny < 1 or p.nx < 0:
         raise SystemExit('peel_deck: --nz, --ny must be >= 1')
+    if p.edge_fixed_y and (not p.three_d or p.full_width):
+        raise SystemExit('peel_deck: --edge-fixed-y needs the 3D quarter model (--3d without --full-width)')
     if p.du > p.u_total:
         raise SystemExit('peel_deck: --du larger than --u-total')
     if p.reading == 'peel':

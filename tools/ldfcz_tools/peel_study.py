@@ -2,8 +2,9 @@
 """Peel scenes and studies (paper sections 7-9): generate decks with tools/peel_deck.py, run bin/ldfcz on them,
 collect JOB.csv, compute the steady peel force per unit width, and write reports/<study>/<study>.{csv,md,png}.
 
-  peel_study.py main [--scene A]     the main plane-strain scene (reading B; --scene A the 0-degree bridge): prints the
-                                     steady peel force per unit width
+  peel_study.py main [--scene B]     the main plane-strain scene (reading A, the paper's text; --scene B the flap
+                                     lifted at 90 degrees): prints the steady peel force per unit width with its
+                                     averaging uncertainty and the discretisation band of the main-mesh study
   peel_study.py stmt-mesh-x|stmt-mesh-z|stmt-3d|...|mesh-x|mesh-z|simplifications|dofs|plastic-bound|
                 app-settings|opening-bound|application [--quick]   (the whole list: docs/scenes.md)
   peel_study.py list                 the studies and their cases
@@ -32,6 +33,7 @@ import time
 THREADS = [2]  # set by main(), quoted in the reports
 LDFCZ = ['']   # the ldfcz program (main()); material_point is looked for next to it
 LAUNCH = []     # the launcher before ldfcz (--ranks: mpirun -np N), quoted in the reports
+STAMP = ['']    # the reports' stamp, taken when the command starts (main())
 
 
 def run_config():
@@ -59,6 +61,15 @@ READING_B = ['--rigid-substrate', '--reading', 'peel', '--flap', '0.1', '--grip'
 # region, long enough for its plateau (from about 110-140 um of pull; stmt-3d-long pulls 0.32 mm for the same value
 # within the uncertainties)
 MAIN_B = READING_B + ['--u-total', '0.2', '--fine-length', '0.25', '--bonded', '0.35']
+# Reading A as the scene of the studies of issue 35 (main-mesh): pulled 0.1 mm over a 0.2 mm fine region (the front,
+# about 125 um delaminated at the end, stays 75 um, more than twice its process zone, inside the fine region).
+SCENE_A = ['--rigid-substrate', '--u-total', '0.1', '--fine-length', '0.2']
+# The main scene (issue 35): reading A, the paper's text (u_x on one end of the coating), on the mesh of the
+# main-mesh study
+MAIN_A_MESH = ['--le', '0.005', '--nz', '9']
+MAIN_A = SCENE_A + MAIN_A_MESH
+# Reading B pulled until every run reads its plateau (0.32 mm over a 0.4 mm fine region; issue 17)
+LONG_B = READING_B + ['--u-total', '0.32', '--fine-length', '0.4', '--bonded', '0.5']
 
 
 def studies(quick):
@@ -172,6 +183,60 @@ def studies(quick):
                             ('%s/%s phi=0.4' % (k, pet), g + ['--phi', '0.4'], False),
                             ('%s/%s rate=1e-4' % (k, pet), g + ['--rate', '1e-4'], False),
                             ('%s/%s rate=1e-2' % (k, pet), g + ['--rate', '1e-2'], False)]
+    # ---- issue 35: the main scene (reading A) without the ripple. Element length l_e x elements through the
+    # thickness n_z x element formulation (CPE4: full integration, F-bar; CPE4I: incompatible modes, free of
+    # shear locking in bending), so that the thickness error is separated from l_e; reference: the finest of each
+    # formulation (marked *, one per formulation)
+    mm_les = [0.01, 0.005] if quick else [0.01, 0.005, 0.0025]
+    mm_nzs = [3, 5] if quick else [3, 5, 9]
+    s['main-mesh'] = []
+    for el, ea in (('CPE4', []), ('CPE4I', ['--incompatible'])):
+        s['main-mesh'] += [('%s le=%g nz=%d' % (el, le, nz), SCENE_A + ['--le', str(le), '--nz', str(nz)] + ea,
+                            le == mm_les[-1] and nz == mm_nzs[-1] and el == 'CPE4I') for nz in mm_nzs
+                           for le in mm_les]
+    if not quick:
+        # beyond the grid, with the full-integration element: half the finest l_e at n_z = 9, and n_z = 13 at
+        # l_e = 2.5 um (does the force settle when both are refined further?)
+        s['main-mesh'] += [('CPE4 le=0.00125 nz=9', SCENE_A + ['--le', '0.00125', '--nz', '9'], False),
+                           ('CPE4 le=0.0025 nz=13', SCENE_A + ['--le', '0.0025', '--nz', '13'], False)]
+    # the three unloading behaviours of the cohesive law (paper Fig. 6, section 8: no noticeable influence) on the
+    # main scene; reference: 2 (elastic damage, the decks' default)
+    s['unloading'] = [('A unloading=%d' % k, MAIN_A + ['--unloading', str(k)], k == 2) for k in (1, 2, 3)]
+    s['unloading'] += [('B unloading=%d' % k, LONG_B + ['--unloading', str(k)], k == 2)
+                       for k in ((2,) if quick else (1, 2, 3))]
+    # reading B on the elastic steel substrate against the rigid one (reading A: simplifications study)
+    steel_b = [a for a in LONG_B if a != '--rigid-substrate']
+    s['steel-b'] = [('B rigid substrate', LONG_B, True), ('B steel substrate', steel_b, False)]
+    # the plane-strain/3D gap (section 9) and the lateral contraction: plane strain, 3D quarter models of growing
+    # width b (element width 10 um), and the 3D quarter with its free edge y = b held in y (u_y = 0: no lateral
+    # contraction at the edge); l_e = 10 um, n_z = 3. Reference: plane strain
+    wb = [0.02, 0.04] if quick else [0.02, 0.04, 0.08, 0.16]
+    s['width-3d'] = [('A plane strain', SCENE_A, True)]
+    s['width-3d'] += [('A 3D b=%g ny=%d' % (b, round(b / 0.01)), SCENE_A + ['--3d', '--width', str(b), '--ny',
+                                                                           str(round(b / 0.01))], False,
+                       ['--newton', 'auto']) for b in wb]
+    s['width-3d'] += [('A 3D b=0.04 ny=4 edge held in y', SCENE_A + ['--3d', '--width', '0.04', '--ny', '4',
+                                                                     '--edge-fixed-y'], False, ['--newton', 'auto'])]
+    if not quick:
+        s['width-3d'] += [('B plane strain', LONG_B, True),
+                          ('B 3D b=0.04 ny=2', LONG_B + ['--3d', '--width', '0.04', '--ny', '2'], False,
+                           ['--newton', 'auto']),
+                          ('B 3D b=0.04 ny=2 edge held in y', LONG_B + ['--3d', '--width', '0.04', '--ny', '2',
+                                                                         '--edge-fixed-y'], False,
+                           ['--newton', 'auto'])]
+    # the alternative reading of Table 1 (--pet alt) on the plane-strain/3D statement, both readings (Table 1 as
+    # printed: stmt-3d-fine and stmt-3d-long); reference per reading: 3D
+    s['pet-alt'] = [('A plane strain', SCENE_A + ['--pet', 'alt'], False),
+                    ('A 3D b=0.04 ny=2', SCENE_A + ['--pet', 'alt', '--3d', '--width', '0.04', '--ny', '2'], True,
+                     ['--newton', 'auto']),
+                    ('B plane strain', LONG_B + ['--pet', 'alt'], False),
+                    ('B 3D b=0.04 ny=2', LONG_B + ['--pet', 'alt', '--3d', '--width', '0.04', '--ny', '2'], True,
+                     ['--newton', 'auto'])]
+    # Fig. 13: the main scene's reading and mesh pulled until 1.0 mm has delaminated (plane strain; the 3D quarter
+    # of section 8 is the application study), with the Mises picture of the last frame
+    s['fig13'] = [('A plane strain 1.0 mm', MAIN_A_MESH + ['--rigid-substrate', '--fine-length', '1.15', '--bonded',
+                                                           '1.3', '--u-total', '0.7', '--field-frequency', '200'],
+                   True)]
     s['dofs'] = [('le=%g nz=%d' % (le, nz), DEFAULT_PS + ['--le', str(le), '--nz', str(nz), '--u-total', '0.01'],
                   False) for le, nz in ((0.02, 2), (0.01, 3), (0.005, 3), (0.0025, 5))]
     # 3D members (short pulls): a wider range of DOFs, where the factorization begins to show.
@@ -219,6 +284,41 @@ def studies(quick):
             '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72', '--field-frequency', '40'], True,
             app_solver + ['--factors', 'symmetric-single'])]
     return s
+
+
+def stamp():
+    """Provenance of a report: the source tree's commit (and whether tracked files differed from it), the ldfcz
+    program's own `ldfcz -V` line (its commit at configure time and build type), the command, the date and the
+    machine. Returned as (markdown line, dict)."""
+    def git(*args):
+        try:
+            return subprocess.run(['git', '-C', ROOT] + list(args), capture_output=True, text=True,
+                                  timeout=30).stdout.strip()
+        except (OSError, subprocess.SubprocessError):
+            return ''
+    commit = git('rev-parse', '--short=12', 'HEAD') or 'unknown'
+    # the sources only: the reports being written are not what made them
+    dirty = bool(git('status', '--porcelain', '--untracked-files=no', '--', '.', ':(exclude)reports')) \
+        if commit != 'unknown' else False
+    try:
+        version = subprocess.run([LDFCZ[0], '-V'], capture_output=True, text=True,
+                                 timeout=30).stdout.strip() if LDFCZ[0] else ''
+    except (OSError, subprocess.SubprocessError):
+        version = ''
+    cpu = ''
+    try:
+        with open('/proc/cpuinfo') as fh:
+            cpu = next((ln.split(':', 1)[1].strip() for ln in fh if ln.startswith('model name')), '')
+    except OSError:
+        pass
+    d = {'commit': commit + (' with uncommitted changes to tracked source files' if dirty else ''),
+         'ldfcz': version or 'unknown', 'command': '/usr/bin/python3 tools/peel_study.py ' + ' '.join(
+             os.path.relpath(a, ROOT) if os.path.isabs(a) and a.startswith(ROOT) else a for a in sys.argv[1:]),
+         'date': time.strftime('%Y-%m-%d %H:%M %Z'),
+         'machine': '%s, %d cores visible%s' % (os.uname().nodename, os.cpu_count() or 1, ', ' + cpu if cpu else '')}
+    line = ('Stamp: commit %s; program `%s`; command `%s`; %s; machine %s.' % (
+        d['commit'], d['ldfcz'], d['command'], d['date'], d['machine']))
+    return line, d
 
 
 def find_ldfcz(path):
@@ -326,6 +426,74 @@ def read_vtu_front(vtu_path, delta):
                 xs.append(sum(pts[3 * j] for j in ids) / len(ids))
         start = o
     return min(xs) if xs else None
+
+
+def read_vtu_arrays(vtu_path, names):
+    """Reference points (flat x, y, z list) and the named DataArrays (None where absent) of a VTU frame."""
+    text = open(vtu_path).read()
+    pm = re.search(r'<Points><DataArray[^>]*>(.*?)</DataArray>', text, re.S)
+    out = {}
+    for name in names:
+        m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % name, text, re.S)
+        out[name] = [float(v) for v in m.group(1).split()] if m else None
+    return [float(v) for v in pm.group(1).split()], out
+
+
+def process_zone(files, delta, rows=1):
+    """The softening part of the cohesive zone in a frame: the cohesive cells whose opening lies between delta
+    (the peak traction) and 6 delta (4 % of it left), counted per row of cells along x (rows: elements over the
+    width). Returns (number of cells per row, their extent along x in mm); (0, 0) when none."""
+    n, xs = 0, []
+    for v in files:
+        pts, a = read_vtu_arrays(v, ('connectivity', 'offsets', 'cohesive', 'opening'))
+        if None in a.values():
+            continue
+        start = 0
+        for i, o in enumerate(a['offsets']):
+            o = int(o)
+            if a['cohesive'][i] >= 1:
+                d = math.sqrt(sum(c * c for c in a['opening'][3 * i:3 * i + 3]))
+                if delta < d < 6.0 * delta:
+                    ids = [int(c) for c in a['connectivity'][start:o]]
+                    n += 1
+                    xs.append(sum(pts[3 * j] for j in ids) / len(ids))
+            start = o
+    return (n / float(max(rows, 1)), (max(xs) - min(xs)) if xs else 0.0)
+
+
+def lateral_contraction(vtu_path, info):
+    """3D quarter model: the lateral stretch of the coating's top face, lambda_y = 1 + (u_y(b) - u_y(0)) / b, and
+    the axial stretch lambda_x = 1 + du_x/dx, per column of nodes along x (reference x, lambda_x, lambda_y mid-width,
+    lambda_y at the edge), from the node numbering of tools/peel_deck.py (coating nodes first, x fastest, then y,
+    then z). None for a plane-strain frame."""
+    if info['dimension'] != 3:
+        return None
+    pts, a = read_vtu_arrays(vtu_path, ('U',))
+    uu = a['U']
+    nxt = info['n_far_x'] + info['n_fine_x'] + info['n_flap_x']
+    nyn = info['ny'] + 1
+    iz = info['nz_coating']
+
+    def node(ix, iy):
+        return ix + (nxt + 1) * (iy + nyn * iz)         # 0-based VTU point of coating node (ix, iy, top face)
+    out = []
+    for ix in range(nxt + 1):
+        k0, kb, k1 = node(ix, 0), node(ix, nyn - 1), node(ix, 1)
+        b = pts[3 * kb + 1] - pts[3 * k0 + 1]
+        dy = pts[3 * k1 + 1] - pts[3 * k0 + 1]
+        kb1 = node(ix, nyn - 2)
+        lam_mid = 1.0 + (uu[3 * k1 + 1] - uu[3 * k0 + 1]) / dy
+        lam_edge = 1.0 + (uu[3 * kb + 1] - uu[3 * kb1 + 1]) / (pts[3 * kb + 1] - pts[3 * kb1 + 1])
+        lam_mean = 1.0 + (uu[3 * kb + 1] - uu[3 * k0 + 1]) / b
+        if ix < nxt:
+            j = node(ix + 1, 0)
+            dx = math.dist(pts[3 * j:3 * j + 3], pts[3 * k0:3 * k0 + 3])
+            lam_x = math.dist([pts[3 * j + c] + uu[3 * j + c] for c in range(3)],
+                              [pts[3 * k0 + c] + uu[3 * k0 + c] for c in range(3)]) / dx
+        else:
+            lam_x = out[-1][1] if out else 1.0
+        out.append((pts[3 * k0], lam_x, lam_mid, lam_edge, lam_mean))
+    return out
 
 
 def vtu_frames(outdir):
@@ -494,6 +662,24 @@ def collect(res, outdir, job, info, p, plateau, progress):
     res['F_ripple'] = est['ripple']
     res['F_status'] = est['status']
     res['F_window_um'] = '%.1f-%.1f' % (1e3 * est['window'][0], 1e3 * est['window'][1])
+    res['F_curvature'] = est.get('curvature')
+    res['F_sem'] = est.get('sem')
+    res['F_ripple_period_um'] = 1e3 * est['period'] if est.get('period') else float('nan')
+    res['F_ripple_elements'] = est.get('ripple_elements')
+    res['F_cycles'] = len(est.get('cycle_means') or [])
+    res['F_quarter_change'] = est['quarter_change'] if est.get('quarter_change') is not None else float('nan')
+    res['F_vs_quarters'] = est['value_vs_quarters'] if est.get('value_vs_quarters') is not None else float('nan')
+    res['front_speed'] = est.get('front_speed')
+    # the fine region left ahead of the front at the end, and the softening part of the cohesive zone (delta to
+    # 6 delta) in the frames of the plateau window (at most the last five), in cohesive elements along x
+    res['fine_margin_um'] = 1e3 * (info['fine_length_mm'] - res['delaminated_mm'])
+    times = [h[0] for h in hist[1:]]
+    inwin = [k for k, t in enumerate(times) if est['window'][0] <= t <= est['window'][1] + 1e-9][-5:]
+    pz = [process_zone(frames[k], info['delta_mm'], info.get('ny') or 1) for k in inwin if k < len(frames)]
+    res['pz_cells'] = sum(p_[0] for p_ in pz) / len(pz) if pz else float('nan')
+    res['pz_length_um'] = 1e3 * sum(p_[1] for p_ in pz) / len(pz) if pz else float('nan')
+    res['lateral'] = lateral_contraction(frames[-1][0], info) if frames and info['dimension'] == 3 and \
+        len(frames[-1]) == 1 and not p.full_width else None
     if res.get('increments') and res.get('wall_s'):
         res['t_inc_s'] = res['wall_s'] / res['attempts'] if res.get('attempts') else res['wall_s'] / res['increments']
     if res.get('iterations') and res.get('wall_s'):
@@ -538,7 +724,9 @@ def write_report(study, results, outdir):
         ur = ref[0].get('F_unc', float('nan')) if ref else float('nan')
         r['resolved'] = (r['error'] > ur + r.get('F_unc', float('nan'))) if not r.get('reference') else ''
     cols = ['label', 'reference', 'completed', 'exit', 'F_w', 'F_unc', 'F_status', 'F_window_um', 'F_drift',
-            'F_ripple', 'F_w_tail', 'F_over_Fr', 'error', 'resolved', 'spread', 'delaminated_mm', 'run_time_s',
+            'F_curvature', 'F_sem', 'F_ripple', 'F_ripple_period_um', 'F_ripple_elements', 'F_cycles',
+            'F_quarter_change', 'F_vs_quarters', 'front_speed', 'fine_margin_um', 'pz_cells', 'pz_length_um',
+            'F_w_tail', 'F_over_Fr', 'error', 'resolved', 'spread', 'delaminated_mm', 'run_time_s',
             'increments', 'cutbacks', 'iterations', 'elements', 'dofs', 't_inc_s', 't_assembly_s', 't_factor_s',
             't_iter_s', 'attempts', 'energy_rel_diff', 'max_open_ratio', 'du_min_um', 'du_median_um', 'du_max_um',
             'cpu_busy_before', 'cpu_time_s',
@@ -570,24 +758,42 @@ def write_report(study, results, outdir):
                 'times are the runs\' own closing summaries; no load figures were recorded for these runs).' % (
                     cmd, time.strftime('%Y-%m-%d %H:%M'), study))
         busy = 'Machine: %s, %d cores visible.' % (os.uname().nodename, os.cpu_count() or 1)
-    lines = ['# Study %s' % study, '', head, '', busy,
+    st = STAMP[0] or stamp()[0]
+    old_md = os.path.join(outdir, study + '.md')
+    if '--reuse' in sys.argv or '--only' in sys.argv:
+        # the report is rewritten from earlier runs (all, or all but the --only cases): keep their stamp
+        prev = [ln.strip() for ln in open(old_md) if ln.startswith('Stamp:')][:1] if os.path.exists(old_md) else []
+        if prev:
+            st += ' Runs not made by this command: %s' % re.sub(r'^Stamp: (.*?)( Runs not made by this command: .*)?$',
+                                                                 r'\1', prev[0])
+    lines = ['# Study %s' % study, '', st, '', head, '', busy,
              '', 'ldfcz options: %s.' % '; '.join('`%s`' % (x or '(defaults: --newton full)') for x in solvers), '',
-             'F/w: steady peel force per unit width (N/mm) by tools/ldfcz_tools/steady_force.py: the pull-weighted mean over the '
-             'plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
-             'elements of its end, from where a straight-line fit drifts less than 0.5 %), +- its relative '
-             'uncertainty (half the drift plus the ripple\'s averaging bias); status: ok, or why the value is not '
-             'a plateau (no-plateau, front-not-in-fine-region); error: |F/F_r - 1| against the reference case '
-             '(marked *); resolved: the error exceeds the two uncertainties together.', '',
-             '| case | F/w (N/mm) | +- | window (um of pull) | status | F/F_r | error | resolved | delaminated (mm) '
-             '| run time (s) | increments | cutbacks | elements | DOFs | energy balance |',
-             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+             'F/w: steady peel force per unit width (N/mm) by tools/ldfcz_tools/steady_force.py: the mean of the cycle means '
+             '(the force averaged over whole ripple periods, one cohesive element crossed by the front each) over '
+             'the plateau window (after the front has crossed 3 elements of the fine region, before it comes within 2 '
+             'elements of its end, from where the cycle means drift and curve by less than 0.2 %), +- its relative '
+             'uncertainty of the averaging (half the drift and the curvature plus the standard error of the cycle '
+             'means); ripple: half the peak-to-peak oscillation about them, a resolution error of the cohesive '
+             'discretisation; Q4/Q3: the cycle means of the last quarter of the pull against the quarter before; '
+             'status: ok, or why the value is not a plateau (no-plateau, front-not-in-fine-region); error: '
+             '|F/F_r - 1| against the reference case (marked *); resolved: the error exceeds the two uncertainties '
+             'together. CPU time: the ldfcz process\'s user + system time.', '',
+             '| case | F/w (N/mm) | +- | window (um of pull) | status | ripple | Q4/Q3 - 1 | F/F_r | error | resolved '
+             '| delaminated (mm) | run time (s) | CPU time (s) | increments | cutbacks | elements | DOFs '
+             '| energy balance |',
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     for r in results:
-        lines.append('| %s%s | %.4f | %.2f %% | %s | %s | %.4f | %.2e | %s | %.3f | %.1f | %s | %s | %d | %d | %s |' % (
-            r['label'], ' *' if r.get('reference') else '', r['F_w'], 100 * r.get('F_unc', float('nan')),
-            r.get('F_window_um', '-'), r.get('F_status', '-'), r['F_over_Fr'], r['error'],
-            {True: 'yes', False: 'no'}.get(r['resolved'], '-'),
-            r['delaminated_mm'], r['run_time_s'], int(r.get('increments', 0)), int(r.get('cutbacks', 0)),
-            r['elements'], r['dofs'], '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-'))
+        lines.append('| %s%s | %.4f | %.2f %% | %s | %s | %.2f %% | %s | %.4f | %.2e | %s | %.3f | %.1f | %s | %s | %s '
+                     '| %d | %d | %s |' % (
+                         r['label'], ' *' if r.get('reference') else '', r['F_w'],
+                         100 * r.get('F_unc', float('nan')), r.get('F_window_um', '-'), r.get('F_status', '-'),
+                         100 * r.get('F_ripple', float('nan')),
+                         '%+.2f %%' % (100 * r['F_quarter_change']) if r.get('F_quarter_change') == r.get(
+                             'F_quarter_change') and r.get('F_quarter_change') is not None else '-',
+                         r['F_over_Fr'], r['error'], {True: 'yes', False: 'no'}.get(r['resolved'], '-'),
+                         r['delaminated_mm'], r['run_time_s'], '%.1f' % r['cpu_time_s'] if r.get('cpu_time_s')
+                         else '-', int(r.get('increments', 0)), int(r.get('cutbacks', 0)), r['elements'], r['dofs'],
+                         '%.1e' % r['energy_rel_diff'] if 'energy_rel_diff' in r else '-'))
         if not r['completed']:
             lines[-1] += ' (not completed: %s, U = %.4g of %.4g mm%s)' % (
                 stop_text(r), r['u_end_mm'], r['u_total_mm'], ', stopped at the time limit' if r.get('stopped_at_limit')
@@ -598,9 +804,99 @@ def write_report(study, results, outdir):
     plot(study, results, outdir)
 
 
+def main_band(r, reports=os.path.join(ROOT, 'reports')):
+    """The discretisation band of the main scene from the main-mesh study's report (no runs): the main mesh's value
+    there against every mesh of the study at least as fine in l_e and n_z, in either element formulation. Returns
+    a dict: band (the largest relative difference, the band's half-width), parts (relative differences of the
+    single refinements: CPE4I on the same mesh, n_z = 9, the finest l_e), finer (label, relative difference) of
+    every finer mesh, the main mesh's study value and its label, the report's stamp line; None without the
+    report."""
+    rows = load_rows(reports, 'main-mesh')
+    le, nz = float(MAIN_A_MESH[1]), int(MAIN_A_MESH[3])
+    key = 'CPE4 le=%g nz=%d' % (le, nz)
+    if key not in rows:
+        return None
+    f_m = fnum(rows[key], 'F_w')
+    mesh = {}
+    for lab in rows:
+        m = re.match(r'(CPE4I?) le=([0-9.e-]+) nz=(\d+)$', lab)
+        if m and rows[lab].get('completed') == 'True':
+            mesh[lab] = (m.group(1), float(m.group(2)), int(m.group(3)))
+    finer = [(lab, fnum(rows[lab], 'F_w') / f_m - 1.0) for lab, (el, l_, n_) in sorted(mesh.items())
+             if l_ <= le * (1 + 1e-9) and n_ >= nz and lab != key]
+    cpe4 = {(l_, n_): lab for lab, (el, l_, n_) in mesh.items() if el == 'CPE4'}
+    parts = {}
+    if 'CPE4I le=%g nz=%d' % (le, nz) in mesh:
+        parts['element formulation (CPE4I against CPE4, this mesh)'] = \
+            fnum(rows['CPE4I le=%g nz=%d' % (le, nz)], 'F_w') / f_m - 1.0
+    nz_big = max([n_ for (l_, n_) in cpe4 if n_ > nz] or [0])
+    ls = sorted([l_ for (l_, n_) in cpe4 if n_ == nz_big and (l_, nz) in cpe4], key=lambda v: (v != le, v))
+    if nz_big and ls:
+        parts['elements through the thickness (n_z %d -> %d at l_e = %g um)' % (nz, nz_big, 1e3 * ls[0])] = \
+            fnum(rows[cpe4[(ls[0], nz_big)]], 'F_w') / fnum(rows[cpe4[(ls[0], nz)]], 'F_w') - 1.0
+    l_small = min([l_ for (l_, n_) in cpe4 if n_ == nz] or [le])
+    if l_small < le:
+        parts['element length (l_e %g -> %g um at n_z = %d)' % (1e3 * le, 1e3 * l_small, nz)] = \
+            fnum(rows[cpe4[(l_small, nz)]], 'F_w') / f_m - 1.0
+    ref = [lab for lab in mesh if rows[lab].get('reference') == 'True']
+    md = os.path.join(reports, 'main-mesh', 'main-mesh.md')
+    st = next((ln.strip() for ln in open(md) if ln.startswith('Stamp:')), '') if os.path.exists(md) else ''
+    ds = [d for _, d in finer]
+    return {'band': max([abs(d) for d in ds] or [float('nan')]), 'band_hi': max(ds + [0.0]),
+            'band_lo': min(ds + [0.0]), 'parts': parts, 'finer': finer,
+            'F_study': f_m, 'label': key, 'stamp': st,
+            'finest': (ref[0], fnum(rows[ref[0]], 'F_w') / f_m - 1.0) if ref else ('-', float('nan'))}
+
+
+def main_lines(r):
+    """What the main job prints (and its report holds): the steady force with its averaging uncertainty and its
+    discretisation band, what the band is made of, the ripple as resolution error, the plateau check."""
+    est = r['steady']
+    out = ['steady peel force per unit width: %s' % sfe.describe(est)]
+    b = r.get('band')
+    if b:
+        out.append('F/w = %.4f N/mm +- %.2f %% (averaging), discretisation band %+.2f %% / %+.2f %% (%.4f to %.4f '
+                   'N/mm; reports/main-mesh/)' % (est['value'], 100 * est['uncertainty'], 100 * b['band_hi'],
+                                                  100 * b['band_lo'], est['value'] * (1 + b['band_lo']),
+                                                  est['value'] * (1 + b['band_hi'])))
+        out.append('  the band: from the lowest to the highest difference (zero included) between this mesh (%s, %.4f '
+                   'N/mm in the study%s) and the %d meshes of the study at least as fine in l_e and n_z, in either '
+                   'formulation: %s' % (
+                       b['label'], b['F_study'], '' if abs(b['F_study'] / est['value'] - 1) < 1e-9 else
+                       ' [this run: %+.2e]' % (est['value'] / b['F_study'] - 1), len(b['finer']),
+                       ', '.join('%s %+.2f %%' % (lab, 100 * d) for lab, d in b['finer'])))
+        out.append('  made of: %s; the finest CPE4I mesh (%s) %+.2f %%' % (
+            ', '.join('%s %+.2f %%' % (k, 100 * v) for k, v in b['parts'].items()), b['finest'][0],
+            100 * b['finest'][1]))
+    elif r['info'].get('reading') != 'peel':
+        out.append('  (no discretisation band: reports/main-mesh/main-mesh.csv not found; run tools/peel_study.py '
+                   'main-mesh)')
+    if est.get('period'):
+        out.append('  ripple +-%.2f %% of the force with a period of %.2f um of pull = %.2f cohesive elements of front '
+                   'advance: a resolution error of the cohesive discretisation (l_e = %g um), averaged out over '
+                   'whole periods' % (100 * est['ripple'], 1e3 * est['period'] * est['ripple_elements'] if
+                                      est['ripple_elements'] == est['ripple_elements'] else float('nan'),
+                                      est['ripple_elements'], 1e3 * r['l_e_mm']))
+    if est.get('quarter_change') is not None:
+        out.append('  plateau check: cycle means of the last quarter of the pull %+.3f %% against the quarter before; '
+                   'the value within %.3f %% of both' % (100 * est['quarter_change'], 100 * est['value_vs_quarters']))
+    out.append('  delamination %.3f mm (the fine region reaches %.0f um beyond the front at the end; the softening '
+               'zone spans %.1f cohesive elements = %.1f um), energy balance %s, run time %.1f s (CPU %.1f s)' % (
+                   r['delaminated_mm'], r['fine_margin_um'], r['pz_cells'], r['pz_length_um'],
+                   '%.2f %%' % (100 * r['energy_rel_diff']) if 'energy_rel_diff' in r else '-', r['run_time_s'],
+                   r.get('cpu_time_s', float('nan'))))
+    for fl in est['flags']:
+        out.append('  flag: ' + fl)
+    return out
+
+
 def study_extras(study, results, outdir):
     """Study-specific lines under the table of STUDY.md."""
     out = []
+    if study == 'main':
+        out += [''] + ['    ' + ln for ln in main_lines(results[0])]
+        if results[0].get('band') and results[0]['band']['stamp']:
+            out += ['', 'The band comes from reports/main-mesh/main-mesh.csv (%s).' % results[0]['band']['stamp']]
     ok = [r for r in results if r['F_w'] == r['F_w']]
     if 'mesh-x' in study or 'mesh-z' in study:
         for g in sorted(set(group(r['label']) for r in ok)):
@@ -653,6 +949,128 @@ def study_extras(study, results, outdir):
     elif study == 'application':
         for r in results:
             out += application_extras(r, outdir)
+    elif study == 'main-mesh':
+        out += main_mesh_extras(ok, outdir)
+    elif study == 'width-3d':
+        out += width_extras(ok, outdir)
+    elif study == 'pet-alt':
+        out += pet_alt_extras(ok)
+    elif study == 'fig13':
+        for r in results:
+            out += application_extras(r, outdir, 'fig13')
+            # what the 3D quarter of the same mesh would be (generator only, no run)
+            p3 = peel_deck.parser().parse_args(r['args'].split() + ['--3d', '--ny', '10', '--width', '0.04'])
+            i3 = peel_deck.build(p3)[1]
+            out += ['', 'The same scene as a 3D quarter (n_y = 10 over b = 0.04 mm, as section 8) would have %d '
+                    'elements and %d DOFs (tools/peel_deck.py, not run): about the size of the section 8 '
+                    'application (reports/application: 21660 elements, 89595 DOFs, 1.0 mm of delamination after '
+                    '3550 s on the idle 2-core machine with `-t 2`).' % (i3['elements'], i3['dofs'])]
+    return out
+
+
+def main_mesh_extras(ok, outdir):
+    """The l_e x n_z grid per element formulation (F/w, ripple, CPU time), the band of the main mesh, and every
+    mesh's difference from the finest."""
+    by = {r['label']: r for r in ok}
+    les = sorted({r['l_e_mm'] for r in ok}, reverse=True)
+    nzs = sorted({int(re.search(r'nz=(\d+)', r['label']).group(1)) for r in ok})
+    out = []
+    for el in ('CPE4', 'CPE4I'):
+        out += ['', '%s: F/w (N/mm) +- averaging uncertainty, ripple, Q4/Q3 - 1, CPU time; rows l_e, columns n_z:' % el,
+                '', '| l_e (um) | ' + ' | '.join('n_z = %d' % n for n in nzs) + ' |',
+                '|---|' + '---|' * len(nzs)]
+        for le in les:
+            if not any(by.get('%s le=%g nz=%d' % (el, le, n)) for n in nzs):
+                continue
+            cells = []
+            for n in nzs:
+                r = by.get('%s le=%g nz=%d' % (el, le, n))
+                cells.append('%.4f +- %.2f %%, ripple %.2f %%, %s, %.0f s' % (
+                    r['F_w'], 100 * r['F_unc'], 100 * r['F_ripple'], '%+.2f %%' % (100 * r['F_quarter_change'])
+                    if r.get('F_quarter_change') == r.get('F_quarter_change') else '-', r.get('cpu_time_s', 0))
+                             if r else '-')
+            out.append('| %g | %s |' % (1e3 * le, ' | '.join(cells)))
+    pairs = [(le, n, by['CPE4I le=%g nz=%d' % (le, n)]['F_w'] / by['CPE4 le=%g nz=%d' % (le, n)]['F_w'] - 1)
+             for le in les for n in nzs if 'CPE4I le=%g nz=%d' % (le, n) in by and 'CPE4 le=%g nz=%d' % (le, n) in by]
+    out += ['', 'CPE4I against CPE4 on the same mesh: %s.' % ', '.join(
+        'l_e = %g um, n_z = %d: %+.2f %%' % (1e3 * le, n, 100 * d) for le, n, d in pairs),
+        '', 'Softening part of the cohesive zone (openings delta to 6 delta), cohesive elements along x (mean of the '
+        'last frames of the window; column pz_cells of the CSV): %s.' % ', '.join(
+            '%s: %.1f' % (r['label'], r['pz_cells']) for r in ok if r.get('pz_cells') == r.get('pz_cells'))]
+    b = main_band({'label': ''}, os.path.dirname(outdir))
+    if b:
+        out += ['', 'The main scene\'s mesh (`MAIN_A_MESH` of tools/peel_study.py: %s) against every mesh at least as '
+                'fine in l_e and n_z, in either formulation: %s; the band (from the lowest to the highest of them, '
+                'zero included): **%+.2f %% / %+.2f %%**. Single refinements: %s. The reference (the finest CPE4I '
+                'mesh, %s): %+.2f %%.' % (
+                    b['label'], ', '.join('%s %+.2f %%' % (lab, 100 * d) for lab, d in b['finer']),
+                    100 * b['band_hi'], 100 * b['band_lo'],
+                    ', '.join('%s %+.2f %%' % (k, 100 * v) for k, v in b['parts'].items()), b['finest'][0],
+                    100 * b['finest'][1])]
+    return out
+
+
+def width_extras(ok, outdir):
+    """The plane-strain/3D gap per reading and the lateral contraction of the detached coating: the mean lateral
+    stretch lambda_y of the top face in the peeled part (reference x between the initial front and half the
+    delaminated length behind it) at mid-width and at the edge, its axial stretch lambda_x, and what uniaxial
+    tension (lambda_y = lambda_x^-1/2, incompressible) and plane strain (lambda_y = 1) would give; a PNG of lambda_y
+    along x."""
+    out = ['', 'Lateral contraction of the peeled coating (top face, last frame; lambda = current / reference length):',
+           '', '| case | F/F_ps - 1 | F_ps/F - 1 | lambda_x | lambda_y mid-width | lambda_y edge | lambda_y across b '
+           '| uniaxial lambda_x^-1/2 |', '|---|---|---|---|---|---|---|---|']
+    curves = []
+    for g in ('A', 'B'):
+        ps = next((r for r in ok if r['label'] == '%s plane strain' % g), None)
+        for r in ok:
+            if group(r['label']) != g or not r.get('lateral'):
+                continue
+            x0, d = r['info']['x_front_mm'], r['delaminated_mm']
+            sel = [c for c in r['lateral'] if x0 - 0.5 * d <= c[0] <= x0]
+            if not sel:
+                continue
+            mean = [sum(c[k] for c in sel) / len(sel) for k in range(1, 5)]
+            out.append('| %s | %s | %s | %.3f | %.3f | %.3f | %.3f | %.3f |' % (
+                r['label'], '%+.2f %%' % (100 * (r['F_w'] / ps['F_w'] - 1)) if ps else '-',
+                '%+.2f %%' % (100 * (ps['F_w'] / r['F_w'] - 1)) if ps else '-', mean[0], mean[1],
+                mean[2], mean[3], mean[0] ** -0.5))
+            curves.append((r['label'], r['lateral'], x0))
+    try:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(8, 4.2))
+        for k, (lab, lat, x0) in enumerate(curves):
+            col = plt.cm.tab10(k % 10)
+            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[2] for c in lat], '-', color=col, label=lab + ', mid-width')
+            ax.plot([1e3 * (c[0] - x0) for c in lat], [c[3] for c in lat], ':', color=col, label=lab + ', edge')
+        ax.set_xlabel('reference x - initial front (um)')
+        ax.set_ylabel('lateral stretch lambda_y of the top face')
+        ax.legend(fontsize=6)
+        ax.grid(alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(os.path.join(outdir, 'width-3d_lateral.png'), dpi=110)
+        plt.close(fig)
+        out += ['', '![lateral stretch](width-3d_lateral.png)']
+    except ImportError:
+        pass
+    return out
+
+
+def pet_alt_extras(ok):
+    """Plane strain against 3D with the alternative PET set, beside the same with Table 1 as printed (stmt-3d-fine
+    for reading A is the 0.16 mm fine region, stmt-3d-long for reading B)."""
+    by = {r['label']: r for r in ok}
+    out = ['', '| reading | plane strain / 3D - 1, --pet alt | the same, Table 1 as printed (report) |', '|---|---|---|']
+    for g, rep in (('A', 'stmt-3d-fine'), ('B', 'stmt-3d-long')):
+        ps, d3 = by.get('%s plane strain' % g), by.get('%s 3D b=0.04 ny=2' % g)
+        old = load_rows(os.path.join(ROOT, 'reports'), rep)
+        o_ps, o_3 = old.get('%s plane strain' % g), old.get('%s 3D b=0.04 ny=2' % g)
+        out.append('| %s | %s | %s |' % (
+            g, '%+.2f %% (+-%.2f)' % (100 * (ps['F_w'] / d3['F_w'] - 1), 100 * (ps['F_unc'] + d3['F_unc']))
+            if ps and d3 else '-',
+            '%+.2f %% (+-%.2f) (%s)' % (100 * (fnum(o_ps, 'F_w') / fnum(o_3, 'F_w') - 1),
+                                        100 * (fnum(o_ps, 'F_unc') + fnum(o_3, 'F_unc')), rep) if o_ps and o_3 else '-'))
     return out
 
 
@@ -882,7 +1300,18 @@ def statements(reports):
             if longer.get('3'):
                 c['ps3d'] = c['ps3d'].replace('n_y = 4: ', 'n_y = 4, pulled 0.32 mm: ', 1)
         cells[k] = c
-    table = [
+    more_rows = statement_rows_35(reports, cells, nm)
+    refs = {'ps3d': ('stmt-3d stmt-3d-fine', 'stmt-3d-width-long stmt-3d-fine stmt-3d-long'),
+            'speed': ('stmt-3d', 'stmt-3d-width-long'), 'nz1': ('stmt-mesh-z', 'stmt-mesh-z-long'),
+            'nz05': ('stmt-mesh-z main-mesh', 'stmt-mesh-z-long'),
+            'le': ('stmt-mesh-x main-mesh', 'stmt-mesh-x-long stmt-mesh-x-long-nz9'),
+            'ny': ('stmt-3d', 'stmt-3d-width-long'), 'widths': ('stmt-3d', 'stmt-3d-width-long'),
+            'dofs': ('stmt-mesh-x stmt-mesh-z stmt-3d', 'stmt-mesh-x stmt-mesh-z stmt-3d'),
+            'inc': ('stmt-increment', 'stmt-increment-long')}
+    for k in ('A', 'B'):
+        for key, (ra, rb) in refs.items():
+            cells[k][key] += ' (%s)' % ', '.join('`%s`' % x for x in (ra if k == 'A' else rb).split())
+    table = more_rows[:4] + [
         ('plane strain against 3D (section 9, Fig. 14)', 'plane strain +4 %', 'ps3d'),
         ('speed-up of plane strain (section 9)', '15-50x', 'speed'),
         ('one element through the thickness (Fig. 11b)', '2 % error', 'nz1'),
@@ -892,8 +1321,9 @@ def statements(reports):
         ('two model widths (Fig. 11a)', 'almost identical', 'widths'),
         ('CPU time per increment attempt against DOFs (Fig. 11d)', 'exponent 1.34', 'dofs'),
         ('load step (section 7)', 'error < 1 % for all steps; stable up to 100 nm/inc (PET model)', 'inc'),
-    ]
-    out = ['# The paper\'s statements against the two readings of Fig. 10', '',
+    ] + more_rows[4:]
+    out = ['# The paper\'s statements against the two readings of Fig. 10', '', STAMP[0] or stamp()[0], '',
+           'The reports behind each cell are named in it (reports/NAME/NAME.md). '
            'Written by `tools/peel_study.py statements` on %s from reports/stmt-mesh-x(-long), stmt-mesh-z(-long), '
            'stmt-3d, stmt-3d-width-long, stmt-3d-fine, stmt-3d-long and stmt-increment(-long) (reading B from the '
            '0.32 mm pulls of the -long studies where they have been run; each made by `tools/peel_study.py STUDY --threads 1`; their .md files hold every case, '
@@ -910,6 +1340,101 @@ def statements(reports):
         fh.write('\n'.join(out) + '\n')
     print('\n'.join(out))
     return 0
+
+
+def statement_rows_35(reports, cells, nm):
+    """The statements of sections 7-9 that issue 35 added to the table, for both readings (cells[k][key], from the
+    reports named in each cell; nm where a report is missing). Returns the rows (name, paper, key): the first four
+    go before the mesh statements."""
+    def rows(study):
+        return load_rows(reports, study)
+
+    def pct(r1, r2, unc=True):
+        if not r1 or not r2 or r1.get('completed') != 'True' or r2.get('completed') != 'True':
+            return nm
+        d = fnum(r1, 'F_w') / fnum(r2, 'F_w') - 1
+        return '%+.2f %%' % (100 * d) + (' (+-%.2f)' % (100 * (fnum(r1, 'F_unc') + fnum(r2, 'F_unc'))) if unc else '')
+    a, b = cells['A'], cells['B']
+    mmr = rows('main-mesh')
+
+    def series(fmt, keys, scale=1.0):
+        got = [(k_, mmr.get(fmt % k_)) for k_ in keys]
+        return ', '.join('%g: %.4f' % (scale * float(k_), fnum(r_, 'F_w')) for k_, r_ in got if r_)
+    if mmr:
+        a['nz05'] += ('; at l_e = 2.5 um (`main-mesh`, 0.2 mm fine region, CPE4) n_z = %s N/mm' %
+                      series('CPE4 le=0.0025 nz=%s', ('3', '5', '9', '13')))
+        a['le'] += ('; at n_z = 9 (`main-mesh`, CPE4) l_e (um) = %s N/mm, not monotone' %
+                    series('CPE4 le=%s nz=9', ('0.01', '0.005', '0.0025', '0.00125'), 1e3))
+    a['loading'] = 'u_x prescribed on the coating\'s end face (u_y, u_z free): as the text says'
+    b['loading'] = 'u_z prescribed on the lifted flap\'s end face, u_x free (carriage grip): not a u_x'
+    a['quarter'] = ('a quarter: the mid-width plane (YSYMM) and the mid-length plane, where the coating bridges the '
+                    'broken substrate (the uniform u_x of the end face)')
+    b['quarter'] = ('half the width: one symmetry plane (a single arm peeled at 90 degrees has no mid-length '
+                    'symmetry), so not a quarter')
+    # stretch of the detached coating from the front's advance v per unit pull: A the drawn length grows by the
+    # pull, (d + u) / d - 1 = 1/v; B (carriage) the pull lifts the peeled length and stretches it, u / d - 1
+    mm = rows('main').get('peel_main') or next(iter(rows('main').values()), None)
+    sb = rows('steel-b').get('B rigid substrate')
+    v_a = fnum(mm, 'front_speed')
+    v_b = fnum(sb, 'front_speed')
+    a['stretch'] = ('%.0f %% (1/v, the front advancing v = %.2f um per um of pull over the plateau; `main`)' % (
+        100 / v_a, v_a) if v_a == v_a and v_a > 0 else nm)
+    b['stretch'] = ('%.0f %% (1/v - 1, v = %.2f um per um of pull; `steel-b`)' % (100 * (1 / v_b - 1), v_b)
+                    if v_b == v_b and v_b > 0 else nm)
+    sim = rows('simplifications')
+    a['steel'] = ('rigid against elastic steel: %s (`simplifications`, l_e = 10 um)' % pct(
+        sim.get('rigid, coarse far field (default)'), sim.get('steel, coarse far field')) if sim else nm)
+    b['steel'] = ('steel against rigid: %s (`steel-b`, pulled 0.32 mm)' % pct(
+        rows('steel-b').get('B steel substrate'), sb) if sb else nm)
+    un = rows('unloading')
+    for k, c in (('A', a), ('B', b)):
+        ref = un.get('%s unloading=2' % k)
+        vals = ['%d: %s' % (n, pct(un.get('%s unloading=%d' % (k, n)), ref)) for n in (1, 3)
+                if un.get('%s unloading=%d' % (k, n))]
+        c['unloading'] = ('%s against 2 (`unloading`%s)' % ('; '.join(vals), ', the main mesh' if k == 'A' else
+                                                             ', pulled 0.32 mm') if vals and ref else nm)
+    app = rows('application')
+    ra = next(iter(app.values()), None)
+    a['app'] = ('3D quarter, n_y = 10, n_z = 3, l_e = 2 um, 1 um/inc at most: F/w = %.3f N/mm (`application`)'
+                % fnum(ra, 'F_w') if ra else nm)
+    b['app'] = 'not run'
+    f13 = rows('fig13')
+    r13 = next(iter(f13.values()), None)
+    a['fig13'] = ('plane strain, the main mesh: %.3f mm delaminated at %.0f um of pull, F/w = %.4f N/mm '
+                  '(`fig13`, Mises picture there); 3D quarter, section 8 mesh: %.3f mm (`application`)' % (
+                      fnum(r13, 'delaminated_mm'), 1e3 * fnum(r13, 'u_end_mm'), fnum(r13, 'F_w'),
+                      fnum(ra, 'delaminated_mm')) if r13 and ra else nm)
+    b['fig13'] = 'not run'
+    wd = rows('width-3d')
+    for k, c in (('A', a), ('B', b)):
+        ps = wd.get('%s plane strain' % k)
+        b4 = 'b=0.04 ny=4' if k == 'A' else 'b=0.04 ny=2'
+        free, held = wd.get('%s 3D %s' % (k, b4)), wd.get('%s 3D %s edge held in y' % (k, b4))
+        widths = ', '.join('b = %s mm: %s' % (lab.split('b=')[1].split()[0], pct(ps, r, False))
+                           for lab, r in sorted(wd.items(), key=lambda t: float(t[0].split('b=')[1].split()[0])
+                                                if 'b=' in t[0] else 0.0)
+                           if group(lab) == k and '3D' in lab and 'edge' not in lab)
+        c['ycontr'] = ('plane strain against the 3D quarter: %s; the 3D quarter with its free edge held in y '
+                       'against plane strain: %s (`width-3d`, l_e = 10 um, n_z = 3; the lateral stretch of the '
+                       'peeled coating there)' % (
+                           widths, pct(held, ps)) if ps and free and held else nm)
+    pa = rows('pet-alt')
+    for k, c in (('A', a), ('B', b)):
+        c['petalt'] = ('plane strain against 3D: %s (`pet-alt`, n_y = 2)' % pct(
+            pa.get('%s plane strain' % k), pa.get('%s 3D b=0.04 ny=2' % k)) if pa else nm)
+    return [
+        ('loading (section 7): "a displacement u_x on one end of the polymer coating"', 'u_x', 'loading'),
+        ('model extent (section 7): "only encompasses a quarter of the specimen"', 'a quarter', 'quarter'),
+        ('stretch of the detached coating (section 7): "the coating stretches at least 50 %"', '>= 50 %',
+         'stretch'),
+        ('substrate (section 7): elastic steel, 210 GPa, 0.3', 'elastic steel', 'steel'),
+        ('plane strain against 3D with the alternative Table 1 (`--pet alt`)', '-', 'petalt'),
+        ('the cause of the plane-strain excess (section 9): "prevents deformations in y-direction"',
+         'the y-contraction', 'ycontr'),
+        ('the three unloading behaviours (section 8, Fig. 6)', 'no noticeable influence', 'unloading'),
+        ('the application (section 8)', '3D, n_y = 10, n_z = 3, l_e = 2 um', 'app'),
+        ('deformed geometry after 1.0 mm of delamination (Fig. 13)', 'agrees qualitatively with Fig. 12', 'fig13'),
+    ]
 
 
 def mesh_size(r, study):
@@ -981,7 +1506,7 @@ def front_history(r):
     return hist
 
 
-def application_extras(r, outdir):
+def application_extras(r, outdir, name='application'):
     """Cost per um of pull over the second half of the run, delamination against pull, the wall time to the
     paper's 1.0 mm of delamination (measured, or estimated when not reached), and the rendered Mises PNG of the
     last frame."""
@@ -997,12 +1522,12 @@ def application_extras(r, outdir):
     cost = (half[-1][0] - half[0][0]) / (1e3 * (half[-1][1] - half[0][1])) \
         if len(half) > 1 and half[-1][1] > half[0][1] else float('nan')
     hist = front_history(r)
-    with open(os.path.join(outdir, 'application_front.csv'), 'w', newline='') as fh:
+    with open(os.path.join(outdir, name + '_front.csv'), 'w', newline='') as fh:
         wr = csv.writer(fh)
         wr.writerow(['U1_mm', 'delaminated_mm'])
         for a, b in hist:
             wr.writerow(['%.6g' % a, '%.6g' % b])
-    with open(os.path.join(outdir, 'application_progress.csv'), 'w', newline='') as fh:
+    with open(os.path.join(outdir, name + '_progress.csv'), 'w', newline='') as fh:
         wr = csv.writer(fh)
         wr.writerow(['wall_s', 'U1_mm'])
         for a, b in prog:
@@ -1014,7 +1539,7 @@ def application_extras(r, outdir):
     out.append('')
     out.append('Delamination %.1f um at %.1f um of pull; over the second half of the run the front advanced %.2f um '
                'per um of pull. Wall time per um of pull over the second half of the pull: **%.1f s/um** '
-               '(application_progress.csv: wall time against pull).' % (1e3 * d_end, 1e3 * hist[-1][0], rate, cost))
+               '(%s_progress.csv: wall time against pull).' % (1e3 * d_end, 1e3 * hist[-1][0], rate, cost, name))
     # the paper's 1.0 mm of delamination: when the run reached it, the wall time at which it did (pull at 1.0 mm
     # interpolated in the front history, wall time at that pull in the progress record); otherwise the time to
     # reach it at the measured cost per um of pull and front advance per um of pull (same model, same DOFs)
@@ -1027,8 +1552,9 @@ def application_extras(r, outdir):
         t_t = interp([b for _, b in prog], [a for a, _ in prog], u_t)
         r['time_to_1mm_s'] = t_t
         out += ['', '**1.0 mm of delamination reached** at %.1f um of pull, after **%.0f s = %.2f h** of wall time on '
-                'this machine with %s (front history of the VTU frames, application_front.csv, interpolated; '
-                'wall time against pull, application_progress.csv).' % (1e3 * u_t, t_t, t_t / 3600, run_config())]
+                'this machine with %s (front history of the VTU frames, %s_front.csv, interpolated; '
+                'wall time against pull, %s_progress.csv).' % (1e3 * u_t, t_t, t_t / 3600, run_config(), name,
+                                                              name)]
         if not r['completed']:
             out[-1] += (' The run was ended (%s) at %.1f um of pull, %.1f um after that point: the rest of the '
                         'planned pull was not needed.' % (stop_text(r), 1e3 * u_end, 1e3 * (u_end - u_t)))
@@ -1045,10 +1571,10 @@ def application_extras(r, outdir):
     if r['vtus'] and len((r.get('frames') or [[None]])[-1]) > 1:
         out += ['', 'No Mises picture: the frames of a distributed run are pieces (open JOB.pvd in ParaView).']
     elif r['vtus']:
-        png = os.path.join(outdir, 'application_mises.png')
+        png = os.path.join(outdir, name + '_mises.png')
         if render_mises(r['vtus'][-1], r['info'], png, hist[-1]):
-            out += ['', '![deformed coating, von Mises stress](application_mises.png)', '',
-                    'application_mises.png: the last ParaView frame (`%s`), deformed (scale 1), coating coloured by '
+            out += ['', '![deformed coating, von Mises stress](%s_mises.png)' % name, '',
+                    name + '_mises.png: the last ParaView frame (`%s`), deformed (scale 1), coating coloured by '
                     'the von Mises stress (cell values), side views of the free edge y = b and of the symmetry '
                     'plane y = 0, and the top view.' % os.path.relpath(r['vtus'][-1], ROOT)]
     return out
@@ -1122,7 +1648,16 @@ def render_mises(vtu_path, info, png, last):
             if max(p[0] for p in pts) >= xmin:
                 polys.append(pts)
                 vals.append(m)
-        views.append(('plane strain', polys, vals, 0, 1))
+        views.append(('plane strain, the whole coating', polys, vals, 0, 1))
+        # the drawing front at true scale: from 60 um ahead of the current front to 150 um behind it
+        xf = info['x_front_mm'] - last[1]
+        zp, zv = [], []
+        for pp, m in zip(polys, vals):
+            if any(xf - 0.06 <= p[0] <= xf + 0.15 for p in pp):
+                zp.append(pp)
+                zv.append(m)
+        views.append(('plane strain, the delamination front (current front at x = %.0f um)' % (1e3 * xf), zp, zv,
+                      0, 1))
     allv = [v for vw in views for v in vw[2]]
     if not allv:
         return False
@@ -1132,7 +1667,7 @@ def render_mises(vtu_path, info, png, last):
         vs = [p[1] for pp in vw[1] for p in pp] or [0.0, 1.0]
         spans.append((max(hs) - min(hs), max(vs) - min(vs)))
     lx = max(sp[0] for sp in spans)
-    heights = [max(1.0, 8.0 * sp[1] / lx) + 0.9 for sp in spans]
+    heights = [min(4.0, max(1.0, 8.0 * sp[1] / max(sp[0], 1e-12))) + 0.9 for sp in spans]
     fig, axs = plt.subplots(len(views), 1, figsize=(10, sum(heights) + 0.5), squeeze=False,
                             gridspec_kw={'height_ratios': heights})
     for (title, polys, vals, ah, av), ax in zip(views, axs[:, 0]):
@@ -1144,11 +1679,16 @@ def render_mises(vtu_path, info, png, last):
         ax.set_aspect('equal')
         ax.set_title(title, fontsize=9)
         ax.set_xlabel('x (um)')
-        ax.set_ylabel(('y' if av == 1 else 'z') + ' (um)')
-        ax.axvline(1e3 * info['x_front_mm'], color='k', lw=0.6, ls='--')
+        ax.set_ylabel(('y' if av == 1 and three_d else 'z') + ' (um)')
+        hs = [1e3 * p[0] for pp in polys for p in pp]
+        if hs and 1e3 * info['x_front_mm'] > max(hs):
+            ax.set_xlim(min(hs) - 2.0, max(hs) + 2.0)       # the zoomed front: the initial front is off the view
+        else:
+            ax.axvline(1e3 * info['x_front_mm'], color='k', lw=0.6, ls='--')
         fig.colorbar(pc, ax=ax, label='von Mises (MPa)', fraction=0.03, pad=0.01)
-    fig.suptitle('ldfcz application (section 8 mesh): pull %.1f um, delaminated %.1f um (dashed: initial front)' % (
-        1e3 * last[0], 1e3 * last[1]), fontsize=10)
+    fig.suptitle('ldfcz %s: pull %.1f um, delaminated %.1f um (dashed: initial front)' % (
+        'application (section 8 mesh)' if three_d else 'plane strain, l_e = %g um, n_z = %d' % (
+            1e3 * info['l_e_mm'], info['nz_coating']), 1e3 * last[0], 1e3 * last[1]), fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
     fig.savefig(png, dpi=120)
     plt.close(fig)
@@ -1180,6 +1720,14 @@ def plot(study, results, outdir):
     for r in results:
         u, fw = r['curve']
         ax[0].plot([1e3 * x for x in u], fw, label=r['label'] + (' *' if r.get('reference') else ''))
+        cm = (r.get('steady') or {}).get('cycle_means') or []
+        if study == 'main' and cm:
+            ax[0].plot([1e3 * c[0] for c in cm], [c[1] for c in cm], 'k.', ms=3, label='cycle means (plateau window)')
+            b = r.get('band')
+            if b:
+                v = r['steady']['value']
+                ax[0].axhspan(v * (1 + b['band_lo']), v * (1 + b['band_hi']), color='0.85', zorder=0,
+                              label='discretisation band (main-mesh)')
     ax[0].set_xlabel('pulled displacement u_x (um)')
     ax[0].set_ylabel('peel force per unit width F/w (N/mm)')
     ax[0].legend(fontsize=7)
@@ -1206,8 +1754,8 @@ def old_rows(outdir, study):
         with open(path) as fh:
             for r in csv.DictReader(fh):
                 rows[r['label']] = r
-    prog = os.path.join(outdir, 'application_progress.csv')
-    if study == 'application' and os.path.exists(prog) and len(rows) == 1:
+    prog = os.path.join(outdir, study + '_progress.csv')
+    if study in ('application', 'fig13') and os.path.exists(prog) and len(rows) == 1:
         with open(prog) as fh:
             pts = [(float(r['wall_s']), float(r['U1_mm'])) for r in csv.DictReader(fh)]
         for r in rows.values():
@@ -1228,10 +1776,11 @@ def main(argv=None):
                     'build, e.g. build-mpi/bin/ldfcz; --threads then counts per process)')
     ap.add_argument('--plateau', type=float, default=0.3, help='fraction of the pull averaged for the steady force')
     ap.add_argument('--quick', action='store_true', help='fewer, cheaper cases')
-    ap.add_argument('--scene', choices=('A', 'B'), default='B',
-                    help='main: reading B (default: the flap lifted and pulled at 90 degrees, u_x free) or A (the '
-                    '0-degree bridge)')
-    ap.add_argument('--only', default='', help='run only cases whose label contains this text')
+    ap.add_argument('--scene', choices=('A', 'B'), default='A',
+                    help='main: reading A (default: the paper\'s text, u_x on one end of the coating, the 0-degree '
+                    'bridge) or B (the flap lifted and pulled at 90 degrees, u_x free)')
+    ap.add_argument('--only', default='', help='run only cases whose label contains this text (the report keeps '
+                    'the other cases from their last run files, as --reuse)')
     ap.add_argument('--ldfcz-args', default='', help='extra ldfcz options for every case, e.g. "--newton auto"')
     ap.add_argument('--wait-idle', type=float, default=0.0,
                     help='before each case wait up to this many seconds for the cores to be idle (< 15 %% busy)')
@@ -1257,19 +1806,20 @@ def main(argv=None):
         return 0
     ldfcz = find_ldfcz(a.ldfcz)
     LDFCZ[0] = ldfcz
+    STAMP[0] = stamp()[0]
     if a.study == 'statements':
         return statements(a.reports)
     if a.study == 'main' and not a.reuse:
         outdir = os.path.join(a.reports, 'main')
         work = a.work or os.path.join(ROOT, 'out', 'peel', 'main')
-        job, gen = ('peel_ps_flap90', MAIN_B) if a.scene == 'B' else ('peel_ps', DEFAULT_PS)
+        job, gen = ('peel_ps_flap90', MAIN_B) if a.scene == 'B' else ('peel_main', MAIN_A)
         r = run_case(job, gen, work, ldfcz, a.threads, a.plateau, extra, a.time_limit, a.wait_idle)
         r['reference'] = True
+        if a.scene == 'A':
+            r['band'] = main_band(r)
         write_report('main', [r], outdir)
-        print('steady peel force per unit width: %s; delamination %.3f mm, run time %.1f s' % (
-            sfe.describe(r['steady']), r['delaminated_mm'], r['run_time_s']))
-        for fl in r['steady']['flags']:
-            print('  flag: ' + fl)
+        for line in main_lines(r):
+            print(line)
         print('force-displacement: %s; plot: %s; ParaView frames: %s' % (
             os.path.join(outdir, 'main_curves.csv'), os.path.join(outdir, 'main.png'),
             os.path.join(work, r['job'], r['job'] + '.pvd')))
@@ -1279,13 +1829,19 @@ def main(argv=None):
     outdir = os.path.join(a.reports, a.study)
     work = a.work or os.path.join(ROOT, 'out', 'peel', a.study)
     results = []
+    before = old_rows(outdir, a.study)
     for case in all_studies[a.study]:
         label, args, is_ref = case[:3]
+        reuse = a.reuse
         if a.only and a.only not in label:
-            continue
+            # the other cases stay in the report from their last run (as --reuse), when their run files exist
+            job = re.sub(r'[^A-Za-z0-9_.-]+', '_', label).strip('_') or 'case'
+            if label not in before or not os.path.isdir(os.path.join(work, job)):
+                continue
+            reuse = True
         r = run_case(label, args + a.gen_args.split(), work, ldfcz, a.threads, a.plateau,
                      list(case[3] if len(case) > 3 else []) + extra, a.time_limit, a.wait_idle,
-                     old_rows(outdir, a.study).get(label, {}) if a.reuse else None)
+                     before.get(label, {}) if reuse else None)
         r['reference'] = is_ref
         results.append(r)
         print('%-36s F/w = %.4f N/mm  spread %.1e  %.1f s  %s' % (label, r['F_w'], r['spread'], r['run_time_s'],

@@ -9,17 +9,34 @@ is only meaningful while the front runs through the fine region, after the start
      d(u) <= L_f - n_margin l_e (the front, with its process zone, is still inside the fine region). A value
      taken elsewhere is refused (status 'front-not-in-fine-region'); samples beyond the fine region are cut off and
      flagged ('front-left-fine-region').
-  2. plateau: the earliest start s in the admissible interval [u_a, u_b] (tried in steps of 2 % of its length) such
-     that the window [s, u_b] holds at least min_window of the admissible interval and the relative drift of a
-     straight line fitted to F/w over it is below settle_tol; none: status 'no-plateau' (value and figures are
-     still given, for the last min_window).
-  3. over the window: value = mean of F/w weighted by the pull (trapezoidal integral / window length: cutbacks
-     concentrate samples and must not weight the mean); drift = slope of the least-squares line (pull-weighted)
-     times the window length, relative to the value; ripple = half the peak-to-peak of the residual about that line,
-     relative; cycles = number of ripple periods in the window (half the sign changes of the residual); uncertainty
-     (relative) = |drift|/2 + ripple/(pi max(cycles, 1)): the first term bounds the distance of the mean from the
-     value at either end of a straight drift, the second the bias of averaging a sinusoid of that amplitude over a
-     window that is not a whole number of periods (|mean of A sin| <= A P / (pi W)).
+  2. the ripple period: while the front runs through the fine region the force oscillates with the time the front
+     takes to cross one cohesive element, P = l_e / v (v: the front's advance per unit pull over the admissible
+     interval, from the front history); the force is averaged over whole periods ("cycle means"), which removes
+     the ripple from the value and from the drift test. Without a front history (or v <= 0) P is taken from the
+     residual's sign changes, and without at least MIN_CYCLES whole periods the samples themselves are used.
+  3. plateau: the earliest start s in the admissible interval [u_a, u_b] (tried in steps of 2 % of its length) such
+     that the window [s, u_b] holds at least min_window of the admissible interval and the cycle means over it
+     have a relative drift (slope of a straight line times the window length) and a relative curvature (the
+     quadratic term of a parabola fitted to them: its end value minus its mid value, c W^2 / 4) both below
+     settle_tol: a U-shaped or arched history is not a plateau even when its straight line is flat. None: status
+     'no-plateau' (value and figures are still given, for the last min_window).
+  4. over the window (whole periods ending at u_b): value = the mean of the cycle means (without whole periods:
+     the pull-weighted trapezoidal mean); drift, curvature as above; ripple = half the peak-to-peak of the
+     residual of the samples about the cycle means' line, relative: the force's oscillation at the element
+     period, a resolution error of the cohesive discretisation (it shrinks with l_e), not noise; ripple_elements =
+     the observed period (window / half the residual's sign changes) in elements crossed by the front (1: the
+     element period); uncertainty (relative, of the averaging only) = |drift|/2 + |curvature|/2 + the standard
+     error of the cycle means (their standard deviation / sqrt(n)); without whole periods the former bound
+     |drift|/2 + ripple/(pi max(cycles, 1)) (|mean of A sin| <= A P / (pi W) over a window of partial periods).
+  5. quarters (the plateau check of a referee): the mean of the cycle means whose centres lie in the last quarter
+     of the run's pull against those of the quarter before: quarter_change = Q4/Q3 - 1, and value_vs_quarters =
+     the larger of |value/Q3 - 1|, |value/Q4 - 1| (None when the quarters are not both inside the admissible
+     interval with whole periods).
+
+The uncertainty above is that of reading the steady force from one run. The discretisation error (element
+formulation, elements through the thickness, element length) is a separate band measured by mesh studies;
+band() adds its parts (their absolute values: the errors are not independent random draws) and describe_band()
+prints the value with both.
 
 Without a front history (d(u) unknown) the admissible interval is the whole run and the status says so
 ('front-unknown'); nothing is then refused, only flagged.
@@ -96,13 +113,98 @@ def window_stats(u, f):
     return {'value': mean, 'drift': drift, 'ripple': ripple, 'cycles': cycles, 'uncertainty': unc}
 
 
-def estimate(u, fw, front=None, l_e=None, fine_length=None, n_cross=3, n_margin=2, settle_tol=0.005,
+MIN_CYCLES = 3
+
+
+def _front_speed(fu, fd, a, b):
+    """Mean front advance per unit pull over [a, b] from the (monotone, piecewise linear) front history."""
+    return (_interp(fu, fd, b) - _interp(fu, fd, a)) / (b - a) if b > a else 0.0
+
+
+def cycle_means(u, f, a, b, period):
+    """Means of f (trapezoidal, over the pull) over the whole periods [b - k P, b - (k - 1) P] inside [a, b], oldest
+    first, as (centre, mean) pairs; [] when the period is unknown or longer than the interval."""
+    if not period or period <= 0.0:
+        return []
+    n = int((b - a) / period * (1.0 + 1e-9))
+    out = []
+    for k in range(n, 0, -1):
+        lo, hi = b - k * period, b - (k - 1) * period
+        cu, cf = _cut(u, f, lo, hi)
+        out.append((0.5 * (lo + hi), _trapz_mean(cu, cf)))
+    return out
+
+
+def _poly_trend(cm):
+    """Relative drift (line slope x span) and curvature (c W^2 / 4 of a parabola) of cycle means cm."""
+    n = len(cm)
+    x = [c[0] for c in cm]
+    y = [c[1] for c in cm]
+    mean = sum(y) / n
+    w = (x[-1] - x[0]) * n / (n - 1) if n > 1 else 0.0     # the span of the whole periods
+    xm = sum(x) / n
+    sxx = sum((t - xm) ** 2 for t in x)
+    slope = sum((t - xm) * (v - mean) for t, v in zip(x, y)) / sxx if sxx > 0 else 0.0
+    curv = 0.0
+    if n >= 4 and sxx > 0:
+        # least squares on (1, t, t^2 - mean(t^2)) with t = x - xm: the t^2 column made orthogonal to 1 and t
+        q = [(t - xm) ** 2 for t in x]
+        qm = sum(q) / n
+        t3 = sum((t - xm) * (qq - qm) for t, qq in zip(x, q)) / sxx
+        qq_ = [qq - qm - t3 * (t - xm) for t, qq in zip(x, q)]
+        sqq = sum(v * v for v in qq_)
+        c = sum(v * (yy - mean) for v, yy in zip(qq_, y)) / sqq if sqq > 0 else 0.0
+        curv = c * w * w / 4.0 / mean if mean else float('nan')
+    return (slope * w / mean if mean else float('nan')), curv
+
+
+def window_stats(u, f, period=None):
+    """value, drift, curvature, ripple, cycles, uncertainty (relative) of F/w samples f at pulls u over one window;
+    with a ripple period, over the whole periods ending at the window's end (its start moved to theirs)."""
+    cm = cycle_means(u, f, u[0], u[-1], period) if period else []
+    if len(cm) >= MIN_CYCLES:
+        a = u[-1] - len(cm) * period
+        u, f = _cut(u, f, a, u[-1]) if a > u[0] else (u, f)
+        mean = sum(c[1] for c in cm) / len(cm)
+        drift, curv = _poly_trend(cm)
+        sem = (math.sqrt(sum((c[1] - mean) ** 2 for c in cm) / (len(cm) - 1) / len(cm)) / abs(mean)
+               if mean else float('nan'))
+    else:
+        cm = []
+        mean = _trapz_mean(u, f)
+        curv, sem = 0.0, 0.0
+    a0, b, um = _line_fit(u, f)
+    w = u[-1] - u[0]
+    if not cm:
+        drift = b * w / mean if mean else float('nan')
+    else:
+        # the residual about the cycle means' line (their mean and drift)
+        um = 0.5 * (u[0] + u[-1])
+        a0, b = mean, drift * mean / w if w > 0 else 0.0
+    res = [y - (a0 + b * (x - um)) for x, y in zip(u, f)]
+    ripple = 0.5 * (max(res) - min(res)) / abs(mean) if mean else float('nan')
+    signs = [1 if r > 0 else -1 for r in res if r != 0.0]
+    changes = sum(1 for i in range(1, len(signs)) if signs[i] != signs[i - 1])
+    cycles = 0.5 * changes
+    if cm:
+        unc = 0.5 * abs(drift) + 0.5 * abs(curv) + sem
+    else:
+        unc = 0.5 * abs(drift) + ripple / (math.pi * max(cycles, 1.0))
+    return {'value': mean, 'drift': drift, 'curvature': curv, 'ripple': ripple, 'cycles': cycles,
+            'uncertainty': unc, 'sem': sem, 'cycle_means': cm, 'window': (u[0], u[-1])}
+
+
+def estimate(u, fw, front=None, l_e=None, fine_length=None, n_cross=3, n_margin=2, settle_tol=0.002,
              min_window=0.3, step=0.02):
     """Steady force of one run. u, fw: pull (mm) and F/w (N/mm), u increasing; front: (u_k, d_k) pairs, the
     delamination length d_k (mm) at pull u_k (from the field frames), or None; l_e, fine_length (mm).
-    Returns a dict: value, uncertainty (relative), drift, ripple, cycles, window (u0, u1), status, flags, ok."""
+    Returns a dict: value, uncertainty (relative, of the averaging), drift, curvature, ripple, ripple_elements,
+    cycles, period (mm of pull), cycle_means, quarter_change, value_vs_quarters, window (u0, u1), status, flags,
+    ok."""
     out = {'value': float('nan'), 'uncertainty': float('nan'), 'drift': float('nan'), 'ripple': float('nan'),
-           'cycles': 0.0, 'window': (float('nan'), float('nan')), 'status': OK, 'flags': [], 'ok': False}
+           'curvature': float('nan'), 'cycles': 0.0, 'window': (float('nan'), float('nan')), 'status': OK,
+           'flags': [], 'ok': False, 'period': None, 'ripple_elements': float('nan'), 'cycle_means': [],
+           'quarter_change': None, 'value_vs_quarters': None, 'front_speed': float('nan')}
     pts = [(x, y) for x, y in zip(u, fw) if x == x and y == y]
     if len(pts) < 3:
         out['status'] = 'too-few-samples'
@@ -111,6 +213,7 @@ def estimate(u, fw, front=None, l_e=None, fine_length=None, n_cross=3, n_margin=
     u = [p[0] for p in pts]
     fw = [p[1] for p in pts]
     ua, ub = u[0], u[-1]
+    fu = fd = None
     if front and l_e and fine_length:
         fu = [0.0] + [p[0] for p in front]
         fd = [0.0] + [p[1] for p in front]
@@ -142,7 +245,20 @@ def estimate(u, fw, front=None, l_e=None, fine_length=None, n_cross=3, n_margin=
     else:
         out['flags'].append('front-unknown: the whole run is admissible')
     span = ub - ua
-    # samples of the admissible interval (interpolated at its ends)
+    # the ripple period: one cohesive element crossed by the front (its speed over the admissible interval), else
+    # the residual's sign changes over the admissible interval
+    period = None
+    if fu is not None:
+        v = _front_speed(fu, fd, ua, ub) if fu[-1] >= ub * (1.0 - 1e-9) else _front_speed(fu, fd, ua, fu[-1])
+        out['front_speed'] = v
+        if v > 0.0:
+            period = l_e / v
+    if period is None:
+        wu, wf = _cut(u, fw, ua, ub)
+        st = window_stats(wu, wf)
+        if st['cycles'] >= MIN_CYCLES:
+            period = span / st['cycles']
+    out['period'] = period
     chosen = None
     k = 0
     while True:
@@ -151,25 +267,62 @@ def estimate(u, fw, front=None, l_e=None, fine_length=None, n_cross=3, n_margin=
             break
         wu, wf = _cut(u, fw, s, ub)
         if len(wu) >= 3:
-            st = window_stats(wu, wf)
-            if abs(st['drift']) <= settle_tol:
-                chosen = (s, st)
+            st = window_stats(wu, wf, period)
+            if abs(st['drift']) <= settle_tol and abs(st['curvature']) <= settle_tol:
+                chosen = st
                 break
         k += 1
     if chosen is None:
         s = ub - min_window * span
         wu, wf = _cut(u, fw, s, ub)
-        st = window_stats(wu, wf) if len(wu) >= 3 else None
+        st = window_stats(wu, wf, period) if len(wu) >= 3 else None
         out['status'] = 'no-plateau'
-        out['flags'].append('no-plateau: drift over every window above %.3g' % settle_tol)
+        out['flags'].append('no-plateau: drift or curvature of the cycle means above %.3g over every window'
+                            % settle_tol)
         if st is None:
             return out
-        chosen = (s, st)
-    s, st = chosen
-    out.update(st)
-    out['window'] = (s, ub)
+        chosen = st
+    out.update(chosen)
+    if period and out['cycles'] > 0 and l_e and out['front_speed'] == out['front_speed']:
+        w = out['window'][1] - out['window'][0]
+        out['ripple_elements'] = (w / out['cycles']) * out['front_speed'] / l_e
+    _quarters(out, u, fw, ua, ub, period)
     out['ok'] = out['status'] == OK
     return out
+
+
+def _quarters(out, u, fw, ua, ub, period):
+    """The plateau check: cycle means in the last quarter of the run's pull against the quarter before."""
+    u_end = u[-1]
+    q3, q4 = (0.5 * u_end, 0.75 * u_end), (0.75 * u_end, u_end)
+    if not period or q3[0] < ua - 1e-12 or q4[1] > ub + 1e-12:
+        out['flags'].append('quarters: the last two quarters of the pull are not both inside the admissible '
+                            'interval with whole ripple periods: no plateau check')
+        return
+    m = []
+    for a, b in (q3, q4):
+        cm = cycle_means(u, fw, a, b, period)
+        if not cm:
+            return
+        m.append(sum(c[1] for c in cm) / len(cm))
+    out['quarter_means'] = tuple(m)
+    out['quarter_change'] = m[1] / m[0] - 1.0
+    out['value_vs_quarters'] = max(abs(out['value'] / m[0] - 1.0), abs(out['value'] / m[1] - 1.0))
+
+
+def band(parts):
+    """The discretisation band (relative) from its parts {name: relative difference}: the sum of their absolute
+    values (the errors of element formulation, thickness mesh and element length are not independent random
+    draws, so they are not added in quadrature)."""
+    return sum(abs(v) for v in parts.values())
+
+
+def describe_band(est, parts):
+    """Value +- averaging uncertainty, and the discretisation band with its parts."""
+    b = band(parts)
+    return ('%.4f N/mm +- %.2f %% (averaging) +- %.2f %% (discretisation: %s)' % (
+        est['value'], 100 * est['uncertainty'], 100 * b,
+        ', '.join('%s %.2f %%' % (k, 100 * abs(v)) for k, v in parts.items())))
 
 
 def _fill_last(out, u, fw, min_window):
@@ -239,9 +392,13 @@ def richardson(h, F):
 
 
 def describe(est):
-    """One line: value +- uncertainty, drift, ripple, window and status."""
+    """One line: value +- uncertainty, drift, curvature, ripple, window and status."""
     if est['value'] != est['value']:
         return 'no value (%s)' % est['status']
-    return '%.4f N/mm +- %.2f %% (drift %+.2f %%, ripple +-%.2f %%, %.1f cycles, window %.1f-%.1f um) %s' % (
-        est['value'], 100 * est['uncertainty'], 100 * est['drift'], 100 * est['ripple'], est['cycles'],
-        1e3 * est['window'][0], 1e3 * est['window'][1], est['status'])
+    q = est.get('quarter_change')
+    return ('%.4f N/mm +- %.2f %% (drift %+.2f %%, curvature %+.2f %%, ripple +-%.2f %%, %.1f cycles, window '
+            '%.1f-%.1f um%s) %s' % (
+                est['value'], 100 * est['uncertainty'], 100 * est['drift'], 100 * (est.get('curvature') or 0.0),
+                100 * est['ripple'], est['cycles'], 1e3 * est['window'][0], 1e3 * est['window'][1],
+                ', last quarter %+.2f %% against the one before' % (100 * q) if q is not None else '',
+                est['status']))
