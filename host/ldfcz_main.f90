@@ -55,6 +55,9 @@ program ldfcz
   deck = ''
   outdir = '.'
   user_file = ''
+  ! LDFCZ_REPRODUCIBLE=1: as --reproducible (docs/host.md, "Running on several processes")
+  arg = env_value('LDFCZ_REPRODUCIBLE')
+  options%reproducible = len(arg) > 0 .and. arg /= '0'
   fc = env_value('FC')
   fflags = env_value('FFLAGS')
   threads = 0
@@ -82,6 +85,8 @@ program ldfcz
       verbose = .true.
     case ('--reorient-interfaces')
       reorient = .true.
+    case ('--reproducible')
+      options%reproducible = .true.
     case ('--newton', '--factors', '--max-opening-increment', '--plastic-statev', '--max-plastic-increment', &
           '--element-weights', '--partition-pieces')
       if (i == n) call die('option '//arg//' needs a value')
@@ -421,6 +426,9 @@ contains
       '                     end of each step; overrides *RESTART, WRITE, FREQUENCY=n of the deck; 0: never', &
       '  --restart-from FILE  continue the analysis of the deck from the restart file FILE (JOB.rst, the same', &
       '                     deck): JOB.csv/.sta/.log are continued, VTU frames numbered on', &
+      '  --reproducible     a distributed run (mpirun) factorizes and solves on rank 0 alone, so that identical', &
+      '                     runs give identical bits (MUMPS'' parallel factorization sums in message order);', &
+      '                     the element loop stays distributed. Also set by LDFCZ_REPRODUCIBLE=1', &
       '  --stop-after-increments K  stop (exit 3) after K converged increments of this run (for restart tests)', &
       '  -h, --help         this text', &
       '  -V, --version      the version', &

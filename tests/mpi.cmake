@@ -91,18 +91,19 @@ ldfcz_add_mpi_restart_test(mpi_restart_umat_np3 ${PROJECT_SOURCE_DIR}/decks/sing
   --np 3 --stop 45 --freq 7)
 # every kind of deck (tests/restart, tests/host.cmake) distributed: loads, amplitudes, follower pressure and OP=NEW
 # releases on 2 processes stopped in step 3, predefined fields and velocities on 2 processes, constraints, local
-# systems and DISP on 3 (one element each) stopped by SIGUSR1. Two distributed runs differ in round-off (MUMPS'
-# parallel assembly order; the observed largest difference is 1e-12 of a column's scale): within 1e-9 relative plus
-# 1e-10 absolute (the models' forces and displacements are of order 1: sums of reactions that cancel to 1e-10 keep
-# their round-off); JOB.dat word by word the same way.
+# systems and DISP on 3 (one element each) stopped by SIGUSR1. With --reproducible (LDFCZ_REPRODUCIBLE=1: the linear
+# systems on rank 0, so that two distributed runs give the same bits) the continuation must reproduce the
+# uninterrupted distributed run bit for bit: CSV, frames and JOB.dat.
 ldfcz_add_mpi_restart_test(mpi_restart_loads_np2 ${CMAKE_CURRENT_SOURCE_DIR}/restart/loads_steps.inp
-  --np 2 --stop 10 --freq 1 --atol 1e-10 --dat --point mid)
+  --np 2 --stop 10 --freq 1 --rel 0 --atol 0 --dat --point mid)
 ldfcz_add_mpi_restart_test(mpi_restart_fields_np2 ${CMAKE_CURRENT_SOURCE_DIR}/restart/fields_velocity.inp
-  --np 2 --stop 7 --freq 1 --atol 1e-10 --dat --point mid
+  --np 2 --stop 7 --freq 1 --rel 0 --atol 0 --dat --point mid
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_fields.f)
 ldfcz_add_mpi_restart_test(mpi_restart_constraints_np3 ${CMAKE_CURRENT_SOURCE_DIR}/restart/constraints_transform.inp
-  --np 3 --modes term --stop 5 --freq 100000 --atol 1e-10 --dat
+  --np 3 --modes term --stop 5 --freq 100000 --rel 0 --atol 0 --dat
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_disp.f)
+set_tests_properties(mpi_restart_loads_np2 mpi_restart_fields_np2 mpi_restart_constraints_np3 PROPERTIES
+  ENVIRONMENT "${LDFCZ_MPI_ENV};LDFCZ_REPRODUCIBLE=1")
 # the graceful stop of a distributed run: SIGUSR1 to mpirun, which OpenMPI forwards to every process at once (SIGTERM
 # it does not forward: mpi_launcher_sigterm below)
 ldfcz_add_mpi_restart_test(mpi_sigusr1_peel_np2 ${CMAKE_CURRENT_SOURCE_DIR}/mpi/peel_ps_short.inp

@@ -48,6 +48,7 @@ module analysis_core
     logical :: single = .false.           !< factors in single precision (preconditioner only)
     integer :: blas_threads = 0           !< BLAS threads of a large factorization (0: BLAS untouched)
     real(dp) :: min_flops = 0.0_dp        !< operations from which a factorization uses them
+    logical :: one_process = .false.      !< distributed: factorize and solve on rank 0 (--reproducible)
   end type factoring_t
 
   !> The equations of the current step: the free dofs numbered (prescribed ones and *EQUATION/*TIE-eliminated ones
@@ -176,7 +177,7 @@ contains
     if (present(options)) opt = options
     an%cost_weight = opt%element_weights
     an%eqs%factoring = factoring_t(opt%symmetric_factors, opt%single_factors, opt%factor_blas_threads, &
-      opt%factor_min_flops)
+      opt%factor_min_flops, opt%reproducible)
     an%routines = routines
     an%ndim = model%ndim
     an%ndof = model%ndim * model%nnode
@@ -384,10 +385,12 @@ contains
       call constraints_extend(an%eqs%cs, an%elem_ptr, an%elem_dof, an%eqs%eq)
       call color_elements(model%nelem, an%ndof, an%eqs%cs%xptr, an%eqs%cs%xdof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)
       call sparse_setup(an%eqs%sys, n, an%eqs%cs%xptr, an%eqs%cs%xeq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned)
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned, &
+        one_process=an%eqs%factoring%one_process)
     else
       call sparse_setup(an%eqs%sys, n, an%elem_ptr, an%eqs%elem_eq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned)
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned, &
+        one_process=an%eqs%factoring%one_process)
     end if
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)

@@ -37,6 +37,9 @@ module solver_options
     !> BLAS threads of a large factorization (blas_threads_default; 0: the BLAS is left as it is)
     integer :: factor_blas_threads = 0
     real(dp) :: factor_min_flops = 0.0_dp       !< operations from which a factorization uses them
+    !> a distributed run factorizes and solves its linear systems on rank 0 alone, so that identical runs give
+    !> identical bits (MUMPS' parallel factorization sums in the order its messages arrive); --reproducible
+    logical :: reproducible = .false.
   end type solver_options_t
 
 contains

@@ -31,7 +31,7 @@
 !> (parallel_context), so every process holds the same vectors and the Newton decisions built on them agree.
 !> MUMPS' parallel factorization and solve add the contributions of the processes in the order its messages arrive,
 !> so two identical distributed runs differ in the last bits (1e-14 to 1e-11 relative, then possibly in the path).
-!> With LDFCZ_REPRODUCIBLE set (to anything but '' or '0') a distributed system is factorized and solved on rank 0
+!> With one_process (ldfcz --reproducible) a distributed system is factorized and solved on rank 0
 !> alone instead (solo): the processes' entries gathered there in rank order (MPI_Gatherv), one MUMPS instance of
 !> rank 0 alone (MPI_COMM_SELF, centralized input, duplicates summed in input order), the solution broadcast:
 !> identical runs give identical bits, at the price of a sequential factorization (docs/host.md).
@@ -98,7 +98,7 @@ contains
 
   !> Build the pattern, the element -> slot maps, the METIS ordering and the MUMPS analysis, once.
   subroutine sparse_setup(sys, neq, elem_ptr, elem_eq, eq_node, symmetric, stat, errmsg, use_metis, &
-      symmetric_factors, single_factors, par, owned)
+      symmetric_factors, single_factors, par, owned, one_process)
     type(sparse_system_t), intent(inout) :: sys     !< system (any previous content is destroyed)
     integer, intent(in) :: neq                      !< number of free equations (1..neq)
     integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
@@ -112,6 +112,8 @@ contains
     logical, intent(in), optional :: single_factors !< single-precision factors (a preconditioner only)
     type(parallel_t), intent(in), optional :: par   !< processes of the run (default: this one alone)
     logical, intent(in), optional :: owned(:)       !< (nelem) the elements this process adds (with par)
+    !> distributed: factorize and solve on rank 0 alone (identical runs give identical bits; default false)
+    logical, intent(in), optional :: one_process
     character(len=*), parameter :: here = 'sparse_setup'
     integer, allocatable :: xadj(:), adjncy(:), node_position(:), own_eq(:)
     integer :: nnode, nelem, i, k, m, j
@@ -159,7 +161,7 @@ contains
       sys%distributed = parallel_distributed(par) .and. present(owned)
     end if
     sys%solo = .false.
-    if (sys%distributed) sys%solo = env_set('LDFCZ_REPRODUCIBLE')
+    if (sys%distributed .and. present(one_process)) sys%solo = one_process
 
     ! a process of a distributed run builds its part of the matrix only: the pattern of its own elements (the others
     ! as if all their dofs were constrained). Its entries are its MUMPS input (MUMPS sums the entries that several
@@ -370,7 +372,7 @@ contains
     end if
   end function sparse_factor_flops
 
-  !> Solo (LDFCZ_REPRODUCIBLE, distributed): the processes' MUMPS input (row and column of each of their entries)
+  !> Solo (--reproducible, distributed): the processes' MUMPS input (row and column of each of their entries)
   !> gathered on rank 0 in rank order and analysed there by an instance of rank 0 alone; the outcome on every
   !> process.
   subroutine solo_analyse(sys, symmetric, irn, jcn, stat, errmsg)
@@ -428,15 +430,6 @@ contains
     sys%solo_flops = v(1)
     sys%solo_entries = nint(v(2), i8)
   end subroutine share_counts
-
-  !> True when the environment variable is set to something other than '' or '0'.
-  logical function env_set(name)
-    character(len=*), intent(in) :: name            !< variable
-    character(len=16) :: val
-    integer :: length, status
-    call get_environment_variable(name, val, length, status)
-    env_set = status == 0 .and. length > 0 .and. trim(val) /= '0'
-  end function env_set
 
   !> Floating-point operations of one GMRES iteration of sparse_solve_krylov with the last factors, counted from the
   !> sizes of the factors and the matrix: the two triangular sweeps (2 per factor entry and sweep: LU uses each
