@@ -6,7 +6,7 @@ module field_frame
   use model_types, only: model_t, step_t, etype_user, etype_c3d8, etype_cpe4, etype_c3d8i, etype_c3d20, &
     etype_c3d20r, etype_c3d4, etype_c3d10, etype_cpe4i, etype_cpe8, etype_cpe8r, etype_cps4, etype_cps4i, &
     etype_cps8, etype_cps8r, etype_c3d8r, etype_cpe4r, etype_cps4r, etype_cax4, etype_cax4i, etype_cax8, etype_cax8r, &
-    etype_cax4r
+    etype_cax4r, model_sdv_name
   use stress_measures, only: mises_stress, principal_stresses
   use analysis_core, only: analysis_t
   use node_rotations, only: node_vector_global
@@ -59,6 +59,8 @@ contains
       fr%cell_id(c) = model%elem_id(ie)
     end do
     call sdv_selection(model, an, step, fr%sdv_index)
+    ! named state variables (*DEPVAR keys) give their arrays Abaqus' names SDV_key
+    fr%sdv_name = [character(len=96) :: (model_sdv_name(model, fr%sdv_index(c)), c = 1, size(fr%sdv_index))]
     want_strain = step%out_le .or. step%out_e
     allocate (fr%stress(6, ncell), fr%principal(3, ncell), fr%mises(ncell), fr%sdv(size(fr%sdv_index), ncell))
     allocate (fr%opening(3, ncell))

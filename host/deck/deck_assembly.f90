@@ -7,7 +7,7 @@ module deck_assembly
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_keyword_parse, deck_normalize, deck_param_t
   use model_types, only: instance_t
-  use deck_context, only: deck_context_t, flen, part_def_t, ctx_fail, ctx_fail_kw, ctx_allow_params, ctx_required, &
+  use deck_context, only: deck_context_t, flen, part_def_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_required, &
     ctx_split, ctx_get_real, scope_model, scope_part, scope_assembly
   implicit none
   private
@@ -171,6 +171,12 @@ contains
   !> *END ASSEMBLY.
   subroutine end_assembly(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
+    if (ctx%scope /= scope_assembly .and. .not. ctx%has_assembly .and. ctx%scope == scope_model) then
+      ! a lone *END ASSEMBLY in a deck without *ASSEMBLY closes nothing (decks that ran in Abaqus have it; Abaqus'
+      ! manuals say nothing of it): without effect on the model, so accepted with a warning
+      call ctx_warn(ctx, ctx%ir, 'no *ASSEMBLY before it in this deck: ignored (it closes nothing)')
+      return
+    end if
     if (ctx%scope /= scope_assembly) then
       call ctx_fail(ctx, ctx%ir, '*END ASSEMBLY without *ASSEMBLY')
       return

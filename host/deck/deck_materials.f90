@@ -5,7 +5,7 @@ module deck_materials
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: material_t, section_t, model_find_material
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
+  use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_warn, ctx_pos, ctx_allow_params, ctx_required, &
     ctx_param_int, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
@@ -238,13 +238,19 @@ contains
     nc = ctx_param_int(ctx, 'CONSTANTS', 0)
     if (ctx%stat /= 0) return
     call ctx_block_fields(ctx, ir + 1, ir_next - 1, f, n)
-    if (n /= nc) then
+    if (n > nc) then
       call ctx_fail(ctx, ir, 'CONSTANTS='//itoa(nc)//' but '//itoa(n)//' values given')
       return
     end if
+    ! fewer values than CONSTANTS: NPROPS = CONSTANTS, the values not given (and empty fields) are 0, as Abaqus
+    ! takes omitted numeric data (decks that ran in Abaqus do this); said, since a constant may be missing
+    if (n < nc) call ctx_warn(ctx, ir, 'CONSTANTS='//itoa(nc)//' but '//itoa(n)//' values given: PROPS('// &
+      itoa(n + 1)//':'//itoa(nc)//') = 0 (NPROPS = '//itoa(nc)//')')
     allocate (ctx%model%materials(imat)%props(nc))
-    do k = 1, nc
-      if (.not. ctx_get_real(ctx, ir + 1, f(k), r)) return
+    ctx%model%materials(imat)%props = 0.0_dp
+    do k = 1, n
+      if (len_trim(f(k)) == 0) cycle
+      if (.not. ctx_get_real(ctx, field_record(ctx, ir + 1, ir_next - 1, k), f(k), r)) return
       ctx%model%materials(imat)%props(k) = r
     end do
     ctx%model%materials(imat)%has_user = .true.
@@ -252,11 +258,12 @@ contains
     ctx%model%materials(imat)%user_pos = ctx_pos(ctx, min(ir + 1, ir_next - 1))
   end subroutine read_user_material
 
-  !> *DEPVAR: number of state variables of the user material.
+  !> *DEPVAR: number of state variables of the user material; optional lines 'n, key, description' name state
+  !> variable n (the form Abaqus/CAE writes; Abaqus Keywords Guide, *DEPVAR): its field output is SDV_key.
   subroutine read_depvar(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=flen), allocatable :: f(:)
-    integer :: n, ir, nstatv
+    integer :: n, ir, i, nstatv, k
     call need_material(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=8) :: 'DELETE'])
@@ -266,14 +273,75 @@ contains
       call ctx_fail(ctx, ir, 'DELETE= (element deletion) is not supported')
       return
     end if
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'one data line (number of state variables) expected')
+    if (ctx%ir_next == ir + 1) then
+      call ctx_fail(ctx, ir, 'a data line with the number of state variables is required')
       return
     end if
     call ctx_split(ctx, ir + 1, f, n)
+    if (n > 1) then
+      call ctx_fail(ctx, ir + 1, 'the first data line holds the number of state variables only')
+      return
+    end if
     if (.not. ctx_get_int(ctx, ir + 1, f(1), nstatv)) return
-    ctx%model%materials(ctx%imat)%nstatv = nstatv
-    if (nstatv < 0) call ctx_fail(ctx, ir + 1, 'negative number of state variables')
+    if (nstatv < 0) then
+      call ctx_fail(ctx, ir + 1, 'negative number of state variables')
+      return
+    end if
+    associate (m => ctx%model%materials(ctx%imat))
+      m%nstatv = nstatv
+      if (allocated(m%sdv_key)) deallocate (m%sdv_key, m%sdv_desc)
+      allocate (m%sdv_key(nstatv), m%sdv_desc(nstatv))
+      m%sdv_key = ''
+      m%sdv_desc = ''
+      do i = ir + 2, ctx%ir_next - 1
+        call ctx_split(ctx, i, f, n)
+        if (n < 2 .or. n > 3) then
+          call ctx_fail(ctx, i, 'expected: state variable number, output key[, description]')
+          return
+        end if
+        if (.not. ctx_get_int(ctx, i, f(1), k)) return
+        if (k < 1 .or. k > nstatv) then
+          call ctx_fail(ctx, i, 'state variable '//itoa(k)//' outside 1..'//itoa(nstatv))
+          return
+        end if
+        if (len_trim(m%sdv_key(k)) > 0) then
+          call ctx_fail(ctx, i, 'state variable '//itoa(k)//' named twice')
+          return
+        end if
+        m%sdv_key(k) = unquoted(f(2))
+        if (len_trim(m%sdv_key(k)) == 0) then
+          call ctx_fail(ctx, i, 'empty output key')
+          return
+        end if
+        if (n == 3) m%sdv_desc(k) = unquoted(f(3))
+      end do
+    end associate
   end subroutine read_depvar
+
+  !> A label as written, without enclosing double quotes (case preserved, as *DEPVAR keys are).
+  pure function unquoted(field) result(t)
+    character(len=*), intent(in) :: field  !< data field
+    character(len=:), allocatable :: t
+    t = trim(adjustl(field))
+    if (len(t) >= 2) then
+      if (t(1:1) == '"' .and. t(len(t):len(t)) == '"') t = t(2:len(t) - 1)
+    end if
+  end function unquoted
+
+  !> Record of the k-th data field of records i1..i2 (messages about one value of a multi-line block).
+  integer function field_record(ctx, i1, i2, k) result(irec)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    integer, intent(in) :: i1, i2            !< the block's data records
+    integer, intent(in) :: k                 !< field number (1-based, over the block)
+    character(len=flen), allocatable :: f(:)
+    integer :: n, seen
+    seen = 0
+    do irec = i1, i2
+      call ctx_split(ctx, irec, f, n)
+      seen = seen + n
+      if (seen >= k) return
+    end do
+    irec = i2
+  end function field_record
 
 end module deck_materials

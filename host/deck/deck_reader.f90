@@ -24,7 +24,7 @@ module deck_reader
   use deck_parameters, only: apply_parameters
   use deck_generate, only: read_ngen, read_nfill, read_ncopy, read_elgen
   use deck_orientation, only: read_orientation, read_transform
-  use deck_declarations, only: read_ldfcz_declaration
+  use deck_declarations, only: read_ldfcz_declaration, track_declaration_owner
   implicit none
   private
   public :: read_deck
@@ -121,6 +121,7 @@ contains
       end if
       call read_block(ctx)
       if (ctx%stat /= 0) return
+      call track_declaration_owner(ctx)
       ! a *PART or *INSTANCE block reaches past its end keyword
       ir = max(ir_next, ctx%ir_next)
     end do
@@ -255,7 +256,7 @@ contains
       end if
     case ('*RESTART')
       call read_restart(ctx)
-    case ('*LDFCZ SVARS', '*LDFCZ STATEV')
+    case ('*LDFCZ SVARS', '*LDFCZ STATEV', '*LDFCZ BUILTIN')
       call read_ldfcz_declaration(ctx)
     case ('*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
           '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')

@@ -30,6 +30,7 @@ module output_files
     character(len=2), allocatable :: strain_names(:) !< names the strain is written under (LE and/or E)
     real(dp), allocatable :: sdv(:, :)       !< (nsdv, ncell) state variables (mean over the points)
     integer, allocatable :: sdv_index(:)     !< (nsdv) which state variable each row of sdv is
+    character(len=96), allocatable :: sdv_name(:) !< (nsdv) array name of each row (default SDVn; *DEPVAR keys)
     real(dp), allocatable :: opening(:, :)   !< (3, ncell) cohesive opening top - bottom (global frame), mean
     real(dp), allocatable :: traction(:)     !< (ncell) |T| from SVARS (mean over the points)
     real(dp), allocatable :: delta_max(:)    !< (ncell) Delta_max from SVARS (mean over the points)
@@ -359,7 +360,7 @@ contains
     integer, intent(in), optional :: piece    !< this process's piece (0-based)
     integer, intent(in), optional :: npieces  !< pieces of the frame (processes)
     character(len=:), allocatable :: name
-    character(len=16) :: b, bp
+    character(len=96) :: b, bp
     integer :: u, i, np, nc, k, ios
     integer(8) :: c0, c1, rate
     call system_clock(c0, rate)
@@ -419,6 +420,7 @@ contains
     end if
     do k = 1, size(frame%sdv, 1)
       write (b, '(i0)') frame%sdv_index(k)
+      if (allocated(frame%sdv_name)) b = frame%sdv_name(k)(4:)
       call sca('SDV'//trim(b), frame%sdv(k, :))
     end do
     write (u, '(a)') '<DataArray type="Int32" Name="cohesive" format="ascii">'
@@ -442,7 +444,7 @@ contains
     subroutine write_pvtu(stem)
       character(len=*), intent(in) :: stem
       integer :: v, j
-      character(len=16) :: bj
+      character(len=96) :: bj
       open (newunit=v, file=out%dir//'/'//stem//'.pvtu', status='replace', action='write', iostat=ios)
       if (ios /= 0) return
       write (v, '(a)') '<?xml version="1.0"?>'
@@ -462,6 +464,7 @@ contains
       end if
       do j = 1, size(frame%sdv, 1)
         write (bj, '(i0)') frame%sdv_index(j)
+        if (allocated(frame%sdv_name)) bj = frame%sdv_name(j)(4:)
         write (v, '(a)') '<PDataArray type="Float64" Name="SDV'//trim(bj)//'"/>'
       end do
       write (v, '(a)') '<PDataArray type="Int32" Name="cohesive"/>'
