@@ -97,6 +97,12 @@ contains
       call hi(model%materials(k)%nstatv)
       call hl(model%materials(k)%unsymm)
       if (allocated(model%materials(k)%props)) call hra(model%materials(k)%props)
+      ! the general *ELASTIC/*EXPANSION tables (the constant isotropic ones are young, poisson above)
+      if (allocated(model%materials(k)%elastic_data)) call hra([real(model%materials(k)%elastic_kind, dp), &
+        model%materials(k)%elastic_temp, pack(model%materials(k)%elastic_data, .true.)])
+      if (allocated(model%materials(k)%expansion_data)) call hra([real(model%materials(k)%expansion_kind, dp), &
+        model%materials(k)%expansion_zero, model%materials(k)%expansion_temp, &
+        pack(model%materials(k)%expansion_data, .true.)])
     end do
     do k = 1, model%nutype
       associate (ut => model%utypes(k))

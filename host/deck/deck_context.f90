@@ -15,7 +15,7 @@ module deck_context
   public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos
   public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
   public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_continued
-  public :: part_def_t, scope_model, scope_part, scope_assembly, member_origin_t, ctx_set_member
+  public :: part_def_t, scope_model, scope_part, scope_assembly, member_origin_t, ctx_set_member, no_blanks
   public :: ctx_enter_instance, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_find_surface, ctx_is_label, &
     ctx_get_label
 
@@ -169,15 +169,23 @@ contains
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=*), intent(in) :: names(:)    !< allowed parameter names
     integer :: i, j, nmatch, jmatch, n
-    character(len=:), allocatable :: list
+    character(len=:), allocatable :: list, given, cand
     do i = 1, size(ctx%params)
       if (all(ctx%params(i)%name /= names)) then
-        n = len(ctx%params(i)%name)
+        ! blanks on a keyword line are ignored (HOUR GLASS is HOURGLASS), then an abbreviation
+        given = no_blanks(ctx%params(i)%name)
+        n = len(given)
         nmatch = 0
         jmatch = 0
         do j = 1, size(names)
-          if (n == 0 .or. n > len_trim(names(j))) cycle
-          if (names(j)(1:n) == ctx%params(i)%name) then
+          cand = no_blanks(names(j))
+          if (cand == given) then
+            nmatch = 1
+            jmatch = j
+            exit
+          end if
+          if (n == 0 .or. n > len(cand)) cycle
+          if (cand(1:n) == given) then
             nmatch = nmatch + 1
             jmatch = j
           end if
@@ -305,6 +313,17 @@ contains
     if (.not. ok) call ctx_fail(ctx, irec, why)
     ctx_get_int = ok
   end function ctx_get_int
+
+  !> A name without its blanks (Abaqus ignores blanks on keyword lines: *SOLIDSECTION is *SOLID SECTION).
+  pure function no_blanks(s) result(t)
+    character(len=*), intent(in) :: s  !< name
+    character(len=:), allocatable :: t
+    integer :: i
+    t = ''
+    do i = 1, len_trim(s)
+      if (s(i:i) /= ' ') t = t//s(i:i)
+    end do
+  end function no_blanks
 
   ! ------------------------------------------------------------------ set members
 

@@ -145,6 +145,8 @@ contains
         return
       end if
       if (len_trim(ctx%model%utypes(k)%builtin) > 0) then
+        ! (a part's declaration read again for its next instance)
+        if (ctx%model%utypes(k)%builtin_pos%line == ctx%src%rec(ctx%ir)%line) return
         call ctx_fail(ctx, ctx%ir, 'user element type '//trim(ctx%model%utypes(k)%name)//' already declares '// &
           'a built-in UEL')
         return

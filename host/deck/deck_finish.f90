@@ -439,6 +439,11 @@ contains
                   trim(model%materials(im)%given_name)//' has no *DENSITY')
                 return
               end if
+              if (model%materials(im)%density_varies) then
+                call ctx_fail_pos(ctx, pos, 'GRAV on material '//trim(model%materials(im)%given_name)// &
+                  ' whose *DENSITY depends on temperature (not supported with GRAV)')
+                return
+              end if
             end if
           end do
           call move_alloc(el, model%steps(is)%dloads(k)%elems)

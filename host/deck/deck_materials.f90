@@ -1,4 +1,5 @@
-!> Material keywords of the deck reader: *MATERIAL with its options *ELASTIC, *USER MATERIAL and *DEPVAR, and
+!> Material keywords of the deck reader: *MATERIAL with its options *USER MATERIAL, *DEPVAR and *DENSITY (*ELASTIC and
+!> *EXPANSION: deck_elastic), and
 !> *SOLID SECTION (element set -> material, thickness).
 module deck_materials
   use ldfcz_kinds, only: dp
@@ -9,7 +10,7 @@ module deck_materials
     ctx_param_int, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
-  public :: read_material, read_elastic, read_density, read_expansion, read_user_material, read_depvar, read_solid_section
+  public :: read_material, read_density, read_user_material, read_depvar, read_solid_section
 
 contains
 
@@ -21,7 +22,8 @@ contains
     character(len=:), allocatable :: v
     integer :: n, k, ir, ir_next
     real(dp) :: t
-    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION'])
+    ! CONTROLS=: *SECTION CONTROLS of the one-point elements (read without effect, deck_section_controls)
+    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION', 'CONTROLS'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
@@ -107,114 +109,38 @@ contains
     if (ctx%imat == 0) call ctx_fail(ctx, ctx%ir, 'material option outside a *MATERIAL definition')
   end subroutine need_material
 
-  !> *ELASTIC (isotropic): one data line E, nu.
-  subroutine read_elastic(ctx)
-    type(deck_context_t), intent(inout) :: ctx  !< reader state
-    character(len=flen), allocatable :: f(:)
-    integer :: n, ir
-    real(dp) :: e, nu
-    call need_material(ctx)
-    if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE'])
-    if (ctx%stat /= 0) return
-    ir = ctx%ir
-    if (deck_has_param(ctx%params, 'TYPE')) then
-      if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'ISOTROPIC') then
-        call ctx_fail(ctx, ir, 'only TYPE=ISOTROPIC is supported')
-        return
-      end if
-    end if
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'exactly one data line (E, nu) expected (no temperature dependence)')
-      return
-    end if
-    call ctx_split(ctx, ir + 1, f, n)
-    if (n < 2) then
-      call ctx_fail(ctx, ir + 1, 'data line needs E, nu')
-      return
-    end if
-    if (n > 2) then
-      if (len_trim(f(3)) > 0) then
-        call ctx_fail(ctx, ir + 1, 'temperature-dependent elasticity is not supported')
-        return
-      end if
-    end if
-    if (.not. ctx_get_real(ctx, ir + 1, f(1), e)) return
-    if (.not. ctx_get_real(ctx, ir + 1, f(2), nu)) return
-    if (e <= 0.0_dp .or. nu <= -1.0_dp .or. nu >= 0.5_dp) then
-      call ctx_fail(ctx, ir + 1, 'need E > 0 and -1 < nu < 0.5')
-      return
-    end if
-    ctx%model%materials(ctx%imat)%has_elastic = .true.
-    ctx%model%materials(ctx%imat)%young = e
-    ctx%model%materials(ctx%imat)%poisson = nu
-  end subroutine read_elastic
-
-  !> *DENSITY: one data line, the mass density (no temperature dependence). Used by GRAV loads; no effect
-  !> otherwise in a static step.
+  !> *DENSITY: the mass density, one data line (rho[, temperature]) or one per temperature. Used by GRAV loads only
+  !> (no effect otherwise in a static step); GRAV with a temperature-dependent density is refused (deck_finish).
   subroutine read_density(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=flen), allocatable :: f(:)
-    integer :: n, ir
+    integer :: n, ir, i
     real(dp) :: rho
     call need_material(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=8) ::])
     if (ctx%stat /= 0) return
     ir = ctx%ir
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'exactly one data line (density) expected (no temperature dependence)')
+    if (ctx%ir_next == ir + 1) then
+      call ctx_fail(ctx, ir, 'a data line with the density is required')
       return
     end if
-    call ctx_split(ctx, ir + 1, f, n)
-    if (n > 1) then
-      if (any(len_trim(f(2:n)) > 0)) then
-        call ctx_fail(ctx, ir + 1, 'temperature-dependent density is not supported')
+    do i = ir + 1, ctx%ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      if (n > 2) then
+        call ctx_fail(ctx, i, 'expected: density[, temperature] (field-variable dependence is not supported)')
         return
       end if
-    end if
-    if (.not. ctx_get_real(ctx, ir + 1, f(1), rho)) return
-    if (rho < 0.0_dp) then
-      call ctx_fail(ctx, ir + 1, 'the density must not be negative')
-      return
-    end if
+      if (.not. ctx_get_real(ctx, i, f(1), rho)) return
+      if (rho < 0.0_dp) then
+        call ctx_fail(ctx, i, 'the density must not be negative')
+        return
+      end if
+      if (i == ir + 1) ctx%model%materials(ctx%imat)%density = rho
+    end do
     ctx%model%materials(ctx%imat)%has_density = .true.
-    ctx%model%materials(ctx%imat)%density = rho
+    ctx%model%materials(ctx%imat)%density_varies = ctx%ir_next > ir + 2
   end subroutine read_density
-
-  !> *EXPANSION[, TYPE=ISO][, ZERO=]: one data line, the isotropic expansion coefficient (no temperature
-  !> dependence; with a constant coefficient the thermal strain alpha (T - T_initial) does not depend on ZERO).
-  subroutine read_expansion(ctx)
-    type(deck_context_t), intent(inout) :: ctx  !< reader state
-    character(len=flen), allocatable :: f(:)
-    integer :: n, ir
-    real(dp) :: alpha
-    call need_material(ctx)
-    if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'ZERO'])
-    if (ctx%stat /= 0) return
-    ir = ctx%ir
-    if (deck_has_param(ctx%params, 'TYPE')) then
-      if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'ISO') then
-        call ctx_fail(ctx, ir, 'only TYPE=ISO is supported')
-        return
-      end if
-    end if
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'exactly one data line (alpha) expected (no temperature dependence)')
-      return
-    end if
-    call ctx_split(ctx, ir + 1, f, n)
-    if (n > 1) then
-      if (any(len_trim(f(2:n)) > 0)) then
-        call ctx_fail(ctx, ir + 1, 'temperature-dependent expansion is not supported')
-        return
-      end if
-    end if
-    if (.not. ctx_get_real(ctx, ir + 1, f(1), alpha)) return
-    ctx%model%materials(ctx%imat)%has_expansion = .true.
-    ctx%model%materials(ctx%imat)%alpha = alpha
-  end subroutine read_expansion
 
   !> *USER MATERIAL, CONSTANTS=n: the n UMAT properties.
   subroutine read_user_material(ctx)

@@ -49,6 +49,16 @@ contains
       if (kw == '*EL PRINT') list = 'INTEGRATION POINTS|CENTROIDAL|NODES|AVERAGED AT NODES'
     case ('VARIABLE')
       if (any(kw == [character(len=16) :: '*OUTPUT', '*NODE OUTPUT', '*ELEMENT OUTPUT'])) list = 'PRESELECT|ALL'
+    case ('FIELD')
+      if (kw == '*CONTROLS') list = 'GLOBAL|DISPLACEMENT|HYDROSTATIC FLUID PRESSURE|ROTATION|TEMPERATURE|'// &
+        'PORE FLUID PRESSURE|ELECTRICAL POTENTIAL|CONCENTRATION|CONSTRAINT|ELECTRICAL FLUX'
+    case ('PARAMETERS')
+      if (kw == '*CONTROLS') list = 'FIELD|TIME INCREMENTATION|LINE SEARCH|CONSTRAINTS|FLOW|STABILIZATION|'// &
+        'VELOCITY'
+    case ('HOURGLASS')
+      if (kw == '*SECTION CONTROLS') list = 'ENHANCED|RELAX STIFFNESS|STIFFNESS|VISCOUS|COMBINED'
+    case ('ELEMENT DELETION')
+      if (kw == '*SECTION CONTROLS') list = 'YES|NO'
     case ('TYPE')
       list = type_values(kw)
     end select
@@ -92,9 +102,10 @@ contains
     character(len=*), intent(in) :: list  !< '|'-separated values
     character(len=:), allocatable :: full
     integer :: i, j, n
-    character(len=:), allocatable :: cand
+    character(len=:), allocatable :: cand, sc, sv
     full = v
     if (len(v) == 0 .or. len(list) == 0) return
+    sv = squeeze(v)
     n = 0
     i = 1
     do while (i <= len(list))
@@ -106,12 +117,14 @@ contains
         cand = list(i:i + j - 2)
         i = i + j
       end if
-      if (cand == v) then
-        full = v
+      ! blanks on a keyword line are ignored: compared without them (SMOOTHSTEP is SMOOTH STEP)
+      sc = squeeze(cand)
+      if (sc == sv) then
+        full = cand
         return
       end if
-      if (len(v) < len(cand)) then
-        if (cand(1:len(v)) == v) then
+      if (len(sv) < len(sc)) then
+        if (sc(1:len(sv)) == sv) then
           n = n + 1
           if (n == 1) full = cand
         end if
@@ -119,5 +132,16 @@ contains
     end do
     if (n /= 1) full = v
   end function expand_value
+
+  !> Text without blanks.
+  pure function squeeze(s) result(t)
+    character(len=*), intent(in) :: s  !< text
+    character(len=:), allocatable :: t
+    integer :: i
+    t = ''
+    do i = 1, len(s)
+      if (s(i:i) /= ' ') t = t//s(i:i)
+    end do
+  end function squeeze
 
 end module deck_values

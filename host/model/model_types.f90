@@ -86,8 +86,20 @@ module model_types
     integer :: plastic_statev = 0          !< STATEV of an equivalent plastic strain, '**LDFCZ STATEV' (0: none)
     logical :: has_expansion = .false.     !< *EXPANSION given
     real(dp) :: alpha = 0.0_dp             !< isotropic thermal expansion coefficient [1/K]
+    ! *ELASTIC and *EXPANSION as tables over temperature (docs/host.md); young, poisson and alpha above hold the
+    ! constant isotropic case, which these tables then also describe (one data point)
+    integer :: elastic_kind = 0            !< 0 none, 1 ISOTROPIC, 2 ORTHOTROPIC, 3 ENGINEERING CONSTANTS, 4 LAMINA,
+                                           !< 5 ANISOTROPIC (solid_elastic's law_*)
+    real(dp), allocatable :: elastic_temp(:)     !< (npoint) temperatures of the data points, ascending
+    real(dp), allocatable :: elastic_data(:, :)  !< (constants, npoint) as the Keywords Guide orders them
+    type(source_pos_t) :: elastic_pos      !< the *ELASTIC line
+    integer :: expansion_kind = 0          !< 0 none, 1 ISO, 2 ORTHO, 3 ANISO
+    real(dp), allocatable :: expansion_temp(:)    !< (npoint) temperatures, ascending
+    real(dp), allocatable :: expansion_data(:, :) !< (1, 3 or 6, npoint) coefficients
+    real(dp) :: expansion_zero = 0.0_dp    !< ZERO=: reference temperature of the coefficients
     logical :: has_density = .false.      !< *DENSITY given
     real(dp) :: density = 0.0_dp           !< mass density [t/mm^3 in N, mm, s units]
+    logical :: density_varies = .false.    !< *DENSITY given at several temperatures (refused with GRAV)
     type(source_pos_t) :: pos              !< where *MATERIAL was
     type(source_pos_t) :: user_pos         !< first data line of *USER MATERIAL (messages of a UMAT's XIT)
     character(len=name_len) :: builtin = '' !< '**LDFCZ BUILTIN, UMAT=name': the built-in UMAT it may run ('' none)

@@ -116,7 +116,8 @@ contains
   !> (-cpp, with ABQ_LNX86_64 and ABQ_FORTRAN defined), fixed form with 132 columns for .f/.for/.f77 (Abaqus'
   !> -extend-source), free form otherwise, position-independent, locals on the stack (Abaqus' -auto: the threaded
   !> element loop calls the routines concurrently), Cray pointers accepted (the SMA arrays of Abaqus' examples are
-  !> used through them; Intel Fortran accepts them by default). compiler is gfortran (default) or an LLVM flang;
+  !> used through them; Intel Fortran accepts them by default), argument mismatches between calls a warning (as
+  !> Intel Fortran takes them). compiler is gfortran (default) or an LLVM flang;
   !> fflags (--fflags, FFLAGS) come last, so they can override.
   function user_source_compile_command(compiler, source, object, include_dirs, fflags) result(cmd)
     character(len=*), intent(in) :: compiler      !< Fortran compiler (FC, --fc)
@@ -141,7 +142,10 @@ contains
         end if
       end select
     end if
-    extra = ' -O2 -frecursive -fcray-pointer'
+    ! -fallow-argument-mismatch: a call whose actual argument differs in rank or type from another call of the
+    ! same routine (a scalar where an array is expected) is a warning, not an error, as Intel Fortran (Abaqus'
+    ! compiler) takes it: published user routines rely on it
+    extra = ' -O2 -frecursive -fcray-pointer -fallow-argument-mismatch'
     if (flang) extra = ' -O2'
     cmd = compiler//' -c -fPIC -cpp -DABQ_LNX86_64 -DABQ_FORTRAN'//extra//form//include_dirs
     if (len_trim(fflags) > 0) cmd = cmd//' '//trim(fflags)
