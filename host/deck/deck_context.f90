@@ -120,7 +120,7 @@ contains
     integer, intent(in) :: irec                 !< record index
     character(len=*), intent(in) :: msg         !< what is wrong
     ctx%stat = 2
-    ctx%errmsg = deck_where(ctx%src, irec)//': '//trim(ctx%kw)//': '//msg
+    ctx%errmsg = deck_where(ctx%src, irec)//': '//shown(ctx%kw)//': '//msg
   end subroutine ctx_fail
 
   !> Error at record irec under the given keyword.
@@ -130,7 +130,7 @@ contains
     character(len=*), intent(in) :: keyword     !< keyword named in the message
     character(len=*), intent(in) :: msg         !< what is wrong
     ctx%stat = 2
-    ctx%errmsg = deck_where(ctx%src, irec)//': '//trim(keyword)//': '//msg
+    ctx%errmsg = deck_where(ctx%src, irec)//': '//shown(keyword)//': '//msg
   end subroutine ctx_fail_kw
 
   !> Error at a stored source position.
@@ -147,9 +147,19 @@ contains
     type(deck_context_t), intent(in) :: ctx  !< reader state
     integer, intent(in) :: irec              !< record index
     character(len=*), intent(in) :: msg      !< what is ignored
-    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//deck_where(ctx%src, irec)//': '//trim(ctx%kw)// &
+    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//deck_where(ctx%src, irec)//': '//shown(ctx%kw)// &
       ': '//msg
   end subroutine ctx_warn
+
+  !> A keyword as the deck writes it: a declaration '*LDFCZ X' was the comment line '**LDFCZ X'.
+  pure function shown(kw) result(t)
+    character(len=*), intent(in) :: kw  !< keyword
+    character(len=:), allocatable :: t
+    t = trim(kw)
+    if (len(t) >= 7) then
+      if (t(1:7) == '*LDFCZ ') t = '*'//t
+    end if
+  end function shown
 
   !> Warning at a stored source position.
   subroutine ctx_warn_pos(ctx, pos, msg)

@@ -4,7 +4,8 @@ module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where, deck_keyword_parse, deck_param_t
   use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
-    etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes
+    etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes, etype_cps4, etype_cps4i, &
+    etype_cps8, etype_cps8r, etype_cps4r
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   implicit none
@@ -227,6 +228,17 @@ contains
               call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
                 ' is a user element (use *UEL PROPERTY)')
               return
+            end if
+            ! *ELASTIC, TYPE=LAMINA has no through-thickness constants: plane-stress elements, small strain
+            if (model%materials(im)%elastic_kind == 4) then
+              if (all(model%elem_kind(ie) /= [etype_cps4, etype_cps4i, etype_cps8, etype_cps8r, etype_cps4r]) &
+                  .or. any(model%steps(1:model%nstep)%nlgeom)) then
+                call ctx_fail_pos(ctx, model%materials(im)%elastic_pos, 'TYPE=LAMINA (material '// &
+                  trim(model%materials(im)%given_name)//', element '// &
+                  model_label_text(model, model%elem_id(ie), .false.)//') needs plane-stress elements (CPS) '// &
+                  'without NLGEOM: its constants give no through-thickness stiffness (ENGINEERING CONSTANTS do)')
+                return
+              end if
             end if
             if (has_section(ie)) then
               call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &

@@ -37,6 +37,12 @@ contains
       associate (m => model%materials(k))
         n = n + 1
         if (.not. m%has_user) then
+          if (len_trim(m%builtin) > 0) then
+            stat = 2
+            errmsg = where(m%builtin_pos)//': **LDFCZ BUILTIN: material '//trim(m%given_name)//' has no *USER '// &
+              'MATERIAL for the UMAT it declares'
+            return
+          end if
           notes(n) = 'ldfcz: material '//trim(m%given_name)//' ('//where(m%pos)//'): the host''s *ELASTIC'
           cycle
         end if
@@ -70,7 +76,7 @@ contains
     character(len=:), allocatable, intent(inout) :: errmsg !< message
     procedure(uel_interface), pointer :: pu
     procedure(umat_interface), pointer :: pm
-    character(len=:), allocatable :: source, origin, owner, suggest
+    character(len=:), allocatable :: source, origin, owner, suggest, owner_kw
     if (from_user) then
       if (kind == 'UMAT') then
         origin = r%umat_origin
@@ -88,7 +94,9 @@ contains
       suggest = builtin_names(kind)
       if (index(suggest, ',') > 0 .or. suggest == 'none') suggest = 'NAME'
       stat = 2
-      errmsg = where(pos)//': '//trim(pos%keyword)//': '//what//' ('//keyword//') has no '//kind//': give your '// &
+      owner_kw = ' ('//keyword//')'
+      if (trim(pos%keyword) == keyword) owner_kw = ''
+      errmsg = where(pos)//': '//trim(pos%keyword)//': '//what//owner_kw//' has no '//kind//': give your '// &
         'own routine with --user '// &
         'FILE, or run ldfcz''s built-in one by declaring it '//owner//' with the comment line **LDFCZ BUILTIN, '// &
         kind//'='//suggest//' (built-in '//kind//'s here: '//builtin_names(kind)//'; docs/'//lower(kind)//'.md)'
