@@ -247,8 +247,15 @@ def run_ldfcz(exe, deck, out, timeout, user=None, cwd=None, fflags=None):
         return 'timeout', 'killed after %d s' % timeout, time.time() - t0
 
 
-def stamp(argv):
-    """Commit, command, date and machine of a report."""
+def exe_commit(exe):
+    """The commit of the source tree an ldfcz executable was built from (its build directory's parent), if known."""
+    src = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(exe))))
+    p = subprocess.run(['git', '-C', src, 'rev-parse', '--short', 'HEAD'], capture_output=True, text=True)
+    return p.stdout.strip() if p.returncode == 0 else 'unknown'
+
+
+def stamp(argv, exe):
+    """Commit, command, date and machine of a report, and the executable measured."""
     try:
         commit = subprocess.run(['git', '-C', ROOT, 'rev-parse', '--short', 'HEAD'], capture_output=True,
                                 text=True).stdout.strip()
@@ -266,7 +273,8 @@ def stamp(argv):
                 break
     except OSError:
         pass
-    return ['- commit: %s' % commit, '- command: `%s`' % ' '.join(['python3'] + argv),
+    return ['- commit: %s' % commit, '- ldfcz measured: %s (built from %s)' % (exe, exe_commit(exe)),
+            '- command: `%s`' % ' '.join(['python3'] + argv),
             '- date: %s' % datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC'),
             '- machine: %s, %s, %d cores' % (platform.node(), cpu, os.cpu_count() or 0)]
 
@@ -307,7 +315,7 @@ def cmd_calculix(a, argv):
         rows.append((job, rc, status, err, ntab, msg, wall))
         sys.stderr.write('%-28s %-8s %s\n' % (job, rc, status if rc == 0 else msg[:100]))
     n = len(decks)
-    lines = ['# CalculiX test decks (static, elastic solids, no contact) run by ldfcz', ''] + stamp(argv) + [
+    lines = ['# CalculiX test decks (static, elastic solids, no contact) run by ldfcz', ''] + stamp(argv, a.exe) + [
         '- corpus: %s (%d decks selected by the rules of tools/abaqus_corpus.py)' % (a.corpus, n),
         '- tolerance: max |u - u_ref| <= %g max |u_ref| per compared table' % a.tol, '',
         '**%d of %d run** (%.0f %%); %d print displacement tables comparable with the reference; **%d of %d match** '
@@ -317,7 +325,8 @@ def cmd_calculix(a, argv):
         '| count | blocker | decks |', '|---|---|---|']
     for key, jobs in sorted(blockers.items(), key=lambda kv: (-len(kv[1]), kv[0])):
         lines.append('| %d | %s | %s |' % (len(jobs), key.replace('|', '/'), ', '.join(jobs)))
-    lines += ['', '## Decks', '', '| deck | exit | result | max rel. error | tables | wall s |', '|---|---|---|---|---|---|']
+    lines += ['', '## Decks', '', '| deck | exit | result | max rel. error | tables | wall s |',
+              '|---|---|---|---|---|---|']
     for job, rc, status, err, ntab, msg, wall in rows:
         lines.append('| %s | %s | %s | %s | %d | %.1f |' % (job, rc, status if rc == 0 else msg.replace('|', '/')[:160],
                                                           '%.2e' % err if err is not None else '', ntab, wall))
@@ -379,7 +388,8 @@ def cmd_third_party(a, argv):
         rows.append((entry, rc, msg, wall))
         sys.stderr.write('%-12s %-8s %s\n' % (name, rc, msg[:120]))
     n = len(rows)
-    lines = ['# Decks published with third-party Abaqus user routines, run by ldfcz with --user', ''] + stamp(argv) + [
+    lines = ['# Decks published with third-party Abaqus user routines, run by ldfcz with --user', '']
+    lines += stamp(argv, a.exe) + [
         '- manifest: %s' % os.path.relpath(a.manifest, ROOT), '', manifest.get('about', ''), '',
         '**%d of %d run** (exit 0).' % (ran, n), '',
         '| deck | repository @ commit | deck file | routine files | exit | first error | wall s |',
