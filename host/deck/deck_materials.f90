@@ -22,9 +22,17 @@ contains
     character(len=:), allocatable :: v
     integer :: n, k, ir, ir_next
     real(dp) :: t
-    ! CONTROLS=: *SECTION CONTROLS of the one-point elements (read without effect, deck_section_controls)
-    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION', 'CONTROLS'])
+    ! CONTROLS=: *SECTION CONTROLS of the one-point elements (read without effect, deck_section_controls);
+    ! OFFSET= (CalculiX decks: the offset of plane elements expanded to solids) only as 0, which changes nothing
+    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION', 'CONTROLS', 'OFFSET'])
     if (ctx%stat /= 0) return
+    if (deck_has_param(ctx%params, 'OFFSET')) then
+      if (.not. ctx_get_real(ctx, ctx%ir, deck_param_value(ctx%params, 'OFFSET'), t)) return
+      if (t /= 0.0_dp) then
+        call ctx_fail(ctx, ctx%ir, 'OFFSET other than 0 is not supported')
+        return
+      end if
+    end if
     ir = ctx%ir
     ir_next = ctx%ir_next
     if (ctx%model%nsection == size(ctx%model%sections)) then

@@ -39,7 +39,7 @@ module deck_reader
     '*FIELD', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*STEP', '*STATIC', '*VISCO', '*CONTROLS', '*OUTPUT', &
     '*NODE OUTPUT', '*ELEMENT OUTPUT', '*NODE PRINT', '*EL PRINT', '*MONITOR', '*END STEP', '*RESTART', &
     '*SECTION CONTROLS', '*HOURGLASS STIFFNESS', '*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', &
-    '*EL FILE', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS']
+    '*EL FILE', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS', '*SECTION PRINT']
 
 contains
 
@@ -274,7 +274,7 @@ contains
     case ('*SECTION CONTROLS', '*HOURGLASS STIFFNESS')
       call read_section_controls(ctx)
     case ('*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
-          '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
+          '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS', '*SECTION PRINT')
       call ctx_warn(ctx, ctx%ir, 'output/cosmetic keyword not supported by ldfcz: ignored with its data lines')
     case default
       call ctx_fail(ctx, ctx%ir, 'unsupported keyword (ldfcz never ignores a keyword that may change the analysis)')
