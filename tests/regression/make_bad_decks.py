@@ -235,6 +235,9 @@ CASES = [
      "*OUTPUT, FIELD, TIME INTERVAL=0.3\n*END STEP", "*OUTPUT", "*OUTPUT, FIELD, TIME INTERVAL=0.3"),
     ("node_eight_fields", "a *NODE line with 8 fields", "3, 1., 1., 0.", "3, 1., 1., 0., 0., 0., 1., 5.", "*NODE",
      "3, 1., 1., 0., 0."),
+    ("solid_section_offset", "*SOLID SECTION, OFFSET=0.5", "*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL",
+     "*SOLID SECTION, ELSET=CUBE, MATERIAL=STEEL, OFFSET=0.5", "*SOLID SECTION", "*SOLID SECTION, ELSET=CUBE, "
+     "MATERIAL=STEEL, OFFSET"),
     ("generate_explicit_gap", "an explicit *NSET member without a node (only GENERATE ranges skip gaps)",
      "*NSET, NSET=TOP\n5, 6, 7, 8", "*NSET, NSET=TOP\n5, 6, 7, 8, 9", "*NSET", "5, 6, 7, 8, 9"),
 ]
