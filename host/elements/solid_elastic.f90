@@ -355,11 +355,14 @@ contains
         q = lamina_q(law%data(:, ip))
         ok = law%data(1, ip) > 0.0_dp .and. law%data(2, ip) > 0.0_dp .and. positive_definite(q) .and. &
           law%data(5, ip) > 0.0_dp .and. law%data(6, ip) > 0.0_dp
-      else if (law%kind == law_engineering .and. any(law%data([1, 2, 3, 7, 8, 9], ip) <= 0.0_dp)) then
-        ok = .false.
       else
-        call stiffness_3d(law%kind, law%data(:, ip), c6, ok)
-        ok = ok .and. positive_definite(c6)
+        ok = .true.
+        ! (the moduli of engineering constants are divided by: positive first)
+        if (law%kind == law_engineering) ok = all(law%data([1, 2, 3, 7, 8, 9], ip) > 0.0_dp)
+        if (ok) then
+          call stiffness_3d(law%kind, law%data(:, ip), c6, ok)
+          ok = ok .and. positive_definite(c6)
+        end if
       end if
       if (.not. ok) then
         stat = 1
