@@ -259,8 +259,9 @@ def stamp(argv, exe):
     try:
         commit = subprocess.run(['git', '-C', ROOT, 'rev-parse', '--short', 'HEAD'], capture_output=True,
                                 text=True).stdout.strip()
-        dirty = subprocess.run(['git', '-C', ROOT, 'status', '--porcelain', '--untracked-files=no'],
-                               capture_output=True, text=True).stdout.strip()
+        # (the reports themselves are written by these runs: not a change of what is measured)
+        dirty = subprocess.run(['git', '-C', ROOT, 'status', '--porcelain', '--untracked-files=no', '--', '.',
+                                ':!reports'], capture_output=True, text=True).stdout.strip()
         if dirty:
             commit += ' (with uncommitted changes)'
     except OSError:
