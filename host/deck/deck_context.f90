@@ -8,7 +8,7 @@ module deck_context
     deck_param_value, deck_has_param, deck_normalize
   use model_types, only: model_t, source_pos_t, model_find_nset, model_find_elset, model_find_surface
   use deck_lists, only: itoa, add_member
-  use deck_values, only: abaqus_values, expand_value
+  use deck_values, only: abaqus_values, expand_value, no_blanks
   implicit none
   private
   public :: deck_context_t, flen
@@ -323,17 +323,6 @@ contains
     if (.not. ok) call ctx_fail(ctx, irec, why)
     ctx_get_int = ok
   end function ctx_get_int
-
-  !> A name without its blanks (Abaqus ignores blanks on keyword lines: *SOLIDSECTION is *SOLID SECTION).
-  pure function no_blanks(s) result(t)
-    character(len=*), intent(in) :: s  !< name
-    character(len=:), allocatable :: t
-    integer :: i
-    t = ''
-    do i = 1, len_trim(s)
-      if (s(i:i) /= ' ') t = t//s(i:i)
-    end do
-  end function no_blanks
 
   ! ------------------------------------------------------------------ set members
 

@@ -7,7 +7,7 @@
 module deck_values
   implicit none
   private
-  public :: abaqus_values, expand_value
+  public :: abaqus_values, expand_value, no_blanks
 
 contains
 
@@ -105,7 +105,7 @@ contains
     character(len=:), allocatable :: cand, sc, sv
     full = v
     if (len(v) == 0 .or. len(list) == 0) return
-    sv = squeeze(v)
+    sv = no_blanks(v)
     n = 0
     i = 1
     do while (i <= len(list))
@@ -118,7 +118,7 @@ contains
         i = i + j
       end if
       ! blanks on a keyword line are ignored: compared without them (SMOOTHSTEP is SMOOTH STEP)
-      sc = squeeze(cand)
+      sc = no_blanks(cand)
       if (sc == sv) then
         full = cand
         return
@@ -133,8 +133,8 @@ contains
     if (n /= 1) full = v
   end function expand_value
 
-  !> Text without blanks.
-  pure function squeeze(s) result(t)
+  !> Text without its blanks (Abaqus ignores blanks on keyword lines: *SOLIDSECTION is *SOLID SECTION).
+  pure function no_blanks(s) result(t)
     character(len=*), intent(in) :: s  !< text
     character(len=:), allocatable :: t
     integer :: i
@@ -142,6 +142,6 @@ contains
     do i = 1, len(s)
       if (s(i:i) /= ' ') t = t//s(i:i)
     end do
-  end function squeeze
+  end function no_blanks
 
 end module deck_values
