@@ -28,7 +28,6 @@ contains
   !> temperature. The constants are checked (a positive definite stiffness) when the analysis is set up.
   subroutine read_elastic(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    character(len=:), allocatable :: v
     integer :: kind, k
     if (ctx%imat == 0) then
       call ctx_fail(ctx, ctx%ir, 'material option outside a *MATERIAL definition')
@@ -43,17 +42,8 @@ contains
         'supported')
       return
     end if
-    v = 'ISOTROPIC'
-    if (deck_has_param(ctx%params, 'TYPE')) v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
-    kind = 0
-    do k = 1, size(elastic_types)
-      if (v == elastic_types(k)) kind = k
-    end do
-    if (kind == 0) then
-      call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (ISOTROPIC, ORTHOTROPIC, ENGINEERING CONSTANTS, '// &
-        'LAMINA, ANISOTROPIC)')
-      return
-    end if
+    kind = type_code(ctx, elastic_types, 'ISOTROPIC, ORTHOTROPIC, ENGINEERING CONSTANTS, LAMINA, ANISOTROPIC')
+    if (kind == 0) return
     associate (m => ctx%model%materials(ctx%imat))
       call read_table(ctx, elastic_ncons(kind), m%elastic_temp, m%elastic_data)
       if (ctx%stat /= 0) return
@@ -79,8 +69,7 @@ contains
   !> coefficients are measured from, 0 by default; without effect when they do not depend on temperature).
   subroutine read_expansion(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    character(len=:), allocatable :: v
-    integer :: kind, k
+    integer :: kind
     real(dp) :: zero
     if (ctx%imat == 0) then
       call ctx_fail(ctx, ctx%ir, 'material option outside a *MATERIAL definition')
@@ -94,16 +83,8 @@ contains
       call ctx_fail(ctx, ctx%ir, 'USER (subroutine UEXPAN) and PORE FLUID are not supported')
       return
     end if
-    v = 'ISO'
-    if (deck_has_param(ctx%params, 'TYPE')) v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
-    kind = 0
-    do k = 1, size(expansion_types)
-      if (v == expansion_types(k)) kind = k
-    end do
-    if (kind == 0) then
-      call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (ISO, ORTHO, ANISO)')
-      return
-    end if
+    kind = type_code(ctx, expansion_types, 'ISO, ORTHO, ANISO')
+    if (kind == 0) return
     zero = 0.0_dp
     if (deck_has_param(ctx%params, 'ZERO')) then
       if (.not. ctx_get_real(ctx, ctx%ir, deck_param_value(ctx%params, 'ZERO'), zero)) return
@@ -117,6 +98,23 @@ contains
       if (kind == 1) m%alpha = m%expansion_data(1, 1)
     end associate
   end subroutine read_expansion
+
+  !> TYPE= of the block as its index in types (the first when TYPE= is absent: the keyword's default); 0 and an
+  !> error naming the supported ones when it is not one of them.
+  integer function type_code(ctx, types, supported) result(kind)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: types(:)    !< supported values, the default first
+    character(len=*), intent(in) :: supported   !< their list for the message
+    character(len=:), allocatable :: v
+    integer :: k
+    v = trim(types(1))
+    if (deck_has_param(ctx%params, 'TYPE')) v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
+    kind = 0
+    do k = 1, size(types)
+      if (v == types(k)) kind = k
+    end do
+    if (kind == 0) call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported ('//supported//')')
+  end function type_code
 
   !> DEPENDENCIES=n > 0 (field-variable dependence) is refused.
   subroutine no_dependencies(ctx)

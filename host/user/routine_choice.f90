@@ -99,7 +99,8 @@ contains
       errmsg = where(pos)//': '//trim(pos%keyword)//': '//what//owner_kw//' has no '//kind//': give your '// &
         'own routine with --user '// &
         'FILE, or run ldfcz''s built-in one by declaring it '//owner//' with the comment line **LDFCZ BUILTIN, '// &
-        kind//'='//suggest//' (built-in '//kind//'s here: '//builtin_names(kind)//'; docs/'//lower(kind)//'.md)'
+        kind//'='//suggest//' (built-in '//kind//'s here: '//builtin_names(kind)//'; docs/'// &
+        trim(merge('umat.md', 'uel.md ', kind == 'UMAT'))//')'
       return
     end if
     call builtin_routine(kind, trim(builtin), pu, pm, source)
@@ -150,16 +151,5 @@ contains
       w = '?'
     end if
   end function where
-
-  !> Lower-case copy (ASCII letters).
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s  !< text
-    character(len=len(s)) :: t
-    integer :: i
-    t = s
-    do i = 1, len(s)
-      if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
-    end do
-  end function lower
 
 end module routine_choice
