@@ -8,7 +8,8 @@ program ldfcz
     ldfcz_install_include_rel
   use model_types, only: model_t
   use deck_reader, only: read_deck
-  use user_routines, only: user_routines_connect_units, user_routines_t, user_routines_builtin, user_routines_load
+  use user_routines, only: user_routines_connect_units, user_routines_t, user_routines_load
+  use routine_choice, only: user_routines_choose
   use output_files, only: output_t, output_open, output_close, output_log
   use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code, &
     newton_krylov, newton_auto
@@ -30,6 +31,7 @@ program ldfcz
   logical :: out_open    !< JOB.log is open (an error is logged there too)
   type(interface_check_t) :: orient
   character(len=:), allocatable :: orient_text
+  character(len=400), allocatable :: routine_notes(:)   !< which routine each material and user element type runs
   type(model_t) :: model
   type(user_routines_t) :: routines
   type(output_t) :: out
@@ -219,7 +221,6 @@ program ldfcz
   if (stat /= 0) call die(errmsg)
   call checkpoint()
 
-  call user_routines_builtin(routines)
   ! an MPI run writes its log, CSV, status and frames once, from rank 0
   call output_open(out, job, outdir, quiet, stat, errmsg, append=len(restart_from) > 0, &
     silent=.not. parallel_writer(par))
@@ -239,6 +240,12 @@ program ldfcz
       merge(-1, out%log, quiet .or. .not. parallel_writer(par)), fc, fflags)
     if (stat /= 0) call die(errmsg)
   end if
+  ! which routine each *USER MATERIAL and *USER ELEMENT type runs: the user's, a declared built-in one, or a stop
+  call user_routines_choose(routines, model, stat, errmsg, routine_notes)
+  if (stat /= 0) call die(errmsg)
+  do k = 1, size(routine_notes)
+    call output_log(out, trim(routine_notes(k)))
+  end do
   call checkpoint()   ! the output files opened, the user library compiled and loaded on every process
   ! interface elements meshed the wrong way round read opening as penetration: refuse them (or reorder them)
   call check_interface_orientation(model, reorient, orient)

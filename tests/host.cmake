@@ -186,7 +186,8 @@ set(LDFCZ_RESTART_DECKS "${CMAKE_CURRENT_SOURCE_DIR}/restart")
 # under AMPLITUDE=STEP), follower *DSLOAD pressure and *DLOAD GRAV under NLGEOM, a prescribed deflection released by
 # *BOUNDARY, OP=NEW (its reaction decays); stopped in step 3, while the released loads decay; with the refusals
 ldfcz_add_restart_test(restart_loads_steps ${LDFCZ_RESTART_DECKS}/loads_steps.inp --modes stop,term --stop 10
-  --freq 1 --rel 0 --dat --point mid --other-deck ${LDFCZ_RESTART_DECKS}/fields_velocity.inp)
+  --freq 1 --rel 0 --dat --point mid --other-deck ${LDFCZ_RESTART_DECKS}/fields_velocity.inp
+  --other-user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_fields.f)
 # the same deck stopped at the end of step 1 (restart data every 3rd increment and at the end of the step): the
 # continuation begins step 2 from the loads, boundaries and increment size the file holds
 ldfcz_add_restart_test(restart_loads_step_end ${LDFCZ_RESTART_DECKS}/loads_steps.inp --stop 4 --freq 3 --rel 0 --dat
@@ -351,6 +352,33 @@ foreach(case small nlgeom rigid instance)
     --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/orientation_${case} --case ${case}
     --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_ortho.f90)
   set_tests_properties(deck_orientation_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+  # the same cases with the host's *ELASTIC, TYPE=ENGINEERING CONSTANTS of the UMAT's constants
+  add_test(NAME deck_orientation_elastic_${case} COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_orientation.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/orientation_elastic_${case} --case ${case} --material elastic)
+  set_tests_properties(deck_orientation_elastic_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+# *ELASTIC (ORTHOTROPIC, ENGINEERING CONSTANTS, ANISOTROPIC, LAMINA, temperature-dependent) and *EXPANSION (ISO,
+# ORTHO over temperature) against closed forms and twin decks (tests/regression/check_materials.py)
+foreach(case compliance twins temperature lamina)
+  add_test(NAME deck_elastic_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_materials.py
+    --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/elastic_${case} --case ${case})
+  set_tests_properties(deck_elastic_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+# Abaqus' lenient input forms against their explicit twins, bit for bit (tests/regression/check_leniency.py)
+add_test(NAME deck_leniency COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_leniency.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/leniency)
+set_tests_properties(deck_leniency PROPERTIES LABELS "deck" TIMEOUT 300)
+# which routine a *USER MATERIAL / *USER ELEMENT runs: the stop without --user or declaration, the declared built-in
+# one, the user's over a declaration (tests/regression/check_routines.py)
+foreach(case stop builtin user)
+  add_test(NAME deck_routines_${case} COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_routines.py
+    --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/routines_${case} --case ${case}
+    --umat-deck ${PROJECT_SOURCE_DIR}/decks/single/c3d8_umat_uniaxial.inp
+    --uel-deck ${PROJECT_SOURCE_DIR}/decks/single/cohesive_block.inp
+    --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90
+    --user-deck ${PROJECT_SOURCE_DIR}/decks/single/quadratic_rotation.inp)
+  set_tests_properties(deck_routines_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
 # *TRANSFORM: boundary conditions, concentrated loads, *EQUATION terms and printed nodal output in local node systems
 # (a skewed roller, a cylinder with a prescribed radial displacement against Lame, a local CLOAD against the rotated

@@ -14,6 +14,7 @@ module analysis_core
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
     sparse_set_factor_threads, sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
   use user_routines, only: user_routines_t
+  use material_law, only: material_elastic_law
   use distributed_loads, only: dload_element, dload_uel_arrays, dload_has
   use element_state, only: elem_state_t, element_state_free, element_state_copy
   use analysis_state, only: analysis_state_t, analysis_state_init
@@ -237,6 +238,9 @@ contains
         ! CMNAME: Abaqus reads names case-insensitively and passes them in upper case
         sm%cmname = upper_case(mt%given_name)
         sm%alpha = mt%alpha
+        ! *ELASTIC/*EXPANSION other than constant isotropic (material_law.f90)
+        call material_elastic_law(mt, sm%law, stat, errmsg)
+        if (stat /= 0) return
         if (mt%has_elastic) then
           sm%kind = SOLID_MAT_ELASTIC
           sm%e = mt%young

@@ -7,7 +7,7 @@
 !> arrays); a cell whose element does not provide it holds 0.
 module field_frame
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, etype_user
+  use model_types, only: model_t, step_t, etype_user, model_sdv_name
   use element_catalog, only: element_vtk_cell, element_vtk_points, element_tensor6
   use output_registry, only: output_variables, output_max_statev, output_component_name, OV_COORD, OV_U, OV_RF, OV_ELEMENT, &
     OV_S, OV_SP, OV_MISES, OV_LE, OV_E, OV_SDV, OV_COHESIVE, OV_OPENING, OV_TRACTION, OV_DELTA_MAX, LOC_NODE, &
@@ -168,7 +168,8 @@ contains
     integer :: c, ie, nc, i
     real(dp) :: s(6), e(6), p(3)
     a%name = output_variables(v)%vtu
-    if (v == OV_SDV) a%name = output_component_name(OV_SDV, sdv)
+    ! named state variables (*DEPVAR keys, Abaqus/CAE) give their arrays Abaqus' names SDV_key
+    if (v == OV_SDV) a%name = model_sdv_name(model, sdv)
     nc = output_variables(v)%vtu_ncomp
     a%ncomp = nc
     a%int32 = v == OV_ELEMENT .or. v == OV_COHESIVE

@@ -133,6 +133,12 @@ contains
         model%materials(k)%alpha])
       call hash_ints(hs, [model%materials(k)%nstatv, merge(1, 0, model%materials(k)%unsymm)])
       if (allocated(model%materials(k)%props)) call hash_reals(hs, model%materials(k)%props)
+      ! the general *ELASTIC/*EXPANSION tables (the constant isotropic ones are young, poisson above)
+      if (allocated(model%materials(k)%elastic_data)) call hash_reals(hs, [real(model%materials(k)%elastic_kind, dp), &
+        model%materials(k)%elastic_temp, pack(model%materials(k)%elastic_data, .true.)])
+      if (allocated(model%materials(k)%expansion_data)) call hash_reals(hs, [real(model%materials(k)%expansion_kind, dp), &
+        model%materials(k)%expansion_zero, model%materials(k)%expansion_temp, &
+        pack(model%materials(k)%expansion_data, .true.)])
     end do
     do k = 1, model%nutype
       associate (ut => model%utypes(k))

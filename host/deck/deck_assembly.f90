@@ -7,7 +7,7 @@ module deck_assembly
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_keyword_parse, deck_normalize, deck_param_t
   use model_types, only: instance_t
-  use deck_context, only: deck_context_t, flen, part_def_t, ctx_fail, ctx_fail_kw, ctx_allow_params, ctx_required, &
+  use deck_context, only: deck_context_t, flen, part_def_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_required, &
     ctx_split, ctx_get_real, scope_model, scope_part, scope_assembly
   implicit none
   private
@@ -21,7 +21,8 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', '*SOLID SECTION', '*UEL PROPERTY', '*NGEN', &
-          '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*ORIENTATION', '*TRANSFORM', '*SYSTEM')
+          '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*ORIENTATION', '*TRANSFORM', '*SYSTEM', '*USER ELEMENT', &
+          '*LDFCZ SVARS', '*LDFCZ BUILTIN')
       allowed_in_part = .true.
     case default
       allowed_in_part = .false.
@@ -171,6 +172,12 @@ contains
   !> *END ASSEMBLY.
   subroutine end_assembly(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
+    if (ctx%scope /= scope_assembly .and. .not. ctx%has_assembly .and. ctx%scope == scope_model) then
+      ! a lone *END ASSEMBLY in a deck without *ASSEMBLY closes nothing (decks that ran in Abaqus have it; Abaqus'
+      ! manuals say nothing of it): without effect on the model, so accepted with a warning
+      call ctx_warn(ctx, ctx%ir, 'no *ASSEMBLY before it in this deck: ignored (it closes nothing)')
+      return
+    end if
     if (ctx%scope /= scope_assembly) then
       call ctx_fail(ctx, ctx%ir, '*END ASSEMBLY without *ASSEMBLY')
       return
@@ -183,11 +190,15 @@ contains
   end subroutine end_assembly
 
   !> *INSTANCE, NAME=, PART=: registers the instance (label offsets above every label read so far), reads its
-  !> placement and enters the part scope. ip: the part to read; ir_end: the *END INSTANCE record.
-  subroutine begin_instance(ctx, ip, ir_end)
+  !> placement and enters the part scope. ip: the part; ir_end: the *END INSTANCE record; ir1..ir2: the records
+  !> to read for the instance, the part's blocks, or the instance's own blocks when its part is empty (an
+  !> independent instance as Abaqus/CAE writes it: *Part ... *End Part without data, the mesh between *Instance and
+  !> *End Instance; Abaqus Analysis User's Guide, "Assembly definition").
+  subroutine begin_instance(ctx, ip, ir_end, ir1, ir2)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     integer, intent(out) :: ip                  !< part index
     integer, intent(out) :: ir_end              !< record of *END INSTANCE
+    integer, intent(out) :: ir1, ir2            !< records of the blocks to read for the instance
     character(len=:), allocatable :: name, part, kw
     type(deck_param_t), allocatable :: params(:)
     type(instance_t), allocatable :: tmp(:)
@@ -217,20 +228,38 @@ contains
         return
       end if
     end do
+    ir1 = ctx%parts(ip)%ir1
+    ir2 = ctx%parts(ip)%ir2 - 1
     do i = ctx%ir_next, ctx%src%nrec
       if (.not. ctx%src%rec(i)%keyword) cycle
       call deck_keyword_parse(ctx%src%rec(i)%text, kw, params)
-      if (kw /= '*END INSTANCE') then
+      if (kw == '*END INSTANCE') then
+        ir_end = i
+        exit
+      end if
+      if (ctx%parts(ip)%ir2 > ctx%parts(ip)%ir1) then
         call ctx_fail(ctx, ctx%ir, 'instance '//name//': *END INSTANCE expected before '//kw// &
-          ' (ldfcz reads the mesh of an instance from its *PART only)')
+          ' (the mesh of an instance comes from its *PART; only an instance of an empty part holds its own)')
         return
       end if
-      ir_end = i
-      exit
+      if (.not. allowed_in_part(kw)) then
+        call ctx_fail_kw(ctx, i, kw, 'not supported inside *INSTANCE '//name//' (the keywords of a *PART)')
+        return
+      end if
+      ! an independent instance: its own blocks from the first keyword after the placement lines
+      if (ir1 == ctx%parts(ip)%ir1) ir1 = i
     end do
     if (ir_end == 0) then
       call ctx_fail(ctx, ctx%ir, 'instance '//name//' has no *END INSTANCE')
       return
+    end if
+    if (ir1 /= ctx%parts(ip)%ir1) then
+      ir2 = ir_end - 1
+      if (ctx%parts(ip)%ninst > 0) then
+        call ctx_fail(ctx, ctx%ir, 'part '//part//' has an independent instance (its mesh in the *INSTANCE) '// &
+          'and another instance')
+        return
+      end if
     end if
     call read_placement(ctx)
     if (ctx%stat /= 0) return

@@ -22,14 +22,30 @@ contains
     integer :: n, k, ia, ir, ir_next
     real(dp) :: r
     character(len=:), allocatable :: v
-    logical :: smooth, total_time
-    call ctx_allow_params(ctx, [character(len=12) :: 'NAME', 'DEFINITION', 'TIME', 'VALUE'])
+    logical :: smooth, total_time, equal
+    call ctx_allow_params(ctx, [character(len=16) :: 'NAME', 'DEFINITION', 'TIME', 'VALUE', 'FIXED INTERVAL', &
+      'BEGIN', 'SMOOTH'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
     v = deck_normalize(deck_param_value(ctx%params, 'DEFINITION'))
-    if (v /= '' .and. v /= 'TABULAR' .and. v /= 'SMOOTH STEP') then
-      call ctx_fail(ctx, ir, 'DEFINITION='//v//' is not supported (TABULAR, SMOOTH STEP)')
+    if (v /= '' .and. v /= 'TABULAR' .and. v /= 'SMOOTH STEP' .and. v /= 'EQUALLY SPACED') then
+      call ctx_fail(ctx, ir, 'DEFINITION='//v//' is not supported (TABULAR, EQUALLY SPACED, SMOOTH STEP)')
+      return
+    end if
+    ! SMOOTH= (TABULAR, EQUALLY SPACED) smooths the time derivatives of the amplitude only (Abaqus Keywords Guide,
+    ! *AMPLITUDE), which a static step does not use
+    if (v == 'SMOOTH STEP' .and. deck_has_param(ctx%params, 'SMOOTH')) then
+      call ctx_fail(ctx, ir, 'SMOOTH= belongs to TABULAR and EQUALLY SPACED')
+      return
+    end if
+    equal = v == 'EQUALLY SPACED'
+    if (equal .neqv. deck_has_param(ctx%params, 'FIXED INTERVAL')) then
+      call ctx_fail(ctx, ir, 'FIXED INTERVAL= is required with DEFINITION=EQUALLY SPACED and only there')
+      return
+    end if
+    if (deck_has_param(ctx%params, 'BEGIN') .and. .not. equal) then
+      call ctx_fail(ctx, ir, 'BEGIN= belongs to DEFINITION=EQUALLY SPACED')
       return
     end if
     smooth = v == 'SMOOTH STEP'
@@ -56,6 +72,11 @@ contains
       return
     end if
     call ctx_block_fields(ctx, ir + 1, ir_next - 1, f, n)
+    if (equal) then
+      call equally_spaced(ctx, ia, f, n)
+      if (ctx%stat == 0) ctx%model%namp = ia
+      return
+    end if
     if (n < 2 .or. mod(n, 2) /= 0) then
       call ctx_fail(ctx, ir, 'data must be pairs of time, amplitude')
       return
@@ -75,6 +96,35 @@ contains
     end do
     ctx%model%namp = ia
   end subroutine read_amplitude
+
+  !> DEFINITION=EQUALLY SPACED: the values a_1, a_2, ... at BEGIN (default 0) + (i - 1) FIXED INTERVAL, linear
+  !> between them as a tabular amplitude (Abaqus Keywords Guide, *AMPLITUDE).
+  subroutine equally_spaced(ctx, ia, f, n)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: ia                   !< the amplitude being defined
+    character(len=*), intent(in) :: f(:)        !< its data fields
+    integer, intent(in) :: n                    !< number of fields
+    real(dp) :: dt, t0
+    integer :: k
+    t0 = 0.0_dp
+    if (.not. ctx_get_real(ctx, ctx%ir, deck_param_value(ctx%params, 'FIXED INTERVAL'), dt)) return
+    if (deck_has_param(ctx%params, 'BEGIN')) then
+      if (.not. ctx_get_real(ctx, ctx%ir, deck_param_value(ctx%params, 'BEGIN'), t0)) return
+    end if
+    if (.not. (dt > 0.0_dp)) then
+      call ctx_fail(ctx, ctx%ir, 'FIXED INTERVAL must be positive')
+      return
+    end if
+    if (n < 1) then
+      call ctx_fail(ctx, ctx%ir, 'the amplitude values are required')
+      return
+    end if
+    allocate (ctx%model%amplitudes(ia)%t(n), ctx%model%amplitudes(ia)%a(n))
+    do k = 1, n
+      ctx%model%amplitudes(ia)%t(k) = t0 + (k - 1) * dt
+      if (.not. ctx_get_real(ctx, ctx%ir + 1, f(k), ctx%model%amplitudes(ia)%a(k))) return
+    end do
+  end subroutine equally_spaced
 
   !> *BOUNDARY: node or node set, first dof[, last dof[, value]] or a type (XSYMM, ...). Node ids stay negative
   !> user ids until finish_model.

@@ -7,14 +7,15 @@ module deck_context
   use deck_lines, only: deck_source_t, deck_param_t, deck_split_fields, deck_parse_real, deck_parse_int, deck_where, &
     deck_param_value, deck_has_param, deck_normalize
   use model_types, only: model_t, source_pos_t, model_find_nset, model_find_elset, model_find_surface
-  use deck_lists, only: itoa
+  use deck_lists, only: itoa, add_member
+  use deck_values, only: abaqus_values, expand_value, no_blanks
   implicit none
   private
   public :: deck_context_t, flen
   public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos
   public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
   public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_continued
-  public :: part_def_t, scope_model, scope_part, scope_assembly
+  public :: part_def_t, scope_model, scope_part, scope_assembly, member_origin_t, ctx_set_member, no_blanks
   public :: ctx_enter_instance, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_find_surface, ctx_is_label, &
     ctx_get_label
 
@@ -30,6 +31,13 @@ module deck_context
     integer :: ir2 = 0              !< the *END PART record
     integer :: ninst = 0            !< instances of it
   end type part_def_t
+
+  !> Where the members of one set come from: the record of the data line that added each (negative: a GENERATE
+  !> range of that line), so that a member naming no node or element is reported at its own line.
+  type :: member_origin_t
+    integer, allocatable :: rec(:)   !< record of member k (same order as the set's members while reading)
+    integer :: n = 0                 !< entries in use
+  end type member_origin_t
 
   !> Reader state. The keyword block being read is records ir (the keyword line) .. ir_next-1.
   type :: deck_context_t
@@ -47,6 +55,8 @@ module deck_context
     logical :: in_step = .false.                      !< between *STEP and *END STEP
     integer :: restart_freq = 0                       !< *RESTART, WRITE, FREQUENCY in effect (0: none)
     integer :: output_kind = 0                        !< the step's last *OUTPUT: 1 FIELD, 2 HISTORY, 0 none
+    integer :: decl_material = 0                      !< material whose definition the last blocks belong to
+    integer :: decl_utype = 0                         !< user element type the last blocks belong to
     integer, allocatable :: node_rec(:)               !< record of each node (duplicate-id messages)
     integer, allocatable :: elem_rec(:)               !< record of each element
     integer, allocatable :: conn_raw(:)               !< connectivity as user node ids until finish
@@ -67,6 +77,8 @@ module deck_context
     integer :: top_elem = 0                           !< largest model element label so far
     type(part_def_t), allocatable :: parts(:)         !< *PART definitions
     integer :: npart = 0
+    type(member_origin_t), allocatable :: nset_src(:) !< origin of the members of each node set
+    type(member_origin_t), allocatable :: elset_src(:) !< origin of the members of each element set
   end type deck_context_t
 
 contains
@@ -108,7 +120,7 @@ contains
     integer, intent(in) :: irec                 !< record index
     character(len=*), intent(in) :: msg         !< what is wrong
     ctx%stat = 2
-    ctx%errmsg = deck_where(ctx%src, irec)//': '//trim(ctx%kw)//': '//msg
+    ctx%errmsg = deck_where(ctx%src, irec)//': '//shown(ctx%kw)//': '//msg
   end subroutine ctx_fail
 
   !> Error at record irec under the given keyword.
@@ -118,7 +130,7 @@ contains
     character(len=*), intent(in) :: keyword     !< keyword named in the message
     character(len=*), intent(in) :: msg         !< what is wrong
     ctx%stat = 2
-    ctx%errmsg = deck_where(ctx%src, irec)//': '//trim(keyword)//': '//msg
+    ctx%errmsg = deck_where(ctx%src, irec)//': '//shown(keyword)//': '//msg
   end subroutine ctx_fail_kw
 
   !> Error at a stored source position.
@@ -135,9 +147,19 @@ contains
     type(deck_context_t), intent(in) :: ctx  !< reader state
     integer, intent(in) :: irec              !< record index
     character(len=*), intent(in) :: msg      !< what is ignored
-    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//deck_where(ctx%src, irec)//': '//trim(ctx%kw)// &
+    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//deck_where(ctx%src, irec)//': '//shown(ctx%kw)// &
       ': '//msg
   end subroutine ctx_warn
+
+  !> A keyword as the deck writes it: a declaration '*LDFCZ X' was the comment line '**LDFCZ X'.
+  pure function shown(kw) result(t)
+    character(len=*), intent(in) :: kw  !< keyword
+    character(len=:), allocatable :: t
+    t = trim(kw)
+    if (len(t) >= 7) then
+      if (t(1:7) == '*LDFCZ ') t = '*'//t
+    end if
+  end function shown
 
   !> Warning at a stored source position.
   subroutine ctx_warn_pos(ctx, pos, msg)
@@ -151,19 +173,29 @@ contains
   ! ------------------------------------------------------------------ parameters
 
   !> Error when a parameter outside the list is present. A parameter name that begins exactly one of the allowed
-  !> names is taken for it (Abaqus reads parameters abbreviated as far as they stay unique: FREQ for FREQUENCY).
+  !> names is taken for it (Abaqus reads parameters abbreviated as far as they stay unique: FREQ for FREQUENCY),
+  !> and so is an enumerated parameter's value that begins exactly one of its Abaqus values (deck_values).
   subroutine ctx_allow_params(ctx, names)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=*), intent(in) :: names(:)    !< allowed parameter names
     integer :: i, j, nmatch, jmatch, n
+    character(len=:), allocatable :: list, given, cand
     do i = 1, size(ctx%params)
       if (all(ctx%params(i)%name /= names)) then
-        n = len(ctx%params(i)%name)
+        ! blanks on a keyword line are ignored (HOUR GLASS is HOURGLASS), then an abbreviation
+        given = no_blanks(ctx%params(i)%name)
+        n = len(given)
         nmatch = 0
         jmatch = 0
         do j = 1, size(names)
-          if (n == 0 .or. n > len_trim(names(j))) cycle
-          if (names(j)(1:n) == ctx%params(i)%name) then
+          cand = no_blanks(names(j))
+          if (cand == given) then
+            nmatch = 1
+            jmatch = j
+            exit
+          end if
+          if (n == 0 .or. n > len(cand)) cycle
+          if (cand(1:n) == given) then
             nmatch = nmatch + 1
             jmatch = j
           end if
@@ -174,6 +206,9 @@ contains
         call ctx_fail(ctx, ctx%ir, 'unsupported parameter '//ctx%params(i)%name)
         return
       end if
+      ! an abbreviated value of an enumerated parameter: the one Abaqus value it begins (AMPLITUDE=RAM is RAMP)
+      list = abaqus_values(ctx%kw, ctx%params(i)%name)
+      if (len(list) > 0) ctx%params(i)%value = expand_value(deck_normalize(ctx%params(i)%value), list)
     end do
   end subroutine ctx_allow_params
 
@@ -288,6 +323,40 @@ contains
     if (.not. ok) call ctx_fail(ctx, irec, why)
     ctx_get_int = ok
   end function ctx_get_int
+
+  ! ------------------------------------------------------------------ set members
+
+  !> Append member v (a raw label as -label, or a resolved index) to node set (is_node) or element set iset,
+  !> recording the record irec it comes from (negative: generated by a GENERATE range of record -irec).
+  subroutine ctx_set_member(ctx, is_node, iset, v, irec)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical, intent(in) :: is_node              !< node set (else element set)
+    integer, intent(in) :: iset                 !< set index
+    integer, intent(in) :: v                    !< member
+    integer, intent(in) :: irec                 !< its record (negative: generated)
+    if (is_node) then
+      call add_member(ctx%model%nsets(iset)%nodes, ctx%model%nsets(iset)%n, v)
+      call add_origin(ctx%nset_src, iset, irec)
+    else
+      call add_member(ctx%model%elsets(iset)%elems, ctx%model%elsets(iset)%n, v)
+      call add_origin(ctx%elset_src, iset, irec)
+    end if
+  end subroutine ctx_set_member
+
+  !> Append irec to the origins of set iset (the list of sets grown as needed).
+  pure subroutine add_origin(src, iset, irec)
+    type(member_origin_t), allocatable, intent(inout) :: src(:) !< origins of every set
+    integer, intent(in) :: iset                                 !< set index
+    integer, intent(in) :: irec                                 !< record
+    type(member_origin_t), allocatable :: tmp(:)
+    if (.not. allocated(src)) allocate (src(8))
+    if (iset > size(src)) then
+      allocate (tmp(max(2 * size(src), iset)))
+      tmp(1:size(src)) = src
+      call move_alloc(tmp, src)
+    end if
+    call add_member(src(iset)%rec, src(iset)%n, irec)
+  end subroutine add_origin
 
   ! ------------------------------------------------------------------ scoped names and labels
 

@@ -9,13 +9,17 @@
 !>   **LDFCZ STATEV, MATERIAL=name, PLASTIC STRAIN=k
 !>     STATEV(k) of the material's UMAT is an equivalent plastic strain: the summary reports its largest increment
 !>     and --max-plastic-increment bounds it.
+!>   **LDFCZ BUILTIN, UMAT=name [, MATERIAL=material]   or   **LDFCZ BUILTIN, UEL=name [, TYPE=Un]
+!>     without --user, the material's *USER MATERIAL (the type's user elements) runs ldfcz's built-in routine of
+!>     that name (host/user/builtin_routines.F90 lists them); without MATERIAL= (TYPE=) the declaration belongs to
+!>     the *MATERIAL (*USER ELEMENT) whose definition it follows. A --user library's own routine always wins.
 module deck_declarations
   use deck_lines, only: deck_has_param, deck_normalize, deck_param_value
   use model_types, only: model_find_user_type, model_find_material
-  use deck_context, only: deck_context_t, ctx_fail, ctx_allow_params, ctx_required, ctx_param_int
+  use deck_context, only: deck_context_t, ctx_fail, ctx_allow_params, ctx_required, ctx_param_int, ctx_pos
   implicit none
   private
-  public :: read_ldfcz_declaration
+  public :: read_ldfcz_declaration, track_declaration_owner
 
 contains
 
@@ -76,9 +80,98 @@ contains
         return
       end if
       ctx%model%materials(im)%plastic_statev = k
+    case ('*LDFCZ BUILTIN')
+      call read_builtin(ctx)
     case default
-      call ctx_fail(ctx, ctx%ir, 'unknown **LDFCZ declaration (SVARS or STATEV)')
+      call ctx_fail(ctx, ctx%ir, 'unknown **LDFCZ declaration (SVARS, STATEV or BUILTIN)')
     end select
   end subroutine read_ldfcz_declaration
+
+  !> '**LDFCZ BUILTIN, UMAT=name [, MATERIAL=]' or '**LDFCZ BUILTIN, UEL=name [, TYPE=]': the built-in routine a
+  !> material or user element type runs when no --user library gives one (the name is checked against the
+  !> built-in library when the routines are chosen, host/user/routine_choice.f90).
+  subroutine read_builtin(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=:), allocatable :: name, owner
+    integer :: k
+    call ctx_allow_params(ctx, [character(len=16) :: 'UMAT', 'UEL', 'MATERIAL', 'TYPE'])
+    if (ctx%stat /= 0) return
+    if (deck_has_param(ctx%params, 'UMAT') .eqv. deck_has_param(ctx%params, 'UEL')) then
+      call ctx_fail(ctx, ctx%ir, 'give exactly one of UMAT=name (under a *MATERIAL) and UEL=name (after a '// &
+        '*USER ELEMENT)')
+      return
+    end if
+    if (deck_has_param(ctx%params, 'UMAT')) then
+      name = deck_normalize(ctx_required(ctx, 'UMAT'))
+      if (deck_has_param(ctx%params, 'TYPE')) call ctx_fail(ctx, ctx%ir, 'TYPE= belongs to UEL=; UMAT= takes MATERIAL=')
+      if (ctx%stat /= 0) return
+      k = ctx%decl_material
+      if (deck_has_param(ctx%params, 'MATERIAL')) then
+        owner = deck_normalize(ctx_required(ctx, 'MATERIAL'))
+        if (ctx%stat /= 0) return
+        k = model_find_material(ctx%model, owner)
+        if (k == 0) then
+          call ctx_fail(ctx, ctx%ir, 'MATERIAL='//owner//' is not a *MATERIAL defined before this line')
+          return
+        end if
+      else if (k == 0) then
+        call ctx_fail(ctx, ctx%ir, 'UMAT= without MATERIAL= belongs inside a *MATERIAL definition (after '// &
+          '*MATERIAL or one of its options)')
+        return
+      end if
+      if (len_trim(ctx%model%materials(k)%builtin) > 0) then
+        call ctx_fail(ctx, ctx%ir, 'material '//trim(ctx%model%materials(k)%given_name)//' already declares '// &
+          'a built-in UMAT')
+        return
+      end if
+      ctx%model%materials(k)%builtin = name
+      ctx%model%materials(k)%builtin_pos = ctx_pos(ctx, ctx%ir)
+    else
+      name = deck_normalize(ctx_required(ctx, 'UEL'))
+      if (deck_has_param(ctx%params, 'MATERIAL')) call ctx_fail(ctx, ctx%ir, 'MATERIAL= belongs to UMAT=; UEL= '// &
+        'takes TYPE=')
+      if (ctx%stat /= 0) return
+      k = ctx%decl_utype
+      if (deck_has_param(ctx%params, 'TYPE')) then
+        owner = deck_normalize(ctx_required(ctx, 'TYPE'))
+        if (ctx%stat /= 0) return
+        k = model_find_user_type(ctx%model, owner)
+        if (k == 0) then
+          call ctx_fail(ctx, ctx%ir, 'TYPE='//owner//' is not a *USER ELEMENT defined before this line')
+          return
+        end if
+      else if (k == 0) then
+        call ctx_fail(ctx, ctx%ir, 'UEL= without TYPE= belongs right after a *USER ELEMENT block')
+        return
+      end if
+      if (len_trim(ctx%model%utypes(k)%builtin) > 0) then
+        ! (a part's declaration read again for its next instance)
+        if (ctx%model%utypes(k)%builtin_pos%line == ctx%src%rec(ctx%ir)%line) return
+        call ctx_fail(ctx, ctx%ir, 'user element type '//trim(ctx%model%utypes(k)%name)//' already declares '// &
+          'a built-in UEL')
+        return
+      end if
+      ctx%model%utypes(k)%builtin = name
+      ctx%model%utypes(k)%builtin_pos = ctx_pos(ctx, ctx%ir)
+    end if
+  end subroutine read_builtin
+
+  !> After each keyword block: the material or user element type that a following '**LDFCZ BUILTIN' without
+  !> MATERIAL= or TYPE= belongs to (a material's definition runs over its option keywords; declarations keep it).
+  subroutine track_declaration_owner(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    select case (ctx%kw)
+    case ('*MATERIAL', '*ELASTIC', '*USER MATERIAL', '*DEPVAR', '*DENSITY', '*EXPANSION')
+      ctx%decl_material = ctx%imat
+      ctx%decl_utype = 0
+    case ('*USER ELEMENT')
+      ctx%decl_material = 0
+      ctx%decl_utype = ctx%model%nutype
+    case ('*LDFCZ SVARS', '*LDFCZ STATEV', '*LDFCZ BUILTIN')
+    case default
+      ctx%decl_material = 0
+      ctx%decl_utype = 0
+    end select
+  end subroutine track_declaration_owner
 
 end module deck_declarations

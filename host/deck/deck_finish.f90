@@ -2,9 +2,10 @@
 !> assigns sections and user-element properties to elements, and checks the model is complete.
 module deck_finish
   use ldfcz_kinds, only: dp
-  use deck_lines, only: deck_where
+  use deck_lines, only: deck_where, deck_keyword_parse, deck_param_t
   use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
-    etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes
+    etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes, elastic_lamina
+  use element_catalog, only: element_is_plane_stress
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   use output_registry, only: output_unprovided_requests
@@ -22,7 +23,6 @@ contains
     type(source_pos_t) :: pos
     type(boundary_t) :: bc
     type(cload_t) :: cl
-    character(len=:), allocatable :: what
     associate (model => ctx%model)
       if (model%nnode == 0) then
         call ctx_fail_kw(ctx, 1, '*NODE', 'the deck defines no nodes')
@@ -88,32 +88,13 @@ contains
       ! sets: negative raw ids -> indices, duplicates removed
       do iset = 1, model%n_nset
         model%nsets(iset)%nodes = model%nsets(iset)%nodes(1:model%nsets(iset)%n)
-        what = 'node set '//trim(model%nsets(iset)%name)
-        call resolve_nodes(ctx, iset, what)
+        call resolve_members(ctx, .true., iset)
         if (ctx%stat /= 0) return
       end do
       do iset = 1, model%n_elset
         model%elsets(iset)%elems = model%elsets(iset)%elems(1:model%elsets(iset)%n)
-        associate (el => model%elsets(iset)%elems)
-          do k = 1, size(el)
-            if (el(k) < 0) then
-              id = -el(k)
-              if (id > size(model%elem_index)) then
-                ie = 0
-              else
-                ie = model%elem_index(id)
-              end if
-              if (ie == 0) then
-                call ctx_fail_kw(ctx, 1, '*ELSET', 'element set '//trim(model%elsets(iset)%name)// &
-                  ': undefined element '//itoa(id))
-                return
-              end if
-              el(k) = ie
-            end if
-          end do
-        end associate
-        call unique(model%elsets(iset)%elems)
-        model%elsets(iset)%n = size(model%elsets(iset)%elems)
+        call resolve_members(ctx, .false., iset)
+        if (ctx%stat /= 0) return
       end do
       ! boundaries
       do ib = 1, model%n_initial_bc
@@ -248,6 +229,17 @@ contains
               call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
                 ' is a user element (use *UEL PROPERTY)')
               return
+            end if
+            ! *ELASTIC, TYPE=LAMINA has no through-thickness constants: plane-stress elements, small strain
+            if (model%materials(im)%elastic_kind == elastic_lamina) then
+              if (.not. element_is_plane_stress(model%elem_kind(ie)) &
+                  .or. any(model%steps(1:model%nstep)%nlgeom)) then
+                call ctx_fail_pos(ctx, model%materials(im)%elastic_pos, 'TYPE=LAMINA (material '// &
+                  trim(model%materials(im)%given_name)//', element '// &
+                  model_label_text(model, model%elem_id(ie), .false.)//') needs plane-stress elements (CPS) '// &
+                  'without NLGEOM: its constants give no through-thickness stiffness (ENGINEERING CONSTANTS do)')
+                return
+              end if
             end if
             if (has_section(ie)) then
               call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
@@ -475,6 +467,11 @@ contains
                   trim(model%materials(im)%given_name)//' has no *DENSITY')
                 return
               end if
+              if (model%materials(im)%density_varies) then
+                call ctx_fail_pos(ctx, pos, 'GRAV on material '//trim(model%materials(im)%given_name)// &
+                  ' whose *DENSITY depends on temperature (not supported with GRAV)')
+                return
+              end if
             end if
           end do
           call move_alloc(el, model%steps(is)%dloads(k)%elems)
@@ -590,29 +587,78 @@ contains
     end if
   end subroutine resolve_bc
 
-  !> Node set iset: user ids -> indices, sorted, duplicates removed.
-  subroutine resolve_nodes(ctx, iset, what)
+  !> Labels of the members of a node set (is_node) or element set to indices, duplicates removed. A label that
+  !> names no node or element is an error at the data line that added it; one from a GENERATE range is left out
+  !> with a warning at that line (a range over a numbering gap; what Abaqus does is not documented: inferred,
+  !> CalculiX leaves them out).
+  subroutine resolve_members(ctx, is_node, iset)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    integer, intent(in) :: iset                 !< node set index
-    character(len=*), intent(in) :: what        !< set named in messages (not a part of ctx)
-    integer :: k, id
-    associate (list => ctx%model%nsets(iset)%nodes, node_index => ctx%model%node_index)
-      do k = 1, size(list)
-        if (list(k) < 0) then
-          id = -list(k)
-          if (id > size(node_index)) then
-            call ctx_fail_kw(ctx, 1, '*NSET', what//': undefined node '//itoa(id))
-            return
-          end if
-          if (node_index(id) == 0) then
-            call ctx_fail_kw(ctx, 1, '*NSET', what//': undefined node '//itoa(id))
-            return
-          end if
-          list(k) = node_index(id)
+    logical, intent(in) :: is_node              !< node set (else element set)
+    integer, intent(in) :: iset                 !< set index
+    integer, allocatable :: list(:), origin(:), index(:)
+    integer :: k, id, idx, nkeep, ndrop, rdrop, r
+    character(len=:), allocatable :: what
+    if (is_node) then
+      call move_alloc(ctx%model%nsets(iset)%nodes, list)
+      what = 'node set '//trim(ctx%model%nsets(iset)%name)
+      if (size(list) > 0) origin = ctx%nset_src(iset)%rec
+      index = ctx%model%node_index
+    else
+      call move_alloc(ctx%model%elsets(iset)%elems, list)
+      what = 'element set '//trim(ctx%model%elsets(iset)%name)
+      if (size(list) > 0) origin = ctx%elset_src(iset)%rec
+      index = ctx%model%elem_index
+    end if
+    nkeep = 0
+    ndrop = 0
+    rdrop = 0
+    do k = 1, size(list)
+      idx = list(k)
+      if (idx < 0) then
+        id = -idx
+        idx = 0
+        if (id <= size(index)) idx = index(id)
+        r = origin(k)
+        if (idx == 0 .and. r < 0) then
+          ndrop = ndrop + 1
+          if (rdrop == 0) rdrop = -r
+          cycle
         end if
-      end do
-    end associate
-    call unique(ctx%model%nsets(iset)%nodes)
-  end subroutine resolve_nodes
+        if (idx == 0) then
+          call ctx_fail_kw(ctx, r, block_keyword(ctx, r), what//': undefined '// &
+            trim(merge('node   ', 'element', is_node))//' '//model_label_text(ctx%model, id, is_node))
+          exit
+        end if
+      end if
+      nkeep = nkeep + 1
+      list(nkeep) = idx
+    end do
+    list = list(1:nkeep)
+    call unique(list)
+    if (is_node) then
+      call move_alloc(list, ctx%model%nsets(iset)%nodes)
+      ctx%model%nsets(iset)%n = size(ctx%model%nsets(iset)%nodes)
+    else
+      call move_alloc(list, ctx%model%elsets(iset)%elems)
+      ctx%model%elsets(iset)%n = size(ctx%model%elsets(iset)%elems)
+    end if
+    if (ctx%stat == 0 .and. ndrop > 0 .and. ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '// &
+      deck_where(ctx%src, rdrop)//': '//block_keyword(ctx, rdrop)//': '//what//': GENERATE ranges include '// &
+      itoa(ndrop)//' number(s) with no '//trim(merge('node   ', 'element', is_node))//': left out of the set'
+  end subroutine resolve_members
+
+  !> Keyword of the block that record irec belongs to (the record itself or the keyword line before it).
+  function block_keyword(ctx, irec) result(kw)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    integer, intent(in) :: irec              !< record index
+    character(len=:), allocatable :: kw
+    type(deck_param_t), allocatable :: params(:)
+    integer :: r
+    r = max(1, min(irec, ctx%src%nrec))
+    do while (r > 1 .and. .not. ctx%src%rec(r)%keyword)
+      r = r - 1
+    end do
+    call deck_keyword_parse(ctx%src%rec(r)%text, kw, params)
+  end function block_keyword
 
 end module deck_finish

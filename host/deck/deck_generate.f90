@@ -8,7 +8,7 @@ module deck_generate
   use deck_lines, only: deck_has_param, deck_param_value, deck_normalize
   use deck_lists, only: itoa, add_member, grow_int, unique
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_int, &
-    ctx_param_int, ctx_def_name, ctx_find_nset, ctx_get_real
+    ctx_param_int, ctx_def_name, ctx_find_nset, ctx_get_real, ctx_set_member
   use deck_mesh, only: get_nset, get_elset, grow_nodes, grow_elems
   use deck_assembly, only: read_shift
   implicit none
@@ -136,7 +136,7 @@ contains
       end do
       if (iset > 0) then
         do k = 0, nstep
-          call add_member(ctx%model%nsets(iset)%nodes, ctx%model%nsets(iset)%n, -(a + k * inc + ctx%node_off))
+          call ctx_set_member(ctx, .true., iset, -(a + k * inc + ctx%node_off), i)
         end do
       end if
     end do
@@ -284,11 +284,11 @@ contains
           call add_node(ctx, i, s1(j) - ctx%node_off + k * inc, ctx%model%x(:, ia) + bias_fraction(bias, k, nintv) * &
             (ctx%model%x(:, ib) - ctx%model%x(:, ia)), map)
           if (ctx%stat /= 0) return
-          if (iset > 0) call add_member(ctx%model%nsets(iset)%nodes, ctx%model%nsets(iset)%n, -(s1(j) + k * inc))
+          if (iset > 0) call ctx_set_member(ctx, .true., iset, -(s1(j) + k * inc), i)
         end do
         if (iset > 0) then
-          call add_member(ctx%model%nsets(iset)%nodes, ctx%model%nsets(iset)%n, -s1(j))
-          call add_member(ctx%model%nsets(iset)%nodes, ctx%model%nsets(iset)%n, -s2(j))
+          call ctx_set_member(ctx, .true., iset, -s1(j), i)
+          call ctx_set_member(ctx, .true., iset, -s2(j), i)
         end if
       end do
     end do
@@ -362,7 +362,7 @@ contains
       if (ctx%placed) x = matmul(ctx%place_r, x) + ctx%place_c
       call add_node(ctx, ctx%ir, old(j) - ctx%node_off + dn, x, map)
       if (ctx%stat /= 0) return
-      if (inew > 0) call add_member(ctx%model%nsets(inew)%nodes, ctx%model%nsets(inew)%n, -(old(j) + dn))
+      if (inew > 0) call ctx_set_member(ctx, .true., inew, -(old(j) + dn), ctx%ir)
     end do
   end subroutine read_ncopy
 
@@ -491,7 +491,7 @@ contains
                 end do
                 model%conn_ptr(model%nelem + 1) = model%conn_ptr(model%nelem) + nn
               end if
-              if (iset > 0) call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, -id)
+              if (iset > 0) call ctx_set_member(ctx, .false., iset, -id, i)
             end do
           end do
         end do

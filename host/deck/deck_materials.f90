@@ -1,15 +1,16 @@
-!> Material keywords of the deck reader: *MATERIAL with its options *ELASTIC, *USER MATERIAL and *DEPVAR, and
+!> Material keywords of the deck reader: *MATERIAL with its options *USER MATERIAL, *DEPVAR and *DENSITY (*ELASTIC and
+!> *EXPANSION: deck_elastic), and
 !> *SOLID SECTION (element set -> material, thickness).
 module deck_materials
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: material_t, section_t, model_find_material
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_pos, ctx_allow_params, ctx_required, &
+  use deck_context, only: deck_context_t, flen, ctx_def_name, ctx_fail, ctx_warn, ctx_pos, ctx_allow_params, ctx_required, &
     ctx_param_int, ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int
   implicit none
   private
-  public :: read_material, read_elastic, read_density, read_expansion, read_user_material, read_depvar, read_solid_section
+  public :: read_material, read_density, read_user_material, read_depvar, read_solid_section
 
 contains
 
@@ -21,8 +22,17 @@ contains
     character(len=:), allocatable :: v
     integer :: n, k, ir, ir_next
     real(dp) :: t
-    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION'])
+    ! CONTROLS=: *SECTION CONTROLS of the one-point elements (read without effect, deck_section_controls);
+    ! OFFSET= (CalculiX decks: the offset of plane elements expanded to solids) only as 0, which changes nothing
+    call ctx_allow_params(ctx, [character(len=12) :: 'ELSET', 'MATERIAL', 'ORIENTATION', 'CONTROLS', 'OFFSET'])
     if (ctx%stat /= 0) return
+    if (deck_has_param(ctx%params, 'OFFSET')) then
+      if (.not. ctx_get_real(ctx, ctx%ir, deck_param_value(ctx%params, 'OFFSET'), t)) return
+      if (t /= 0.0_dp) then
+        call ctx_fail(ctx, ctx%ir, 'OFFSET other than 0 is not supported')
+        return
+      end if
+    end if
     ir = ctx%ir
     ir_next = ctx%ir_next
     if (ctx%model%nsection == size(ctx%model%sections)) then
@@ -107,114 +117,38 @@ contains
     if (ctx%imat == 0) call ctx_fail(ctx, ctx%ir, 'material option outside a *MATERIAL definition')
   end subroutine need_material
 
-  !> *ELASTIC (isotropic): one data line E, nu.
-  subroutine read_elastic(ctx)
-    type(deck_context_t), intent(inout) :: ctx  !< reader state
-    character(len=flen), allocatable :: f(:)
-    integer :: n, ir
-    real(dp) :: e, nu
-    call need_material(ctx)
-    if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE'])
-    if (ctx%stat /= 0) return
-    ir = ctx%ir
-    if (deck_has_param(ctx%params, 'TYPE')) then
-      if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'ISOTROPIC') then
-        call ctx_fail(ctx, ir, 'only TYPE=ISOTROPIC is supported')
-        return
-      end if
-    end if
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'exactly one data line (E, nu) expected (no temperature dependence)')
-      return
-    end if
-    call ctx_split(ctx, ir + 1, f, n)
-    if (n < 2) then
-      call ctx_fail(ctx, ir + 1, 'data line needs E, nu')
-      return
-    end if
-    if (n > 2) then
-      if (len_trim(f(3)) > 0) then
-        call ctx_fail(ctx, ir + 1, 'temperature-dependent elasticity is not supported')
-        return
-      end if
-    end if
-    if (.not. ctx_get_real(ctx, ir + 1, f(1), e)) return
-    if (.not. ctx_get_real(ctx, ir + 1, f(2), nu)) return
-    if (e <= 0.0_dp .or. nu <= -1.0_dp .or. nu >= 0.5_dp) then
-      call ctx_fail(ctx, ir + 1, 'need E > 0 and -1 < nu < 0.5')
-      return
-    end if
-    ctx%model%materials(ctx%imat)%has_elastic = .true.
-    ctx%model%materials(ctx%imat)%young = e
-    ctx%model%materials(ctx%imat)%poisson = nu
-  end subroutine read_elastic
-
-  !> *DENSITY: one data line, the mass density (no temperature dependence). Used by GRAV loads; no effect
-  !> otherwise in a static step.
+  !> *DENSITY: the mass density, one data line (rho[, temperature]) or one per temperature. Used by GRAV loads only
+  !> (no effect otherwise in a static step); GRAV with a temperature-dependent density is refused (deck_finish).
   subroutine read_density(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=flen), allocatable :: f(:)
-    integer :: n, ir
+    integer :: n, ir, i
     real(dp) :: rho
     call need_material(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=8) ::])
     if (ctx%stat /= 0) return
     ir = ctx%ir
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'exactly one data line (density) expected (no temperature dependence)')
+    if (ctx%ir_next == ir + 1) then
+      call ctx_fail(ctx, ir, 'a data line with the density is required')
       return
     end if
-    call ctx_split(ctx, ir + 1, f, n)
-    if (n > 1) then
-      if (any(len_trim(f(2:n)) > 0)) then
-        call ctx_fail(ctx, ir + 1, 'temperature-dependent density is not supported')
+    do i = ir + 1, ctx%ir_next - 1
+      call ctx_split(ctx, i, f, n)
+      if (n > 2) then
+        call ctx_fail(ctx, i, 'expected: density[, temperature] (field-variable dependence is not supported)')
         return
       end if
-    end if
-    if (.not. ctx_get_real(ctx, ir + 1, f(1), rho)) return
-    if (rho < 0.0_dp) then
-      call ctx_fail(ctx, ir + 1, 'the density must not be negative')
-      return
-    end if
+      if (.not. ctx_get_real(ctx, i, f(1), rho)) return
+      if (rho < 0.0_dp) then
+        call ctx_fail(ctx, i, 'the density must not be negative')
+        return
+      end if
+      if (i == ir + 1) ctx%model%materials(ctx%imat)%density = rho
+    end do
     ctx%model%materials(ctx%imat)%has_density = .true.
-    ctx%model%materials(ctx%imat)%density = rho
+    ctx%model%materials(ctx%imat)%density_varies = ctx%ir_next > ir + 2
   end subroutine read_density
-
-  !> *EXPANSION[, TYPE=ISO][, ZERO=]: one data line, the isotropic expansion coefficient (no temperature
-  !> dependence; with a constant coefficient the thermal strain alpha (T - T_initial) does not depend on ZERO).
-  subroutine read_expansion(ctx)
-    type(deck_context_t), intent(inout) :: ctx  !< reader state
-    character(len=flen), allocatable :: f(:)
-    integer :: n, ir
-    real(dp) :: alpha
-    call need_material(ctx)
-    if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'ZERO'])
-    if (ctx%stat /= 0) return
-    ir = ctx%ir
-    if (deck_has_param(ctx%params, 'TYPE')) then
-      if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'ISO') then
-        call ctx_fail(ctx, ir, 'only TYPE=ISO is supported')
-        return
-      end if
-    end if
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'exactly one data line (alpha) expected (no temperature dependence)')
-      return
-    end if
-    call ctx_split(ctx, ir + 1, f, n)
-    if (n > 1) then
-      if (any(len_trim(f(2:n)) > 0)) then
-        call ctx_fail(ctx, ir + 1, 'temperature-dependent expansion is not supported')
-        return
-      end if
-    end if
-    if (.not. ctx_get_real(ctx, ir + 1, f(1), alpha)) return
-    ctx%model%materials(ctx%imat)%has_expansion = .true.
-    ctx%model%materials(ctx%imat)%alpha = alpha
-  end subroutine read_expansion
 
   !> *USER MATERIAL, CONSTANTS=n: the n UMAT properties.
   subroutine read_user_material(ctx)
@@ -238,13 +172,23 @@ contains
     nc = ctx_param_int(ctx, 'CONSTANTS', 0)
     if (ctx%stat /= 0) return
     call ctx_block_fields(ctx, ir + 1, ir_next - 1, f, n)
-    if (n /= nc) then
+    if (n > nc) then
       call ctx_fail(ctx, ir, 'CONSTANTS='//itoa(nc)//' but '//itoa(n)//' values given')
       return
     end if
+    ! fewer values than CONSTANTS: NPROPS = CONSTANTS, the values not given (and empty fields) are 0, as Abaqus
+    ! takes omitted numeric data (decks that ran in Abaqus do this); said, since a constant may be missing
+    if (n < nc) call ctx_warn(ctx, ir, 'CONSTANTS='//itoa(nc)//' but '//itoa(n)//' values given: PROPS('// &
+      itoa(n + 1)//':'//itoa(nc)//') = 0 (NPROPS = '//itoa(nc)//')')
+    if (allocated(ctx%model%materials(imat)%props)) then
+      call ctx_fail(ctx, ir, 'a second *USER MATERIAL in material '//trim(ctx%model%materials(imat)%given_name))
+      return
+    end if
     allocate (ctx%model%materials(imat)%props(nc))
-    do k = 1, nc
-      if (.not. ctx_get_real(ctx, ir + 1, f(k), r)) return
+    ctx%model%materials(imat)%props = 0.0_dp
+    do k = 1, n
+      if (len_trim(f(k)) == 0) cycle
+      if (.not. ctx_get_real(ctx, field_record(ctx, ir + 1, ir_next - 1, k), f(k), r)) return
       ctx%model%materials(imat)%props(k) = r
     end do
     ctx%model%materials(imat)%has_user = .true.
@@ -252,11 +196,12 @@ contains
     ctx%model%materials(imat)%user_pos = ctx_pos(ctx, min(ir + 1, ir_next - 1))
   end subroutine read_user_material
 
-  !> *DEPVAR: number of state variables of the user material.
+  !> *DEPVAR: number of state variables of the user material; optional lines 'n, key, description' name state
+  !> variable n (the form Abaqus/CAE writes; Abaqus Keywords Guide, *DEPVAR): its field output is SDV_key.
   subroutine read_depvar(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=flen), allocatable :: f(:)
-    integer :: n, ir, nstatv
+    integer :: n, ir, i, nstatv, k
     call need_material(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=8) :: 'DELETE'])
@@ -266,14 +211,75 @@ contains
       call ctx_fail(ctx, ir, 'DELETE= (element deletion) is not supported')
       return
     end if
-    if (ctx%ir_next /= ir + 2) then
-      call ctx_fail(ctx, ir, 'one data line (number of state variables) expected')
+    if (ctx%ir_next == ir + 1) then
+      call ctx_fail(ctx, ir, 'a data line with the number of state variables is required')
       return
     end if
     call ctx_split(ctx, ir + 1, f, n)
+    if (n > 1) then
+      call ctx_fail(ctx, ir + 1, 'the first data line holds the number of state variables only')
+      return
+    end if
     if (.not. ctx_get_int(ctx, ir + 1, f(1), nstatv)) return
-    ctx%model%materials(ctx%imat)%nstatv = nstatv
-    if (nstatv < 0) call ctx_fail(ctx, ir + 1, 'negative number of state variables')
+    if (nstatv < 0) then
+      call ctx_fail(ctx, ir + 1, 'negative number of state variables')
+      return
+    end if
+    associate (m => ctx%model%materials(ctx%imat))
+      m%nstatv = nstatv
+      if (allocated(m%sdv_key)) deallocate (m%sdv_key, m%sdv_desc)
+      allocate (m%sdv_key(nstatv), m%sdv_desc(nstatv))
+      m%sdv_key = ''
+      m%sdv_desc = ''
+      do i = ir + 2, ctx%ir_next - 1
+        call ctx_split(ctx, i, f, n)
+        if (n < 2 .or. n > 3) then
+          call ctx_fail(ctx, i, 'expected: state variable number, output key[, description]')
+          return
+        end if
+        if (.not. ctx_get_int(ctx, i, f(1), k)) return
+        if (k < 1 .or. k > nstatv) then
+          call ctx_fail(ctx, i, 'state variable '//itoa(k)//' outside 1..'//itoa(nstatv))
+          return
+        end if
+        if (len_trim(m%sdv_key(k)) > 0) then
+          call ctx_fail(ctx, i, 'state variable '//itoa(k)//' named twice')
+          return
+        end if
+        m%sdv_key(k) = unquoted(f(2))
+        if (len_trim(m%sdv_key(k)) == 0) then
+          call ctx_fail(ctx, i, 'empty output key')
+          return
+        end if
+        if (n == 3) m%sdv_desc(k) = unquoted(f(3))
+      end do
+    end associate
   end subroutine read_depvar
+
+  !> A label as written, without enclosing double quotes (case preserved, as *DEPVAR keys are).
+  pure function unquoted(field) result(t)
+    character(len=*), intent(in) :: field  !< data field
+    character(len=:), allocatable :: t
+    t = trim(adjustl(field))
+    if (len(t) >= 2) then
+      if (t(1:1) == '"' .and. t(len(t):len(t)) == '"') t = t(2:len(t) - 1)
+    end if
+  end function unquoted
+
+  !> Record of the k-th data field of records i1..i2 (messages about one value of a multi-line block).
+  integer function field_record(ctx, i1, i2, k) result(irec)
+    type(deck_context_t), intent(in) :: ctx  !< reader state
+    integer, intent(in) :: i1, i2            !< the block's data records
+    integer, intent(in) :: k                 !< field number (1-based, over the block)
+    character(len=flen), allocatable :: f(:)
+    integer :: n, seen
+    seen = 0
+    do irec = i1, i2
+      call ctx_split(ctx, irec, f, n)
+      seen = seen + n
+      if (seen >= k) return
+    end do
+    irec = i2
+  end function field_record
 
 end module deck_materials

@@ -6,8 +6,9 @@ module deck_mesh
   use model_types, only: node_set_t, elem_set_t, etype_user, model_find_nset, model_find_elset, model_find_user_type
   use element_catalog, only: element_kind_of, element_nnode, element_ndim, element_names_text
   use deck_lists, only: itoa, add_member, grow_int
-  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
-    ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued
+  use deck_context, only: deck_context_t, flen, ctx_fail, ctx_warn, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
+    ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued, &
+    ctx_set_member
   implicit none
   private
   public :: read_node, read_element, read_set, read_system
@@ -18,7 +19,7 @@ contains
   !> *NODE, NSET=: node number, x, y[, z].
   subroutine read_node(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    integer :: i, n, id, k, iset
+    integer :: i, n, id, k, iset, nomit, i_omit
     character(len=flen), allocatable :: f(:)
     real(dp) :: c
     character(len=:), allocatable :: setname
@@ -40,11 +41,18 @@ contains
       iset = get_nset(ctx, setname)
     end if
     associate (model => ctx%model)
+      nomit = 0
       do i = ctx%ir + 1, ctx%ir_next - 1
         call ctx_split(ctx, i, f, n)
-        if (n < 2 .or. n > 4) then
-          call ctx_fail(ctx, i, 'expected: node number, x, y[, z]')
+        ! node number, up to 3 coordinates (omitted ones are 0), up to 3 direction cosines of a normal (used by
+        ! elements with rotational dofs only, which ldfcz does not have: read and checked, without effect)
+        if (n > 7) then
+          call ctx_fail(ctx, i, 'expected: node number[, x[, y[, z[, normal n1, n2, n3]]]]')
           return
+        end if
+        if (n == 1 .or. any(len_trim(f(2:min(n, 4))) == 0)) then
+          nomit = nomit + 1
+          if (nomit == 1) i_omit = i
         end if
         if (.not. ctx_get_int(ctx, i, f(1), id)) return
         if (id <= 0) then
@@ -65,15 +73,17 @@ contains
         do k = 2, n
           if (len_trim(f(k)) == 0) cycle
           if (.not. ctx_get_real(ctx, i, f(k), c)) return
-          model%x(k - 1, model%nnode) = c
+          if (k <= 4) model%x(k - 1, model%nnode) = c
         end do
         ! *SYSTEM: local coordinates to the scope's
         if (ctx%system_on) model%x(:, model%nnode) = matmul(ctx%system_r, model%x(:, model%nnode)) + ctx%system_c
         ! a part's node placed by its instance (translation, then rotation)
         if (ctx%placed) model%x(:, model%nnode) = matmul(ctx%place_r, model%x(:, model%nnode)) + ctx%place_c
-        if (iset > 0) call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -id)
+        if (iset > 0) call ctx_set_member(ctx, .true., iset, -id, i)
       end do
     end associate
+    if (nomit > 0) call ctx_warn(ctx, i_omit, itoa(nomit)//' node line(s) of this block omit coordinates '// &
+      '(an empty field, or the node number alone): taken as 0, as Abaqus takes omitted numeric data')
   end subroutine read_node
 
   !> *SYSTEM: the coordinates of the following *NODE data lines (of this part or of the model) are given in a local
@@ -229,7 +239,7 @@ contains
           ctx%conn_raw(model%conn_ptr(model%nelem) + k - 1) = node
         end do
         model%conn_ptr(model%nelem + 1) = model%conn_ptr(model%nelem) + nn
-        if (iset > 0) call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, -id)
+        if (iset > 0) call ctx_set_member(ctx, .false., iset, -id, i)
       end do
     end associate
   end subroutine read_element
@@ -326,11 +336,7 @@ contains
             return
           end if
           do k = a + off, b + off, s
-            if (is_node) then
-              call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -k)
-            else
-              call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, -k)
-            end if
+            call ctx_set_member(ctx, is_node, iset, -k, -i)
           end do
         else
           do k = 1, n
@@ -341,11 +347,7 @@ contains
                 call ctx_fail(ctx, i, 'ids must be positive, got '//itoa(a))
                 return
               end if
-              if (is_node) then
-                call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, -a)
-              else
-                call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, -a)
-              end if
+              call ctx_set_member(ctx, is_node, iset, -a, i)
             else
               if (is_node) then
                 other = ctx_find_nset(ctx, f(k))
@@ -356,13 +358,14 @@ contains
                 call ctx_fail(ctx, i, 'undefined set '//trim(deck_normalize(f(k))))
                 return
               end if
+              ! the members of the other set keep the lines that defined them
               if (is_node) then
                 do j = 1, model%nsets(other)%n
-                  call add_member(model%nsets(iset)%nodes, model%nsets(iset)%n, model%nsets(other)%nodes(j))
+                  call ctx_set_member(ctx, .true., iset, model%nsets(other)%nodes(j), ctx%nset_src(other)%rec(j))
                 end do
               else
                 do j = 1, model%elsets(other)%n
-                  call add_member(model%elsets(iset)%elems, model%elsets(iset)%n, model%elsets(other)%elems(j))
+                  call ctx_set_member(ctx, .false., iset, model%elsets(other)%elems(j), ctx%elset_src(other)%rec(j))
                 end do
               end if
             end if

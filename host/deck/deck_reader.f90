@@ -7,12 +7,13 @@ module deck_reader
   use deck_lines, only: deck_load, deck_keyword_parse
   use model_types, only: model_t
   use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_need_step, &
-    scope_model, scope_assembly
+    scope_model, scope_assembly, no_blanks
   use deck_assembly, only: prescan_assembly, read_part_def, begin_assembly, end_assembly, begin_instance, &
     end_instance, allowed_in_assembly, mesh_keyword
   use deck_mesh, only: read_node, read_element, read_set, read_system
-  use deck_materials, only: read_material, read_elastic, read_density, read_expansion, read_user_material, &
-    read_depvar, read_solid_section
+  use deck_materials, only: read_material, read_density, read_user_material, read_depvar, read_solid_section
+  use deck_elastic, only: read_elastic, read_expansion
+  use deck_section_controls, only: read_section_controls
   use deck_user_elements, only: read_user_element, read_uel_property
   use deck_boundaries, only: read_amplitude, read_boundary
   use deck_steps, only: read_step, read_static, read_controls, read_restart, read_output, read_node_print, &
@@ -24,10 +25,21 @@ module deck_reader
   use deck_parameters, only: apply_parameters
   use deck_generate, only: read_ngen, read_nfill, read_ncopy, read_elgen
   use deck_orientation, only: read_orientation, read_transform
-  use deck_declarations, only: read_ldfcz_declaration
+  use deck_declarations, only: read_ldfcz_declaration, track_declaration_owner
   implicit none
   private
   public :: read_deck
+
+  !> Every keyword the reader reads or warns about (the targets of keyword abbreviations and blank-free spellings)
+  character(len=24), parameter :: known_keywords(*) = [character(len=24) :: '*PART', '*END PART', '*ASSEMBLY', &
+    '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*ORIENTATION', '*TRANSFORM', '*SYSTEM', '*NGEN', '*NFILL', &
+    '*NCOPY', '*ELGEN', '*PARAMETER', '*HEADING', '*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', &
+    '*MATERIAL', '*ELASTIC', '*USER MATERIAL', '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', &
+    '*BOUNDARY', '*CLOAD', '*DLOAD', '*DSLOAD', '*SURFACE', '*DENSITY', '*INITIAL CONDITIONS', '*TEMPERATURE', &
+    '*FIELD', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*STEP', '*STATIC', '*VISCO', '*CONTROLS', '*OUTPUT', &
+    '*NODE OUTPUT', '*ELEMENT OUTPUT', '*NODE PRINT', '*EL PRINT', '*MONITOR', '*END STEP', '*RESTART', &
+    '*SECTION CONTROLS', '*HOURGLASS STIFFNESS', '*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', &
+    '*EL FILE', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS', '*SECTION PRINT']
 
 contains
 
@@ -98,6 +110,7 @@ contains
         return
       end if
       call deck_keyword_parse(ctx%src%rec(ir)%text, ctx%kw, ctx%params)
+      call canonical_keyword(ctx, ir)
       ! the records of this block: ir+1 .. ir_next-1
       ir_next = ir + 1
       do while (ir_next <= i2)
@@ -121,6 +134,7 @@ contains
       end if
       call read_block(ctx)
       if (ctx%stat /= 0) return
+      call track_declaration_owner(ctx)
       ! a *PART or *INSTANCE block reaches past its end keyword
       ir = max(ir_next, ctx%ir_next)
     end do
@@ -129,11 +143,11 @@ contains
   !> *INSTANCE ... *END INSTANCE: the part's blocks read with the instance's labels, names and placement.
   recursive subroutine read_instance(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    integer :: ip, ir_end, ir_inst
+    integer :: ip, ir_end, ir_inst, ir1, ir2
     ir_inst = ctx%ir
-    call begin_instance(ctx, ip, ir_end)
+    call begin_instance(ctx, ip, ir_end, ir1, ir2)
     if (ctx%stat /= 0) return
-    call read_range(ctx, ctx%parts(ip)%ir1, ctx%parts(ip)%ir2 - 1)
+    call read_range(ctx, ir1, ir2)
     if (ctx%stat /= 0) then
       ctx%errmsg = ctx%errmsg//' (part '//trim(ctx%parts(ip)%name)//', read for instance '// &
         trim(ctx%model%instances(ctx%model%ninstance)%name)//')'
@@ -255,15 +269,68 @@ contains
       end if
     case ('*RESTART')
       call read_restart(ctx)
-    case ('*LDFCZ SVARS', '*LDFCZ STATEV')
+    case ('*LDFCZ SVARS', '*LDFCZ STATEV', '*LDFCZ BUILTIN')
       call read_ldfcz_declaration(ctx)
+    case ('*SECTION CONTROLS', '*HOURGLASS STIFFNESS')
+      call read_section_controls(ctx)
     case ('*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
-          '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS')
+          '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS', '*SECTION PRINT')
       call ctx_warn(ctx, ctx%ir, 'output/cosmetic keyword not supported by ldfcz: ignored with its data lines')
     case default
       call ctx_fail(ctx, ctx%ir, 'unsupported keyword (ldfcz never ignores a keyword that may change the analysis)')
     end select
   end subroutine read_block
+
+  !> The keyword as ldfcz names it: Abaqus ignores blanks on keyword lines (*SOLIDSECTION is *SOLID SECTION) and
+  !> reads keywords abbreviated as long as they stay unique ("Input syntax rules"). An abbreviation is taken only
+  !> word by word (*SECTION CONTROL for *SECTION CONTROLS, never *CONTACT for *CONTACT OUTPUT) and only among the
+  !> keywords ldfcz reads, so it is said in a warning.
+  subroutine canonical_keyword(ctx, ir)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state (ctx%kw replaced)
+    integer, intent(in) :: ir                   !< the keyword record
+    integer :: k, n, j
+    if (any(known_keywords == ctx%kw)) return
+    do k = 1, size(known_keywords)
+      if (no_blanks(known_keywords(k)) == no_blanks(ctx%kw)) then
+        ctx%kw = trim(known_keywords(k))
+        return
+      end if
+    end do
+    n = 0
+    do k = 1, size(known_keywords)
+      if (word_prefix(ctx%kw, trim(known_keywords(k)))) then
+        n = n + 1
+        j = k
+      end if
+    end do
+    if (n /= 1) return
+    call ctx_warn(ctx, ir, 'taken as '//trim(known_keywords(j))//' (an abbreviated keyword)')
+    ctx%kw = trim(known_keywords(j))
+  end subroutine canonical_keyword
+
+  !> short has as many blank-separated words as long and each begins the corresponding word of long.
+  pure logical function word_prefix(short, long)
+    character(len=*), intent(in) :: short, long  !< keywords (single blanks between words)
+    integer :: a, b, c, d
+    word_prefix = .false.
+    a = 1
+    c = 1
+    do
+      b = index(short(a:), ' ')
+      d = index(long(c:), ' ')
+      if ((b == 0) .neqv. (d == 0)) return
+      if (b == 0) then
+        b = len(short) - a + 2
+        d = len(long) - c + 2
+      end if
+      if (b > d) return
+      if (short(a:a + b - 2) /= long(c:c + b - 2)) return
+      if (a + b - 1 > len(short)) exit
+      a = a + b
+      c = c + d
+    end do
+    word_prefix = .true.
+  end function word_prefix
 
   !> Keywords of model data (not allowed between *STEP and *END STEP).
   pure logical function is_model_keyword(kw)
@@ -271,6 +338,7 @@ contains
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
           '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
+          '*SECTION CONTROLS', '*HOURGLASS STIFFNESS', &
           '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
           '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION', &
           '*TRANSFORM', '*SYSTEM')

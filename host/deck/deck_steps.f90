@@ -6,6 +6,7 @@ module deck_steps
   use model_types, only: step_t, node_print_t, el_print_t, output_request_t
   use output_registry, only: output_lookup, output_variables, output_ncomp, output_component_name, &
     output_names_text, OV_SDV, LOC_NODE, LOC_POINT, USE_FIELD, USE_NODE_PRINT, USE_EL_PRINT, PRESET_ALL
+  use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_find_elset, ctx_fail, ctx_warn, ctx_pos, &
     ctx_allow_params, ctx_need_step, ctx_required, ctx_get_label, ctx_param_int, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_only_value
@@ -130,9 +131,12 @@ contains
     if (visco) then
       call ctx_allow_params(ctx, [character(len=12) :: 'CETOL'])
     else
-      call ctx_allow_params(ctx, [character(len=12) :: 'DIRECT'])
+      call ctx_allow_params(ctx, [character(len=12) :: 'DIRECT', 'SOLVER'])
     end if
     if (ctx%stat /= 0) return
+    ! SOLVER= (CalculiX: SPOOLES, PARDISO, ITERATIVE ...) chooses how the linear systems are solved, not the solution
+    if (deck_has_param(ctx%params, 'SOLVER')) call ctx_warn(ctx, ctx%ir, 'SOLVER='// &
+      deck_param_value(ctx%params, 'SOLVER')//' read without effect: ldfcz solves with MUMPS (the same solution)')
     ir = ctx%ir
     ir_next = ctx%ir_next
     if (visco .and. deck_has_param(ctx%params, 'CETOL')) then
@@ -188,7 +192,10 @@ contains
       else if (s%dt_min > s%dt_initial .and. .not. s%direct) then
         call ctx_fail(ctx, ir + 1, 'minimum increment larger than the initial increment')
       else if (s%dt_max < s%dt_initial .and. .not. s%direct) then
-        call ctx_fail(ctx, ir + 1, 'maximum increment smaller than the initial increment')
+        ! decks that ran in Abaqus give it (Abaqus' rule for it not found): the initial increment is capped
+        call ctx_warn(ctx, ir + 1, 'maximum increment smaller than the initial increment: the first increment '// &
+          'takes the maximum')
+        s%dt_initial = s%dt_max
       end if
     end associate
   end subroutine read_static
@@ -202,11 +209,19 @@ contains
     real(dp) :: r
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=12) :: 'PARAMETERS', 'RESET', 'ANALYSIS'])
+    call ctx_allow_params(ctx, [character(len=12) :: 'PARAMETERS', 'RESET', 'ANALYSIS', 'FIELD'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
     istep = ctx%istep
+    ! FIELD=: the controls of one field; ldfcz's one field is the displacement (GLOBAL: every field)
+    if (deck_has_param(ctx%params, 'FIELD')) then
+      v = deck_normalize(deck_param_value(ctx%params, 'FIELD'))
+      if (v /= 'DISPLACEMENT' .and. v /= 'GLOBAL') then
+        call ctx_warn(ctx, ir, 'FIELD='//v//': a field this model does not have; without effect')
+        return
+      end if
+    end if
     if (deck_has_param(ctx%params, 'ANALYSIS')) then
       call ctx_fail(ctx, ir, 'ANALYSIS= is not supported')
       return
@@ -219,20 +234,22 @@ contains
     end if
     v = deck_normalize(ctx_required(ctx, 'PARAMETERS'))
     if (ctx%stat /= 0) return
-    if (ir_next > ir + 2) then
-      call ctx_fail(ctx, ir + 2, 'only the first data line is supported')
-      return
-    end if
     if (ir_next == ir + 1) return
+    ! the controls ldfcz has: I_C of TIME INCREMENTATION, R_n and C_n of FIELD; the others (Abaqus' other
+    ! iteration counts, cutback factors and tolerances) steer its own increment control and are read without
+    ! effect, said in a warning: they change how the solution is reached, not the equilibrium it satisfies
+    if (ir_next > ir + 2) call ctx_warn(ctx, ir + 2, 'the data lines after the first are read without effect '// &
+      '(ldfcz''s increment control and tolerances apply)')
     call ctx_split(ctx, ir + 1, f, n)
     select case (v)
     case ('TIME INCREMENTATION')
-      ! I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A: ldfcz supports I_C (iteration cap); others must stay blank
+      ! I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A: ldfcz reads I_C (iteration cap)
       do k = 1, n
         if (len_trim(f(k)) == 0) cycle
         if (k /= 4) then
-          call ctx_fail(ctx, ir + 1, 'only field 4 (I_C, maximum iterations) of TIME INCREMENTATION is supported')
-          return
+          call ctx_warn(ctx, ir + 1, 'field '//itoa(k)//' read without effect (ldfcz reads I_C, field 4; its own '// &
+            'increment control applies)')
+          cycle
         end if
         if (.not. ctx_get_int(ctx, ir + 1, f(k), iv)) return
         if (iv < 2) then
@@ -246,19 +263,23 @@ contains
       do k = 1, n
         if (len_trim(f(k)) == 0) cycle
         if (k > 2) then
-          call ctx_fail(ctx, ir + 1, 'only R_n and C_n (fields 1, 2) of FIELD are supported')
-          return
+          call ctx_warn(ctx, ir + 1, 'field '//itoa(k)//' read without effect (ldfcz reads R_n and C_n, fields '// &
+            '1 and 2)')
+          cycle
         end if
         if (.not. ctx_get_real(ctx, ir + 1, f(k), r)) return
-        if (r <= 0.0_dp .or. r >= 1.0_dp) then
-          call ctx_fail(ctx, ir + 1, 'tolerances must lie in (0, 1)')
+        if (r <= 0.0_dp .or. r > 1.0_dp) then
+          call ctx_fail(ctx, ir + 1, 'tolerances must lie in (0, 1]')
           return
         end if
         if (k == 1) ctx%model%steps(istep)%r_n = r
         if (k == 2) ctx%model%steps(istep)%c_n = r
       end do
+    case ('LINE SEARCH')
+      ! a line search changes the path, not the solution; ldfcz has none
+      call ctx_warn(ctx, ir, 'PARAMETERS=LINE SEARCH read without effect (ldfcz has no line search)')
     case default
-      call ctx_fail(ctx, ir, 'PARAMETERS='//v//' not supported (TIME INCREMENTATION, FIELD)')
+      call ctx_fail(ctx, ir, 'PARAMETERS='//v//' not supported (TIME INCREMENTATION, FIELD, LINE SEARCH)')
     end select
   end subroutine read_controls
 
@@ -307,7 +328,7 @@ contains
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=16) :: 'FIELD', 'HISTORY', 'FREQUENCY', 'NUMBER INTERVAL', 'VARIABLE', &
-      'TIME MARKS', 'OP'])
+      'TIME MARKS', 'OP', 'TIME INTERVAL'])
     if (ctx%stat /= 0) return
     if (deck_has_param(ctx%params, 'FIELD')) then
       ctx%output_kind = 1
@@ -346,6 +367,9 @@ contains
         return
       end if
       ctx%model%steps(ctx%istep)%field_intervals = k
+      ! TIME INTERVAL=dt: frames at the first increment at or after each multiple of dt, as NUMBER INTERVAL =
+      ! period / dt does (Abaqus' TIME MARKS=NO: the increments are not cut to hit the marks)
+      if (deck_has_param(ctx%params, 'TIME INTERVAL')) call time_interval(ctx)
     else if (deck_has_param(ctx%params, 'HISTORY')) then
       ctx%output_kind = 2
       call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
@@ -354,6 +378,30 @@ contains
       call ctx_fail(ctx, ctx%ir, 'FIELD or HISTORY required')
     end if
   end subroutine read_output
+
+  !> *OUTPUT, FIELD, TIME INTERVAL=dt as NUMBER INTERVAL = period / dt (a period that is not a multiple of dt
+  !> within 1e-6 is refused: the frames would not fall at the multiples of dt).
+  subroutine time_interval(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    real(dp) :: dt, n
+    if (deck_has_param(ctx%params, 'NUMBER INTERVAL')) then
+      call ctx_fail(ctx, ctx%ir, 'TIME INTERVAL and NUMBER INTERVAL exclude each other')
+      return
+    end if
+    if (.not. ctx_get_real(ctx, ctx%ir, deck_param_value(ctx%params, 'TIME INTERVAL'), dt)) return
+    associate (st => ctx%model%steps(ctx%istep))
+      if (.not. (dt > 0.0_dp) .or. st%period <= 0.0_dp) then
+        call ctx_fail(ctx, ctx%ir, 'TIME INTERVAL must be positive and follow the step''s procedure line')
+        return
+      end if
+      n = st%period / dt
+      if (abs(n - nint(n)) > 1.0e-6_dp * n .or. nint(n) < 1) then
+        call ctx_fail(ctx, ctx%ir, 'TIME INTERVAL must divide the step period')
+        return
+      end if
+      st%field_intervals = nint(n)
+    end associate
+  end subroutine time_interval
 
   !> *ELEMENT OUTPUT / *NODE OUTPUT under *OUTPUT, FIELD: the variables of the data lines (or VARIABLE=) join the
   !> step's field request; a variable the host cannot write is warned about with its line (never silently dropped).

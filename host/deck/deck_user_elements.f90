@@ -37,7 +37,11 @@ contains
       return
     end if
     read (ut%name(2:), *) ut%jtype
-    if (model_find_user_type(ctx%model, ut%name) > 0) then
+    k = model_find_user_type(ctx%model, ut%name)
+    if (k > 0) then
+      ! a part's *USER ELEMENT read again for its next instance: the one type it defines
+      if (ctx%model%utypes(k)%pos%line == ctx%src%rec(ir)%line .and. &
+          ctx%model%utypes(k)%pos%file == ctx%src%files(ctx%src%rec(ir)%file_id)%name) return
       call ctx_fail(ctx, ir, 'user element '//trim(ut%name)//' defined twice')
       return
     end if

@@ -49,7 +49,8 @@ module solid_element
   use element_catalog, only: element_types, element_kind_of, element_nnode, element_ndim, element_ndi, &
     element_nshr, element_is_axisymmetric, element_is_plane_stress
   use solid_shape, only: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
-  use solid_elastic, only: elastic_update, elastic_check
+  use solid_elastic, only: elastic_update, elastic_check, elastic_law_t, elastic_law_update, elastic_law_check, &
+    thermal_strain_increment, elastic_law_shear_modulus, elastic_thickness_increment, law_lamina
   use solid_tangent_kernel, only: k_point_c3d8
   implicit none
   private
@@ -84,6 +85,8 @@ module solid_element
     logical :: unsymm = .false.                         !< *USER MATERIAL, UNSYMM: keep the unsymmetric tangent
     real(dp) :: thickness = 1.0_dp                      !< *SOLID SECTION thickness of plane elements (CPE4)
     real(dp) :: alpha = 0.0_dp                          !< *EXPANSION isotropic coefficient (thermal strain alpha dT)
+    type(elastic_law_t) :: law                          !< law%general: *ELASTIC/*EXPANSION other than constant
+                                                        !< isotropic (then used instead of e, nu, alpha)
     procedure(umat_interface), pointer, nopass :: umat => null()  !< the UMAT to call when kind = SOLID_MAT_UMAT
   end type solid_material_t
 
@@ -400,7 +403,15 @@ contains
     end if
     select case (mat%kind)
     case (SOLID_MAT_ELASTIC)
-      call elastic_check(mat%e, mat%nu, i, errmsg)
+      if (mat%law%general) then
+        call elastic_law_check(mat%law, i, errmsg)
+        if (i == 0 .and. mat%law%kind == law_lamina .and. .not. (element_is_plane_stress(it) .and. .not. nlgeom)) &
+          errmsg = '*ELASTIC, TYPE=LAMINA: plane-stress elements without NLGEOM only (its constants give no '// &
+          'through-thickness stiffness; ENGINEERING CONSTANTS give it)'
+        if (len_trim(errmsg) > 0) i = 1
+      else
+        call elastic_check(mat%e, mat%nu, i, errmsg)
+      end if
       if (i /= 0) then
         call fail(2, here // trim(errmsg))
         return
@@ -492,7 +503,9 @@ contains
         ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
         ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
         ! (STATEV row nstatv+1) so that k is constant and the tangent consistent after the first increment.
-        if (mat%kind == SOLID_MAT_ELASTIC) then
+        if (mat%kind == SOLID_MAT_ELASTIC .and. mat%law%general) then
+          ghg = elastic_law_shear_modulus(mat%law)
+        else if (mat%kind == SOLID_MAT_ELASTIC) then
           ghg = mat%e / (2 * (1 + mat%nu))
         else
           ghg = statev_old(nsv + 1, 1)
@@ -609,7 +622,7 @@ contains
       real(dp) :: bcr(maxnode, 3), trs
       real(dp) :: kl8(8, 3, 3, 8)   ! C3D8: contiguous fixed-size accumulator of the vectorised kernel
       real(dp) :: d8(8, 3), b8(8, 3), r8(8, 3)
-      real(dp) :: hc(maxnode), thk, lt1(maxip), f2m(2, 2), g2(2, 2), dt_ip
+      real(dp) :: hc(maxnode), thk, lt1(maxip), f2m(2, 2), g2(2, 2), dt_ip, t_ip, a2(2, 2), dth(6), r33(3, 3)
       real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3), s_unit(6), col_g(6, 6)
       integer :: icol
       logical :: k8, axi, local
@@ -664,8 +677,23 @@ contains
                       reshape([f2m(2, 2), -f2m(2, 1), -f2m(1, 2), f2m(1, 1)], [2, 2]) / j1)
           dt_ip = 0.0_dp
           if (present(dtemp_nodes)) dt_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
-          lt1(ip) = statev_old(nsv + nextra, ip) - mat%nu / (1.0_dp - mat%nu) * (g2(1, 1) + g2(2, 2)) &
-                    + (1.0_dp + mat%nu) / (1.0_dp - mat%nu) * mat%alpha * dt_ip
+          if (mat%law%general) then
+            ! the general law: its compliance in the material axes (turned with the material, as the stress)
+            t_ip = 0.0_dp
+            if (present(temp_nodes)) t_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
+            a2 = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+            if (present(orient)) then
+              fm = fg1(:, :, ip)
+              fm(3, 3) = 1.0_dp
+              r33 = matmul(polar_rotation(fm), orient(:, :, ip))
+              a2 = r33(1:2, 1:2)
+            end if
+            lt1(ip) = statev_old(nsv + nextra, ip) + elastic_thickness_increment(mat%law, t_ip, dt_ip, a2, &
+              [g2(1, 1), g2(2, 2), g2(1, 2) + g2(2, 1)])
+          else
+            lt1(ip) = statev_old(nsv + nextra, ip) - mat%nu / (1.0_dp - mat%nu) * (g2(1, 1) + g2(2, 2)) &
+                      + (1.0_dp + mat%nu) / (1.0_dp - mat%nu) * mat%alpha * dt_ip
+          end if
           fg0(3, 3, ip) = exp(statev_old(nsv + nextra, ip))
           fg1(3, 3, ip) = exp(lt1(ip))
         end if
@@ -788,13 +816,23 @@ contains
         dtemp_ip = 0.0_dp
         if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
         if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
-        if (mat%alpha /= 0.0_dp) dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
+        if (mat%law%general) then
+          call thermal_strain_increment(mat%law, temp_ip, dtemp_ip, ndi, nshr, dth(1:ntens))
+          dstran(1:ntens) = dstran(1:ntens) - dth(1:ntens)
+        else if (mat%alpha /= 0.0_dp) then
+          dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
+        end if
         ddsdde = 0.0_dp
         pn = SOLID_PNEWDT_LARGE
         select case (mat%kind)
         case (SOLID_MAT_ELASTIC)
-          call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), &
-            sse)
+          if (mat%law%general) then
+            call elastic_law_update(mat%law, temp_ip, dtemp_ip, ndi, nshr, stress(1:ntens), stran(1:ntens), &
+              dstran(1:ntens), ddsdde(1:ntens, 1:ntens), sse)
+          else
+            call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), &
+              sse)
+          end if
         case default
           sv = 0.0_dp
           if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)

@@ -11,12 +11,14 @@ module model_types
   public :: etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor, transform_t
-  public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes, output_request_t
+  public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes, output_request_t, model_sdv_name
+  public :: elastic_lamina
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   !> model_t%elem_kind of a user element (UEL); a continuum element's kind is its index in the element catalogue
   !> (element_catalog.f90: element_types), which holds everything about the continuum types
   integer, parameter :: etype_user = 0
+  integer, parameter :: elastic_lamina = 4  !< *ELASTIC, TYPE=LAMINA in material_t%elastic_kind (solid_elastic's law_lamina)
   integer, parameter :: max_node_dof = 3   !< displacement dofs per node at most
   integer, parameter :: init_stress = 1    !< *INITIAL CONDITIONS, TYPE=STRESS
   integer, parameter :: init_solution = 2  !< *INITIAL CONDITIONS, TYPE=SOLUTION
@@ -54,13 +56,29 @@ module model_types
     real(dp), allocatable :: props(:)      !< user material constants
     logical :: unsymm = .false.            !< *USER MATERIAL, UNSYMM
     integer :: nstatv = 0                  !< *DEPVAR
+    character(len=name_len), allocatable :: sdv_key(:)  !< *DEPVAR output key of each state variable ('' none)
+    character(len=name_len), allocatable :: sdv_desc(:) !< *DEPVAR description of each ('' none)
     integer :: plastic_statev = 0          !< STATEV of an equivalent plastic strain, '**LDFCZ STATEV' (0: none)
     logical :: has_expansion = .false.     !< *EXPANSION given
     real(dp) :: alpha = 0.0_dp             !< isotropic thermal expansion coefficient [1/K]
+    ! *ELASTIC and *EXPANSION as tables over temperature (docs/host.md); young, poisson and alpha above hold the
+    ! constant isotropic case, which these tables then also describe (one data point)
+    integer :: elastic_kind = 0            !< 0 none, 1 ISOTROPIC, 2 ORTHOTROPIC, 3 ENGINEERING CONSTANTS, 4 LAMINA,
+                                           !< 5 ANISOTROPIC (solid_elastic's law_*)
+    real(dp), allocatable :: elastic_temp(:)     !< (npoint) temperatures of the data points, ascending
+    real(dp), allocatable :: elastic_data(:, :)  !< (constants, npoint) as the Keywords Guide orders them
+    type(source_pos_t) :: elastic_pos      !< the *ELASTIC line
+    integer :: expansion_kind = 0          !< 0 none, 1 ISO, 2 ORTHO, 3 ANISO
+    real(dp), allocatable :: expansion_temp(:)    !< (npoint) temperatures, ascending
+    real(dp), allocatable :: expansion_data(:, :) !< (1, 3 or 6, npoint) coefficients
+    real(dp) :: expansion_zero = 0.0_dp    !< ZERO=: reference temperature of the coefficients
     logical :: has_density = .false.      !< *DENSITY given
     real(dp) :: density = 0.0_dp           !< mass density [t/mm^3 in N, mm, s units]
+    logical :: density_varies = .false.    !< *DENSITY given at several temperatures (refused with GRAV)
     type(source_pos_t) :: pos              !< where *MATERIAL was
     type(source_pos_t) :: user_pos         !< first data line of *USER MATERIAL (messages of a UMAT's XIT)
+    character(len=name_len) :: builtin = '' !< '**LDFCZ BUILTIN, UMAT=name': the built-in UMAT it may run ('' none)
+    type(source_pos_t) :: builtin_pos      !< where that declaration is
   end type material_t
 
   type :: section_t
@@ -113,6 +131,8 @@ module model_types
     integer :: sv_traction = 0             !< position: traction magnitude
     integer :: sv_length_prop = 0          !< PROPS entry of the opening length scale (delta)
     type(source_pos_t) :: pos
+    character(len=name_len) :: builtin = '' !< '**LDFCZ BUILTIN, UEL=name': the built-in UEL it may run ('' none)
+    type(source_pos_t) :: builtin_pos      !< where that declaration is
   end type user_element_type_t
 
   !> One *UEL PROPERTY block.
@@ -545,5 +565,36 @@ contains
     end do
     a = amp%a(n)
   end function amplitude_value
+
+  !> Output name of state variable k: 'SDV_key' when every material that names it (*DEPVAR key) gives it the same
+  !> key, as Abaqus names the field output of a named state variable; 'SDVk' otherwise. Characters other than
+  !> letters, digits, '_' and '-' become '_' (the name is an XML attribute in the VTU frames).
+  function model_sdv_name(model, k) result(name)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: k            !< state variable number
+    character(len=:), allocatable :: name, key
+    character(len=16) :: b
+    integer :: im, i
+    key = ''
+    do im = 1, model%nmat
+      if (.not. allocated(model%materials(im)%sdv_key)) cycle
+      if (k > size(model%materials(im)%sdv_key)) cycle
+      if (len_trim(model%materials(im)%sdv_key(k)) == 0) cycle
+      if (len(key) > 0 .and. key /= trim(model%materials(im)%sdv_key(k))) then
+        key = ''
+        exit
+      end if
+      key = trim(model%materials(im)%sdv_key(k))
+    end do
+    write (b, '(i0)') k
+    if (len(key) == 0) then
+      name = 'SDV'//trim(b)
+      return
+    end if
+    do i = 1, len(key)
+      if (verify(key(i:i), 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-') /= 0) key(i:i) = '_'
+    end do
+    name = 'SDV_'//key
+  end function model_sdv_name
 
 end module model_types

@@ -18,7 +18,7 @@ module output_files
   !> vector written without names) and values, Float64 or Int32. The writer (field_frame) fills them from the
   !> output registry, in VTK's component order.
   type :: output_vtu_array_t
-    character(len=16) :: name = ''           !< array name
+    character(len=64) :: name = ''           !< array name (SDV_key names of *DEPVAR keys may be long)
     integer :: ncomp = 1                     !< components
     character(len=8), allocatable :: comp_names(:) !< (ncomp) ComponentName attributes (absent: none written)
     logical :: int32 = .false.               !< integer values (written as Int32)

@@ -1,7 +1,7 @@
-!> The UEL and UMAT the host calls, as procedure pointers with the exact Abaqus interfaces: the built-in ldfcz
-!> routines by default, or a user's own Fortran source compiled at run time into a shared library and loaded with
-!> dlopen (as `abaqus job=... user=...` does). The executable exports XIT, STDB_ABQERR, ... (-rdynamic), so the
-!> library resolves them from the host.
+!> The UEL and UMAT the host calls, as procedure pointers with the exact Abaqus interfaces: a user's own Fortran
+!> source compiled at run time into a shared library and loaded with dlopen (as `abaqus job=... user=...` does), or
+!> a built-in ldfcz routine that the deck declares by name (builtin_routines.F90, routine_choice.f90). The
+!> executable exports XIT, STDB_ABQERR, ... (-rdynamic), so the library resolves them from the host.
 module user_routines
   use, intrinsic :: iso_c_binding, only: c_ptr, c_funptr, c_char, c_int, c_null_char, c_null_ptr, c_associated, &
     c_f_procpointer, c_f_pointer, c_size_t
@@ -10,7 +10,7 @@ module user_routines
   implicit none
   private
   public :: uel_interface, umat_interface, uexternaldb_interface, disp_interface, user_routines_t, &
-    user_routines_builtin
+    user_routines_builtin, builtin_routine, builtin_names
   public :: user_routines_load
   public :: user_source_compile_command, user_routines_connect_units
 
@@ -91,10 +91,23 @@ module user_routines
   end interface
 
   interface
-    !> Points r at the built-in UEL and UMAT that were linked in (host/user/builtin_routines.F90).
+    !> Points r at the default built-in UEL and UMAT that were linked in (host/user/builtin_routines.F90).
     module subroutine user_routines_builtin(r)
       type(user_routines_t), intent(inout) :: r  !< routines
     end subroutine user_routines_builtin
+    !> The built-in routine of a kind ('UMAT', 'UEL') and name: its procedure and source ('' when none).
+    module subroutine builtin_routine(kind, name, pu, pm, source)
+      character(len=*), intent(in) :: kind
+      character(len=*), intent(in) :: name
+      procedure(uel_interface), pointer, intent(out) :: pu
+      procedure(umat_interface), pointer, intent(out) :: pm
+      character(len=:), allocatable, intent(out) :: source
+    end subroutine builtin_routine
+    !> Names of the built-in routines of a kind, comma-separated ('none' when none was built).
+    module function builtin_names(kind) result(names)
+      character(len=*), intent(in) :: kind
+      character(len=:), allocatable :: names
+    end function builtin_names
   end interface
 
 contains
@@ -103,7 +116,8 @@ contains
   !> (-cpp, with ABQ_LNX86_64 and ABQ_FORTRAN defined), fixed form with 132 columns for .f/.for/.f77 (Abaqus'
   !> -extend-source), free form otherwise, position-independent, locals on the stack (Abaqus' -auto: the threaded
   !> element loop calls the routines concurrently), Cray pointers accepted (the SMA arrays of Abaqus' examples are
-  !> used through them; Intel Fortran accepts them by default). compiler is gfortran (default) or an LLVM flang;
+  !> used through them; Intel Fortran accepts them by default), argument mismatches between calls a warning (as
+  !> Intel Fortran takes them). compiler is gfortran (default) or an LLVM flang;
   !> fflags (--fflags, FFLAGS) come last, so they can override.
   function user_source_compile_command(compiler, source, object, include_dirs, fflags) result(cmd)
     character(len=*), intent(in) :: compiler      !< Fortran compiler (FC, --fc)
@@ -128,7 +142,10 @@ contains
         end if
       end select
     end if
-    extra = ' -O2 -frecursive -fcray-pointer'
+    ! -fallow-argument-mismatch: a call whose actual argument differs in rank or type from another call of the
+    ! same routine (a scalar where an array is expected) is a warning, not an error, as Intel Fortran (Abaqus'
+    ! compiler) takes it: published user routines rely on it
+    extra = ' -O2 -frecursive -fcray-pointer -fallow-argument-mismatch'
     if (flang) extra = ' -O2'
     cmd = compiler//' -c -fPIC -cpp -DABQ_LNX86_64 -DABQ_FORTRAN'//extra//form//include_dirs
     if (len_trim(fflags) > 0) cmd = cmd//' '//trim(fflags)
@@ -159,6 +176,8 @@ contains
 
     stat = 0
     errmsg = ''
+    if (.not. allocated(r%uel_origin)) r%uel_origin = 'none'
+    if (.not. allocated(r%umat_origin)) r%umat_origin = 'none'
     fc = 'gfortran'
     if (present(compiler)) then
       if (len_trim(compiler) > 0) fc = trim(compiler)

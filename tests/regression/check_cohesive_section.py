@@ -62,7 +62,7 @@ def deck(path, kind):
             out.append("%d, %d, %d, %d, %d" % (e, nid(lo, i), nid(lo, i + 1), nid(hi, i + 1), nid(hi, i)))
     nprops, njprops = (2, 3) if kind == "cax" else (7, 2)
     out += ["*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=%d, I PROPERTIES=%d, VARIABLES=8, UNSYMM"
-            % (nprops, njprops), "1, 2", "*ELEMENT, TYPE=U2, ELSET=COH"]
+            % (nprops, njprops), "1, 2", "**LDFCZ BUILTIN, UEL=LDF", "*ELEMENT, TYPE=U2, ELSET=COH"]
     for i in range(NX):
         e += 1
         out.append("%d, %d, %d, %d, %d" % (e, nid(1, i), nid(1, i + 1), nid(2, i + 1), nid(2, i)))

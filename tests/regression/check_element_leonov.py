@@ -95,7 +95,8 @@ def deck(path, etype):
         out += ["1, " + conn]
     for i in range(len(x)):
         out += ["*NSET, NSET=N%d" % (i + 1), "%d," % (i + 1)]
-    out += ["*SOLID SECTION, ELSET=E, MATERIAL=PET", "*MATERIAL, NAME=PET", "*USER MATERIAL, CONSTANTS=10, UNSYMM",
+    out += ["*SOLID SECTION, ELSET=E, MATERIAL=PET", "*MATERIAL, NAME=PET", "**LDFCZ BUILTIN, UMAT=LEONOV",
+            "*USER MATERIAL, CONSTANTS=10, UNSYMM",
             PROPS, "*DEPVAR", "12" if etype.startswith("CPS") else "11", "**LDFCZ STATEV, MATERIAL=PET, PLASTIC STRAIN=7",
             "*STEP, NLGEOM=YES, INC=1000", "*STATIC, DIRECT", "%g, %g" % (T / STEPS, T), "*BOUNDARY"]
     for i, p in enumerate(x):
@@ -150,7 +151,7 @@ def plane_stress_case(a):
         out += ["*NSET, NSET=N%d" % (i + 1), "%d," % (i + 1)]
     out += amplitude("L1", times, [v - 1.0 for v in lam[0]]) + amplitude("L2", times, [v - 1.0 for v in lam[1]])
     out += ["*SOLID SECTION, ELSET=E, MATERIAL=PET", "1.", "*MATERIAL, NAME=PET",
-            "*USER MATERIAL, CONSTANTS=10, UNSYMM",
+            "**LDFCZ BUILTIN, UMAT=LEONOV", "*USER MATERIAL, CONSTANTS=10, UNSYMM",
             PROPS, "*DEPVAR", "12", "**LDFCZ STATEV, MATERIAL=PET, PLASTIC STRAIN=7",
             "*STEP, NLGEOM=NO, INC=1000", "*STATIC, DIRECT", "%g, %g" % (T / STEPS, T), "*BOUNDARY"]
     for i, p in enumerate(x):

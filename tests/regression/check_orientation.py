@@ -2,6 +2,8 @@
 """*ORIENTATION on *SOLID SECTION: a rotated orthotropic UMAT against the unrotated one.
 
   check_orientation.py --exe BIN --out DIR --user user_umat_ortho.f90
+  check_orientation.py --exe BIN --out DIR --material elastic   (the same cases with the host's *ELASTIC,
+                                                                 TYPE=ENGINEERING CONSTANTS of the same constants)
 
 A unit C3D8 cube of an orthotropic material (tests/regression/user_umat_ortho.f90) with every node prescribed,
 u = t H X (a homogeneous deformation F = I + t H, four fixed increments). For a homogeneous state the nodal
@@ -33,6 +35,19 @@ import sys
 
 PROPS = [1000.0, 400.0, 250.0, 0.25, 0.15, 0.3, 150.0, 120.0, 90.0]
 X = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+
+
+MATERIAL = ["umat"]  # "umat": user_umat_ortho.f90; "elastic": *ELASTIC, TYPE=ENGINEERING CONSTANTS (main's --material)
+
+
+def material_lines():
+    """The material's lines: the user UMAT's PROPS or the same constants as *ELASTIC engineering constants."""
+    head = "*User Material, constants=9" if MATERIAL[0] == "umat" else "*Elastic, type=ENGINEERING CONSTANTS"
+    return [head, ", ".join("%.17g" % p for p in PROPS[:8]), "%.17g" % PROPS[8]]
+
+
+def user_args(user):
+    return ["--user", user] if user else []
 
 
 def fail(msg):
@@ -79,8 +94,8 @@ def deck(path, h, nlgeom, orient, h2=None):
         out += ["*Solid Section, elset=CUBE, material=ORTHO, orientation=ORI"]
     else:
         out += ["*Solid Section, elset=CUBE, material=ORTHO"]
-    out += ["*Material, name=ORTHO", "*User Material, constants=9", ", ".join("%.17g" % p for p in PROPS[:8]),
-            "%.17g" % PROPS[8], "*Step, nlgeom=%s" % ("YES" if nlgeom else "NO"), "*Static, direct", "0.25, 1.",
+    out += ["*Material, name=ORTHO"] + material_lines() + [
+            "*Step, nlgeom=%s" % ("YES" if nlgeom else "NO"), "*Static, direct", "0.25, 1.",
             "*Boundary"]
     for a, x in enumerate(X):
         for i in range(3):
@@ -102,7 +117,7 @@ def run(exe, out, user, job, h, nlgeom, orient, h2=None, step=None):
     os.makedirs(out, exist_ok=True)
     path = os.path.join(out, job + ".inp")
     deck(path, h, nlgeom, orient, h2)
-    res = subprocess.run([exe, "-q", "--user", user, path], cwd=out, stdout=subprocess.PIPE,
+    res = subprocess.run([exe, "-q"] + user_args(user) + [path], cwd=out, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
     if res.returncode != 0:
         print(res.stdout)
@@ -180,8 +195,7 @@ def part_deck(path, h, place, q1, extra):
     out += ["*End Instance"]
     for a in range(8):
         out += ["*Nset, nset=N%d, instance=C-1" % (a + 1), "%d," % (a + 1)]
-    out += ["*End Assembly", "*Material, name=ORTHO", "*User Material, constants=9",
-            ", ".join("%.17g" % p for p in PROPS[:8]), "%.17g" % PROPS[8], "*Step, nlgeom=NO", "*Static, direct",
+    out += ["*End Assembly", "*Material, name=ORTHO"] + material_lines() + ["*Step, nlgeom=NO", "*Static, direct",
             "0.5, 1.", "*Boundary"]
     for a, x in enumerate(xs):
         for i in range(3):
@@ -209,7 +223,7 @@ def run_part(exe, out, user, job, h, place, q1, extra):
     os.makedirs(out, exist_ok=True)
     path = os.path.join(out, job + ".inp")
     xs = part_deck(path, h, place, q1, extra)
-    res = subprocess.run([exe, "-q", "--user", user, path], cwd=out, stdout=subprocess.PIPE,
+    res = subprocess.run([exe, "-q"] + user_args(user) + [path], cwd=out, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
     if res.returncode != 0:
         print(res.stdout)
@@ -225,10 +239,14 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", required=True)
-    ap.add_argument("--user", required=True)
+    ap.add_argument("--user")
+    ap.add_argument("--material", choices=["umat", "elastic"], default="umat")
     ap.add_argument("--case", required=True, choices=["small", "nlgeom", "rigid", "instance"])
     a = ap.parse_args()
-    exe, out, user = os.path.abspath(a.exe), os.path.abspath(a.out), os.path.abspath(a.user)
+    MATERIAL[0] = a.material
+    if a.material == "umat" and not a.user:
+        fail("--material umat needs --user user_umat_ortho.f90")
+    exe, out, user = os.path.abspath(a.exe), os.path.abspath(a.out), os.path.abspath(a.user) if a.user else None
     # axes turned by Q = Q2 Q1: the points a, b of Q1, then an additional 25 degree rotation about local axis 3
     q1 = matmul(rot((1, 2, 2), 40.0), rot((0, 0, 1), 0.0))
     q = matmul(q1, rot((0, 0, 1), 25.0))

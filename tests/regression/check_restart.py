@@ -183,8 +183,9 @@ def refusals(a, base, out, rst, run_deck):
     """Refused with exit 2: another deck, the same deck with EXTRAPOLATION changed, a truncated file, a file that is
     not a restart file, a file of a build whose summary record has another size."""
     if a.other_deck:
-        p = run(base + ["--out", os.path.join(out, "other"), "--restart-from", rst, os.path.abspath(a.other_deck)],
-                out, expect=[2])
+        user = ["--user", a.other_user] if a.other_user else []
+        p = run(base + user + ["--out", os.path.join(out, "other"), "--restart-from", rst,
+                               os.path.abspath(a.other_deck)], out, expect=[2])
         if "different model" not in p.stdout + p.stderr:
             fail("the refusal does not say 'different model': " + (p.stdout + p.stderr)[-500:])
     if a.np or a.no_refusals:
@@ -324,6 +325,7 @@ def main():
     ap.add_argument("--modes", help="interruptions to check one after the other: stop, term, kill (comma-separated)")
     ap.add_argument("--deck-restart", action="store_true", help="*RESTART, WRITE in the deck, not the option")
     ap.add_argument("--other-deck", help="a restart with this deck must be refused")
+    ap.add_argument("--other-user", help="the user routine file the other deck needs")
     ap.add_argument("--rel", type=float, default=1e-12, help="relative tolerance of the CSV (0: bit for bit)")
     ap.add_argument("--atol", type=float, default=0.0, help="absolute tolerance added (sums that cancel)")
     ap.add_argument("--expect-exit", type=int, default=0, help="exit status of the complete runs (3: stops early)")

@@ -125,7 +125,7 @@ def cohesive_block(e_block, top_disp, name, title, static):
              "*NSET, NSET=BOTTOM", "1, 2, 3, 4", "*NSET, NSET=IFACE", "5, 6, 7, 8", "*NSET, NSET=TOP",
              "9, 10, 11, 12",
              "*USER ELEMENT, TYPE=U1, NODES=8, COORDINATES=3, PROPERTIES=3, I PROPERTIES=2, VARIABLES=16, UNSYMM",
-             "1, 2, 3", "**LDFCZ SVARS, TYPE=U1, POINTS=4, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2",
+             "1, 2, 3", "**LDFCZ BUILTIN, UEL=LDF", "**LDFCZ SVARS, TYPE=U1, POINTS=4, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2",
              "*ELEMENT, TYPE=U1, ELSET=COHESIVE", "1, 1, 2, 3, 4, 5, 6, 7, 8",
              "*UEL PROPERTY, ELSET=COHESIVE", "0.2, 3.679E-3, 0.0, 1, 1",
              "*ELEMENT, TYPE=C3D8, ELSET=BLOCK", "2, 5, 6, 7, 8, 9, 10, 11, 12",

@@ -76,7 +76,7 @@ def build(le, nz, flip, opening, etype="C3D8"):
     lines.append("*ELEMENT, TYPE=%s, ELSET=ARMS" % etype)
     lines += ["%d, %s" % (e + 1, ", ".join(map(str, n))) for e, n in enumerate(solids)]
     lines += ["*USER ELEMENT, TYPE=U1, NODES=8, COORDINATES=3, PROPERTIES=3, I PROPERTIES=2, VARIABLES=16, UNSYMM",
-              "1, 2, 3", "**LDFCZ SVARS, TYPE=U1, POINTS=4, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2",
+              "1, 2, 3", "**LDFCZ BUILTIN, UEL=LDF", "**LDFCZ SVARS, TYPE=U1, POINTS=4, PER POINT=4, DELTA MAX=1, OPENING=2, TRACTION=3, LENGTH PROPERTY=2",
               "*ELEMENT, TYPE=U1, ELSET=COHESIVE"]
     lines += ["%d, %s" % (len(solids) + e + 1, ", ".join(map(str, n))) for e, n in enumerate(cohesive)]
     lines += ["*UEL PROPERTY, ELSET=COHESIVE", "%.10g, %.10g, 0, 1, 1" % (PHI, DELTA),

@@ -240,12 +240,14 @@ def build(p):
         w('*USER ELEMENT, TYPE=U1, NODES=8, COORDINATES=3, PROPERTIES=%d, I PROPERTIES=%d, VARIABLES=%d, UNSYMM'
           % (nprops, njprops, 4 * UEL_NSVARS_PER_IP))
         w('1, 2, 3')
+        w('**LDFCZ BUILTIN, UEL=LDF')
         w(LDFCZ_SVARS_3D)
         w('*ELEMENT, TYPE=U1, ELSET=COHESIVE')
     else:
         w('*USER ELEMENT, TYPE=U2, NODES=4, COORDINATES=2, PROPERTIES=%d, I PROPERTIES=%d, VARIABLES=%d, UNSYMM'
           % (nprops, njprops, 2 * UEL_NSVARS_PER_IP))
         w('1, 2')
+        w('**LDFCZ BUILTIN, UEL=LDF')
         w(LDFCZ_SVARS_2D)
         w('*ELEMENT, TYPE=U2, ELSET=COHESIVE')
     for iy in range(ny_el):
@@ -295,6 +297,7 @@ def build(p):
             w('1.0')
     w('*MATERIAL, NAME=PET')
     pet = pet_constants(p.pet) + ([p.dgamma_max] if p.dgamma_max > 0.0 else [])
+    w('**LDFCZ BUILTIN, UMAT=LEONOV')
     w('*USER MATERIAL, CONSTANTS=%d, UNSYMM' % len(pet))
     w(', '.join('%.9g' % v for v in pet[:8]))
     w(', '.join('%.9g' % v for v in pet[8:]))
