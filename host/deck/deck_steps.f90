@@ -356,9 +356,14 @@ contains
     else if (deck_has_param(ctx%params, 'HISTORY')) then
       ctx%output_kind = 2
       ctx%model%steps(ctx%istep)%history_given = .true.
-      if (allocated(points)) ctx%model%steps(ctx%istep)%history_points = points
-      call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
-        'this request and its *NODE/*ELEMENT OUTPUT lines write nothing')
+      if (allocated(points)) then
+        ctx%model%steps(ctx%istep)%history_points = points
+        call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
+          'this request and its *NODE/*ELEMENT OUTPUT lines write nothing (its TIME POINTS do end increments)')
+      else
+        call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
+          'this request and its *NODE/*ELEMENT OUTPUT lines write nothing')
+      end if
     else
       call ctx_fail(ctx, ctx%ir, 'FIELD or HISTORY required')
     end if
