@@ -202,6 +202,39 @@ ldfcz_add_restart_test(restart_fields_velocity ${LDFCZ_RESTART_DECKS}/fields_vel
 ldfcz_add_restart_test(restart_constraints_transform ${LDFCZ_RESTART_DECKS}/constraints_transform.inp
   --modes stop,term --stop 6 --freq 1 --rel 0 --dat --point mid --no-refusals
   --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_disp.f --compare-files disp_calls.txt)
+# *MODEL CHANGE (removal, strain-free reactivation, the removed elements' forces ramped down), a kinematic *COUPLING
+# with the reference node's rotational dofs, CENTRIF and ROTA, *TIME POINTS over three steps; stopped within step 2
+# (after the reactivation) and, in a second test, at the end of step 2 (the forces to ramp down in step 3 come from
+# the restart file)
+ldfcz_add_restart_test(restart_model_change ${LDFCZ_RESTART_DECKS}/model_change.inp --modes stop,term --stop 7
+  --freq 1 --rel 0 --dat --point mid --no-refusals)
+ldfcz_add_restart_test(restart_model_change_step_end ${LDFCZ_RESTART_DECKS}/model_change.inp --stop 10 --freq 1
+  --rel 0 --dat --point end --no-refusals)
+
+# issue 36 item 4 (docs/host.md): *COUPLING against statics, rigid motion, beam theory and twin *EQUATION decks;
+# *EQUATION over node sets against the same equations node by node (tests/regression/check_couplings.py)
+foreach(case kinematic kinematic_twin distributing distributing_twin kinematic_2d equation_sets)
+  add_test(NAME deck_coupling_${case} COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_couplings.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/coupling_${case} --case ${case})
+  set_tests_properties(deck_coupling_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+# CENTRIF and ROTA against the closed forms of a spinning disc (tests/regression/check_rotational_loads.py)
+foreach(case centrif_plane_stress centrif_axisymmetric centrif_3d rota centrif_nlgeom)
+  add_test(NAME deck_rotational_${case} COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_rotational_loads.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/rotational_${case} --case ${case}
+    --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_neohooke.f90)
+  set_tests_properties(deck_rotational_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+# *MODEL CHANGE against closed forms and the deck without the elements, *TIME POINTS hit exactly, *NODE PRINT,
+# GLOBAL=YES against the transformed components (tests/regression/check_step_options.py)
+foreach(case model_change model_change_nlgeom time_points node_print_global)
+  add_test(NAME deck_step_${case} COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_step_options.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/step_${case} --case ${case})
+  set_tests_properties(deck_step_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
 
 # field output as ParaView reads it: tensors in VTK's order with names, principal values, requests carried over
 # to the next step, a warning for a variable that cannot be written (python3-vtk9 reads the frames)

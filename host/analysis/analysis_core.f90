@@ -5,7 +5,7 @@ module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, etype_user, orientation_axes
+  use model_types, only: model_t, etype_user, orientation_axes, model_dof_node
   use element_catalog, only: element_name
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, &
@@ -25,7 +25,9 @@ module analysis_core
   use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_max, &
     parallel_any, parallel_lowest
   use element_partition, only: partition_elements
-  use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform
+  use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform, &
+    constraints_mark_masters
+  use coupling_constraints, only: coupling_mark_used
   use node_rotations, only: node_rotation_t, node_rotations_build, element_to_global, element_to_local, &
     element_matrix_to_local
   implicit none
@@ -181,7 +183,8 @@ contains
       opt%factor_min_flops, opt%reproducible)
     an%routines = routines
     an%ndim = model%ndim
-    an%ndof = model%ndim * model%nnode
+    ! the displacement dofs of the nodes, then the rotational dofs of the couplings' reference nodes (model_dof)
+    an%ndof = model%ndim * model%nnode + model%nrot
     allocate (an%elem_ptr(model%nelem + 1), an%elem_nip(model%nelem), an%elem_tname(model%nelem))
     an%elem_ptr(1) = 1
     an%elem_nip = 0
@@ -222,6 +225,7 @@ contains
       end do
       an%used(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)) = .true.
     end do
+    call coupling_mark_used(model, an%used)
     an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
     call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)
 
@@ -312,9 +316,13 @@ contains
     if (stat /= 0) return
     call constraints_build(an%eqs%cs, model, an%used, stat, errmsg)
     if (stat /= 0) return
+    call constraints_mark_masters(an%eqs%cs, an%used)
     ! the state before the first increment (analysis_state): the model data's boundaries, the initial temperatures
     ! and field variables; the element states above
     call analysis_state_init(an%state, model, an%ndof)
+    ! *MODEL CHANGE: the displacements at reactivation, per element dof (model_change)
+    allocate (an%state%u_ref(merge(size(an%elem_dof), 0, model%has_model_change)))
+    an%state%u_ref = 0.0_dp
     an%work%temp_end = an%state%temp_start
     an%work%field_end = an%state%field_start
     an%work%trial = an%state%conv
@@ -354,9 +362,10 @@ contains
       if (an%eqs%prescribed(i) .and. an%eqs%cs%of_dof(i) /= 0) then
         stat = 2
         write (msg, '(a,i0,a,i0)') 'a *BOUNDARY prescribes dof ', mod(i - 1, an%ndim) + 1, ' of node ', &
-          model%node_id((i - 1) / an%ndim + 1)
-        errmsg = trim(msg)//', which an *EQUATION (its first term) or a *TIE (a slave node) eliminates: prescribe '// &
-          'another dof of the constraint, or drop it from the slave surface'
+          model%node_id(model_dof_node(model, i))
+        errmsg = trim(msg)//', which an *EQUATION (its first term), a *TIE (a slave node) or a kinematic *COUPLING '// &
+          '(a coupling node) eliminates: prescribe another dof of the constraint (the reference node of a coupling), '// &
+          'or drop it from the slave surface'
         return
       end if
     end do
@@ -379,7 +388,7 @@ contains
     end if
     allocate (eq_node(n))
     do i = 1, an%ndof
-      if (an%eqs%eq(i) > 0) eq_node(an%eqs%eq(i)) = (i - 1) / an%ndim + 1
+      if (an%eqs%eq(i) > 0) eq_node(an%eqs%eq(i)) = model_dof_node(model, i)
     end do
     an%eqs%elem_eq = an%eqs%eq(an%elem_dof)
     if (an%eqs%cs%n > 0) then
@@ -468,6 +477,13 @@ contains
         ie = an%eqs%color_elem(ic)
         if (.not. an%owned(ie)) cycle   ! another process's element (distributed run)
         n = an%elem_ptr(ie + 1) - an%elem_ptr(ie)
+        if (size(an%state%active) > 0) then
+          if (.not. an%state%active(ie)) then
+            ! removed (*MODEL CHANGE): not computed, no force, no tangent
+            an%work%fe(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = 0.0_dp
+            cycle
+          end if
+        end if
         pn = pnewdt_large
         call abaqus_set_caller(ie)
         call system_clock(e0)
@@ -635,9 +651,9 @@ contains
     character(len=*), intent(out) :: msg
     integer :: nn, a, iu, ip, mcrd, nsv, nf, nd
     real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8)
-    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
+    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho, ushift(n)
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
-    integer :: jdltyp(mdload, 1), lflags(5), ndload, im
+    integer :: jdltyp(mdload, 1), lflags(5), ndload, im, nact, jd
     integer, allocatable :: jprops(:)
     character(len=16) :: b
     integer :: kstep, kinc
@@ -656,18 +672,31 @@ contains
     nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
     ue = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
     due(:, 1) = ue - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    ! an element reactivated strain-free (model_change) works from X + u_ref with the displacement u - u_ref
+    ushift = 0.0_dp
+    if (size(an%state%shifted) > 0) then
+      if (an%state%shifted(ie)) ushift = an%state%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)
+    end if
+    ue = ue - ushift
     if (an%nr%elem_has(ie)) then
       ! *TRANSFORM: the element works in global components
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ue)
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(:, 1))
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ushift)
     end if
     if (model%elem_kind(ie) == etype_user) then
       iu = model%elem_utype(ie)
       mcrd = model%utypes(iu)%mcrd
       nf = model%nfield
       allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
+      nact = size(model%utypes(iu)%active)
       do a = 1, nn
         xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
+        if (.not. nlgeom) cycle
+        do jd = 1, nact
+          if (model%utypes(iu)%active(jd) <= mcrd) xc(model%utypes(iu)%active(jd), a) = &
+            xc(model%utypes(iu)%active(jd), a) + ushift((a - 1) * nact + jd)
+        end do
       end do
       ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
       ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
@@ -722,6 +751,7 @@ contains
     else
       do a = 1, nn
         coords(1:an%ndim, a) = model%x(1:an%ndim, model%conn(model%conn_ptr(ie) + a - 1))
+        if (nlgeom) coords(1:an%ndim, a) = coords(1:an%ndim, a) + ushift((a - 1) * an%ndim + 1:a * an%ndim)
       end do
       associate (st => an%work%trial(ie), cv => an%state%conv(ie))
         call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &

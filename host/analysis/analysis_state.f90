@@ -36,6 +36,9 @@ module analysis_state
     real(dp), allocatable :: rf(:)        !< (ndof) its reactions (energy balance; released by OP=NEW)
     real(dp), allocatable :: fext(:)      !< (ndof) its external and distributed-load forces (energy balance)
     real(dp), allocatable :: fcl(:)       !< (ndof) its concentrated loads (the next step's inherited loads)
+    !> (ndof) the forces the elements the next step removes exert on the rest at the end of this step, which that
+    !> step ramps down (*MODEL CHANGE, REMOVE; model_change); 0 elsewhere
+    real(dp), allocatable :: fremove(:)
   end type last_increment_t
 
   !> Everything a continuation needs (restart_file writes and reads it whole).
@@ -51,6 +54,10 @@ module analysis_state
     real(dp), allocatable :: temp_start(:)    !< (nnode) temperatures at the start of the increment
     real(dp), allocatable :: field_start(:)   !< (nfield*nnode) field variables at its start (n of node a at
                                               !< (a-1)*nfield+n)
+    ! *MODEL CHANGE (model_change; size 0 in a model without it)
+    logical, allocatable :: active(:)         !< (nelem) the element is in the model (not removed)
+    logical, allocatable :: shifted(:)        !< (nelem) reactivated strain-free: its reference is X + u_ref
+    real(dp), allocatable :: u_ref(:)         !< (element dofs, elem_ptr layout) the displacement at reactivation
   end type analysis_state_t
 
 contains
@@ -64,14 +71,19 @@ contains
     integer, intent(in) :: ndof                 !< dofs of the model
     s%progress = progress_t()
     call boundary_table_init(s%bc, ndof)
-    call boundary_apply(s%bc, model%initial_bcs, model%n_initial_bc, model%ndim, .true.)
+    call boundary_apply(s%bc, model%initial_bcs, model%n_initial_bc, model, .true.)
     call loads_init(s%loads, model, ndof)
     s%last%dt = 0.0_dp
     s%last%du = spread(0.0_dp, 1, ndof)
     s%last%rf = s%last%du
     s%last%fext = s%last%du
     s%last%fcl = s%last%du
+    s%last%fremove = s%last%du
     s%u_conv = s%last%du
+    allocate (s%active(merge(model%nelem, 0, model%has_model_change)))
+    s%active = .true.
+    allocate (s%shifted(size(s%active)))
+    s%shifted = .false.
     s%temp_start = initial_temperatures(model)
     s%field_start = initial_fields(model)
   end subroutine analysis_state_init
@@ -86,7 +98,7 @@ contains
     integer, intent(out) :: stat                         !< 0 ok, 2 input error
     character(len=:), allocatable, intent(out) :: errmsg !< message
     logical :: released(size(s%u_conv))
-    call boundary_step_begin(s%bc, model%steps(is), model%ndim, s%u_conv, released)
+    call boundary_step_begin(s%bc, model%steps(is), model, s%u_conv, released)
     call loads_step_begin(s%loads, model, is, s%progress%t_total0, s%last%fcl, merge(s%last%rf, 0.0_dp, released), &
       s%temp_start, s%field_start, stat, errmsg)
   end subroutine analysis_state_step_begin

@@ -4,7 +4,7 @@
 !> their values at the end of an increment (amplitude, ramp, velocity x DTIME, the user subroutine DISP).
 module boundary_table
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, boundary_t, amplitude_factor
+  use model_types, only: model_t, step_t, boundary_t, amplitude_factor, model_dof
   use increment, only: increment_t, increment_end
   use node_rotations, only: node_rotation_t, node_vector_global
   use user_routines, only: user_routines_t
@@ -43,18 +43,24 @@ contains
     bc%u_start = 0.0_dp
   end subroutine boundary_table_init
 
-  !> The *BOUNDARY definitions list(1:n) in deck order (the last one for a dof wins); initial: model data.
-  pure subroutine boundary_apply(bc, list, n, ndim, initial)
+  !> The *BOUNDARY definitions list(1:n) in deck order (the last one for a dof wins; dofs a node does not have are
+  !> skipped: model_dof); initial: model data.
+  pure subroutine boundary_apply(bc, list, n, model, initial)
     type(boundary_table_t), intent(inout) :: bc  !< the table
     type(boundary_t), intent(in) :: list(:)      !< definitions
     integer, intent(in) :: n                     !< definitions in use
-    integer, intent(in) :: ndim                  !< dofs per node
+    type(model_t), intent(in) :: model           !< the model (its dofs)
     logical, intent(in) :: initial               !< model data (kept by OP=NEW)
-    integer :: k, a, d, dof
+    integer :: k, a, d, dof, j
     do k = 1, n
       do a = 1, size(list(k)%nodes)
-        do d = list(k)%first_dof, min(list(k)%last_dof, ndim)
-          dof = (list(k)%nodes(a) - 1) * ndim + d
+        do j = list(k)%first_dof, list(k)%last_dof + 3
+          ! the dof range, then the rotations of a type (ENCASTRE, XSYMM, ...)
+          d = j
+          if (j > list(k)%last_dof) d = list(k)%rot_dofs(j - list(k)%last_dof)
+          dof = 0
+          if (d > 0) dof = model_dof(model, list(k)%nodes(a), d)
+          if (dof == 0) cycle
           bc%on(dof) = .true.
           bc%val(dof) = list(k)%value
           bc%amp(dof) = list(k)%amplitude
@@ -69,10 +75,10 @@ contains
   !> Start of step st from the converged displacement u_conv: inherited boundaries keep the value reached (a
   !> velocity the velocity reached, constant in this step), OP=NEW removes those of earlier steps, then the step's
   !> own. released: the dofs whose boundary this step removed (their reactions become decaying loads, step_loads).
-  pure subroutine boundary_step_begin(bc, st, ndim, u_conv, released)
+  pure subroutine boundary_step_begin(bc, st, model, u_conv, released)
     type(boundary_table_t), intent(inout) :: bc  !< the table
     type(step_t), intent(in) :: st               !< the step beginning
-    integer, intent(in) :: ndim                  !< dofs per node
+    type(model_t), intent(in) :: model           !< the model (its dofs)
     real(dp), intent(in) :: u_conv(:)            !< converged displacement (end of the previous step)
     logical, intent(out) :: released(:)          !< (ndof) boundary removed by this step
     logical :: was_on(size(bc%on))
@@ -88,7 +94,7 @@ contains
     if (st%op_new) where (.not. bc%init) bc%vel = .false.
     was_on = bc%on
     if (st%op_new) where (.not. bc%init) bc%on = .false.
-    call boundary_apply(bc, st%bcs, st%nbc, ndim, .false.)
+    call boundary_apply(bc, st%bcs, st%nbc, model, .false.)
     released = was_on .and. .not. bc%on
   end subroutine boundary_step_begin
 

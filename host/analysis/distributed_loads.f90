@@ -6,12 +6,14 @@
 !> JDLTYP, ADLMAG, DDLMAG arrays of a user element.
 module distributed_loads
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user
+  use model_types, only: model_t, amplitude_factor, dload_bx, dload_grav, dload_pressure, dload_user, etype_user, &
+    dload_centrif, dload_rota
   use element_catalog, only: element_face_nodes, element_is_axisymmetric
   use solver_text, only: itoa
   implicit none
   private
   public :: dload_state_t, dload_step_begin, dload_element, dload_uel_arrays, dload_has, dload_reindex
+  public :: surface_shape, line_shape
 
   !> The distributed loads in force in the current step, one record per element and label.
   type :: dload_state_t
@@ -23,6 +25,7 @@ module distributed_loads
     logical, allocatable :: removed(:)       !< removed by OP=NEW in this step (decays to zero)
     real(dp), allocatable :: base(:, :)      !< (3, n) value at the start of the step (vector for body loads)
     real(dp), allocatable :: target(:, :)    !< (3, n) magnitude in this step
+    real(dp), allocatable :: axis(:, :)      !< (6, n) CENTRIF/ROTA: a point on the axis, its unit direction
     integer, allocatable :: ptr(:)           !< (nelem+1) records of element ie: idx(ptr(ie):ptr(ie+1)-1)
     integer, allocatable :: idx(:)
     integer :: step = 0                      !< step the records belong to
@@ -74,7 +77,8 @@ contains
     stat = 0
     errmsg = ''
     if (.not. allocated(ds%elem)) then
-      allocate (ds%elem(0), ds%kind(0), ds%label(0), ds%amp(0), ds%removed(0), ds%base(3, 0), ds%target(3, 0))
+      allocate (ds%elem(0), ds%kind(0), ds%label(0), ds%amp(0), ds%removed(0), ds%base(3, 0), ds%target(3, 0), &
+        ds%axis(6, 0))
     end if
     ! values reached at the end of the previous step; records that decayed to zero are dropped
     keep = 0
@@ -87,6 +91,7 @@ contains
       ds%label(keep) = ds%label(k)
       ds%base(:, keep) = vec
       ds%target(:, keep) = vec
+      ds%axis(:, keep) = ds%axis(:, k)
     end do
     ds%n = keep
     ds%amp(1:keep) = 0
@@ -106,9 +111,11 @@ contains
             case (dload_bx)
               lab = maxloc(dl%dir, 1)
               vec = dl%value * dl%dir
-            case (dload_grav)
+            case (dload_grav, dload_centrif, dload_rota)
+              ! one record per element: a later GRAV (CENTRIF, ROTA) line for it replaces the load (OP=MOD)
               lab = 0
               vec = dl%value * dl%dir
+              if (dl%kind /= dload_grav) vec = [dl%value, 0.0_dp, 0.0_dp]
             case default
               lab = dl%faces(j)
               if (dl%kind == dload_user) lab = dl%label
@@ -143,6 +150,7 @@ contains
             end if
             ds%target(:, found) = vec
             ds%amp(found) = dl%amplitude
+            ds%axis(:, found) = [dl%point, dl%dir]
           end do
         end associate
       end do
@@ -217,9 +225,65 @@ contains
         end do
       case (dload_pressure)
         call face_pressure(model%elem_kind(ie), ds%label(k), v(1), x, ndim, thickness, nlgeom .and. want_k, f, k_l)
+      case (dload_centrif, dload_rota)
+        w = density
+        if (ndim == 2 .and. .not. element_is_axisymmetric(model%elem_kind(ie))) w = w * thickness
+        call rotational_load(ds%kind(k), v(1) * w, ds%axis(:, k), x, nfun, wdet, nlgeom .and. want_k, f, k_l)
       end select
     end do
   end subroutine dload_element
+
+  !> The rotational body forces of the Abaqus Theory Manual ("Rotational body forces") per unit reference volume,
+  !> at the points x (current ones under NLGEOM, where the forces follow the body, with their load stiffness):
+  !> CENTRIF b = rho omega^2 (x - p)_perp, the centrifugal force about the axis (p, n), r_perp = (I - n n)(x - p);
+  !> ROTA b = -rho alpha n x (x - p), the d'Alembert force of a rotary acceleration alpha about it. c = rho omega^2
+  !> or rho alpha (times the thickness of plane elements; an axisymmetric element's wdet holds the 2 pi r). The load
+  !> stiffness k_l = -df/du: CENTRIF -c N_a N_b (I - n n) (symmetric), ROTA c N_a N_b [n]x (skew).
+  pure subroutine rotational_load(kind, c, axis, x, nfun, wdet, follower, f, k_l)
+    integer, intent(in) :: kind               !< dload_centrif or dload_rota
+    real(dp), intent(in) :: c                 !< rho omega^2 or rho alpha (x thickness)
+    real(dp), intent(in) :: axis(6)           !< point on the axis, unit direction
+    real(dp), intent(in) :: x(:, :)           !< (ndim, nn) coordinates
+    real(dp), intent(in) :: nfun(:, :)        !< (>= nn, nip) shape functions at the integration points
+    real(dp), intent(in) :: wdet(:)           !< (nip) weight x reference Jacobian
+    logical, intent(in) :: follower           !< with the load stiffness
+    real(dp), intent(inout) :: f(:)           !< element forces
+    real(dp), intent(inout) :: k_l(:, :)      !< element load stiffness
+    real(dp) :: xp(3), r(3), b(3), p(3, 3), g(3, 3), n(3)
+    integer :: ip, a, bb, nd, nn, i
+    nd = size(x, 1)
+    nn = size(x, 2)
+    n = axis(4:6)
+    p = 0.0_dp
+    do i = 1, 3
+      p(i, i) = 1.0_dp
+    end do
+    p = p - spread(n, 2, 3) * spread(n, 1, 3)
+    g = skew(n)
+    do ip = 1, size(wdet)
+      xp = 0.0_dp
+      xp(1:nd) = matmul(x, nfun(1:nn, ip))
+      r = xp - axis(1:3)
+      if (kind == dload_centrif) then
+        b = c * matmul(p, r)
+      else
+        b = -c * matmul(g, r)
+      end if
+      do a = 1, nn
+        f((a - 1) * nd + 1:a * nd) = f((a - 1) * nd + 1:a * nd) + wdet(ip) * nfun(a, ip) * b(1:nd)
+        if (.not. follower) cycle
+        do bb = 1, nn
+          if (kind == dload_centrif) then
+            k_l((a - 1) * nd + 1:a * nd, (bb - 1) * nd + 1:bb * nd) = k_l((a - 1) * nd + 1:a * nd, &
+              (bb - 1) * nd + 1:bb * nd) - c * wdet(ip) * nfun(a, ip) * nfun(bb, ip) * p(1:nd, 1:nd)
+          else
+            k_l((a - 1) * nd + 1:a * nd, (bb - 1) * nd + 1:bb * nd) = k_l((a - 1) * nd + 1:a * nd, &
+              (bb - 1) * nd + 1:bb * nd) + c * wdet(ip) * nfun(a, ip) * nfun(bb, ip) * g(1:nd, 1:nd)
+          end if
+        end do
+      end do
+    end do
+  end subroutine rotational_load
 
   !> Pressure p on face `face` of an element with current coordinates x: f -= p N_a n dA (n outward, element_catalog),
   !> and with follower the stiffness -df/du. Face interpolation by the number of face nodes: 2 or 3 (2D line, linear
@@ -426,6 +490,7 @@ contains
       allocate (tl(c)); tl(1:ds%n) = ds%removed(1:ds%n); call move_alloc(tl, ds%removed)
       allocate (tr(3, c)); tr(:, 1:ds%n) = ds%base(:, 1:ds%n); call move_alloc(tr, ds%base)
       allocate (tr(3, c)); tr(:, 1:ds%n) = ds%target(:, 1:ds%n); call move_alloc(tr, ds%target)
+      allocate (tr(6, c)); tr(:, 1:ds%n) = ds%axis(:, 1:ds%n); call move_alloc(tr, ds%axis)
     end if
     ds%n = ds%n + 1
   end subroutine grow

@@ -6,12 +6,13 @@
 !> (node_rotations), so an *EQUATION term there acts in the local system, as in Abaqus.
 module linear_constraints
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t
+  use model_types, only: model_t, boundary_t, model_dof, model_label_text
   use element_catalog, only: element_face_nodes
+  use coupling_constraints, only: coupling_rows_t, coupling_rows
   implicit none
   private
   public :: constraint_set_t, constraints_build, constraints_extend, constraints_transform, constraints_residual, &
-    constraints_apply
+    constraints_apply, constraints_reactions, constraints_mark_masters
 
   type :: constraint_set_t
     integer :: n = 0                      !< constraints (equations after set expansion)
@@ -100,6 +101,8 @@ contains
       call add_tie(cs, model, k, used, stat, errmsg)
       if (stat /= 0) return
     end do
+    if (model%ncoupling > 0) call add_couplings(cs, model, stat, errmsg)
+    if (stat /= 0) return
     do c = 1, cs%n
       do i = cs%ptr(c), cs%ptr(c + 1) - 1
         if (cs%of_dof(cs%mdof(i)) /= 0 .or. cs%mdof(i) == cs%slave(c)) then
@@ -245,6 +248,111 @@ contains
     end subroutine fail
 
   end subroutine add_tie
+
+  !> The *COUPLING constraints (coupling_constraints): a distributing coupling eliminates dofs that no boundary of
+  !> any step prescribes and no earlier constraint uses; a kinematic coupling's nodes may not be constrained
+  !> otherwise (Abaqus eliminates them too).
+  subroutine add_couplings(cs, model, stat, errmsg)
+    type(constraint_set_t), intent(inout) :: cs          !< constraints
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    logical :: excluded(size(cs%of_dof))
+    type(coupling_rows_t) :: rows
+    integer :: k, i, is, nd
+    character(len=16) :: b
+    stat = 0
+    errmsg = ''
+    excluded = .false.
+    call exclude_prescribed(model%initial_bcs, model%n_initial_bc)
+    do is = 1, model%nstep
+      call exclude_prescribed(model%steps(is)%bcs, model%steps(is)%nbc)
+    end do
+    do k = 1, model%ncoupling
+      excluded = excluded .or. cs%of_dof /= 0
+      excluded(cs%mdof) = .true.
+      call coupling_rows(model, k, excluded, rows, stat, errmsg)
+      if (stat /= 0) return
+      do i = 1, rows%n
+        if (cs%of_dof(rows%slave(i)) /= 0) then
+          nd = (rows%slave(i) - 1) / model%ndim + 1
+          write (b, '(i0)') model%couplings(k)%pos%line
+          stat = 2
+          errmsg = model%couplings(k)%pos%file//':'//trim(b)//': *COUPLING: coupling '// &
+            trim(model%couplings(k)%name)//': node '//model_label_text(model, model%node_id(nd), .true.)// &
+            ' is already constrained by another equation, tie or coupling'
+          return
+        end if
+        call append_exact(cs, rows%slave(i), rows%mdof(rows%ptr(i):rows%ptr(i + 1) - 1), &
+          rows%w(rows%ptr(i):rows%ptr(i + 1) - 1))
+      end do
+    end do
+
+  contains
+
+    subroutine exclude_prescribed(list, n)
+      type(boundary_t), intent(in) :: list(:)
+      integer, intent(in) :: n
+      integer :: j, a, d, dof
+      do j = 1, n
+        do a = 1, size(list(j)%nodes)
+          do d = list(j)%first_dof, list(j)%last_dof
+            dof = model_dof(model, list(j)%nodes(a), d)
+            if (dof > 0) excluded(dof) = .true.
+          end do
+          do d = 1, 3
+            if (list(j)%rot_dofs(d) == 0) cycle
+            dof = model_dof(model, list(j)%nodes(a), list(j)%rot_dofs(d))
+            if (dof > 0) excluded(dof) = .true.
+          end do
+        end do
+      end do
+    end subroutine exclude_prescribed
+
+  end subroutine add_couplings
+
+  !> used(master) for the masters of every constraint whose slave is used: such a dof carries the slave's stiffness
+  !> (a coupling's reference node, a node that ties nodes of elements) even when no element of its own holds it.
+  pure subroutine constraints_mark_masters(cs, used)
+    type(constraint_set_t), intent(in) :: cs  !< constraints
+    logical, intent(inout) :: used(:)         !< (ndof) dofs of the analysis
+    integer :: c
+    do c = 1, cs%n
+      if (used(cs%slave(c))) used(cs%mdof(cs%ptr(c):cs%ptr(c + 1) - 1)) = .true.
+    end do
+  end subroutine constraints_mark_masters
+
+  !> Append constraint u(slave) = sum w u(mdof) as given.
+  pure subroutine append_exact(cs, slave, mdof, w)
+    type(constraint_set_t), intent(inout) :: cs
+    integer, intent(in) :: slave, mdof(:)
+    real(dp), intent(in) :: w(:)
+    cs%slave = [cs%slave, slave]
+    cs%mdof = [cs%mdof, mdof]
+    cs%w = [cs%w, w]
+    cs%ptr = [cs%ptr, size(cs%mdof) + 1]
+    cs%n = cs%n + 1
+    cs%of_dof(slave) = cs%n
+  end subroutine append_exact
+
+  !> The reactions at prescribed masters include what their slaves carry: f(master) += w (f(slave) - fext(slave) -
+  !> fdl(slave)) for every prescribed master of a constraint (a prescribed reference node of a coupling, a
+  !> prescribed node a tie or equation carries), applied to the converged internal force before the reactions
+  !> fint - fext - fdl are taken (the free dofs' equations already hold these terms: constraints_residual).
+  pure subroutine constraints_reactions(cs, prescribed, fext, fdl, fint)
+    type(constraint_set_t), intent(in) :: cs  !< constraints
+    logical, intent(in) :: prescribed(:)      !< (ndof) prescribed dofs
+    real(dp), intent(in) :: fext(:)           !< (ndof) concentrated loads
+    real(dp), intent(in) :: fdl(:)            !< (ndof) distributed-load forces
+    real(dp), intent(inout) :: fint(:)        !< (ndof) internal force
+    integer :: c, i
+    do c = 1, cs%n
+      do i = cs%ptr(c), cs%ptr(c + 1) - 1
+        if (prescribed(cs%mdof(i))) fint(cs%mdof(i)) = fint(cs%mdof(i)) + cs%w(i) * (fint(cs%slave(c)) - &
+          fext(cs%slave(c)) - fdl(cs%slave(c)))
+      end do
+    end do
+  end subroutine constraints_reactions
 
   !> Closest point of a face (2 nodes in 2D, 4 in 3D, bilinear) to point p: parent coordinates xi, distance, and
   !> the face size (largest node distance from the first node).

@@ -10,7 +10,7 @@ module node_rotations
   implicit none
   private
   public :: node_rotation_t, node_rotations_build, element_to_global, element_to_local, element_matrix_to_local, &
-    node_vector_global
+    node_vector_global, node_to_global
 
   type :: node_rotation_t
     integer :: n = 0                         !< transformed nodes
@@ -87,6 +87,16 @@ contains
     w = v((i - 1) * d + 1:i * d)
     if (nr%of_node(i) /= 0) w = matmul(nr%t(1:d, 1:d, nr%of_node(i)), w)
   end function node_vector_global
+
+  !> Global components of node i's vector v given in its system components (ndim of them).
+  pure function node_to_global(nr, i, v) result(w)
+    type(node_rotation_t), intent(in) :: nr  !< rotations
+    integer, intent(in) :: i                 !< node index
+    real(dp), intent(in) :: v(:)             !< (ndim) system components
+    real(dp) :: w(size(v))
+    w = v
+    if (nr%of_node(i) /= 0) w = matmul(nr%t(1:size(v), 1:size(v), nr%of_node(i)), v)
+  end function node_to_global
 
   !> Element vector ve (ndim dofs per node, nodes in connectivity order) from system to global components.
   pure subroutine element_to_global(nr, nodes, ve)

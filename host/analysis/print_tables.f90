@@ -9,7 +9,7 @@ module print_tables
   use element_catalog, only: element_name, element_tensor6
   use output_registry, only: output_lookup, output_component_name, OV_U, OV_RF, OV_S, OV_MISES, OV_LE, OV_E, OV_SDV
   use analysis_core, only: analysis_t, element_geometry
-  use node_rotations, only: node_vector_global
+  use node_rotations, only: node_vector_global, node_to_global
   use stress_measures, only: mises_stress
   use solid_element, only: polar_rotation, solid_geometry_t
   implicit none
@@ -110,7 +110,8 @@ contains
     type(node_print_t), intent(in) :: np    !< the request
     integer, allocatable :: nodes(:)
     real(dp), allocatable :: val(:, :)
-    integer :: k, j, n, nv, comp, dof, var
+    real(dp) :: uv(3), rv(3)
+    integer :: k, j, n, nv, comp, dof, var, d
     if (np%set_index > 0) then
       nodes = model%nsets(np%set_index)%nodes
     else
@@ -120,18 +121,24 @@ contains
     nv = size(np%vars)
     allocate (val(nv, n))
     do k = 1, n
+      ! the node's U and RF in its system components (local at a *TRANSFORM node, Abaqus' GLOBAL=NO), or turned
+      ! to global ones (GLOBAL=YES); RF = internal minus applied force on a prescribed dof (as JOB.csv, VTU)
+      do d = 1, model%ndim
+        dof = (nodes(k) - 1) * model%ndim + d
+        uv(d) = an%work%u(dof)
+        rv(d) = merge(an%work%fint(dof) - an%work%fext(dof) - an%work%fdl(dof), 0.0_dp, an%eqs%prescribed(dof))
+      end do
+      if (np%global) then
+        uv(1:model%ndim) = node_to_global(an%nr, nodes(k), uv(1:model%ndim))
+        rv(1:model%ndim) = node_to_global(an%nr, nodes(k), rv(1:model%ndim))
+      end if
       do j = 1, nv
         val(j, k) = 0.0_dp
         ! U1..U3, RF1..RF3 (output registry; the reader keeps components within the model's dimension)
         call output_lookup(np%vars(j), var, comp)
         if (comp < 1 .or. comp > model%ndim) cycle
-        dof = (nodes(k) - 1) * model%ndim + comp
-        if (var == OV_U) then
-          val(j, k) = an%work%u(dof)
-        else if (var == OV_RF .and. an%eqs%prescribed(dof)) then
-          ! reaction = internal minus applied force on a prescribed dof (as JOB.csv and the VTU frames)
-          val(j, k) = an%work%fint(dof) - an%work%fext(dof) - an%work%fdl(dof)
-        end if
+        if (var == OV_U) val(j, k) = uv(comp)
+        if (var == OV_RF) val(j, k) = rv(comp)
       end do
     end do
     where (abs(val) < 1.0e-99_dp) val = 0.0_dp  ! two-digit exponents, as Abaqus prints them

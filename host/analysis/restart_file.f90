@@ -32,8 +32,10 @@ module restart_file
   character(len=8), parameter :: end_magic = 'LDFCZEND'      !< last 8 bytes
   !> format version: 6 adds the summary record's size to the header; 7: a process of a distributed run writes the
   !> states of its own elements only; 8: the whole analysis state (loads, predefined fields, distributed loads,
-  !> velocity boundaries and OP=NEW releases: a restart of every deck), the internal forces no longer
-  integer, parameter :: restart_version = 8
+  !> velocity boundaries and OP=NEW releases: a restart of every deck), the internal forces no longer; 9: the
+  !> active elements and reactivation displacements (*MODEL CHANGE), the forces of removed elements, the axes of
+  !> CENTRIF/ROTA loads
+  integer, parameter :: restart_version = 9
   integer, parameter :: max_records = 100000000  !< sanity bound on a count read from a file
 
   !> The checkpoint's record beside the analysis state.
@@ -83,6 +85,7 @@ contains
     if (model%ntemp_init > 0) call hash_cloads(hs, model%temp_inits, model%ntemp_init)
     if (model%nfield_init > 0) call hash_cloads(hs, model%field_inits, model%nfield_init)
     call hash_int(hs, model%nfield)
+    call hash_couplings(hs, model)
     call hash_int(hs, model%nstep)
     do k = 1, model%nstep
       call hash_step(hs, model, k)
@@ -117,6 +120,21 @@ contains
       end do
     end if
   end subroutine hash_mesh
+
+  !> *COUPLING definitions: reference node, coupling nodes, type, dofs, weighting; the rotational dofs.
+  subroutine hash_couplings(hs, model)
+    type(hash_t), intent(inout) :: hs   !< the hash
+    type(model_t), intent(in) :: model  !< the model
+    integer :: k
+    call hash_ints(hs, [model%ncoupling, model%nrot])
+    do k = 1, model%ncoupling
+      associate (c => model%couplings(k))
+        call hash_ints(hs, [c%ref, c%weighting, merge(1, 0, c%kinematic), merge(1, 0, c%dofs)])
+        call hash_ints(hs, c%nodes)
+        call hash_reals(hs, [c%radius])
+      end associate
+    end do
+  end subroutine hash_couplings
 
   !> Sections, materials, user element types and their properties.
   subroutine hash_materials(hs, model)
@@ -168,12 +186,16 @@ contains
       if (st%ntemp > 0) call hash_cloads(hs, st%temps, st%ntemp)
       if (st%nfielddef > 0) call hash_cloads(hs, st%fields, st%nfielddef)
       if (allocated(st%field_new)) call hash_ints(hs, st%field_new)
+      if (allocated(st%cut_points)) call hash_reals(hs, st%cut_points)
+      do j = 1, st%nchange
+        call hash_ints(hs, [merge(1, 0, st%changes(j)%remove), st%changes(j)%elems])
+      end do
       do j = 1, st%ndload
         associate (dl => st%dloads(j))
           call hash_ints(hs, dl%elems)
           if (allocated(dl%faces)) call hash_ints(hs, dl%faces)
           call hash_ints(hs, [dl%kind, dl%label, dl%amplitude])
-          call hash_reals(hs, [dl%value, dl%dir])
+          call hash_reals(hs, [dl%value, dl%dir, dl%point])
         end associate
       end do
     end associate
@@ -188,7 +210,7 @@ contains
     do j = 1, n
       call hash_ints(hs, list(j)%nodes)
       call hash_ints(hs, [list(j)%first_dof, list(j)%last_dof, list(j)%amplitude, merge(1, 0, list(j)%velocity), &
-        merge(1, 0, list(j)%user)])
+        merge(1, 0, list(j)%user), list(j)%rot_dofs])
       call hash_reals(hs, [list(j)%value])
     end do
   end subroutine hash_boundaries
@@ -327,9 +349,13 @@ contains
     call put_reals(u, s%last%rf, ios, iom)
     call put_reals(u, s%last%fext, ios, iom)
     call put_reals(u, s%last%fcl, ios, iom)
+    call put_reals(u, s%last%fremove, ios, iom)
     call put_reals(u, s%u_conv, ios, iom)
     call put_reals(u, s%temp_start, ios, iom)
     call put_reals(u, s%field_start, ios, iom)
+    call put_flags(u, s%active, ios, iom)
+    call put_flags(u, s%shifted, ios, iom)
+    call put_reals(u, s%u_ref, ios, iom)
   end subroutine write_state
 
   subroutine write_load(u, ls, ios, iom)
@@ -363,6 +389,7 @@ contains
     call put_flags(u, ds%removed(1:n), ios, iom)
     call put_reals(u, reshape(ds%base(:, 1:n), [3 * n]), ios, iom)
     call put_reals(u, reshape(ds%target(:, 1:n), [3 * n]), ios, iom)
+    call put_reals(u, reshape(ds%axis(:, 1:n), [6 * n]), ios, iom)
   end subroutine write_dload
 
   !> One element's converged state, each array preceded by its shape (-1: not held by this process).
@@ -561,9 +588,13 @@ contains
     call get_reals(u, s%last%rf, ios, ok)
     call get_reals(u, s%last%fext, ios, ok)
     call get_reals(u, s%last%fcl, ios, ok)
+    call get_reals(u, s%last%fremove, ios, ok)
     call get_reals(u, s%u_conv, ios, ok)
     call get_reals(u, s%temp_start, ios, ok)
     call get_reals(u, s%field_start, ios, ok)
+    call get_flags(u, s%active, ios, ok)
+    call get_flags(u, s%shifted, ios, ok)
+    call get_reals(u, s%u_ref, ios, ok)
   end subroutine read_state
 
   subroutine read_load(u, ls, ios, ok)
@@ -595,8 +626,9 @@ contains
       return
     end if
     ds%n = n
-    if (allocated(ds%elem)) deallocate (ds%elem, ds%kind, ds%label, ds%amp, ds%removed, ds%base, ds%target)
-    allocate (ds%elem(n), ds%kind(n), ds%label(n), ds%amp(n), ds%removed(n), ds%base(3, n), ds%target(3, n))
+    if (allocated(ds%elem)) deallocate (ds%elem, ds%kind, ds%label, ds%amp, ds%removed, ds%base, ds%target, ds%axis)
+    allocate (ds%elem(n), ds%kind(n), ds%label(n), ds%amp(n), ds%removed(n), ds%base(3, n), ds%target(3, n), &
+      ds%axis(6, n))
     if (n > 0) then
       call get_ints(u, ds%elem, ios, ok)
       call get_ints(u, ds%kind, ios, ok)
@@ -608,6 +640,10 @@ contains
       ds%base = reshape(v, [3, n])
       call get_reals(u, v, ios, ok)
       ds%target = reshape(v, [3, n])
+      deallocate (v)
+      allocate (v(6 * n))
+      call get_reals(u, v, ios, ok)
+      ds%axis = reshape(v, [6, n])
       if (ios /= 0 .or. .not. ok) return
       if (any(ds%elem < 1 .or. ds%elem > nelem)) then
         ios = -1

@@ -18,7 +18,9 @@ module static_step
   use increment, only: increment_t, increment_time, increment_end
   use boundary_table, only: boundary_prescribe, boundary_rates_update
   use step_loads, only: loads_at_end
-  use linear_constraints, only: constraints_apply
+  use linear_constraints, only: constraints_apply, constraints_reactions
+  use coupling_constraints, only: coupling_check_step
+  use model_change, only: model_change_release, model_change_step_begin, model_change_resume
   use step_control, only: step_control_init, step_control_cutback, step_control_converged, step_control_done, &
     step_control_dt, step_control_accuracy, step_control_exhausted, max_cutbacks
   use sparse_system, only: sparse_factor_count
@@ -201,6 +203,7 @@ contains
       t_point = [p%sc%t, p%t_total0 + p%sc%t]
       an%work%u = an%state%u_conv
       an%work%trial = an%state%conv
+      call model_change_resume(an, model)
       run%ns%reuse_count = p%reuse_count
       run%fact_offset = ck%summary%factorizations
       call run_summary_continue(summary, ck%summary)
@@ -331,6 +334,12 @@ contains
           call halt_on_error(out, run, errmsg, exit_input)
           return
         end if
+        call model_change_step_begin(an, model, is)
+      end if
+      call coupling_check_step(model, is, an%state%bc, an%state%loads, stat, errmsg)
+      if (stat /= 0) then
+        call halt_on_error(out, run, errmsg, exit_input)
+        return
       end if
       an%eqs%prescribed = an%state%bc%on .and. an%used
       call analysis_number_equations(an, model, stat, errmsg)
@@ -393,7 +402,11 @@ contains
     associate (s => an%state, st => model%steps(inc%step))
       inc%attempt = inc%attempt + 1
       inc%t_step = s%progress%sc%t
-      inc%dt = step_control_dt(s%progress%sc)
+      if (allocated(st%cut_points)) then
+        inc%dt = step_control_dt(s%progress%sc, st%cut_points)
+      else
+        inc%dt = step_control_dt(s%progress%sc)
+      end if
       inc%iter = 0
       inc%cause = ''
       call external_db(an%routines, 1, 0, increment_time(inc), inc%dt, inc%step, inc%kinc)
@@ -516,13 +529,20 @@ contains
       call statev_increment(model, an, summary%plastic_statev, plastic_inc)
       summary%max_statev_inc = max(summary%max_statev_inc, plastic_inc)
     end if
+    ! the reactions at prescribed masters of constraints include what their slaves carry
+    if (an%eqs%cs%n > 0) call constraints_reactions(an%eqs%cs, an%eqs%prescribed, an%work%fext, an%work%fdl, &
+      an%work%fint)
     call work_of_increment(an, inc, summary%w_ext)
     call analysis_commit(an)
     an%state%temp_start = an%work%temp_end
     an%state%field_start = an%work%field_end
     call boundary_rates_update(an%state%bc, model, inc)
+    ! (an increment shortened to end on a time point: sc%dt is still the size before that cut)
     call step_control_converged(an%state%progress%sc, inc%dt, inc%iter, inc%pnewdt, inc%opening, opt%max_opening, &
-      plastic_inc, opt%max_plastic)
+      plastic_inc, opt%max_plastic, clipped=allocated(model%steps(inc%step)%cut_points) .and. &
+      inc%dt < an%state%progress%sc%dt)
+    ! the forces of the elements the next step removes (*MODEL CHANGE), from this last increment's element forces
+    if (step_control_done(an%state%progress%sc)) call model_change_release(an, model, inc%step)
     call summary%add_increment(inc%step, inc%kinc, an%state%progress%t_total0 + an%state%progress%sc%t, &
       step_control_done(an%state%progress%sc))
     an%state%progress%kinc_total = an%state%progress%kinc_total + 1

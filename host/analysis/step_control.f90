@@ -56,11 +56,21 @@ contains
     sc%t = 0.0_dp
   end subroutine step_control_init
 
-  !> Size of the next attempt: the current dt, cut so that the step ends exactly at its period.
-  pure real(dp) function step_control_dt(sc) result(dt)
-    type(step_control_t), intent(in) :: sc  !< controller
+  !> Size of the next attempt: the current dt, cut so that the step ends exactly at its period and, with points
+  !> (step times, ascending: *OUTPUT, TIME POINTS=), so that the increment ends exactly on the next point it would
+  !> pass or reach (as Abaqus/Standard adjusts its increments to the time points).
+  pure real(dp) function step_control_dt(sc, points) result(dt)
+    type(step_control_t), intent(in) :: sc      !< controller
+    real(dp), intent(in), optional :: points(:) !< time points of the step
+    integer :: k
     dt = sc%dt
     if (sc%t + dt >= sc%period * (1.0_dp - time_tol)) dt = sc%period - sc%t
+    if (.not. present(points)) return
+    do k = 1, size(points)
+      if (points(k) <= sc%t + time_tol * sc%period) cycle
+      if (sc%t + dt >= points(k) - time_tol * sc%period) dt = points(k) - sc%t
+      exit
+    end do
   end function step_control_dt
 
   !> The attempt of size dt_attempt failed. pnewdt < 1: the user routines' request; otherwise pass pnewdt >= 1
@@ -111,7 +121,7 @@ contains
   !> growing at most x1.5 after an easy increment and honouring PNEWDT > 1; plastic: a prediction from the
   !> material's plastic strain increment, at least a quarter of the increment just converged).
   pure subroutine step_control_converged(sc, dt_attempt, iterations, pnewdt, opening, opening_bound, plastic, &
-      plastic_bound)
+      plastic_bound, clipped)
     type(step_control_t), intent(inout) :: sc  !< controller
     real(dp), intent(in) :: dt_attempt         !< converged increment
     integer, intent(in) :: iterations          !< Newton iterations it needed
@@ -120,6 +130,8 @@ contains
     real(dp), intent(in), optional :: opening_bound  !< its bound (<= 0: none)
     real(dp), intent(in), optional :: plastic        !< largest plastic strain increment (0: none)
     real(dp), intent(in), optional :: plastic_bound  !< its bound (<= 0: none)
+    !> the attempt was shortened to end on a time point: the next one grows from the size before that cut
+    logical, intent(in), optional :: clipped
     real(dp) :: f, dt_base
     sc%t = sc%t + dt_attempt
     if (sc%t >= sc%period * (1.0_dp - time_tol)) sc%t = sc%period
@@ -127,6 +139,9 @@ contains
     if (sc%direct) return
     ! growth from the increment just converged
     dt_base = dt_attempt
+    if (present(clipped)) then
+      if (clipped) dt_base = max(dt_attempt, sc%dt)
+    end if
     if (iterations <= sc%easy_iterations) then
       sc%easy_count = sc%easy_count + 1
     else

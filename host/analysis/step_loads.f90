@@ -6,7 +6,7 @@
 !> (with the distributed loads of distributed_loads) and evaluates them at the end of an increment.
 module step_loads
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, amplitude_factor, cload_t
+  use model_types, only: model_t, amplitude_factor, cload_t, model_dof
   use distributed_loads, only: dload_state_t, dload_step_begin
   use increment, only: increment_t, increment_end
   implicit none
@@ -53,7 +53,7 @@ contains
   !> field variables (*FIELD, stride = the number of field variables, entry (node-1)*stride + n for variable n).
   !> Every node is on from the start with its initial value; OP=NEW returns the values of the components in
   !> new_comp to rest (their initial values) over the step, like any change (RAMP or STEP), instead of releasing them.
-  pure subroutine load_step_begin(ls, f_now, reaction, list, n, op_new, stride, rest, new_comp)
+  pure subroutine load_step_begin(ls, f_now, reaction, list, n, op_new, stride, rest, new_comp, model)
     type(load_state_t), intent(inout) :: ls  !< load state
     real(dp), intent(in) :: f_now(:)         !< external force at the end of the previous step
     real(dp), intent(in) :: reaction(:)      !< reactions of the boundaries removed at this step's start
@@ -63,6 +63,8 @@ contains
     integer, intent(in) :: stride            !< entries per node (the model dimension for forces)
     real(dp), intent(in), optional :: rest(:)    !< values removed entries return to (predefined fields)
     logical, intent(in), optional :: new_comp(:) !< (stride) the components OP=NEW applies to (all when absent)
+    type(model_t), intent(in), optional :: model !< concentrated loads: the model's dofs (model_dof: moments at the
+                                                 !< rotational dofs of a coupling's reference node)
     integer :: k, a, i
     logical :: removed(size(ls%on))
     ! inherited loads hold the value reached
@@ -93,6 +95,7 @@ contains
     do k = 1, n
       do a = 1, size(list(k)%nodes)
         i = (list(k)%nodes(a) - 1) * stride + list(k)%dof
+        if (present(model)) i = model_dof(model, list(k)%nodes(a), list(k)%dof)
         if (.not. ls%on(i)) ls%base(i) = 0.0_dp
         ls%on(i) = .true.
         ls%target(i) = list(k)%value
@@ -187,7 +190,8 @@ contains
     integer :: k
     no_release = 0.0_dp
     associate (st => model%steps(is))
-      call load_step_begin(loads%cload, f_cload, reaction, st%cloads, st%ncload, st%cload_op_new, model%ndim)
+      call load_step_begin(loads%cload, f_cload, reaction, st%cloads, st%ncload, st%cload_op_new, model%ndim, &
+        model=model)
       field_comp = .false.
       if (allocated(st%field_new)) then
         do k = 1, model%nfield

@@ -86,7 +86,7 @@ contains
     associate (p => an%state%progress, st => model%steps(inc%step))
       done = step_control_done(p%sc)
       call history_columns_values(os%cols, model, an%work%u, an%work%fint, an%work%fext, an%work%fdl, &
-        an%eqs%prescribed, os%values)
+        an%eqs%prescribed, os%values, an%nr)
       call output_csv_row(out, inc%step, inc%kinc, p%sc%t, p%t_total0 + p%sc%t, os%values)
       os%marks%csv_rows = os%marks%csv_rows + 1
       if (print_tables_any(model)) then
@@ -97,7 +97,11 @@ contains
         p%t_total0 + p%sc%t, inc%dt, done)
       if (print_tables_any(model)) call release_converged_states(an, printed)
       if (.not. st%field_output) return
-      if (st%field_intervals > 0) then
+      if (allocated(st%field_points)) then
+        ! TIME POINTS: a frame at each increment ending on a point (the increments end on them) and the last
+        if (any(abs(st%field_points - p%sc%t) <= 1.0e-9_dp * st%period) .or. done) call write_frame(os, out, model, &
+          an, p%t_total0 + p%sc%t, inc%step)
+      else if (st%field_intervals > 0) then
         if (p%sc%t >= os%marks%next_mark * (1.0_dp - 1.0e-9_dp) .or. done) then
           call write_frame(os, out, model, an, p%t_total0 + p%sc%t, inc%step)
           do while (os%marks%next_mark <= p%sc%t * (1.0_dp + 1.0e-9_dp))

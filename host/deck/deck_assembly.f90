@@ -34,7 +34,8 @@ contains
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*INSTANCE', '*END INSTANCE', '*END ASSEMBLY', '*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', &
-          '*EQUATION', '*TIE', '*MPC', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*TRANSFORM', '*SYSTEM')
+          '*EQUATION', '*TIE', '*MPC', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*TRANSFORM', '*SYSTEM', &
+          '*COUPLING', '*KINEMATIC', '*DISTRIBUTING')
       allowed_in_assembly = .true.
     case default
       allowed_in_assembly = .false.

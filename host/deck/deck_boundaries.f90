@@ -216,19 +216,19 @@ contains
             return
           end if
         end if
+        ! the Abaqus types with their rotational dofs (Keywords Reference, *BOUNDARY): rotations exist only at a
+        ! coupling's reference node and are dropped elsewhere
         select case (word)
         case ('XSYMM')
-          bc%first_dof = 1
-          bc%last_dof = 1
+          call set_type(1, 1, [5, 6, 0])
         case ('YSYMM')
-          bc%first_dof = 2
-          bc%last_dof = 2
+          call set_type(2, 2, [4, 6, 0])
         case ('ZSYMM')
-          bc%first_dof = 3
-          bc%last_dof = 3
-        case ('ENCASTRE', 'PINNED')
-          bc%first_dof = 1
-          bc%last_dof = 3
+          call set_type(3, 3, [4, 5, 0])
+        case ('ENCASTRE')
+          call set_type(1, 3, [4, 5, 6])
+        case ('PINNED')
+          call set_type(1, 3, [0, 0, 0])
         case default
           call ctx_fail(ctx, i, 'unsupported boundary type '//word//' (XSYMM, YSYMM, ZSYMM, ENCASTRE, PINNED)')
           return
@@ -254,17 +254,33 @@ contains
           call ctx_fail(ctx, i, 'dof range '//itoa(bc%first_dof)//'..'//itoa(bc%last_dof)//' invalid')
           return
         end if
-        if (bc%last_dof > 3) then
-          call ctx_fail(ctx, i, 'rotational dofs 4..6 do not exist in ldfcz models')
+        ! rotations (dofs 4..6) exist at the reference node of a *COUPLING only: checked when the model is complete
+        if (bc%last_dof > 3 .and. bc%user) then
+          call ctx_fail(ctx, i, 'USER (the subroutine DISP) on a rotational dof is not supported')
           return
         end if
       end if
-      if (ctx%in_step) then
-        call push_bc(ctx%model%steps(istep)%bcs, ctx%model%steps(istep)%nbc, bc)
-      else
-        call push_bc(ctx%model%initial_bcs, ctx%model%n_initial_bc, bc)
-      end if
+      call push_step_or_model(bc)
     end do
+
+  contains
+
+    subroutine set_type(d1, d2, rot)
+      integer, intent(in) :: d1, d2, rot(3)
+      bc%first_dof = d1
+      bc%last_dof = d2
+      bc%rot_dofs = rot
+    end subroutine set_type
+
+    subroutine push_step_or_model(t)
+      type(boundary_t), intent(in) :: t
+      if (ctx%in_step) then
+        call push_bc(ctx%model%steps(istep)%bcs, ctx%model%steps(istep)%nbc, t)
+      else
+        call push_bc(ctx%model%initial_bcs, ctx%model%n_initial_bc, t)
+      end if
+    end subroutine push_step_or_model
+
   end subroutine read_boundary
 
   !> Append a boundary to a list with n entries, doubling the capacity when full.

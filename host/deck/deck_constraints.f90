@@ -35,8 +35,9 @@ contains
         call ctx_fail(ctx, i, 'an equation needs at least 2 terms')
         return
       end if
-      if (allocated(eqn%terms)) deallocate (eqn%terms)
-      allocate (eqn%terms(nterm))
+      if (allocated(eqn%terms)) deallocate (eqn%terms, eqn%term_set)
+      allocate (eqn%terms(nterm), eqn%term_set(nterm))
+      eqn%term_set = 0
       eqn%pos = ctx_pos(ctx, i)
       k = 0
       do while (k < nterm)
@@ -77,6 +78,7 @@ contains
                 return
               end if
               t%nodes = ctx%model%nsets(iset)%nodes(1:ctx%model%nsets(iset)%n)
+              eqn%term_set(k) = iset
             end if
             if (.not. ctx_get_int(ctx, i, f(3 * j - 1), t%dof)) return
             if (t%dof < 1 .or. t%dof > 3) then

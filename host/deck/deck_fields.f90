@@ -25,9 +25,23 @@ contains
     character(len=:), allocatable :: v
     integer :: i, n, k, kind, id, last, m
     character(len=flen), allocatable :: g(:)
-    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'VARIABLE'])
+    call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'VARIABLE', 'USER'])
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
+    if (deck_has_param(ctx%params, 'USER')) then
+      ! Abaqus calls SIGINI (STRESS), SDVINI (SOLUTION), HARDINI (HARDENING), ... for USER; ldfcz loads none of them
+      call ctx_fail(ctx, ctx%ir, 'USER (initial values from a user subroutine: SIGINI, SDVINI, ...) is not '// &
+        'supported: give the values on data lines (TYPE=STRESS, TYPE=SOLUTION)')
+      return
+    end if
+    if (v == 'PLASTIC STRAIN') then
+      ! Abaqus applies initial plastic strains to its built-in elastic-plastic materials; ldfcz has none: *ELASTIC is
+      ! linear elastic, and Abaqus passes no plastic strain to a UMAT (its plastic state lives in STATEV)
+      call ctx_fail(ctx, ctx%ir, 'TYPE=PLASTIC STRAIN needs an elastic-plastic material, which ldfcz does not '// &
+        'have (*ELASTIC is linear elastic; a UMAT receives no initial plastic strain from Abaqus: give its '// &
+        'plastic state in its state variables with TYPE=SOLUTION)')
+      return
+    end if
     if (v /= 'FIELD' .and. deck_has_param(ctx%params, 'VARIABLE')) then
       call ctx_fail(ctx, ctx%ir, 'VARIABLE= only with TYPE=FIELD')
       return
@@ -46,7 +60,8 @@ contains
     case ('SOLUTION')
       kind = init_solution
     case default
-      call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (TEMPERATURE, FIELD, STRESS, SOLUTION)')
+      call ctx_fail(ctx, ctx%ir, 'TYPE='//v//' is not supported (TEMPERATURE, FIELD, STRESS, SOLUTION; PLASTIC '// &
+        'STRAIN needs a plastic material)')
       return
     end select
     i = ctx%ir

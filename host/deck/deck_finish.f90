@@ -3,12 +3,13 @@
 module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where, deck_keyword_parse, deck_param_t
-  use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
+  use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, dload_centrif, dload_rota, source_pos_t, &
     etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes, elastic_lamina
   use element_catalog, only: element_is_plane_stress
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
   use output_registry, only: output_unprovided_requests
+  use deck_finish_extras, only: finish_extras
   implicit none
   private
   public :: finish_model
@@ -109,11 +110,6 @@ contains
           call resolve_cload(ctx, cl)
           model%equations(ib)%terms(k) = cl
           if (ctx%stat /= 0) return
-          if (size(cl%nodes) /= size(model%equations(ib)%terms(1)%nodes)) then
-            pos = model%equations(ib)%pos
-            call ctx_fail_pos(ctx, pos, 'the node sets of the terms differ in size (one equation per member)')
-            return
-          end if
         end do
       end do
       do ib = 1, model%ntemp_init
@@ -270,6 +266,7 @@ contains
       call carry_field_requests(model)
       if (ctx%stat == 0) call resolve_surfaces(ctx)
       if (ctx%stat == 0) call resolve_dloads(ctx)
+      if (ctx%stat == 0) call finish_extras(ctx)
       if (ctx%stat == 0) call warn_unprovided_outputs(ctx)
     end associate
   end subroutine finish_model
@@ -403,6 +400,7 @@ contains
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     integer :: is, k, j, m, ie, id, im, isf
     integer, allocatable :: el(:), fc(:)
+    character(len=:), allocatable :: what
     type(dload_t) :: dl
     type(source_pos_t) :: pos
     associate (model => ctx%model)
@@ -459,10 +457,14 @@ contains
               end if
               return
             end if
-            if (dl%kind == dload_grav) then
+            if (dl%kind == dload_grav .or. dl%kind == dload_centrif .or. dl%kind == dload_rota) then
               im = model_find_material(model, model%sections(model%elem_section(ie))%material)
               if (.not. model%materials(im)%has_density) then
-                call ctx_fail_pos(ctx, pos, 'GRAV on element '//model_label_text(model, model%elem_id(ie), .false.)// &
+                what = 'GRAV'
+                if (dl%kind == dload_centrif) what = 'CENTRIF'
+                if (dl%kind == dload_rota) what = 'ROTA'
+                call ctx_fail_pos(ctx, pos, what//' on element '// &
+                  model_label_text(model, model%elem_id(ie), .false.)// &
                   ' whose material '// &
                   trim(model%materials(im)%given_name)//' has no *DENSITY')
                 return
@@ -497,11 +499,11 @@ contains
       ! a density without gravity loads cannot change a static result: accepted with a note
       do im = 1, model%nmat
         if (.not. model%materials(im)%has_density) cycle
-        if (any([((model%steps(is)%dloads(k)%kind == dload_grav, k = 1, model%steps(is)%ndload), &
-            is = 1, model%nstep)])) cycle
+        if (any([((any(model%steps(is)%dloads(k)%kind == [dload_grav, dload_centrif, dload_rota]), &
+            k = 1, model%steps(is)%ndload), is = 1, model%nstep)])) cycle
         pos = model%materials(im)%pos
         call ctx_warn_pos(ctx, pos, 'material '//trim(model%materials(im)%given_name)//': *DENSITY has no effect '// &
-          'in a static analysis without GRAV loads')
+          'in a static analysis without GRAV, CENTRIF or ROTA loads')
       end do
     end associate
   end subroutine resolve_dloads
@@ -529,8 +531,9 @@ contains
     if (present(any_dof)) then
       if (any_dof) return
     end if
-    if (cl%dof > ctx%model%ndim) call ctx_fail_pos(ctx, cl%pos, 'dof '//itoa(cl%dof)//' does not exist in this '// &
-      itoa(ctx%model%ndim)//'D model')
+    ! (a moment, dof 4..6, exists at a coupling's reference node only: deck_finish_extras checks it)
+    if (cl%dof > ctx%model%ndim .and. cl%dof <= 3) call ctx_fail_pos(ctx, cl%pos, 'dof '//itoa(cl%dof)// &
+      ' does not exist in this '//itoa(ctx%model%ndim)//'D model')
   end subroutine resolve_cload
 
   !> Field output requests stay in effect in later steps until changed, as in Abaqus: a step without its own
@@ -578,13 +581,10 @@ contains
         bc%nodes(k) = ctx%model%node_index(id)
       end if
     end do
-    if (bc%last_dof > ctx%model%ndim) then
-      if (bc%first_dof > ctx%model%ndim) then
-        ! e.g. ZSYMM or dof 3 in a 2D model: nothing to constrain, like Abaqus for inactive dofs
-        call ctx_warn_pos(ctx, bc%pos, 'dof '//itoa(bc%first_dof)//' does not exist in this 2D model: ignored')
-      end if
-      bc%last_dof = ctx%model%ndim
-    end if
+    ! e.g. ZSYMM or dof 3 in a 2D model: nothing to constrain, like Abaqus for inactive dofs (the dofs a node does
+    ! not have are skipped when the boundaries are applied; rotations 4..6: deck_finish_extras)
+    if (bc%first_dof > ctx%model%ndim .and. bc%first_dof <= 3) &
+      call ctx_warn_pos(ctx, bc%pos, 'dof '//itoa(bc%first_dof)//' does not exist in this 2D model: ignored')
   end subroutine resolve_bc
 
   !> Labels of the members of a node set (is_node) or element set to indices, duplicates removed. A label that

@@ -5,7 +5,7 @@ module deck_loads
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: cload_t, dload_t, surface_t, model_find_amplitude, &
-    model_find_surface, dload_bx, dload_grav, dload_pressure, dload_user
+    model_find_surface, dload_bx, dload_grav, dload_pressure, dload_user, dload_centrif, dload_rota
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
     ctx_find_surface, ctx_def_name, ctx_enter_instance, ctx_fail, ctx_pos, ctx_allow_params, ctx_need_step, &
@@ -80,11 +80,7 @@ contains
         call ctx_fail(ctx, i, 'dof '//itoa(cl%dof)//' invalid (1..6)')
         return
       end if
-      if (cl%dof > 3) then
-        call ctx_fail(ctx, i, 'dof '//itoa(cl%dof)//' (a moment) does not exist in ldfcz models: only the '// &
-          'displacement dofs 1..3 carry forces')
-        return
-      end if
+      ! moments (dofs 4..6) exist at the reference node of a *COUPLING only: checked when the model is complete
       if (len_trim(f(3)) > 0) then
         if (.not. ctx_get_real(ctx, i, f(3), cl%value)) return
       end if
@@ -144,7 +140,8 @@ contains
 
   !> *DLOAD[, AMPLITUDE=][, OP=]: element or element set, load label, magnitude[, direction for GRAV].
   !> Labels: BX, BY, BZ (force per unit reference volume), GRAV (magnitude g, then the direction components),
-  !> P1..P6 (pressure on face Sn), Un (user element load type n, passed to the UEL). Others are errors.
+  !> CENTRIF (omega^2) and ROTA (alpha), then a point on the axis and the axis direction, P1..P6 (pressure on face
+  !> Sn), Un (user element load type n, passed to the UEL). Others are errors.
   subroutine read_dload(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(dload_t) :: dl, empty
@@ -187,6 +184,9 @@ contains
           return
         end if
         dl%dir = d / norm2(d)
+      case ('CENTRIF', 'ROTA')
+        dl%kind = merge(dload_centrif, dload_rota, lab == 'CENTRIF')
+        if (.not. rotation_axis(ctx, i, f, n, dl)) return
       case default
         k = 0
         ios = 1
@@ -198,11 +198,11 @@ contains
           dl%kind = dload_user
           dl%label = k
         else
-          call ctx_fail(ctx, i, 'unsupported load label '//lab//' (BX, BY, BZ, GRAV, P1..P6, Un)')
+          call ctx_fail(ctx, i, 'unsupported load label '//lab//' (BX, BY, BZ, GRAV, CENTRIF, ROTA, P1..P6, Un)')
           return
         end if
       end select
-      if (dl%kind /= dload_grav .and. n > 3) then
+      if (dl%kind /= dload_grav .and. dl%kind /= dload_centrif .and. dl%kind /= dload_rota .and. n > 3) then
         if (any(len_trim(f(4:n)) > 0)) then
           call ctx_fail(ctx, i, 'too many fields for load '//lab)
           return
@@ -211,6 +211,34 @@ contains
       call push_dload(ctx%model%steps(ctx%istep)%dloads, ctx%model%steps(ctx%istep)%ndload, dl)
     end do
   end subroutine read_dload
+
+  !> CENTRIF/ROTA data fields 4..9 of record i: a point on the axis (blank: 0) and the axis direction (unit; zero
+  !> when not given: the model's dimension decides, deck_finish_extras). More than 9 fields is an error.
+  logical function rotation_axis(ctx, i, f, n, dl) result(ok)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: i                    !< record
+    character(len=*), intent(in) :: f(:)        !< its fields
+    integer, intent(in) :: n                    !< fields in use
+    type(dload_t), intent(inout) :: dl          !< the load
+    integer :: k
+    real(dp) :: v(6)
+    ok = .false.
+    if (n > 9) then
+      if (any(len_trim(f(10:n)) > 0)) then
+        call ctx_fail(ctx, i, 'too many fields (element, label, magnitude, point on the axis, axis direction)')
+        return
+      end if
+    end if
+    v = 0.0_dp
+    do k = 1, min(n - 3, 6)
+      if (len_trim(f(3 + k)) == 0) cycle
+      if (.not. ctx_get_real(ctx, i, f(3 + k), v(k))) return
+    end do
+    dl%point = v(1:3)
+    dl%dir = 0.0_dp
+    if (norm2(v(4:6)) > 0.0_dp) dl%dir = v(4:6) / norm2(v(4:6))
+    ok = .true.
+  end function rotation_axis
 
   !> *DSLOAD[, AMPLITUDE=][, OP=]: surface, P, magnitude (pressure on every face of the surface).
   subroutine read_dsload(ctx)

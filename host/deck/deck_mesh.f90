@@ -303,6 +303,7 @@ contains
     gen = deck_has_param(ctx%params, 'GENERATE')
     if (is_node) then
       iset = get_nset(ctx, setname)
+      if (deck_has_param(ctx%params, 'UNSORTED')) ctx%model%nsets(iset)%unsorted = .true.
     else
       iset = get_elset(ctx, setname)
     end if

@@ -26,6 +26,8 @@ module deck_reader
   use deck_generate, only: read_ngen, read_nfill, read_ncopy, read_elgen
   use deck_orientation, only: read_orientation, read_transform
   use deck_declarations, only: read_ldfcz_declaration, track_declaration_owner
+  use deck_couplings, only: read_coupling, read_coupling_kind
+  use deck_model_change, only: read_model_change, read_time_points
   implicit none
   private
   public :: read_deck
@@ -124,7 +126,7 @@ contains
       end if
       if (ctx%scope == scope_assembly .and. .not. allowed_in_assembly(ctx%kw)) then
         call ctx_fail(ctx, ir, 'not supported inside *ASSEMBLY (ldfcz reads *INSTANCE, *NODE, *ELEMENT, *NSET, '// &
-          '*ELSET, *SURFACE, *EQUATION, *TIE, *MPC, *TRANSFORM, *SYSTEM there)')
+          '*ELSET, *SURFACE, *EQUATION, *TIE, *MPC, *COUPLING, *TRANSFORM, *SYSTEM there)')
         return
       end if
       if (ctx%scope == scope_model .and. ctx%has_assembly .and. mesh_keyword(ctx%kw)) then
@@ -245,6 +247,14 @@ contains
       call read_tie(ctx)
     case ('*MPC')
       call read_mpc(ctx)
+    case ('*COUPLING')
+      call read_coupling(ctx)
+    case ('*KINEMATIC', '*DISTRIBUTING')
+      call read_coupling_kind(ctx)
+    case ('*MODEL CHANGE')
+      call read_model_change(ctx)
+    case ('*TIME POINTS')
+      call read_time_points(ctx)
     case ('*STEP')
       call read_step(ctx)
     case ('*STATIC', '*VISCO')
@@ -341,7 +351,7 @@ contains
           '*SECTION CONTROLS', '*HOURGLASS STIFFNESS', &
           '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
           '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION', &
-          '*TRANSFORM', '*SYSTEM')
+          '*TRANSFORM', '*SYSTEM', '*COUPLING', '*KINEMATIC', '*DISTRIBUTING', '*TIME POINTS')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

@@ -3,7 +3,7 @@
 module deck_steps
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: step_t, node_print_t, el_print_t, output_request_t
+  use model_types, only: step_t, node_print_t, el_print_t, output_request_t, model_find_time_points
   use output_registry, only: output_lookup, output_variables, output_ncomp, output_component_name, &
     output_names_text, OV_SDV, LOC_NODE, LOC_POINT, USE_FIELD, USE_NODE_PRINT, USE_EL_PRINT, PRESET_ALL
   use deck_lists, only: itoa
@@ -325,10 +325,13 @@ contains
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     integer :: k
     character(len=:), allocatable :: v
+    real(dp), allocatable :: points(:)
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
     call ctx_allow_params(ctx, [character(len=16) :: 'FIELD', 'HISTORY', 'FREQUENCY', 'NUMBER INTERVAL', 'VARIABLE', &
-      'TIME MARKS', 'OP', 'TIME INTERVAL'])
+      'TIME MARKS', 'OP', 'TIME INTERVAL', 'TIME POINTS'])
+    if (ctx%stat /= 0) return
+    call output_time_points(ctx, points)
     if (ctx%stat /= 0) return
     if (deck_has_param(ctx%params, 'FIELD')) then
       ctx%output_kind = 1
@@ -370,10 +373,21 @@ contains
       ! TIME INTERVAL=dt: frames at the first increment at or after each multiple of dt, as NUMBER INTERVAL =
       ! period / dt does (Abaqus' TIME MARKS=NO: the increments are not cut to hit the marks)
       if (deck_has_param(ctx%params, 'TIME INTERVAL')) call time_interval(ctx)
+      if (allocated(points)) then
+        ctx%model%steps(ctx%istep)%field_points = points
+        ctx%model%steps(ctx%istep)%field_points_given = .true.
+      end if
     else if (deck_has_param(ctx%params, 'HISTORY')) then
       ctx%output_kind = 2
-      call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
-        'this request and its *NODE/*ELEMENT OUTPUT lines write nothing')
+      ctx%model%steps(ctx%istep)%history_given = .true.
+      if (allocated(points)) then
+        ctx%model%steps(ctx%istep)%history_points = points
+        call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
+          'this request and its *NODE/*ELEMENT OUTPUT lines write nothing (its TIME POINTS do end increments)')
+      else
+        call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
+          'this request and its *NODE/*ELEMENT OUTPUT lines write nothing')
+      end if
     else
       call ctx_fail(ctx, ctx%ir, 'FIELD or HISTORY required')
     end if
@@ -402,6 +416,30 @@ contains
       st%field_intervals = nint(n)
     end associate
   end subroutine time_interval
+
+  !> *OUTPUT, TIME POINTS=name: the step times of a *TIME POINTS definition (points unallocated when absent); the
+  !> increments of the step end on every one of them (Abaqus/Standard adjusts its increments to the time points).
+  !> Combined with FREQUENCY or NUMBER INTERVAL it is an error (Abaqus allows one of them).
+  subroutine output_time_points(ctx, points)
+    type(deck_context_t), intent(inout) :: ctx        !< reader state
+    real(dp), allocatable, intent(out) :: points(:)   !< the step times
+    integer :: k
+    character(len=:), allocatable :: v
+    if (.not. deck_has_param(ctx%params, 'TIME POINTS')) return
+    if (deck_has_param(ctx%params, 'FREQUENCY') .or. deck_has_param(ctx%params, 'NUMBER INTERVAL') .or. &
+        deck_has_param(ctx%params, 'TIME INTERVAL')) then
+      call ctx_fail(ctx, ctx%ir, 'TIME POINTS= with FREQUENCY, NUMBER INTERVAL or TIME INTERVAL (give one of them)')
+      return
+    end if
+    v = deck_normalize(ctx_required(ctx, 'TIME POINTS'))
+    if (ctx%stat /= 0) return
+    k = model_find_time_points(ctx%model, v)
+    if (k == 0) then
+      call ctx_fail(ctx, ctx%ir, 'TIME POINTS: undefined time points '//v//' (*TIME POINTS in the model data)')
+      return
+    end if
+    points = ctx%model%time_points(k)%t
+  end subroutine output_time_points
 
   !> *ELEMENT OUTPUT / *NODE OUTPUT under *OUTPUT, FIELD: the variables of the data lines (or VARIABLE=) join the
   !> step's field request; a variable the host cannot write is warned about with its line (never silently dropped).
@@ -519,6 +557,13 @@ contains
     end if
     call print_options(ctx, np%frequency, np%totals, np%summary)
     if (ctx%stat /= 0) return
+    ! GLOBAL=YES: vector output in the global directions at *TRANSFORM nodes (default NO: their local directions)
+    name = deck_normalize(deck_param_value(ctx%params, 'GLOBAL'))
+    if (name /= '' .and. name /= 'YES' .and. name /= 'NO') then
+      call ctx_fail(ctx, ir, 'GLOBAL must be YES or NO')
+      return
+    end if
+    np%global = name == 'YES'
     allocate (vars(3 * (ir_next - ir) * 8 + 6))
     nv = 0
     nd = merge(2, 3, ctx%model%ndim == 2)

@@ -6,7 +6,8 @@ module model_types
   private
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
   public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
-  public :: dload_bx, dload_grav, dload_pressure, dload_user, model_find_surface
+  public :: dload_bx, dload_grav, dload_pressure, dload_user, dload_centrif, dload_rota, model_find_surface
+  public :: coupling_t, model_change_t, time_points_t, model_dof, model_dof_node, model_find_time_points
   public :: initial_condition_t, init_stress, init_solution, equation_t, tie_t
   public :: etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
@@ -26,6 +27,8 @@ module model_types
   integer, parameter :: dload_grav = 2     !< gravity: density x magnitude along dir (GRAV)
   integer, parameter :: dload_pressure = 3 !< face pressure Pn (follower under NLGEOM)
   integer, parameter :: dload_user = 4     !< user element load type Un (passed to the UEL)
+  integer, parameter :: dload_centrif = 5  !< CENTRIF: rho omega^2 (x - p)_perp about an axis (magnitude omega^2)
+  integer, parameter :: dload_rota = 6     !< ROTA: the d'Alembert force -rho alpha n x (x - p) (magnitude alpha)
 
   !> Where an item came from in the deck (for error messages found after reading).
   type :: source_pos_t
@@ -38,6 +41,7 @@ module model_types
     character(len=name_len) :: name = ''   !< upper-case name
     integer, allocatable :: nodes(:)       !< node indices (1..nnode) in the model arrays
     integer :: n = 0                       !< members in use while reading (size(nodes) afterwards)
+    logical :: unsorted = .false.          !< UNSORTED: the members' order as given matters (*EQUATION pairs)
   end type node_set_t
 
   type :: elem_set_t
@@ -153,8 +157,11 @@ module model_types
   !> One prescribed dof range on a set of nodes.
   type :: boundary_t
     integer, allocatable :: nodes(:)       !< node indices
-    integer :: first_dof = 0               !< first dof (1..3)
-    integer :: last_dof = 0                !< last dof (1..3)
+    integer :: first_dof = 0               !< first dof (1..6; 4..6 rotations of a coupling's reference node)
+    integer :: last_dof = 0                !< last dof (1..6)
+    !> the rotations a type sets besides first_dof..last_dof (ENCASTRE 4, 5, 6; XSYMM 5, 6; ...; 0: none), applied
+    !> where a node has them (a coupling's reference node) and dropped elsewhere
+    integer :: rot_dofs(3) = 0
     real(dp) :: value = 0.0_dp             !< magnitude
     integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
     logical :: velocity = .false.          !< TYPE=VELOCITY: value is a velocity (increment = v dt)
@@ -178,7 +185,8 @@ module model_types
     integer :: kind = 0                    !< dload_bx, dload_grav, dload_pressure, dload_user
     integer :: label = 0                   !< face number of Pn, n of Un
     real(dp) :: value = 0.0_dp             !< magnitude
-    real(dp) :: dir(3) = 0.0_dp            !< direction of BX/BY/BZ/GRAV (unit)
+    real(dp) :: dir(3) = 0.0_dp            !< direction of BX/BY/BZ/GRAV, axis of CENTRIF/ROTA (unit)
+    real(dp) :: point(3) = 0.0_dp          !< CENTRIF/ROTA: a point on the axis
     integer :: amplitude = 0               !< amplitude index, 0 = the step's default
     integer :: elset = 0                   !< element set of the data line (resolved in finish_model), 0: one element
     type(source_pos_t) :: pos
@@ -196,6 +204,7 @@ module model_types
   !> One *EQUATION: terms (node list, dof, coefficient in value); node sets expand into one equation per member.
   type :: equation_t
     type(cload_t), allocatable :: terms(:)
+    integer, allocatable :: term_set(:)    !< per term: the node set it names (0: a node label), for set order
     logical :: mpc = .false.               !< written by *MPC (TIE): global components, not a node's *TRANSFORM
     type(source_pos_t) :: pos
   end type equation_t
@@ -221,6 +230,37 @@ module model_types
     type(source_pos_t) :: pos
   end type surface_t
 
+  !> *COUPLING with *KINEMATIC or *DISTRIBUTING: the coupling nodes (of an element-based surface) constrained to a
+  !> reference node (docs/host.md, "Coupling constraints").
+  type :: coupling_t
+    character(len=name_len) :: name = ''   !< CONSTRAINT NAME
+    integer :: ref = 0                     !< reference node (negative label until finish_model, then its index)
+    integer :: ref_set = 0                 !< REF NODE given as a node set (of one node): its index
+    integer :: surface = 0                 !< element-based surface of the coupling nodes
+    logical :: kinematic = .true.          !< *KINEMATIC (else *DISTRIBUTING)
+    logical :: dofs(6) = .false.           !< constrained dofs (1..3 translations, 4..6 rotations of the reference)
+    integer :: weighting = 1               !< *DISTRIBUTING, WEIGHTING METHOD: 1 uniform, 2 linear, 3 quadratic, 4 cubic
+    real(dp) :: radius = -1.0_dp           !< INFLUENCE RADIUS (< 0: every node of the surface)
+    integer, allocatable :: nodes(:)       !< the coupling nodes (finish_model)
+    type(source_pos_t) :: pos              !< the *COUPLING line
+    type(source_pos_t) :: kind_pos         !< the *KINEMATIC or *DISTRIBUTING line
+  end type coupling_t
+
+  !> One *MODEL CHANGE of a step: elements removed or added (docs/host.md, "Element removal and reactivation").
+  type :: model_change_t
+    integer, allocatable :: elems(:)       !< element indices (negative labels, and sets in elsets, until finish_model)
+    integer, allocatable :: elsets(:)      !< element sets named on the data lines
+    logical :: remove = .true.             !< REMOVE (else ADD)
+    logical :: strain_free = .true.        !< ADD=STRAIN FREE (the default; WITH STRAIN is refused)
+    type(source_pos_t) :: pos              !< the *MODEL CHANGE line
+  end type model_change_t
+
+  !> *TIME POINTS: named step times for *OUTPUT, TIME POINTS= (the increments end on them).
+  type :: time_points_t
+    character(len=name_len) :: name = ''   !< upper-case name
+    real(dp), allocatable :: t(:)          !< step times, ascending
+  end type time_points_t
+
   !> One variable of a field output request (*OUTPUT, FIELD with VARIABLE=, *NODE OUTPUT, *ELEMENT OUTPUT),
   !> resolved against the output registry (host/output/output_registry.f90) while reading.
   type :: output_request_t
@@ -237,6 +277,7 @@ module model_types
     integer :: frequency = 1               !< FREQUENCY (increments; 0: none; the step's last always)
     logical :: totals = .false.            !< TOTALS=YES: a TOTAL line under the table
     logical :: summary = .true.            !< SUMMARY=YES (default): MAXIMUM/MINIMUM lines
+    logical :: global = .false.            !< GLOBAL=YES: global components at *TRANSFORM nodes (default local)
     type(source_pos_t) :: pos              !< the *NODE PRINT line
   end type node_print_t
 
@@ -296,6 +337,14 @@ module model_types
     type(el_print_t), allocatable :: elprints(:) !< *EL PRINT requests
     integer :: nelprint = 0
     integer :: restart_frequency = 0       !< *RESTART, WRITE, FREQUENCY=n in effect (0: no restart file)
+    real(dp), allocatable :: field_points(:) !< *OUTPUT, FIELD, TIME POINTS=: step times of the frames
+    real(dp), allocatable :: history_points(:) !< *OUTPUT, HISTORY, TIME POINTS=: step times
+    logical :: history_given = .false.     !< this step has its own *OUTPUT, HISTORY (else the previous one's holds)
+    real(dp), allocatable :: cut_points(:) !< step times the increments end on (the field and history points in
+                                           !< effect, finish_model)
+    logical :: field_points_given = .false. !< this step's own *OUTPUT, FIELD names TIME POINTS
+    type(model_change_t), allocatable :: changes(:) !< *MODEL CHANGE of this step, in deck order
+    integer :: nchange = 0
     type(source_pos_t) :: pos
   end type step_t
 
@@ -366,6 +415,15 @@ module model_types
     type(transform_t), allocatable :: transforms(:) !< *TRANSFORM definitions
     integer :: ntransform = 0
     integer, allocatable :: node_transform(:) !< (nnode) the *TRANSFORM of a node (0: global system)
+    type(coupling_t), allocatable :: couplings(:) !< *COUPLING definitions
+    integer :: ncoupling = 0
+    !> (nnode) the first of a node's rotational dofs (the reference node of a coupling that has them: 3 in 3D, 1 in
+    !> 2D), counted after the ndim*nnode displacement dofs; 0: none (model_dof)
+    integer, allocatable :: node_rot(:)
+    integer :: nrot = 0                    !< rotational dofs of the model
+    type(time_points_t), allocatable :: time_points(:) !< *TIME POINTS definitions
+    integer :: ntime_points = 0
+    logical :: has_model_change = .false.  !< some step has a *MODEL CHANGE
     integer :: monitor_node = 0            !< *MONITOR, NODE= (model label while reading, node index after; 0: none)
     integer :: monitor_dof = 0             !< *MONITOR, DOF=
     type(source_pos_t) :: monitor_pos      !< where *MONITOR is
@@ -398,6 +456,52 @@ contains
       end associate
     end do
   end function model_label_text
+
+  !> The global index of dof d (1..6, Abaqus numbering) of node i: the displacement dofs (i-1)*ndim + d for
+  !> d <= ndim; a rotational dof 4..6 (3D) or 6 (2D) of a coupling's reference node after the displacement dofs; 0
+  !> when the node has no such dof.
+  pure integer function model_dof(model, i, d) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: i            !< node index
+    integer, intent(in) :: d            !< dof 1..6
+    k = 0
+    if (d >= 1 .and. d <= model%ndim) then
+      k = (i - 1) * model%ndim + d
+      return
+    end if
+    if (.not. allocated(model%node_rot)) return
+    if (model%node_rot(i) == 0) return
+    if (model%ndim == 3 .and. d >= 4 .and. d <= 6) k = model%ndim * model%nnode + model%node_rot(i) + d - 4
+    if (model%ndim == 2 .and. d == 6) k = model%ndim * model%nnode + model%node_rot(i)
+  end function model_dof
+
+  !> The node of global dof k (model_dof's inverse): a rotational dof belongs to its reference node.
+  pure integer function model_dof_node(model, k) result(i)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: k            !< global dof
+    integer :: j, nr
+    if (k <= model%ndim * model%nnode) then
+      i = (k - 1) / model%ndim + 1
+      return
+    end if
+    nr = merge(3, 1, model%ndim == 3)
+    j = k - model%ndim * model%nnode
+    do i = 1, model%nnode
+      if (model%node_rot(i) == 0) cycle
+      if (j >= model%node_rot(i) .and. j < model%node_rot(i) + nr) return
+    end do
+    i = 0
+  end function model_dof_node
+
+  !> Index of a *TIME POINTS definition by (upper-case) name, 0 if absent.
+  pure integer function model_find_time_points(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%ntime_points
+      if (model%time_points(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_time_points
 
   !> Local axes (columns, unit, right-handed) of orientation o at point x (model coordinates); a, b, c resolved.
   !> RECTANGULAR: 1 along a - c, 3 normal to the plane of a, b, c, 2 = 3 x 1. CYLINDRICAL: 3 along the axis a -> b,
