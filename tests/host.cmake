@@ -365,3 +365,12 @@ endforeach()
 add_test(NAME deck_boundary_user COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_boundary_user.py
   --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/boundary_user --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_disp.f)
 set_tests_properties(deck_boundary_user PROPERTIES LABELS "deck" TIMEOUT 300)
+
+# Messages and Abaqus' command line (issue 37 items 4-5): suggestions for misspelt keywords and parameters (and the
+# keyword table against the reader's dispatch), job=/input=/user=/cpus=/interactive and refused words, a --user
+# compile error's records, CAE boilerplate as notes in JOB.log, every cutback named in JOB.log
+add_test(NAME deck_messages COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_messages.py
+  --exe $<TARGET_FILE:ldfcz> --decks ${LDFCZ_DECKS} --user-src ${CMAKE_CURRENT_SOURCE_DIR}/regression
+  --reader ${PROJECT_SOURCE_DIR}/host/deck/deck_reader.f90 --out ${LDFCZ_RUNS}/deck_messages)
+set_tests_properties(deck_messages PROPERTIES LABELS "deck" TIMEOUT 300 PASS_REGULAR_EXPRESSION "PASS"
+  FAIL_REGULAR_EXPRESSION "FAIL|Traceback")

@@ -6,7 +6,7 @@ module deck_finish
   use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, source_pos_t, &
     etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes
   use deck_lists, only: itoa, grow_int, unique
-  use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
+  use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos, ctx_note_pos
   use output_registry, only: output_unprovided_requests
   implicit none
   private
@@ -503,7 +503,7 @@ contains
         if (any([((model%steps(is)%dloads(k)%kind == dload_grav, k = 1, model%steps(is)%ndload), &
             is = 1, model%nstep)])) cycle
         pos = model%materials(im)%pos
-        call ctx_warn_pos(ctx, pos, 'material '//trim(model%materials(im)%given_name)//': *DENSITY has no effect '// &
+        call ctx_note_pos(ctx, pos, 'material '//trim(model%materials(im)%given_name)//': *DENSITY has no effect '// &
           'in a static analysis without GRAV loads')
       end do
     end associate

@@ -12,7 +12,7 @@ module output_files
   public :: output_t, output_open, output_close, output_log, output_csv_header, output_csv_row, output_sta
   public :: output_progress, output_progress_clear, output_vtu_frame, output_vtu_t, output_vtu_array_t
   public :: stdout_is_terminal
-  public :: output_csv_resume, output_frames_resume, output_sta_note
+  public :: output_csv_resume, output_frames_resume, output_sta_note, output_note, output_discard_empty
 
   !> One data array of a VTU frame (point or cell data): its name, component names (none for a scalar or a
   !> vector written without names) and values, Float64 or Int32. The writer (field_frame) fills them from the
@@ -260,6 +260,38 @@ contains
       call console_line(line)
     end if
   end subroutine output_log
+
+  !> A line to JOB.log only (notes: what has no effect on the results; the console shows warnings, not notes).
+  subroutine output_note(out, line)
+    type(output_t), intent(inout) :: out  !< output state
+    character(len=*), intent(in) :: line  !< text
+    if (out%log == -1) return
+    write (out%log, '(a)') line
+    flush (out%log)
+  end subroutine output_note
+
+  !> A run that stops before its analysis (an input error): JOB.csv and JOB.dat are removed when nothing was written
+  !> to them, so that no empty job file is left that looks like a result.
+  subroutine output_discard_empty(out)
+    type(output_t), intent(inout) :: out  !< output state
+    integer :: u, ios
+    integer(8) :: sz
+    logical :: there
+    if (out%silent) return
+    if (out%csv /= -1) then
+      flush (out%csv)
+      inquire (file=path(out, '.csv'), size=sz)
+      if (sz == 0) then
+        close (out%csv, status='delete')
+        out%csv = -1
+      end if
+    end if
+    inquire (file=path(out, '.dat'), exist=there, size=sz)
+    if (there .and. sz == 0) then
+      open (newunit=u, file=path(out, '.dat'), status='old', iostat=ios)
+      if (ios == 0) close (u, status='delete')
+    end if
+  end subroutine output_discard_empty
 
   !> Header of JOB.csv.
   subroutine output_csv_header(out, columns)
