@@ -292,7 +292,12 @@ contains
     integer :: k
     call output_unprovided_requests(ctx%model, pos, msg)
     do k = 1, size(msg)
-      call ctx_warn_pos(ctx, pos(k), trim(msg(k)))
+      ! a request written for part of the model only (SDV of a model with user elements) cannot surprise: a note
+      if (index(msg(k), ': not written') > 0) then
+        call ctx_warn_pos(ctx, pos(k), trim(msg(k)))
+      else
+        call ctx_note_pos(ctx, pos(k), trim(msg(k)))
+      end if
     end do
   end subroutine warn_unprovided_outputs
 

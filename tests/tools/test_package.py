@@ -11,9 +11,11 @@ from ldfcz_tools.paths import PACKAGE, ROOT, TOOLS
 
 
 def sources(*folders):
+    # tools/paraview holds scripts for ParaView's own Python (pvpython, pvbatch): not the package's code
     for folder in folders:
         for d, dirs, files in os.walk(os.path.join(ROOT, folder)):
-            dirs[:] = [x for x in dirs if x not in ('__pycache__', 'ldfcz_tools') or d == TOOLS]
+            dirs[:] = [x for x in dirs if x not in ('__pycache__', 'ldfcz_tools', 'paraview') or
+                       (d == TOOLS and x == 'ldfcz_tools')]
             for f in files:
                 if f.endswith('.py'):
                     yield os.path.join(d, f)

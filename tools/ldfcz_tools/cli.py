@@ -65,10 +65,16 @@ def system_python_has(names):
 
 def missing_text(names):
     pkgs = sorted(set(DEBIAN_PACKAGES.get(n, 'python3-' + n) for n in names))
-    return ('needs the Python module%s %s, which %s cannot import: run it with %s, where tools/setup.sh installs '
-            'them, or install %s (apt-get install %s)' % (
-                's' if len(names) > 1 else '', ', '.join(names), sys.executable, SYSTEM_PYTHON, ' '.join(pkgs),
-                ' '.join(pkgs)))
+    what = 'needs the Python module%s %s, which %s cannot import' % ('s' if len(names) > 1 else '', ', '.join(names),
+                                                                      sys.executable)
+    try:
+        same = os.path.realpath(sys.executable) == os.path.realpath(SYSTEM_PYTHON)
+    except OSError:
+        same = False
+    if same:
+        return '%s: install %s (apt-get install %s; tools/setup.sh does)' % (what, ' '.join(pkgs), ' '.join(pkgs))
+    return '%s: run it with %s, where tools/setup.sh installs %s (Debian), or install them for this Python' % (
+        what, SYSTEM_PYTHON, ' '.join(pkgs))
 
 
 def ensure_modules(names):
@@ -78,10 +84,18 @@ def ensure_modules(names):
     if not missing:
         return
     if os.environ.get('LDFCZ_NO_REEXEC') != '1' and system_python_has(missing):
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os.execv(SYSTEM_PYTHON, [SYSTEM_PYTHON] + sys.argv)
+        reexec([SYSTEM_PYTHON])
     raise ToolError(missing_text(missing))
+
+
+def reexec(prefix):
+    """Replace this process by prefix + the command as it was started (the script, or the module of
+    python3 -m ldfcz_tools.NAME run as its file), the package on PYTHONPATH."""
+    tools = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    os.environ['PYTHONPATH'] = tools + (os.pathsep + os.environ['PYTHONPATH'] if os.environ.get('PYTHONPATH') else '')
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os.execv(prefix[0], prefix + [os.path.abspath(sys.argv[0])] + sys.argv[1:])
 
 
 def executable(path, what='program'):
