@@ -9,7 +9,8 @@ coloured by the von Mises stress of S_nodal (the stress averaged at the nodes: s
 block warped by U and filtered to the cells that still hold (damage < 0.99), drawn dark grey: the cells of a broken
 interface, which span the gap between coating and substrate, are left out instead of covering the picture. The
 view looks along -z for a plane model, at an angle for a 3D one; the last frame is shown (--time picks another).
-Works with the frames of a distributed run (pieces) alike. Tested with Debian 12's ParaView 5.11 (pvbatch).
+Works with the frames of a distributed run (pieces) alike. Tested with Debian 12's ParaView 5.11 (pvbatch; its
+python3-paraview conflicts with the python3-vtk9 the project's tools need: install it apart).
 """
 import argparse
 import os
