@@ -433,4 +433,5 @@ def main(argv):
 
 
 if __name__ == '__main__':
-    sys.exit(main(sys.argv))
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main, sys.argv))

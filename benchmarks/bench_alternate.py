@@ -106,7 +106,8 @@ def front_history(work, run, info):
     hist = []
     for t, f in outputs.pvd_frames(pvds[0]):
         path = os.path.join(work, run, f)
-        pieces = sorted(glob.glob(path[:-5] + '_*.vtu')) if f.endswith('.pvtu') else [path]
+        pieces = sorted(x for files in outputs.frame_files(path).values() for x in files) \
+            if os.path.exists(path) else []
         x = frame_front(pieces, info['delta_mm']) if pieces and all(map(os.path.exists, pieces)) else None
         if x is not None:
             hist.append((float(t) * info['rate_mm_s'], info['x_front_mm'] - x))
@@ -307,4 +308,5 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

@@ -146,4 +146,5 @@ def main(argv=None):
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

@@ -34,6 +34,7 @@ import time
 
 from ldfcz_tools import outputs
 from ldfcz_tools.block_deck import block_deck
+from ldfcz_tools.cli import executable
 
 
 class StaWatch:
@@ -130,6 +131,8 @@ def main():
                          "(e.g. 'auto=--newton auto')")
     ap.add_argument('--md', default='', help='write the report here (markdown)')
     a = ap.parse_args()
+    if 'ldfcz' in a.programs:
+        executable(a.exe, 'ldfcz program')
     a.ldfcz = dict(ldfcz='')
     for c in a.ldfcz_config:
         label, opts = c.split('=', 1)
@@ -233,4 +236,5 @@ def write_md(a, rows):
 
 
 if __name__ == '__main__':
-    main()
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

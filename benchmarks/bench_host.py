@@ -25,6 +25,7 @@ import sys
 import time
 
 from ldfcz_tools import outputs
+from ldfcz_tools.cli import executable
 from ldfcz_tools.paths import ROOT, TOOLS
 
 def peel_deck(args, fine, out, extra=()):
@@ -84,6 +85,8 @@ def main():
     ap.add_argument('--iters-per-inc', type=float, default=4.0,
                     help='Newton iterations per increment of a peel run (measured: decks/peel 3D, about 4)')
     args = ap.parse_args()
+    if not args.reuse:
+        executable(args.exe, 'ldfcz program')
 
     work = args.work or os.path.join(args.out, 'work')
     os.makedirs(work, exist_ok=True)
@@ -218,4 +221,5 @@ fig.savefig(sys.argv[2], dpi=120)
 
 
 if __name__ == '__main__':
-    main()
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

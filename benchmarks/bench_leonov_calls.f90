@@ -8,6 +8,7 @@
 !> the stresses and tangents (two builds compare for speed and results), and for the relaxing case the
 !> evaluations of g in the scalar predictor of the return (docs/performance.md).
 program bench_leonov_calls
+  use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp
   use leonov_parameters, only: leonov_props, leonov_props_from_array, leonov_props_table1
   use leonov, only: leonov_state, leonov_update, leonov_predictor_evaluations, leonov_log_r_gamma
@@ -23,7 +24,12 @@ program bench_leonov_calls
   n = 1000000
   if (command_argument_count() >= 1) then
     call get_command_argument(1, arg)
-    read (arg, *) n
+    read (arg, *, iostat=st) n
+    if (st /= 0 .or. n < 1) then
+      write (error_unit, '(a)') 'bench_leonov_calls: the argument is the number of calls, a positive integer: '// &
+        trim(arg)
+      call exit(2)
+    end if
   end if
   call leonov_props_from_array(leonov_props_table1(), p, st, msg)
   f0 = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [3, 3])

@@ -9,6 +9,7 @@
 !>   Element matrices are random symmetric positive definite 24 x 24 (the values do not change the sparsity,
 !>   the ordering or the flop count of a factorization without delayed pivots).
 program bench_linalg
+  use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
   use sparse_system
   implicit none
@@ -31,9 +32,22 @@ program bench_linalg
   if (command_argument_count() >= 1) call get_command_argument(1, family)
   if (command_argument_count() >= 2) then
     call get_command_argument(2, arg)
-    read(arg, *) max_dofs
+    read (arg, *, iostat=k) max_dofs
+    if (k /= 0 .or. max_dofs < 1) then
+      write (error_unit, '(a)') 'bench_linalg: the second argument is the largest number of dofs, a positive '// &
+        'integer: '//trim(arg)//' (usage: bench_linalg [cube|peel] [max_dofs] [sym|unsym])'
+      call exit(2)
+    end if
   end if
   if (command_argument_count() >= 3) call get_command_argument(3, symarg)
+  if (trim(family) /= 'cube' .and. trim(family) /= 'peel') then
+    write (error_unit, '(a)') 'bench_linalg: the first argument is the mesh family, cube or peel: '//trim(family)
+    call exit(2)
+  end if
+  if (trim(symarg) /= 'sym' .and. trim(symarg) /= 'unsym') then
+    write (error_unit, '(a)') 'bench_linalg: the third argument is sym or unsym: '//trim(symarg)
+    call exit(2)
+  end if
   symmetric = trim(symarg) /= 'unsym'
   write(*, '(a,a,a,i0,a,l1)') '# bench_linalg: family ', trim(family), ', max_dofs ', max_dofs, ', symmetric ', &
     symmetric

@@ -24,6 +24,7 @@ import tempfile
 import time
 
 from ldfcz_tools import outputs
+from ldfcz_tools.cli import executable
 from ldfcz_tools.paths import ROOT
 
 
@@ -62,6 +63,9 @@ def main():
     ap.add_argument("--u-total", default="0.002", help="pull of the peel deck (mm), default 0.002")
     ap.add_argument("--md", help="also write the tables to this markdown file")
     a = ap.parse_args()
+    for d in [a.bin] + ([a.baseline] if a.baseline else []):
+        for prog in ('material_point', 'ldfcz'):
+            executable(os.path.join(d, prog), prog + ' program (--bin: the build\'s bin directory)')
     bins = [("new", os.path.abspath(a.bin))]
     if a.baseline:
         bins.append(("baseline", os.path.abspath(a.baseline)))
@@ -119,5 +123,6 @@ def main():
             f.write(text)
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

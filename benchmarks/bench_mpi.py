@@ -69,6 +69,7 @@ import subprocess
 import sys
 
 from ldfcz_tools import outputs
+from ldfcz_tools.cli import executable
 from ldfcz_tools.paths import ROOT, TOOLS
 
 def deck(args, fine, out, application=False):
@@ -379,6 +380,7 @@ def main():
     if args.refit:
         refit(args)
         return
+    executable(args.exe, 'ldfcz program (an LDFCZ_MPI build)')
     work = os.path.join(args.out, 'work_mpi')
     os.makedirs(work, exist_ok=True)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1',
@@ -496,4 +498,5 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

@@ -26,6 +26,7 @@ import time
 from bench_calculix import summary_split
 from ldfcz_tools import outputs
 from ldfcz_tools.block_deck import block_deck
+from ldfcz_tools.cli import executable
 
 TICK = os.sysconf('SC_CLK_TCK')
 
@@ -85,6 +86,7 @@ def main():
     ap.add_argument('--work', default='out/bench-omp-wait')
     ap.add_argument('--md', default='')
     a = ap.parse_args()
+    executable(a.exe, 'ldfcz program')
     os.makedirs(a.work, exist_ok=True)
     deck = os.path.abspath(a.deck) if a.deck else os.path.join(os.path.abspath(a.work), 'block.inp')
     if not a.deck:
@@ -139,4 +141,5 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

@@ -30,6 +30,7 @@ import subprocess
 import sys
 
 from ldfcz_tools import outputs
+from ldfcz_tools.cli import executable
 from ldfcz_tools.paths import ROOT
 
 GEN = ['--3d', '--rigid-substrate', '--ny', '10', '--nz', '3', '--le', '0.002', '--du', '0.001',
@@ -68,6 +69,7 @@ def main():
     ap.add_argument('--md', help='also write the table to this file')
     ap.add_argument('--gen-args', default='', help='extra tools/peel_deck.py options (override the defaults)')
     a = ap.parse_args()
+    executable(a.ldfcz, 'ldfcz program')
     configs = [c.split('=', 1) for c in a.config] or [['auto', '--newton auto']]
     exes = dict(e.split('=', 1) for e in a.exe)
     envs = {}
@@ -139,4 +141,5 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

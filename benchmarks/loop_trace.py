@@ -274,5 +274,6 @@ def main():
         prediction_lines("reference's speed factors", rf, nprocs)
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

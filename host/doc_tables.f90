@@ -8,7 +8,7 @@ program ldfcz_doc_tables
   use element_catalog, only: element_types, element_families, element_ndi, element_nshr, element_nnode, &
     element_ndim, element_vtk_cell, element_rule_text, element_kinematics_text
   use output_registry, only: output_variable_t, output_variables, output_provider_text, LOC_NODE, LOC_POINT, LOC_ELEMENT, &
-    VTU_ALWAYS, VTU_REQUESTED
+    LOC_NODAL, VTU_ALWAYS, VTU_REQUESTED
   implicit none
   character(len=32) :: what
   integer :: k
@@ -70,6 +70,8 @@ contains
       loc = 'integration point'
     case (LOC_ELEMENT)
       loc = 'element'
+    case (LOC_NODAL)
+      loc = 'node (averaged)'
     case default
       loc = 'user-element SVARS'
     end select
@@ -80,6 +82,7 @@ contains
     case (VTU_REQUESTED)
       vtu = '`'//trim(ov%vtu)//'` (when requested)'
       if (trim(ov%components) == 'SDVn') vtu = '`SDV<n>` (when requested; the first 3 when no variable is named)'
+      if (ov%follows > 0) vtu = '`'//trim(ov%vtu)//'` (when `'//trim(output_variables(ov%follows)%key)//'` is requested)'
     case default
       vtu = '-'
     end select

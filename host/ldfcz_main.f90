@@ -10,7 +10,11 @@ program ldfcz
   use deck_reader, only: read_deck
   use user_routines, only: user_routines_connect_units, user_routines_t, user_routines_load
   use routine_choice, only: user_routines_choose
-  use output_files, only: output_t, output_open, output_close, output_log
+    use deck_context, only: deck_message_t
+  use command_words, only: abaqus_word, abaqus_word_t, deck_path, restart_base, WORD_NONE, WORD_JOB, WORD_INPUT, &
+    WORD_USER, WORD_CPUS, WORD_ACCEPTED, WORD_REFUSED
+  use output_files, only: output_t, output_open, output_close, output_log, output_note, output_sta_note, &
+    output_discard_empty
   use static_solver, only: run_analysis, run_summary_t, exit_input, solver_options_t, newton_mode_code, &
     newton_krylov, newton_auto
   use abaqus_host_state, only: abaqus_set_job, abaqus_flush_repeats, abaqus_set_processes
@@ -25,7 +29,13 @@ program ldfcz
   !$ use omp_lib, only: omp_set_num_threads, omp_get_max_threads
   implicit none
   character(len=:), allocatable :: arg, deck, outdir, user_file, job, errmsg, fc, fflags
-  integer :: i, n, stat, threads, exit_code, k, nthreads
+  character(len=:), allocatable :: job_word    !< job=NAME of Abaqus' command line ('' not given)
+  character(len=:), allocatable :: input_word  !< input=FILE
+  character(len=:), allocatable :: word_notes  !< the Abaqus words accepted without effect, for JOB.log
+  integer :: i, n, stat, threads, exit_code, k, nthreads, cpus
+  logical :: job_ready   !< the job's name and output directory are known: an input error is recorded there
+  logical :: deck_read   !< the deck was read (the model's size is known)
+  type(deck_message_t), allocatable :: deck_messages(:)
   logical :: quiet, verbose, exists, reorient, orient_error
   logical :: slow_kernels   !< OpenBLAS runs kernels narrower than the CPU allows (blas_kernels_note)
   logical :: out_open    !< JOB.log is open (an error is logged there too)
@@ -54,6 +64,12 @@ program ldfcz
   call blas_kernels_restart()
   call parallel_init(par)   ! MPI_Init in the LDFCZ_MPI build (mpirun -np N ldfcz ...); nothing in a serial one
   out_open = .false.
+  job_ready = .false.
+  deck_read = .false.
+  job_word = ''
+  input_word = ''
+  word_notes = ''
+  cpus = 0
   deck = ''
   outdir = '.'
   user_file = ''
@@ -63,6 +79,7 @@ program ldfcz
   fc = env_value('FC')
   fflags = env_value('FFLAGS')
   threads = 0
+  nthreads = 1
   quiet = .false.
   verbose = .false.
   reorient = .false.
@@ -184,42 +201,40 @@ program ldfcz
       end select
     case default
       if (arg(1:1) == '-') call die('unknown option '//arg//' (ldfcz --help)')
-      if (len(deck) > 0) call die('only one deck may be given')
+      ! a file (or NAME.inp) is the deck; otherwise a word of Abaqus' command line (job=, user=, cpus=, ...)
+      if (len(deck_path(arg)) == 0) then
+        if (take_abaqus_word(arg)) then
+          i = i + 1
+          cycle
+        end if
+      end if
+      if (len(deck) > 0) call die('only one deck may be given (got '//deck//' and '//arg//')')
       deck = arg
     end select
     i = i + 1
   end do
-  if (len(deck) == 0) call die('no deck given (ldfcz --help)')
+  call resolve_deck_and_job()
   if ((options%symmetric_factors .or. options%single_factors) .and. options%newton /= newton_krylov .and. &
       options%newton /= newton_auto) &
     call die('--factors other than exact needs --newton krylov or auto (the factors only precondition GMRES)')
-  inquire (file=deck, exist=exists)
-  if (.not. exists) call die(deck//': file not found')
   if (threads > 0) then
     !$ call omp_set_num_threads(threads)
   end if
-  k = index(deck, '/', back=.true.)
-  job = deck(k + 1:)
-  k = index(job, '.', back=.true.)
-  if (k > 1) job = job(1:k - 1)
-  if (len(restart_from) > 0) then
-    ! an MPI run reads one file per process (JOB.rst.RofN): a process may miss its own
-    inquire (file=parallel_file(par, restart_from), exist=exists)
-    if (.not. exists) call die('--restart-from: '//parallel_file(par, restart_from)//': file not found')
-    options%restart_from = restart_from
-  end if
+  if (len(restart_from) > 0) call resolve_restart_file()
   call make_directories(outdir)
   inquire (file=outdir//'/.', exist=exists)
   if (.not. exists) call die('--out: cannot create directory '//outdir)
+  job_ready = .true.   ! from here an input error is also recorded in JOB.log, JOB.sta and JOB.summary.json
   call abaqus_set_job(job, outdir)
   call abaqus_set_processes(par%rank, par%nranks, par%comm)
   ! JOB.summary.json of an earlier run goes now: the file present after this run is this run's (summary_json)
   if (parallel_writer(par)) call summary_json_clear(outdir, job)
 
   call checkpoint()   ! the options, the deck's and restart file's presence, the output directory
-  call read_deck(deck, model, stat, errmsg)
+  call read_deck(deck, model, stat, errmsg, messages=deck_messages)
   if (stat /= 0) call die(errmsg)
   call checkpoint()
+  deck_read = .true.
 
   ! an MPI run writes its log, CSV, status and frames once, from rank 0
   call output_open(out, job, outdir, quiet, stat, errmsg, append=len(restart_from) > 0, &
@@ -229,6 +244,11 @@ program ldfcz
   out_open = .true.
   call output_log(out, 'ldfcz '//ldfcz_version//' (commit '//ldfcz_commit//', '//ldfcz_build_type// &
     ' build): job '//job//', deck '//deck//', output in '//outdir)
+  if (len(word_notes) > 0) call output_note(out, word_notes)
+  ! the reader's warnings (already on standard error) and notes (JOB.log only)
+  do k = 1, size(deck_messages)
+    call output_note(out, 'ldfcz: '//deck_messages(k)%text)
+  end do
   if (len(user_file) > 0) then
     ! each process of an MPI run compiles into a directory of its own (no two compilers writing one file)
     user_dir = outdir
@@ -236,8 +256,9 @@ program ldfcz
       user_dir = outdir//'/ldfcz_rank'//itoa_local(par%rank)
       call make_directories(user_dir//'/')
     end if
+    ! the compile and link commands go to JOB.log always (-q keeps only the console quiet)
     call user_routines_load(routines, user_file, user_dir, include_dir(), stat, errmsg, &
-      merge(-1, out%log, quiet .or. .not. parallel_writer(par)), fc, fflags)
+      merge(out%log, -1, parallel_writer(par)), fc, fflags)
     if (stat /= 0) call die(errmsg)
   end if
   ! which routine each *USER MATERIAL and *USER ELEMENT type runs: the user's, a declared built-in one, or a stop
@@ -275,6 +296,8 @@ program ldfcz
   call heap_reuse_default(heap_note)
   if (len(heap_note) > 0) call output_log(out, 'ldfcz: '//heap_note)
   call run_analysis(model, routines, out, verbose, summary, exit_code, options, par)
+  ! an input error found while the analysis was set up leaves no empty JOB.csv or JOB.dat
+  if (exit_code == exit_input .and. len(restart_from) == 0) call output_discard_empty(out)
   call output_close(out)
   if (parallel_writer(par)) call write_summary()
   call abaqus_flush_repeats(error_unit)
@@ -282,6 +305,141 @@ program ldfcz
   call exit(exit_code)
 
 contains
+
+  !> An argument of Abaqus' command line (command_words): acted on, and true; false when arg is no Abaqus word.
+  !> docs/host.md, "Abaqus' command line".
+  logical function take_abaqus_word(word_arg) result(taken)
+    character(len=*), intent(in) :: word_arg
+    type(abaqus_word_t) :: w
+    character(len=:), allocatable :: value, werr
+    call abaqus_word(word_arg, w, value, werr)
+    taken = w%action /= WORD_NONE
+    if (.not. taken) return
+    if (len(werr) > 0) call die(werr)
+    select case (w%action)
+    case (WORD_JOB)
+      job_word = value
+      if (index(value, '/') > 0) call die('job='//value//': a job name, not a path (the deck: input=FILE; the '// &
+        'output directory: --out DIR)')
+    case (WORD_INPUT)
+      if (len(input_word) > 0) call die('input= given twice')
+      input_word = value
+    case (WORD_USER)
+      if (len(user_file) > 0) then
+        user_file = user_file//','//value
+      else
+        user_file = value
+      end if
+    case (WORD_CPUS)
+      read (value, *, iostat=stat) cpus
+      if (stat /= 0 .or. verify(value, '0123456789') /= 0 .or. cpus < 1) call die('cpus= needs a positive integer')
+      ! cpus=N: N cores in all; under mpirun -np P each process threads its element loop on N/P
+      if (mod(cpus, par%nranks) /= 0) call die('cpus='//value//' with '//itoa_local(par%nranks)//' processes: '// &
+        'cpus must be a multiple of the processes (each gets cpus/processes threads)')
+      threads = cpus / par%nranks
+    case (WORD_ACCEPTED)
+      if (len(word_notes) == 0) then
+        word_notes = 'ldfcz: note: '
+      else
+        word_notes = word_notes//'; '
+      end if
+      word_notes = word_notes//trim(w%name)//': accepted without effect ('//trim(w%why)//')'
+    case (WORD_REFUSED)
+      call die(trim(w%name)//': this word of Abaqus'' command line is not supported by ldfcz: '//trim(w%why))
+    end select
+  end function take_abaqus_word
+
+  !> The deck and the job name: the deck given (or input=), else job=NAME's NAME.inp; a deck named without its
+  !> extension is NAME.inp (as Abaqus completes input= and job=); the job name is job= or the deck's base name.
+  subroutine resolve_deck_and_job()
+    character(len=:), allocatable :: given, found
+    integer :: kk
+    if (len(deck) > 0 .and. len(input_word) > 0) call die('only one deck may be given (got '//deck// &
+      ' and input='//input_word//')')
+    given = deck
+    if (len(input_word) > 0) given = input_word
+    if (len(given) == 0) given = job_word
+    if (len(given) == 0) call die('no deck given (ldfcz --help)')
+    found = deck_path(given)
+    if (len(found) == 0) then
+      if (len(given) > 4) then
+        if (given(len(given) - 3:) == '.inp') call die(given//': file not found')
+      end if
+      call die(given//': file not found (nor '//given//'.inp)')
+    end if
+    inquire (file=found//'/.', exist=exists)
+    if (exists) call die(found//': is a directory, not a deck')
+    deck = found
+    if (len(job_word) > 0) then
+      job = job_word
+    else
+      kk = index(deck, '/', back=.true.)
+      job = deck(kk + 1:)
+      kk = index(job, '.', back=.true.)
+      if (kk > 1) job = job(1:kk - 1)
+    end if
+  end subroutine resolve_deck_and_job
+
+  !> --restart-from FILE: an MPI run reads one file per process, JOB.rst.RofN; the name of one of them, as the user
+  !> sees them on disk, stands for the set; a set written by another number of processes is refused by name.
+  subroutine resolve_restart_file()
+    character(len=:), allocatable :: base
+    integer :: nwritten
+    call restart_base(restart_from, base, nwritten)
+    if (nwritten > 1) then
+      if (nwritten /= par%nranks) call die('--restart-from: '//restart_from//' is one of the '// &
+        itoa_local(nwritten)//' files of a restart written by '//itoa_local(nwritten)//' processes; a restart '// &
+        'needs as many: mpirun -np '//itoa_local(nwritten)//' ldfcz --restart-from '//base//' ...')
+      restart_from = base
+    end if
+    inquire (file=parallel_file(par, restart_from), exist=exists)
+    if (.not. exists) then
+      if (par%nranks == 1) then
+        inquire (file=restart_from//'.0of2', exist=exists)
+        if (exists) call die('--restart-from: '//restart_from//': file not found (the restart files '// &
+          restart_from//'.RofN are those of a run on N processes: continue it on as many, mpirun -np N)')
+      end if
+      call die('--restart-from: '//parallel_file(par, restart_from)//': file not found')
+    end if
+    options%restart_from = restart_from
+  end subroutine resolve_restart_file
+
+  !> An input error once the job is known: JOB.log (opened here if the outputs were not yet), a status line in
+  !> JOB.sta, JOB.summary.json with status input_error, and no empty JOB.csv/JOB.dat left behind.
+  subroutine record_input_error(text)
+    character(len=*), intent(in) :: text  !< the message ('' : already in JOB.log)
+    character(len=:), allocatable :: line
+    integer :: ios, nl
+    line = text
+    nl = index(line, new_line('a'))
+    if (nl > 0) line = line(1:nl - 1)
+    if (len(line) == 0) line = 'see '//job//'.log'
+    if (.not. out_open) then
+      ! the error came before the outputs were opened (the deck): JOB.log and JOB.sta of this run
+      out%job = job
+      out%dir = outdir
+      if (len(restart_from) > 0) then
+        open (newunit=out%log, file=outdir//'/'//job//'.log', position='append', action='write', iostat=ios)
+        if (ios == 0) open (newunit=out%sta, file=outdir//'/'//job//'.sta', position='append', action='write', &
+          iostat=ios)
+      else
+        open (newunit=out%log, file=outdir//'/'//job//'.log', status='replace', action='write', iostat=ios)
+        if (ios == 0) open (newunit=out%sta, file=outdir//'/'//job//'.sta', status='replace', action='write', &
+          iostat=ios)
+        if (ios == 0) write (out%sta, '(a)') '# step  inc  attempt  iterations  step_time  increment  outcome'
+      end if
+      if (ios /= 0) return
+      out_open = .true.
+      write (out%log, '(a)') 'ldfcz '//ldfcz_version//': job '//job//', deck '//deck//', output in '//outdir
+      if (len(text) > 0) write (out%log, '(a)') 'ldfcz: error: '//text
+    end if
+    call output_sta_note(out, 'input error (exit status 2): '//line)
+    if (len(restart_from) == 0) call output_discard_empty(out)
+    exit_code = exit_input
+    call output_close(out)
+    out_open = .false.
+    call write_summary()
+  end subroutine record_input_error
 
   !> JOB.summary.json (summary_json): the run's summary for programs, written last and whole.
   subroutine write_summary()
@@ -295,9 +453,11 @@ contains
     facts%exit_code = exit_code
     facts%threads = nthreads
     facts%processes = par%nranks
-    facts%nodes = model%nnode
-    facts%elements = model%nelem
-    facts%steps = model%nstep
+    if (deck_read) then
+      facts%nodes = model%nnode
+      facts%elements = model%nelem
+      facts%steps = model%nstep
+    end if
     facts%stop_after = options%stop_after
     call summary_json_write(outdir, job, facts, summary, stat, errmsg)
     if (stat /= 0) write (error_unit, '(a)') 'ldfcz: warning: '//out%job//'.summary.json not written: '//errmsg
@@ -389,14 +549,20 @@ contains
       if (out_open .and. out%log /= -1) write (out%log, '(a)') 'ldfcz: error: '//text
       write (error_unit, '(a)') 'ldfcz: error: '//text
     end if
+    if (job_ready .and. first == exit_input .and. parallel_writer(par)) call record_input_error(text)
     if (out_open) call output_close(out)
     call parallel_finalize(par)
     call exit(first)
   end subroutine stop_all
 
   subroutine usage()
-    write (output_unit, '(a)') 'usage: ldfcz [options] JOB.inp', &
-      '  Runs the static steps of an Abaqus-style deck; the job name is the deck''s base name.', &
+    write (output_unit, '(a)') 'usage: ldfcz [options] JOB[.inp]', &
+      '       ldfcz job=JOB [input=FILE] [user=FILE] [cpus=N] [interactive] [options]   (as abaqus job=...)', &
+      '  Runs the static steps of an Abaqus-style deck; the job name is the deck''s base name (or job=).', &
+      '  A deck or input= named without .inp is NAME.inp; a user file without its extension is the first of', &
+      '  NAME.f, NAME.for, NAME.f90, NAME.F, NAME.o. cpus=N: N threads (under mpirun, N/processes each);', &
+      '  interactive, ask_delete=, double=, memory=, scratch=: accepted without effect; other Abaqus words', &
+      '  (oldjob=, background, datacheck, ...) are refused with the ldfcz way (docs/host.md).', &
       'options:', &
       '  -o, --out DIR      write JOB.csv, JOB.sta, JOB.log, JOB.pvd/vtu into DIR (default .)', &
       '  -t, --threads N    threads of the element loop (default: OMP_NUM_THREADS or all cores)', &

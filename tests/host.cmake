@@ -426,3 +426,20 @@ endforeach()
 add_test(NAME deck_boundary_user COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_boundary_user.py
   --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/boundary_user --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_disp.f)
 set_tests_properties(deck_boundary_user PROPERTIES LABELS "deck" TIMEOUT 300)
+
+# Messages and Abaqus' command line (issue 37 items 4-5): suggestions for misspelt keywords and parameters (and the
+# keyword table against the reader's dispatch), job=/input=/user=/cpus=/interactive and refused words, a --user
+# compile error's records, CAE boilerplate as notes in JOB.log, every cutback named in JOB.log
+add_test(NAME deck_messages COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_messages.py
+  --exe $<TARGET_FILE:ldfcz> --decks ${LDFCZ_DECKS} --user-src ${CMAKE_CURRENT_SOURCE_DIR}/regression
+  --reader ${PROJECT_SOURCE_DIR}/host/deck/deck_reader.f90 --out ${LDFCZ_RUNS}/deck_messages)
+set_tests_properties(deck_messages PROPERTIES LABELS "deck" TIMEOUT 300 PASS_REGULAR_EXPRESSION "PASS"
+  FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
+
+# The frames (issue 37 item 3): continuum and interface blocks (JOB_NNNN.vtm), the damage, nodal averages of the
+# patch decks equal to their constant stress and strain, pictures rendered headless (tools/render_frame.py under
+# xvfb-run: tools/setup.sh installs xvfb) and checked not blank, the interface drawn without its separated cells
+add_test(NAME deck_frames COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_frames.py
+  --exe $<TARGET_FILE:ldfcz> --decks ${LDFCZ_DECKS} --root ${PROJECT_SOURCE_DIR} --out ${LDFCZ_RUNS}/deck_frames)
+set_tests_properties(deck_frames PROPERTIES LABELS "deck" TIMEOUT 600 PASS_REGULAR_EXPRESSION "PASS"
+  FAIL_REGULAR_EXPRESSION "FAIL|Traceback")

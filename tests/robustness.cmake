@@ -50,3 +50,14 @@ add_test(NAME robust_threads_agree
           --deck "${PROJECT_SOURCE_DIR}/decks/stability/stab_peel_brittle_viscous.inp" --increments 40
           --out "${LDFCZ_ROBUST_RUNS}/threads")
 set_tests_properties(robust_threads_agree PROPERTIES LABELS "robustness" TIMEOUT 300)
+
+# no traceback from any tool or driver (issue 37 item 5): every command of tools/, python3 -m ldfcz_tools.NAME, the
+# benchmarks and material_point fed a binary file, a folder, an empty file and a CSV with a column missing; identify
+# and render_frame by a Python without NumPy / VTK (tests/regression/check_tool_inputs.py)
+if(TARGET material_point)
+  add_test(NAME robust_tool_inputs
+    COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_tool_inputs.py"
+            --root "${PROJECT_SOURCE_DIR}" --bin "$<TARGET_FILE_DIR:ldfcz>" --out "${LDFCZ_ROBUST_RUNS}/tool_inputs")
+  set_tests_properties(robust_tool_inputs PROPERTIES LABELS "robustness" TIMEOUT 600
+    PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "FAIL")
+endif()

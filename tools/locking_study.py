@@ -3,7 +3,9 @@
 
 The code and its options: tools/ldfcz_tools/locking_study.py (--help).
 """
-from ldfcz_tools.locking_study import main
+import sys
+
+from ldfcz_tools.cli import run
 
 if __name__ == '__main__':
-    main()
+    sys.exit(run('locking_study'))

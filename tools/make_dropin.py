@@ -147,6 +147,8 @@ def main():
     for path in a.sources:
         with open(path) as f:
             text = f.read()
+        if not re.search(r"^\s*(module|subroutine|function|program)\b", text, re.I | re.M):
+            sys.exit("make_dropin: %s: no Fortran module, subroutine or function in it (not a source file?)" % path)
         try:
             if path.endswith(".f90") and a.form == "fixed":
                 text = free_to_fixed(text)
@@ -160,5 +162,6 @@ def main():
         f.write("\n".join(parts))
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

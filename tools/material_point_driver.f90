@@ -31,6 +31,8 @@
 !>                for the CSV from SDV12 = ln(lambda_3) (the Leonov UMAT's plane-stress state variable). The
 !>                rotation axis must be 3.                   [no]
 !>   output       CSV file                                   [material_point.csv]
+!>                (a relative path in the case file is relative to the case file's directory, on the command line
+!>                to the current directory)
 !>   output_every write every n-th increment                 [1]
 !> CSV columns: time, F11..F33 (row by row), S11 S22 S33 S12 S13 S23 (Cauchy, Abaqus order, global frame),
 !>   SDV1..SDVn, then strain (ln lambda_1 or shear), stress (material-frame sigma_11 or sigma_12), J.
@@ -43,6 +45,7 @@ program material_point
   real(dp), parameter :: pi = acos(-1.0_dp)
   character(len=32) :: mode = 'uniaxial'
   character(len=512) :: output = 'material_point.csv'
+  character(len=512) :: case_dir = ''   !< directory of the case file ('' none; ends with '/')
   real(dp) :: rate = 1.0e-3_dp, strain_end = 1.0_dp, time_end = 1.0_dp, rotation = 0.0_dp
   real(dp) :: f_end(3, 3), props(10)
   integer :: steps = 200, axis = 3, nstatv = 11, output_every = 1
@@ -56,6 +59,7 @@ program material_point
   character(len=8) :: seg_kind(max_seg)
   real(dp) :: seg_target(max_seg), seg_time(max_seg), t0, x0_seg, s0_seg, x_goal
   integer :: seg_steps(max_seg)
+  integer :: ios_out
 
   f_end = identity3()
   props = [1250.0_dp, 0.4_dp, 28.4_dp, 0.486_dp, 0.95_dp, 0.047_dp, 28.2_dp, 0.990_dp, 200.0_dp, -4.0_dp]
@@ -93,7 +97,8 @@ program material_point
   stran = 0.0_dp
   xs = 0.0_dp   ! ln of the three stretches (uniaxial) or the shear (shear, xs(1))
 
-  open (newunit=unit, file=trim(output), status='replace', action='write')
+  open (newunit=unit, file=trim(output), status='replace', action='write', iostat=ios_out)
+  if (ios_out /= 0) call fail('cannot write ' // trim(output) // ' (does its directory exist? output = FILE sets it)')
   call write_header()
   t = 0.0_dp
   f0 = deformation(0.0_dp, xs)
@@ -154,10 +159,11 @@ contains
     a(3, 3) = 1.0_dp
   end function identity3
 
+  !> A one-line message and exit status 2 (no runtime error, no backtrace).
   subroutine fail(text)
     character(len=*), intent(in) :: text
     write (error_unit, '(a)') 'material_point: ' // text
-    error stop 2
+    call exit(2)
   end subroutine fail
 
   !> Rigid rotation at time tt (angle grows linearly to `rotation` degrees at t_total).
@@ -434,11 +440,15 @@ contains
     write (unit, '(es23.15,*(:,",",es23.15))') tt, transpose(f), stress, statev, strain, s_ax, det3(f)
   end subroutine write_row
 
-  !> Read the optional case file (first argument without '='), then key=value arguments.
+  !> Read the optional case file (first argument without '='), then key=value arguments (which override it). A
+  !> relative output path in the case file is taken relative to the case file's directory.
   subroutine read_input()
-    integer :: i, n, ios, u
+    integer :: i, n, ios, u, k, nfile, nkey
     character(len=1024) :: arg, line
+    logical :: there
     n = command_argument_count()
+    nfile = 0
+    nkey = 0
     do i = 1, n
       call get_command_argument(i, arg)
       if (arg == '-h' .or. arg == '--help') then
@@ -446,24 +456,55 @@ contains
         stop
       end if
       if (index(arg, '=') == 0) then
+        nfile = nfile + 1
+        if (nfile > 1) call fail('only one case file may be given (and key=value arguments): ' // trim(arg))
+        inquire (file=trim(arg)//'/.', exist=there)
+        if (there) call fail(trim(arg) // ': is a directory, not a case file')
+        inquire (file=trim(arg), exist=there)
+        if (.not. there) call fail(trim(arg) // ': case file not found (material_point --help)')
         open (newunit=u, file=trim(arg), status='old', action='read', iostat=ios)
         if (ios /= 0) call fail('cannot open case file ' // trim(arg))
+        k = index(arg, '/', back=.true.)
+        case_dir = arg(1:k)
         do
           read (u, '(a)', iostat=ios) line
-          if (ios /= 0) exit
-          call set_key(line)
+          if (is_iostat_end(ios)) exit
+          if (ios /= 0) call fail(trim(arg) // ': not a text case file (a line could not be read)')
+          ! after its comment, a line is blank or 'key = value' (a DOS line end is a blank)
+          k = index(line, '#')
+          if (k > 0) line(k:) = ' '
+          k = index(line, achar(13))
+          if (k > 0) line(k:k) = ' '
+          if (index(line, '=') > 0) nkey = nkey + 1
+          if (verify(line, ' ' // achar(9) // achar(13)) > 0 .and. index(line, '=') == 0) &
+            call fail(trim(arg) // ': not a case file line (key = value expected): ' // trim(printable(line)))
+          call set_key(line, .true.)
         end do
         close (u)
+        if (nkey == 0) call fail(trim(arg) // ': no ''key = value'' line (an empty case file? material_point --help)')
       end if
     end do
+    case_dir = ''
     do i = 1, n
       call get_command_argument(i, arg)
-      if (index(arg, '=') > 0) call set_key(arg)
+      if (index(arg, '=') > 0) call set_key(arg, .false.)
     end do
   end subroutine read_input
 
-  subroutine set_key(text)
+  !> The first 60 characters of a line with non-printable characters shown as '?' (a binary file's line).
+  pure function printable(text) result(t)
     character(len=*), intent(in) :: text
+    character(len=min(len(text), 60)) :: t
+    integer :: i
+    t = text(1:len(t))
+    do i = 1, len(t)
+      if (iachar(t(i:i)) < 32 .or. iachar(t(i:i)) > 126) t(i:i) = '?'
+    end do
+  end function printable
+
+  subroutine set_key(text, from_file)
+    character(len=*), intent(in) :: text
+    logical, intent(in) :: from_file   !< a line of the case file (relative paths: from its directory)
     character(len=1024) :: line, key, val
     integer :: k, ios
     line = text
@@ -479,6 +520,7 @@ contains
       mode = trim(val)
     case ('output')
       output = trim(val)
+      if (from_file .and. len_trim(case_dir) > 0 .and. output(1:1) /= '/') output = trim(case_dir) // trim(val)
     case ('rate')
       read (val, *, iostat=ios) rate
     case ('strain_end')
@@ -520,9 +562,9 @@ contains
       read (val, *, iostat=ios) f_end
       f_end = transpose(f_end)
     case default
-      call fail('unknown key "' // trim(key) // '"')
+      call fail('unknown key "' // trim(printable(key)) // '" (material_point --help)')
     end select
-    if (ios /= 0) call fail('cannot read the value of ' // trim(key) // ': ' // trim(val))
+    if (ios /= 0) call fail('cannot read the value of ' // trim(key) // ': ' // trim(printable(val)))
     if (axis < 1 .or. axis > 3) call fail('axis must be 1, 2 or 3')
   end subroutine set_key
 

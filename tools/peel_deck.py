@@ -5,7 +5,7 @@ The code and its options: tools/ldfcz_tools/peel_deck.py (--help).
 """
 import sys
 
-from ldfcz_tools.peel_deck import main
+from ldfcz_tools.cli import run
 
 if __name__ == '__main__':
-    sys.exit(main())
+    sys.exit(run('peel_deck'))

@@ -5,7 +5,7 @@ The code and its options: tools/ldfcz_tools/plot_material.py (--help).
 """
 import sys
 
-from ldfcz_tools.plot_material import main
+from ldfcz_tools.cli import run
 
 if __name__ == '__main__':
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run('plot_material'))

@@ -11,6 +11,7 @@ Prints the N longest procedures and, with --types, the N types with the most com
 import argparse
 import os
 import re
+import sys
 
 START = re.compile(r"^\s*(?:(?:pure|elemental|recursive|impure|module)\s+)*"
                    r"(?:(?:integer|real|logical|character|complex|type)\b[^!]*?\s+)?"
@@ -79,8 +80,12 @@ def main():
     a = ap.parse_args()
     files = []
     for d in a.dirs:
+        if not os.path.isdir(d):
+            sys.exit("routine_lengths.py: %s: not a directory (the arguments are source directories)" % d)
         for root, _, names in os.walk(d):
             files += [os.path.join(root, n) for n in sorted(names) if n.endswith((".f90", ".F90", ".f90.in"))]
+    if not files:
+        sys.exit("routine_lengths.py: no Fortran sources (.f90, .F90) under %s" % " ".join(a.dirs))
     procs = [p for f in files for p in procedures(f)]
     procs.sort(key=lambda p: -p[1])
     print("longest procedures (own lines):")
@@ -94,5 +99,6 @@ def main():
             print("  %5d  %s  (%s)" % (n, name, path))
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import guard
+    sys.exit(guard(main))

@@ -22,6 +22,9 @@ build_dir=${LDFCZ_BUILD_DIR:-$default_dir}
 
 packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-numpy python3-scipy python3-vtk9
           libmumps-seq-dev libmetis-dev liblapack-dev libopenblas-dev)
+# Pictures of the frames on a machine without a display (tools/render_frame.py, test deck_frames): Debian's VTK
+# renders off-screen through an X server, which xvfb-run provides (it needs xauth)
+packages+=(xvfb xauth)
 # The LDFCZ_MPI build (mpirun -np N ldfcz; its tests run in tools/test.sh): OpenMPI and the parallel MUMPS. The default
 # build does not use them; they are installed always so that the MPI tests never lack them on Debian.
 packages+=(openmpi-bin libopenmpi-dev libmumps-dev)

@@ -5,7 +5,7 @@ The code and its options: tools/ldfcz_tools/umat_step_study.py (--help).
 """
 import sys
 
-from ldfcz_tools.umat_step_study import main
+from ldfcz_tools.cli import run
 
 if __name__ == '__main__':
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run('umat_step_study'))

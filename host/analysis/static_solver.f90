@@ -7,7 +7,7 @@ module static_solver
   use model_types, only: model_t
   use analysis_core, only: analysis_t, analysis_init, close_loop_trace
   use sparse_system, only: sparse_destroy
-  use output_files, only: output_t, output_log
+  use output_files, only: output_t, output_log, output_sta_note
   use user_routines, only: user_routines_t
   use abaqus_host_state, only: abaqus_clear_stop
   use solver_options, only: solver_options_t, exit_ok, exit_input, exit_no_convergence, &
@@ -50,6 +50,7 @@ contains
     if (stat /= 0) then
       call close_loop_trace(an)
       call output_log(out, 'ldfcz: error: '//errmsg)
+      call output_sta_note(out, 'input error (exit status 2): '//errmsg)
       if (out%quiet .and. .not. out%silent) write (error_unit, '(a)') 'ldfcz: error: '//errmsg
       exit_code = exit_input
       return

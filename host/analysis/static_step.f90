@@ -32,6 +32,7 @@ module static_step
   use run_summary, only: run_summary_t, run_summary_continue, cohesive_ratio, statev_increment
   use newton_iteration, only: newton_state_t, newton_solve, newton_forget_factors
   use stop_report, only: stop_message
+  use cutback_log, only: cutback_log_t, cutback_log_add, cutback_log_flush
   use plane_stress_notice, only: plane_stress_umat_warnings
   use solver_text, only: itoa, rtoa
   use parallel_context, only: parallel_file, parallel_max, parallel_distributed
@@ -56,6 +57,7 @@ module static_step
     integer(i8) :: checksum = 0           !< restart fingerprint of the model and partition (0: not computed yet)
     real(dp) :: t_reached(2) = 0.0_dp     !< step and total time of the last converged increment (UEXTERNALDB)
     integer(i8) :: step_clock = 0         !< clock count at the start of the step (progress line)
+    type(cutback_log_t) :: cutbacks       !< repeated cutbacks not yet named in JOB.log
     logical :: halt = .false.             !< the analysis ends (exit_code says why)
     integer :: exit_code = 0              !< exit status (solver_options)
   end type run_t
@@ -103,9 +105,11 @@ contains
           call stop_if_asked(model, opt, an, run, out, summary, inc)
           if (run%halt) exit steps
         end do increments
+        call cutback_log_flush(run%cutbacks, out)
         call end_step(model, an, out, is)
         is = is + 1
       end do steps
+      call cutback_log_flush(run%cutbacks, out)
       call end_analysis(model, an, run, out, is)
     end if
     exit_code = run%exit_code
@@ -444,7 +448,7 @@ contains
         call output_sta(out, inc%step, inc%kinc, inc%attempt, inc%iter, increment_end(inc), inc%dt, &
           'stopped: XIT/STDB_ABQERR in a user routine')
         call halt_on_error(out, run, stop_message(model, an%work%stop%elem, an%work%stop%text, inc%step, inc%kinc), &
-          exit_input)
+          exit_input, status_line=.false.)
         if (parallel_distributed(an%par)) call output_log(out, 'ldfcz: the element is computed by process '// &
           itoa(an%work%stop%rank)//' of '//itoa(an%par%nranks)//'; every process stopped')
         converged = .false.
@@ -495,7 +499,9 @@ contains
     associate (p => an%state%progress, st => model%steps(inc%step))
       call step_control_cutback(p%sc, inc%dt, inc%pnewdt, ok)
       call summary%add_cutback(inc%step, inc%cause)
+      call cutback_log_add(run%cutbacks, out, inc%step, inc%kinc, inc%attempt, inc%cause, inc%dt, p%sc%dt, run%verbose)
       if (ok .and. .not. step_control_exhausted(p%sc)) return
+      call cutback_log_flush(run%cutbacks, out)
       head = 'ldfcz: step '//itoa(inc%step)//' increment '//itoa(inc%kinc)//': no convergence'
       if (st%direct) then
         call output_log(out, head//' with DIRECT (fixed) increments ('//trim(inc%cause)//')')
@@ -719,16 +725,21 @@ contains
   end function restart_frequency
 
   !> An error that ends the analysis: in the log and, when the log is not echoed (echo), on standard error.
-  subroutine halt_on_error(out, run, text, code, echo)
+  subroutine halt_on_error(out, run, text, code, echo, status_line)
     type(output_t), intent(inout) :: out           !< output files
     type(run_t), intent(inout) :: run              !< the run's working data
     character(len=*), intent(in) :: text           !< the message
     integer, intent(in) :: code                    !< exit status
     logical, intent(in), optional :: echo          !< also on standard error when quiet (default yes)
-    logical :: to_stderr
+    !> an input error's line in JOB.sta (default yes; a user routine's stop has its own status line)
+    logical, intent(in), optional :: status_line
+    logical :: to_stderr, sta
     to_stderr = out%quiet .and. .not. out%silent
     if (present(echo)) to_stderr = to_stderr .and. echo
+    sta = code == exit_input
+    if (present(status_line)) sta = sta .and. status_line
     call output_log(out, 'ldfcz: error: '//text)
+    if (sta) call output_sta_note(out, 'input error (exit status 2): '//text)
     if (to_stderr) write (error_unit, '(a)') 'ldfcz: error: '//text
     run%exit_code = code
     run%halt = .true.

@@ -13,7 +13,7 @@ module step_output
   use history_columns, only: history_columns_t, history_columns_build, history_columns_values
   use print_tables, only: print_tables_any, print_tables_write, print_tables_elements
   use state_gather, only: gather_converged_states, release_converged_states
-  use field_frame, only: write_field_frame
+  use field_frame, only: write_field_frame, field_frame_blocks
   implicit none
   private
   public :: output_marks_t, output_state_t, output_state_open, output_step_begin, write_increment_output
@@ -49,6 +49,8 @@ contains
     logical :: fresh
     stat = 0
     errmsg = ''
+    ! the frames' blocks (JOB.pvd of a restart lists the kept frames with their extension)
+    out%nblocks = field_frame_blocks(model)
     ! CSV columns: every (set, variable) requested by *NODE PRINT in any step
     call history_columns_build(model, os%cols)
     allocate (os%values(os%cols%n))

@@ -9,10 +9,12 @@ module deck_context
   use model_types, only: model_t, source_pos_t, model_find_nset, model_find_elset, model_find_surface
   use deck_lists, only: itoa, add_member
   use deck_values, only: abaqus_values, expand_value, no_blanks
+  use deck_suggest, only: deck_closest
   implicit none
   private
   public :: deck_context_t, flen
-  public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos
+  public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos, ctx_note, ctx_note_pos
+  public :: deck_message_t
   public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
   public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_continued
   public :: part_def_t, scope_model, scope_part, scope_assembly, member_origin_t, ctx_set_member, no_blanks
@@ -38,6 +40,10 @@ module deck_context
     integer, allocatable :: rec(:)   !< record of member k (same order as the set's members while reading)
     integer :: n = 0                 !< entries in use
   end type member_origin_t
+  !> A warning or note of the reading, for JOB.log: 'warning: file:line: *KW: text' or 'note: ...'.
+  type :: deck_message_t
+    character(len=:), allocatable :: text
+  end type deck_message_t
 
   !> Reader state. The keyword block being read is records ir (the keyword line) .. ir_next-1.
   type :: deck_context_t
@@ -53,6 +59,7 @@ module deck_context
     integer :: imat = 0                               !< material being defined (0: none)
     integer :: istep = 0                              !< current step
     logical :: in_step = .false.                      !< between *STEP and *END STEP
+    integer :: step_rec = 0                           !< record of the *STEP line of the open step
     integer :: restart_freq = 0                       !< *RESTART, WRITE, FREQUENCY in effect (0: none)
     integer :: output_kind = 0                        !< the step's last *OUTPUT: 1 FIELD, 2 HISTORY, 0 none
     integer :: decl_material = 0                      !< material whose definition the last blocks belong to
@@ -79,6 +86,8 @@ module deck_context
     integer :: npart = 0
     type(member_origin_t), allocatable :: nset_src(:) !< origin of the members of each node set
     type(member_origin_t), allocatable :: elset_src(:) !< origin of the members of each element set
+    type(deck_message_t), allocatable :: messages(:)  !< warnings and notes so far (JOB.log)
+    integer :: nmessage = 0
   end type deck_context_t
 
 contains
@@ -142,13 +151,13 @@ contains
     ctx%errmsg = pos%file//':'//itoa(pos%line)//': '//trim(pos%keyword)//': '//msg
   end subroutine ctx_fail_pos
 
-  !> Warning at record irec under the current keyword.
+  !> Warning at record irec under the current keyword: something that may make the result differ from what the deck
+  !> asks for (on standard error at once, and in JOB.log).
   subroutine ctx_warn(ctx, irec, msg)
-    type(deck_context_t), intent(in) :: ctx  !< reader state
-    integer, intent(in) :: irec              !< record index
-    character(len=*), intent(in) :: msg      !< what is ignored
-    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//deck_where(ctx%src, irec)//': '//shown(ctx%kw)// &
-      ': '//msg
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record index
+    character(len=*), intent(in) :: msg         !< what is ignored
+    call report(ctx, 'warning: '//deck_where(ctx%src, irec)//': '//shown(ctx%kw)//': '//msg, .true.)
   end subroutine ctx_warn
 
   !> A keyword as the deck writes it: a declaration '*LDFCZ X' was the comment line '**LDFCZ X'.
@@ -163,12 +172,45 @@ contains
 
   !> Warning at a stored source position.
   subroutine ctx_warn_pos(ctx, pos, msg)
-    type(deck_context_t), intent(in) :: ctx  !< reader state
-    type(source_pos_t), intent(in) :: pos    !< position
-    character(len=*), intent(in) :: msg      !< what is ignored
-    if (ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: warning: '//pos%file//':'//itoa(pos%line)//': '// &
-      trim(pos%keyword)//': '//msg
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(source_pos_t), intent(in) :: pos       !< position
+    character(len=*), intent(in) :: msg         !< what is ignored
+    call report(ctx, 'warning: '//pos%file//':'//itoa(pos%line)//': '//trim(pos%keyword)//': '//msg, .true.)
   end subroutine ctx_warn_pos
+
+  !> Note at record irec under the current keyword: something of the deck without effect on the results (output
+  !> requests ldfcz does not write, Abaqus/CAE's boilerplate); in JOB.log only, not on the console.
+  subroutine ctx_note(ctx, irec, msg)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: irec                 !< record index
+    character(len=*), intent(in) :: msg         !< what has no effect
+    call report(ctx, 'note: '//deck_where(ctx%src, irec)//': '//trim(ctx%kw)//': '//msg, .false.)
+  end subroutine ctx_note
+
+  !> Note at a stored source position.
+  subroutine ctx_note_pos(ctx, pos, msg)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(source_pos_t), intent(in) :: pos       !< position
+    character(len=*), intent(in) :: msg         !< what has no effect
+    call report(ctx, 'note: '//pos%file//':'//itoa(pos%line)//': '//trim(pos%keyword)//': '//msg, .false.)
+  end subroutine ctx_note_pos
+
+  !> Keep a message for JOB.log; a warning also goes to the warning unit now ('ldfcz: warning: ...').
+  subroutine report(ctx, text, console)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: text        !< 'warning: ...' or 'note: ...'
+    logical, intent(in) :: console              !< also on the warning unit
+    type(deck_message_t), allocatable :: tmp(:)
+    if (console .and. ctx%wu /= -1) write (ctx%wu, '(a)') 'ldfcz: '//text
+    if (.not. allocated(ctx%messages)) allocate (ctx%messages(8))
+    if (ctx%nmessage == size(ctx%messages)) then
+      allocate (tmp(2 * ctx%nmessage))
+      tmp(1:ctx%nmessage) = ctx%messages(1:ctx%nmessage)
+      call move_alloc(tmp, ctx%messages)
+    end if
+    ctx%nmessage = ctx%nmessage + 1
+    ctx%messages(ctx%nmessage)%text = text
+  end subroutine report
 
   ! ------------------------------------------------------------------ parameters
 
@@ -203,7 +245,14 @@ contains
         if (nmatch == 1) ctx%params(i)%name = trim(names(jmatch))
       end if
       if (all(ctx%params(i)%name /= names)) then
-        call ctx_fail(ctx, ctx%ir, 'unsupported parameter '//ctx%params(i)%name)
+        ! a slip of the keyboard gets the parameter it is nearest to ("ELSTE: ...; did you mean ELSET?")
+        j = deck_closest(ctx%params(i)%name, names)
+        if (j > 0) then
+          call ctx_fail(ctx, ctx%ir, 'unsupported parameter '//ctx%params(i)%name//'; did you mean '// &
+            trim(names(j))//'?')
+        else
+          call ctx_fail(ctx, ctx%ir, 'unsupported parameter '//ctx%params(i)%name)
+        end if
         return
       end if
       ! an abbreviated value of an enumerated parameter: the one Abaqus value it begins (AMPLITUDE=RAM is RAMP)

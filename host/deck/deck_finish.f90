@@ -7,7 +7,7 @@ module deck_finish
     etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes, elastic_lamina
   use element_catalog, only: element_is_plane_stress
   use deck_lists, only: itoa, grow_int, unique
-  use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos
+  use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos, ctx_note_pos
   use output_registry, only: output_unprovided_requests
   use deck_finish_extras, only: finish_extras
   implicit none
@@ -281,7 +281,12 @@ contains
     integer :: k
     call output_unprovided_requests(ctx%model, pos, msg)
     do k = 1, size(msg)
-      call ctx_warn_pos(ctx, pos(k), trim(msg(k)))
+      ! a request written for part of the model only (SDV of a model with user elements) cannot surprise: a note
+      if (index(msg(k), ': not written') > 0) then
+        call ctx_warn_pos(ctx, pos(k), trim(msg(k)))
+      else
+        call ctx_note_pos(ctx, pos(k), trim(msg(k)))
+      end if
     end do
   end subroutine warn_unprovided_outputs
 
@@ -502,7 +507,7 @@ contains
         if (any([((any(model%steps(is)%dloads(k)%kind == [dload_grav, dload_centrif, dload_rota]), &
             k = 1, model%steps(is)%ndload), is = 1, model%nstep)])) cycle
         pos = model%materials(im)%pos
-        call ctx_warn_pos(ctx, pos, 'material '//trim(model%materials(im)%given_name)//': *DENSITY has no effect '// &
+        call ctx_note_pos(ctx, pos, 'material '//trim(model%materials(im)%given_name)//': *DENSITY has no effect '// &
           'in a static analysis without GRAV, CENTRIF or ROTA loads')
       end do
     end associate

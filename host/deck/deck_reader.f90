@@ -4,10 +4,11 @@
 !> This module dispatches the keyword blocks to the readers of deck_mesh, deck_materials, deck_user_elements,
 !> deck_boundaries and deck_steps, which share the state in a deck_context_t, and lets deck_finish complete the model.
 module deck_reader
-  use deck_lines, only: deck_load, deck_keyword_parse
+  use deck_lines, only: deck_load, deck_keyword_parse, deck_where
   use model_types, only: model_t
-  use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_allow_params, ctx_need_step, &
-    scope_model, scope_assembly, no_blanks
+  use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_note, ctx_allow_params, ctx_need_step, &
+    scope_model, scope_assembly, no_blanks, deck_message_t
+  use deck_suggest, only: deck_closest
   use deck_assembly, only: prescan_assembly, read_part_def, begin_assembly, end_assembly, begin_instance, &
     end_instance, allowed_in_assembly, mesh_keyword
   use deck_mesh, only: read_node, read_element, read_set, read_system
@@ -30,28 +31,51 @@ module deck_reader
   use deck_model_change, only: read_model_change, read_time_points
   implicit none
   private
-  public :: read_deck
+  public :: read_deck, reader_keywords
 
-  !> Every keyword the reader reads or warns about (the targets of keyword abbreviations and blank-free spellings)
-  character(len=24), parameter :: known_keywords(*) = [character(len=24) :: '*PART', '*END PART', '*ASSEMBLY', &
-    '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*ORIENTATION', '*TRANSFORM', '*SYSTEM', '*NGEN', '*NFILL', &
-    '*NCOPY', '*ELGEN', '*PARAMETER', '*HEADING', '*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', &
-    '*MATERIAL', '*ELASTIC', '*USER MATERIAL', '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', &
-    '*BOUNDARY', '*CLOAD', '*DLOAD', '*DSLOAD', '*SURFACE', '*DENSITY', '*INITIAL CONDITIONS', '*TEMPERATURE', &
-    '*FIELD', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*STEP', '*STATIC', '*VISCO', '*CONTROLS', '*OUTPUT', &
-    '*NODE OUTPUT', '*ELEMENT OUTPUT', '*NODE PRINT', '*EL PRINT', '*MONITOR', '*END STEP', '*RESTART', &
-    '*SECTION CONTROLS', '*HOURGLASS STIFFNESS', '*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', &
-    '*EL FILE', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS', '*SECTION PRINT']
+  !> The keyword table: every keyword read_block dispatches (keep the two in step: test deck_messages compares
+  !> them), the names a misspelt keyword is compared with ("*ELASTC: ...; did you mean *ELASTIC?").
+  character(len=*), parameter :: reader_keywords(*) = [character(len=20) :: &
+    '*PART', '*END PART', '*ASSEMBLY', '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*ORIENTATION', &
+    '*TRANSFORM', '*SYSTEM', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*HEADING', '*NODE', '*ELEMENT', &
+    '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', '*DEPVAR', '*USER ELEMENT', &
+    '*UEL PROPERTY', '*AMPLITUDE', '*BOUNDARY', '*CLOAD', '*DLOAD', '*DSLOAD', '*SURFACE', '*DENSITY', &
+    '*INITIAL CONDITIONS', '*TEMPERATURE', '*FIELD', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*COUPLING', &
+    '*KINEMATIC', '*DISTRIBUTING', '*MODEL CHANGE', '*TIME POINTS', '*STEP', &
+    '*STATIC', '*VISCO', '*CONTROLS', '*OUTPUT', '*NODE OUTPUT', '*ELEMENT OUTPUT', '*NODE PRINT', '*EL PRINT', &
+    '*MONITOR', '*END STEP', '*RESTART', '*LDFCZ SVARS', '*LDFCZ STATEV', '*LDFCZ BUILTIN', '*SECTION CONTROLS', &
+    '*HOURGLASS STIFFNESS', '*ENERGY PRINT', '*PREPRINT', &
+    '*FILE FORMAT', '*NODE FILE', '*EL FILE', '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', &
+    '*DIAGNOSTICS', '*SECTION PRINT']
+  !> Abaqus/Standard keywords ldfcz does not read (each may change the analysis: an error), so that a misspelling
+  !> of one is recognised as such and a real one is not taken for a misspelling of a supported keyword (*PLASTIC is
+  !> one edit from *ELASTIC). Not complete: a keyword missing here gets no suggestion or, at worst, a wrong one.
+  character(len=*), parameter :: other_abaqus_keywords(*) = [character(len=36) :: &
+    '*PLASTIC', '*HYPERELASTIC', '*HYPERFOAM', '*VISCOELASTIC', '*CREEP', '*SWELLING', '*MULLINS EFFECT', &
+    '*DAMAGE INITIATION', '*DAMAGE EVOLUTION', '*DAMAGE STABILIZATION', '*CONDUCTIVITY', '*SPECIFIC HEAT', &
+    '*LATENT HEAT', '*DAMPING', '*DYNAMIC', '*FREQUENCY', '*BUCKLE', '*HEAT TRANSFER', &
+    '*COUPLED TEMPERATURE-DISPLACEMENT', '*GEOSTATIC', '*SOILS', '*STEADY STATE DYNAMICS', '*MODAL DYNAMIC', &
+    '*SHELL SECTION', '*SHELL GENERAL SECTION', '*MEMBRANE SECTION', '*BEAM SECTION', '*BEAM GENERAL SECTION', &
+    '*COHESIVE SECTION', '*CONNECTOR SECTION', '*GASKET SECTION', &
+    '*CONTACT PAIR', '*CONTACT', '*CONTACT INCLUSIONS', '*CONTACT PROPERTY ASSIGNMENT', '*SURFACE INTERACTION', &
+    '*SURFACE BEHAVIOR', '*FRICTION', '*CLEARANCE', '*RIGID BODY', &
+    '*SPRING', '*DASHPOT', '*MASS', '*ROTARY INERTIA', '*EMBEDDED ELEMENT', '*PHYSICAL CONSTANTS', &
+    '*DISTRIBUTION', '*DISTRIBUTION TABLE', '*PRE-TENSION SECTION', '*DSFLUX', '*CFLUX', '*FILM', &
+    '*ADAPTIVE MESH', '*IMPORT']
+
 
 contains
 
   !> Read an Abaqus-style deck into a model. stat = 0 ok, 2 error (errmsg = "file:line: *KEYWORD: what").
-  subroutine read_deck(path, model, stat, errmsg, warn_unit)
+  subroutine read_deck(path, model, stat, errmsg, warn_unit, messages)
     character(len=*), intent(in) :: path                 !< deck file
     type(model_t), intent(out) :: model                  !< the model
     integer, intent(out) :: stat                         !< 0 ok, 2 deck error
     character(len=:), allocatable, intent(out) :: errmsg !< error message
     integer, intent(in), optional :: warn_unit           !< unit for warnings (default stderr; -1: silent)
+    !> the warnings (also written to warn_unit at once) and the notes (written nowhere else) of the reading, in order,
+    !> for JOB.log: 'warning: file:line: *KW: ...', 'note: file:line: *KW: ...'
+    type(deck_message_t), allocatable, intent(out), optional :: messages(:)
     type(deck_context_t) :: ctx
 
     if (present(warn_unit)) ctx%wu = warn_unit
@@ -68,6 +92,13 @@ contains
     model = ctx%model
     stat = ctx%stat
     if (allocated(ctx%errmsg)) call move_alloc(ctx%errmsg, errmsg)
+    if (present(messages)) then
+      if (allocated(ctx%messages)) then
+        messages = ctx%messages(1:ctx%nmessage)
+      else
+        allocate (messages(0))
+      end if
+    end if
   end subroutine read_deck
 
   !> Initial capacities of the growing lists (they double when full).
@@ -93,7 +124,9 @@ contains
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     call read_range(ctx, 1, ctx%src%nrec)
     if (ctx%stat /= 0) return
-    if (ctx%in_step) call ctx_fail_kw(ctx, ctx%src%nrec, '*STEP', 'the deck ends inside a step: *END STEP missing')
+    ! the open step named at its own *STEP line
+    if (ctx%in_step) call ctx_fail_kw(ctx, ctx%step_rec, '*STEP', 'the deck ends inside this step: *END STEP '// &
+      'missing')
     if (ctx%stat == 0 .and. ctx%scope == scope_assembly) &
       call ctx_fail_kw(ctx, ctx%src%nrec, '*ASSEMBLY', 'the deck ends inside the assembly: *END ASSEMBLY missing')
   end subroutine read_blocks
@@ -256,6 +289,12 @@ contains
     case ('*TIME POINTS')
       call read_time_points(ctx)
     case ('*STEP')
+      if (ctx%in_step) then
+        call ctx_fail(ctx, ctx%ir, '*STEP inside a step: *END STEP missing for the *STEP at '// &
+          deck_where(ctx%src, ctx%step_rec))
+        return
+      end if
+      ctx%step_rec = ctx%ir
       call read_step(ctx)
     case ('*STATIC', '*VISCO')
       call read_static(ctx)
@@ -285,9 +324,11 @@ contains
       call read_section_controls(ctx)
     case ('*ENERGY PRINT', '*PREPRINT', '*FILE FORMAT', '*NODE FILE', '*EL FILE', &
           '*ENERGY OUTPUT', '*CONTACT OUTPUT', '*PRINT', '*ENERGY FILE', '*DIAGNOSTICS', '*SECTION PRINT')
-      call ctx_warn(ctx, ctx%ir, 'output/cosmetic keyword not supported by ldfcz: ignored with its data lines')
+      ! output and listing requests that cannot change a result (Abaqus/CAE writes some into every deck): a note
+      call ctx_note(ctx, ctx%ir, 'output/cosmetic keyword without effect on the results; ldfcz does not write '// &
+        'this output: ignored with its data lines')
     case default
-      call ctx_fail(ctx, ctx%ir, 'unsupported keyword (ldfcz never ignores a keyword that may change the analysis)')
+      call ctx_fail(ctx, ctx%ir, unknown_keyword_text(ctx%kw))
     end select
   end subroutine read_block
 
@@ -299,23 +340,23 @@ contains
     type(deck_context_t), intent(inout) :: ctx  !< reader state (ctx%kw replaced)
     integer, intent(in) :: ir                   !< the keyword record
     integer :: k, n, j
-    if (any(known_keywords == ctx%kw)) return
-    do k = 1, size(known_keywords)
-      if (no_blanks(known_keywords(k)) == no_blanks(ctx%kw)) then
-        ctx%kw = trim(known_keywords(k))
+    if (any(reader_keywords == ctx%kw)) return
+    do k = 1, size(reader_keywords)
+      if (no_blanks(reader_keywords(k)) == no_blanks(ctx%kw)) then
+        ctx%kw = trim(reader_keywords(k))
         return
       end if
     end do
     n = 0
-    do k = 1, size(known_keywords)
-      if (word_prefix(ctx%kw, trim(known_keywords(k)))) then
+    do k = 1, size(reader_keywords)
+      if (word_prefix(ctx%kw, trim(reader_keywords(k)))) then
         n = n + 1
         j = k
       end if
     end do
     if (n /= 1) return
-    call ctx_warn(ctx, ir, 'taken as '//trim(known_keywords(j))//' (an abbreviated keyword)')
-    ctx%kw = trim(known_keywords(j))
+    call ctx_warn(ctx, ir, 'taken as '//trim(reader_keywords(j))//' (an abbreviated keyword)')
+    ctx%kw = trim(reader_keywords(j))
   end subroutine canonical_keyword
 
   !> short has as many blank-separated words as long and each begins the corresponding word of long.
@@ -341,6 +382,27 @@ contains
     end do
     word_prefix = .true.
   end function word_prefix
+
+  !> Why a keyword is refused, with the supported keyword (or the Abaqus keyword) it is a slip from, if any.
+  pure function unknown_keyword_text(kw) result(t)
+    character(len=*), intent(in) :: kw  !< the keyword as read (upper case)
+    character(len=:), allocatable :: t
+    integer :: k
+    if (any(other_abaqus_keywords == kw)) then
+      t = 'an Abaqus keyword that ldfcz does not support (ldfcz never ignores a keyword that may change the '// &
+        'analysis; docs/host.md lists what it reads)'
+      return
+    end if
+    t = 'unknown keyword'
+    k = deck_closest(kw, [character(len=36) :: reader_keywords, other_abaqus_keywords])
+    if (k > size(reader_keywords)) then
+      t = t//'; did you mean '//trim(other_abaqus_keywords(k - size(reader_keywords)))//' (not supported by ldfcz)?'
+    else if (k > 0) then
+      t = t//'; did you mean '//trim(reader_keywords(k))//'?'
+    else
+      t = t//' (ldfcz never ignores a keyword that may change the analysis; docs/host.md lists what it reads)'
+    end if
+  end function unknown_keyword_text
 
   !> Keywords of model data (not allowed between *STEP and *END STEP).
   pure logical function is_model_keyword(kw)

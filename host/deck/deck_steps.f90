@@ -7,7 +7,7 @@ module deck_steps
   use output_registry, only: output_lookup, output_variables, output_ncomp, output_component_name, &
     output_names_text, OV_SDV, LOC_NODE, LOC_POINT, USE_FIELD, USE_NODE_PRINT, USE_EL_PRINT, PRESET_ALL
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_find_elset, ctx_fail, ctx_warn, ctx_pos, &
+  use deck_context, only: deck_context_t, flen, ctx_find_nset, ctx_find_elset, ctx_fail, ctx_warn, ctx_note, ctx_pos, &
     ctx_allow_params, ctx_need_step, ctx_required, ctx_get_label, ctx_param_int, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_only_value
   implicit none
@@ -382,10 +382,10 @@ contains
       ctx%model%steps(ctx%istep)%history_given = .true.
       if (allocated(points)) then
         ctx%model%steps(ctx%istep)%history_points = points
-        call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
+        call ctx_note(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
           'this request and its *NODE/*ELEMENT OUTPUT lines write nothing (its TIME POINTS do end increments)')
       else
-        call ctx_warn(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
+        call ctx_note(ctx, ctx%ir, 'history output is written as JOB.csv columns of *NODE PRINT only; '// &
           'this request and its *NODE/*ELEMENT OUTPUT lines write nothing')
       end if
     else
@@ -460,7 +460,7 @@ contains
       return  ! history output: warned at *OUTPUT, HISTORY
     end if
     if (deck_has_param(ctx%params, 'ELSET') .or. deck_has_param(ctx%params, 'NSET')) &
-      call ctx_warn(ctx, ctx%ir, 'ELSET/NSET: ldfcz writes the requested variables for the whole model')
+      call ctx_note(ctx, ctx%ir, 'ELSET/NSET: ldfcz writes the requested variables for the whole model')
     v = deck_normalize(deck_param_value(ctx%params, 'VARIABLE'))
     select case (v)
     case ('')

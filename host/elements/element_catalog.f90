@@ -122,7 +122,7 @@ module element_catalog
     element_type_t('C3D8I', FAM_HEX8, KIN_3D, 2, 8, nmode=3, &
       formulation='incompatible modes (3 x 3 parameters, condensed)'), &
     element_type_t('C3D8R', FAM_HEX8, KIN_3D, 1, 1, hourglass=.true., &
-      formulation='uniform gradient + Flanagan-Belytschko hourglass stiffness'), &
+      formulation='uniform gradient + Flanagan-Belytschko hourglass stiffness c = 1 (not Abaqus'' default control)'), &
     element_type_t('C3D20', FAM_HEX20, KIN_3D, 3, 27, formulation='displacement'), &
     element_type_t('C3D20R', FAM_HEX20, KIN_3D, 2, 8, formulation='displacement, reduced integration'), &
     element_type_t('C3D4', FAM_TET4, KIN_3D, RULE_TET1, 1, formulation='displacement (constant strain)'), &

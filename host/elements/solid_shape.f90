@@ -24,7 +24,7 @@ module solid_shape
     RULE_TET1, RULE_TET4, RULE_WEDGE2
   implicit none
   private
-  public :: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
+  public :: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base, solid_node_parent
 
   real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &
@@ -49,6 +49,32 @@ contains
     if (family == FAM_TET4 .or. family == FAM_TET10) xi = 0.25_dp
     if (family == FAM_WEDGE6) xi(1:2) = 1.0_dp / 3
   end function solid_parent_centre
+
+  !> Parent coordinates of node a of a family (the node tables of the module header; xi(3) = 0 in 2D).
+  pure function solid_node_parent(family, a) result(xi)
+    integer, intent(in) :: family  !< FAM_*
+    integer, intent(in) :: a       !< node
+    real(dp) :: xi(3)
+    real(dp), parameter :: tet(3, 4) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, &
+      0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [3, 4])
+    real(dp), parameter :: wedge(3, 6) = reshape([0.0_dp, 0.0_dp, -1.0_dp, 1.0_dp, 0.0_dp, -1.0_dp, &
+      0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, 1.0_dp], [3, 6])
+    xi = 0.0_dp
+    select case (family)
+    case (FAM_HEX8, FAM_HEX20)
+      xi = hex_nodes(:, a)
+    case (FAM_QUAD4, FAM_QUAD8)
+      xi(1:2) = quad_nodes(:, a)
+    case (FAM_TET4, FAM_TET10)
+      if (a <= 4) then
+        xi = tet(:, a)
+      else
+        xi = 0.5_dp * (tet(:, tet_edges(1, a - 4)) + tet(:, tet_edges(2, a - 4)))
+      end if
+    case (FAM_WEDGE6)
+      xi = wedge(:, a)
+    end select
+  end function solid_node_parent
 
   !> Hourglass base vectors h(a, m) of the linear hexahedron (xi eta, eta zeta, zeta xi, xi eta zeta at the nodes:
   !> 4 vectors) or quadrilateral (xi eta: 1 vector); nh = their number (0 for other families).

@@ -12,7 +12,7 @@ module output_files
   public :: output_t, output_open, output_close, output_log, output_csv_header, output_csv_row, output_sta
   public :: output_progress, output_progress_clear, output_vtu_frame, output_vtu_t, output_vtu_array_t
   public :: stdout_is_terminal
-  public :: output_csv_resume, output_frames_resume, output_sta_note
+  public :: output_csv_resume, output_frames_resume, output_sta_note, output_note, output_discard_empty
 
   !> One data array of a VTU frame (point or cell data): its name, component names (none for a scalar or a
   !> vector written without names) and values, Float64 or Int32. The writer (field_frame) fills them from the
@@ -43,6 +43,7 @@ module output_files
     logical :: quiet = .false.               !< no echo of the log on standard output
     logical :: silent = .false.              !< writes nothing (a process other than rank 0 of an MPI run)
     integer :: npieces = 1                   !< pieces of a VTU frame (MPI: one per process, JOB_NNNN.pvtu)
+    integer :: nblocks = 1                   !< blocks of a frame: 2 = continuum and interface (JOB_NNNN.vtm)
     logical :: tty = .false.                 !< standard output is a terminal
     integer :: csv = -1, sta = -1, log = -1, pvd = -1
     integer :: nframe = 0
@@ -261,6 +262,38 @@ contains
     end if
   end subroutine output_log
 
+  !> A line to JOB.log only (notes: what has no effect on the results; the console shows warnings, not notes).
+  subroutine output_note(out, line)
+    type(output_t), intent(inout) :: out  !< output state
+    character(len=*), intent(in) :: line  !< text
+    if (out%log == -1) return
+    write (out%log, '(a)') line
+    flush (out%log)
+  end subroutine output_note
+
+  !> A run that stops before its analysis (an input error): JOB.csv and JOB.dat are removed when nothing was written
+  !> to them, so that no empty job file is left that looks like a result.
+  subroutine output_discard_empty(out)
+    type(output_t), intent(inout) :: out  !< output state
+    integer :: u, ios
+    integer(8) :: sz
+    logical :: there
+    if (out%silent) return
+    if (out%csv /= -1) then
+      flush (out%csv)
+      inquire (file=path(out, '.csv'), size=sz)
+      if (sz == 0) then
+        close (out%csv, status='delete')
+        out%csv = -1
+      end if
+    end if
+    inquire (file=path(out, '.dat'), exist=there, size=sz)
+    if (there .and. sz == 0) then
+      open (newunit=u, file=path(out, '.dat'), status='old', iostat=ios)
+      if (ios == 0) close (u, status='delete')
+    end if
+  end subroutine output_discard_empty
+
   !> Header of JOB.csv.
   subroutine output_csv_header(out, columns)
     type(output_t), intent(inout) :: out          !< output state
@@ -350,38 +383,135 @@ contains
     out%progress_shown = .false.
   end subroutine output_progress_clear
 
-  !> Write one ASCII VTU frame and rewrite JOB.pvd with every frame so far (valid after each increment).
-  !> With npieces > 1 (an MPI run) the frame is this process's piece JOB_NNNN_R.vtu (its elements' cells, every
-  !> point), and the writing process (rank 0) writes JOB_NNNN.pvtu listing the pieces, which JOB.pvd lists.
-  subroutine output_vtu_frame(out, frame, total_time, piece, npieces)
-    type(output_t), intent(inout) :: out      !< output state
-    type(output_vtu_t), intent(in) :: frame   !< data
-    real(dp), intent(in) :: total_time        !< time stamp of the frame
-    integer, intent(in), optional :: piece    !< this process's piece (0-based)
-    integer, intent(in), optional :: npieces  !< pieces of the frame (processes)
-    character(len=:), allocatable :: name
+  !> Write one ASCII VTU frame and rewrite JOB.pvd with every frame so far (valid after each increment). A frame is one
+  !> block (JOB_NNNN.vtu) or two: the continuum elements in JOB_NNNN.vtu and the interface (user) elements in
+  !> JOB_NNNN_interface.vtu, put together by the multiblock file JOB_NNNN.vtm (blocks named continuum and
+  !> interface), which JOB.pvd lists; ParaView opens JOB.pvd (or a .vtm) directly. With npieces > 1 (an MPI run) a
+  !> block is this process's piece JOB_NNNN[_interface]_R.vtu (its elements' cells, every point), and the writing
+  !> process (rank 0) writes JOB_NNNN[_interface].pvtu listing the pieces, which the .vtm or JOB.pvd lists.
+  subroutine output_vtu_frame(out, blocks, total_time, piece, npieces)
+    type(output_t), intent(inout) :: out          !< output state
+    type(output_vtu_t), intent(in) :: blocks(:)   !< the blocks: one, or the continuum and the interface
+    real(dp), intent(in) :: total_time            !< time stamp of the frame
+    integer, intent(in), optional :: piece        !< this process's piece (0-based)
+    integer, intent(in), optional :: npieces      !< pieces of the frame (processes)
+    character(len=:), allocatable :: stem
     character(len=16) :: b, bp
-    integer :: u, i, np, nc, k, ios
+    integer :: k, ios
     integer(8) :: c0, c1, rate
     call system_clock(c0, rate)
     out%nframe = out%nframe + 1
+    out%nblocks = size(blocks)
     write (b, '(i4.4)') out%nframe
-    name = out%job//'_'//trim(b)//'.vtu'
+    if (present(npieces)) out%npieces = max(1, npieces)
+    if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
+    out%frame_times = [out%frame_times, total_time]
+    do k = 1, size(blocks)
+      stem = out%job//'_'//trim(b)//trim(merge('          ', '_interface', k == 1))
+      if (out%npieces > 1) then
+        write (bp, '(i0)') piece
+        if (.not. out%silent) call write_pvtu(out, stem, blocks(k))
+        call write_vtu_piece(out%dir//'/'//stem//'_'//trim(bp)//'.vtu', blocks(k), ios)
+      else if (.not. out%silent) then
+        call write_vtu_piece(out%dir//'/'//stem//'.vtu', blocks(k), ios)
+      end if
+    end do
+    if (.not. out%silent) then
+      if (size(blocks) > 1) call write_vtm(out, out%job//'_'//trim(b))
+      call write_pvd(out)
+    end if
+    call system_clock(c1)
+    out%t_output = out%t_output + real(c1 - c0, dp) / real(rate, dp)
+  end subroutine output_vtu_frame
+
+  !> JOB_NNNN.vtm: the frame's two blocks, continuum and interface (VTK's multiblock file); in an MPI run each
+  !> block is a block of the processes' pieces JOB_NNNN[_interface]_R.vtu (VTK 9.1's multiblock reader does not
+  !> read .pvtu blocks).
+  subroutine write_vtm(out, stem)
+    type(output_t), intent(in) :: out
+    character(len=*), intent(in) :: stem        !< JOB_NNNN
+    integer :: v, ios, k, r
+    character(len=*), parameter :: names(2) = [character(len=9) :: 'continuum', 'interface']
+    character(len=16) :: bk, br
+    open (newunit=v, file=out%dir//'/'//stem//'.vtm', status='replace', action='write', iostat=ios)
+    if (ios /= 0) return
+    write (v, '(a)') '<?xml version="1.0"?>'
+    write (v, '(a)') '<VTKFile type="vtkMultiBlockDataSet" version="1.0" byte_order="LittleEndian">'
+    write (v, '(a)') '<vtkMultiBlockDataSet>'
+    do k = 1, 2
+      write (bk, '(i0)') k - 1
+      associate (block => stem//trim(merge('          ', '_interface', k == 1)))
+        if (out%npieces > 1) then
+          write (v, '(a)') '<Block index="'//trim(bk)//'" name="'//trim(names(k))//'">'
+          do r = 0, out%npieces - 1
+            write (br, '(i0)') r
+            write (v, '(a)') '<DataSet index="'//trim(br)//'" name="process '//trim(br)//'" file="'//block// &
+              '_'//trim(br)//'.vtu"/>'
+          end do
+          write (v, '(a)') '</Block>'
+        else
+          write (v, '(a)') '<DataSet index="'//trim(bk)//'" name="'//trim(names(k))//'" file="'//block//'.vtu"/>'
+        end if
+      end associate
+    end do
+    write (v, '(a)') '</vtkMultiBlockDataSet></VTKFile>'
+    close (v)
+  end subroutine write_vtm
+
+  !> STEM.pvtu: the arrays of the pieces (names, types, components as write_vtu_piece writes them) and the piece
+  !> files of every process, STEM_R.vtu.
+  subroutine write_pvtu(out, stem, frame)
+    type(output_t), intent(in) :: out
+    character(len=*), intent(in) :: stem
+    type(output_vtu_t), intent(in) :: frame
+    integer :: v, j, ios
+    character(len=16) :: bj
+    open (newunit=v, file=out%dir//'/'//stem//'.pvtu', status='replace', action='write', iostat=ios)
+    if (ios /= 0) return
+    write (v, '(a)') '<?xml version="1.0"?>'
+    write (v, '(a)') '<VTKFile type="PUnstructuredGrid" version="0.1" byte_order="LittleEndian">'
+    write (v, '(a)') '<PUnstructuredGrid GhostLevel="0">'
+    write (v, '(a)') '<PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>'
+    call pvtu_arrays(v, 'PPointData', frame%points, frame%vectors, 'Vectors')
+    call pvtu_arrays(v, 'PCellData', frame%cells, frame%scalars, 'Scalars')
+    do j = 0, out%npieces - 1
+      write (bj, '(i0)') j
+      write (v, '(a)') '<Piece Source="'//stem//'_'//trim(bj)//'.vtu"/>'
+    end do
+    write (v, '(a)') '</PUnstructuredGrid></VTKFile>'
+    close (v)
+  end subroutine write_pvtu
+
+  !> The <PPointData>/<PCellData> block of a .pvtu.
+  subroutine pvtu_arrays(v, tag, arrays, active, attr)
+    integer, intent(in) :: v
+    character(len=*), intent(in) :: tag, active, attr
+    type(output_vtu_array_t), intent(in) :: arrays(:)
+    integer :: j
+    character(len=16) :: bc
+    if (len_trim(active) > 0) then
+      write (v, '(a)') '<'//tag//' '//attr//'="'//trim(active)//'">'
+    else
+      write (v, '(a)') '<'//tag//'>'
+    end if
+    do j = 1, size(arrays)
+      write (bc, '(i0)') arrays(j)%ncomp
+      write (v, '(a)') '<PDataArray type="'//trim(merge('Int32  ', 'Float64', arrays(j)%int32))//'" Name="'// &
+        trim(arrays(j)%name)//'"'//trim(merge(' NumberOfComponents="'//trim(bc)//'"', repeat(' ', 30), &
+        arrays(j)%ncomp > 1))//'/>'
+    end do
+    write (v, '(a)') '</'//tag//'>'
+  end subroutine pvtu_arrays
+
+  !> One .vtu file: the block's points, cells and arrays (ios /= 0: not written).
+  subroutine write_vtu_piece(file, frame, ios)
+    character(len=*), intent(in) :: file
+    type(output_vtu_t), intent(in) :: frame
+    integer, intent(out) :: ios
+    integer :: u, i, np, nc, k
     np = size(frame%x, 2)
     nc = size(frame%cell_type)
-    if (present(npieces)) out%npieces = max(1, npieces)
-    if (out%npieces > 1) then
-      write (bp, '(i0)') piece
-      name = out%job//'_'//trim(b)//'_'//trim(bp)//'.vtu'
-      if (.not. out%silent) call write_pvtu(out%job//'_'//trim(b))
-    end if
-    if (out%silent .and. out%npieces <= 1) then
-      ! the frame is written by rank 0; the list of frame times is kept for the restart files
-      if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
-      out%frame_times = [out%frame_times, total_time]
-      return
-    end if
-    open (newunit=u, file=out%dir//'/'//name, status='replace', action='write', iostat=ios)
+    open (newunit=u, file=file, status='replace', action='write', iostat=ios)
     if (ios /= 0) return
     write (u, '(a)') '<?xml version="1.0"?>'
     write (u, '(a)') '<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">'
@@ -399,100 +529,52 @@ contains
     write (u, '(a)') '</DataArray><DataArray type="UInt8" Name="types" format="ascii">'
     write (u, '(*(i0,1x))') frame%cell_type
     write (u, '(a)') '</DataArray></Cells>'
-    call write_arrays('PointData', frame%points, frame%vectors, 'Vectors')
-    call write_arrays('CellData', frame%cells, frame%scalars, 'Scalars')
+    call write_arrays(u, 'PointData', frame%points, frame%vectors, 'Vectors')
+    call write_arrays(u, 'CellData', frame%cells, frame%scalars, 'Scalars')
     write (u, '(a)') '</Piece></UnstructuredGrid></VTKFile>'
     close (u)
-    ! the PVD collection, rewritten so that it is complete after every frame
-    if (.not. allocated(out%frame_times)) allocate (out%frame_times(0))
-    out%frame_times = [out%frame_times, total_time]
-    if (.not. out%silent) call write_pvd(out)
-    call system_clock(c1)
-    out%t_output = out%t_output + real(c1 - c0, dp) / real(rate, dp)
-  contains
-    !> JOB_NNNN.pvtu: the arrays of the pieces (names, types, components as output_vtu_frame writes them) and the
-    !> piece files of every process.
-    subroutine write_pvtu(stem)
-      character(len=*), intent(in) :: stem
-      integer :: v, j
-      character(len=16) :: bj
-      open (newunit=v, file=out%dir//'/'//stem//'.pvtu', status='replace', action='write', iostat=ios)
-      if (ios /= 0) return
-      write (v, '(a)') '<?xml version="1.0"?>'
-      write (v, '(a)') '<VTKFile type="PUnstructuredGrid" version="0.1" byte_order="LittleEndian">'
-      write (v, '(a)') '<PUnstructuredGrid GhostLevel="0">'
-      write (v, '(a)') '<PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>'
-      call pvtu_arrays(v, 'PPointData', frame%points, frame%vectors, 'Vectors')
-      call pvtu_arrays(v, 'PCellData', frame%cells, frame%scalars, 'Scalars')
-      do j = 0, out%npieces - 1
-        write (bj, '(i0)') j
-        write (v, '(a)') '<Piece Source="'//stem//'_'//trim(bj)//'.vtu"/>'
-      end do
-      write (v, '(a)') '</PUnstructuredGrid></VTKFile>'
-      close (v)
-    end subroutine write_pvtu
+  end subroutine write_vtu_piece
 
-    !> The <PPointData>/<PCellData> block of the .pvtu.
-    subroutine pvtu_arrays(v, tag, arrays, active, attr)
-      integer, intent(in) :: v
-      character(len=*), intent(in) :: tag, active, attr
-      type(output_vtu_array_t), intent(in) :: arrays(:)
-      integer :: j
-      character(len=16) :: bc
-      if (len_trim(active) > 0) then
-        write (v, '(a)') '<'//tag//' '//attr//'="'//trim(active)//'">'
-      else
-        write (v, '(a)') '<'//tag//'>'
-      end if
-      do j = 1, size(arrays)
-        write (bc, '(i0)') arrays(j)%ncomp
-        write (v, '(a)') '<PDataArray type="'//trim(merge('Int32  ', 'Float64', arrays(j)%int32))//'" Name="'// &
-          trim(arrays(j)%name)//'"'//trim(merge(' NumberOfComponents="'//trim(bc)//'"', repeat(' ', 30), &
-          arrays(j)%ncomp > 1))//'/>'
-      end do
-      write (v, '(a)') '</'//tag//'>'
-    end subroutine pvtu_arrays
-
-    !> The <PointData>/<CellData> block: each array with its components (Float64: 6 values a line, or one point's
-    !> or cell's components a line for 3 and 6 components; Int32: one line).
-    subroutine write_arrays(tag, arrays, active, attr)
-      character(len=*), intent(in) :: tag, active, attr
-      type(output_vtu_array_t), intent(in) :: arrays(:)
-      integer :: j, c
-      character(len=:), allocatable :: head
-      character(len=16) :: bc
-      if (len_trim(active) > 0) then
-        write (u, '(a)') '<'//tag//' '//attr//'="'//trim(active)//'">'
-      else
-        write (u, '(a)') '<'//tag//'>'
-      end if
-      do j = 1, size(arrays)
-        associate (a => arrays(j))
-          head = '<DataArray type="'//trim(merge('Int32  ', 'Float64', a%int32))//'" Name="'//trim(a%name)//'"'
-          if (a%ncomp > 1) then
-            write (bc, '(i0)') a%ncomp
-            head = head//' NumberOfComponents="'//trim(bc)//'"'
-          end if
-          if (allocated(a%comp_names)) then
-            do c = 1, size(a%comp_names)
-              write (bc, '(i0)') c - 1
-              head = head//' ComponentName'//trim(bc)//'="'//trim(a%comp_names(c))//'"'
-            end do
-          end if
-          write (u, '(a)') head//' format="ascii">'
-          if (a%int32) then
-            write (u, '(*(i0,1x))') nint(a%v)
-          else if (a%ncomp == 3) then
-            write (u, '(3es16.8)') a%v
-          else
-            write (u, '(6es16.8)') a%v
-          end if
-          write (u, '(a)') '</DataArray>'
-        end associate
-      end do
-      write (u, '(a)') '</'//tag//'>'
-    end subroutine write_arrays
-  end subroutine output_vtu_frame
+  !> The <PointData>/<CellData> block: each array with its components (Float64: 6 values a line, or one point's or
+  !> cell's components a line for 3 and 6 components; Int32: one line).
+  subroutine write_arrays(u, tag, arrays, active, attr)
+    integer, intent(in) :: u
+    character(len=*), intent(in) :: tag, active, attr
+    type(output_vtu_array_t), intent(in) :: arrays(:)
+    integer :: j, c
+    character(len=:), allocatable :: head
+    character(len=16) :: bc
+    if (len_trim(active) > 0) then
+      write (u, '(a)') '<'//tag//' '//attr//'="'//trim(active)//'">'
+    else
+      write (u, '(a)') '<'//tag//'>'
+    end if
+    do j = 1, size(arrays)
+      associate (a => arrays(j))
+        head = '<DataArray type="'//trim(merge('Int32  ', 'Float64', a%int32))//'" Name="'//trim(a%name)//'"'
+        if (a%ncomp > 1) then
+          write (bc, '(i0)') a%ncomp
+          head = head//' NumberOfComponents="'//trim(bc)//'"'
+        end if
+        if (allocated(a%comp_names)) then
+          do c = 1, size(a%comp_names)
+            write (bc, '(i0)') c - 1
+            head = head//' ComponentName'//trim(bc)//'="'//trim(a%comp_names(c))//'"'
+          end do
+        end if
+        write (u, '(a)') head//' format="ascii">'
+        if (a%int32) then
+          write (u, '(*(i0,1x))') nint(a%v)
+        else if (a%ncomp == 3) then
+          write (u, '(3es16.8)') a%v
+        else
+          write (u, '(6es16.8)') a%v
+        end if
+        write (u, '(a)') '</DataArray>'
+      end associate
+    end do
+    write (u, '(a)') '</'//tag//'>'
+  end subroutine write_arrays
 
   !> JOB.pvd with the frames 1..out%nframe.
   subroutine write_pvd(out)
@@ -507,11 +589,24 @@ contains
     do i = 1, out%nframe
       write (b, '(i4.4)') i
       write (u, '(a,es23.15,a)') '<DataSet timestep="', out%frame_times(i), '" group="" part="0" file="'// &
-        out%job//'_'//trim(b)//trim(merge('.pvtu', '.vtu ', out%npieces > 1))//'"/>'
+        out%job//'_'//trim(b)//frame_extension(out)//'"/>'
     end do
     write (u, '(a)') '</Collection></VTKFile>'
     close (u)
   end subroutine write_pvd
+
+  !> The extension of the frame files JOB.pvd lists: .vtm for two blocks, .pvtu for pieces, else .vtu.
+  pure function frame_extension(out) result(ext)
+    type(output_t), intent(in) :: out
+    character(len=:), allocatable :: ext
+    if (out%nblocks > 1) then
+      ext = '.vtm'
+    else if (out%npieces > 1) then
+      ext = '.pvtu'
+    else
+      ext = '.vtu'
+    end if
+  end function frame_extension
 
   !> Close all files. Standard output stays on JOB.dat until the program ends: a user library with its own Fortran
   !> run time (LLVM flang) flushes its unit 6 only then.

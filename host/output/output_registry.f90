@@ -13,21 +13,27 @@ module output_registry
   public :: output_variable_t, output_variables, output_lookup, output_component_name, output_ncomp
   public :: output_unprovided_requests, output_max_statev, output_names_text, output_provider_text
   public :: OV_COORD, OV_U, OV_RF, OV_ELEMENT, OV_S, OV_SP, OV_MISES, OV_LE, OV_E, OV_SDV, OV_COHESIVE, OV_OPENING
-  public :: OV_TRACTION, OV_DELTA_MAX
-  public :: LOC_NODE, LOC_POINT, LOC_ELEMENT, LOC_SVARS
+  public :: OV_TRACTION, OV_DELTA_MAX, OV_S_NODAL, OV_LE_NODAL, OV_DAMAGE
+  public :: LOC_NODE, LOC_POINT, LOC_ELEMENT, LOC_SVARS, LOC_NODAL
   public :: PROV_MODEL, PROV_SOLUTION, PROV_CONTINUUM, PROV_STATEV, PROV_USER, PROV_USER_OPENING, PROV_SVARS_TRACTION
-  public :: PROV_SVARS_DELTA_MAX
+  public :: PROV_SVARS_DELTA_MAX, PROV_SVARS_DAMAGE
+  public :: BLOCK_BOTH, BLOCK_CONTINUUM, BLOCK_INTERFACE, output_block
   public :: VTU_NONE, VTU_ALWAYS, VTU_REQUESTED
   public :: USE_FIELD, USE_NODE_PRINT, USE_EL_PRINT, PRESET_PRESELECT, PRESET_ALL
 
-  !> where a variable lives
-  integer, parameter :: LOC_NODE = 1, LOC_POINT = 2, LOC_ELEMENT = 3, LOC_SVARS = 4
+  !> where a variable lives: at the nodes; at the integration points; per element; in a user element's SVARS; at the
+  !> nodes, extrapolated from the integration points of each element and averaged over the elements of a node
+  integer, parameter :: LOC_NODE = 1, LOC_POINT = 2, LOC_ELEMENT = 3, LOC_SVARS = 4, LOC_NODAL = 5
   !> what provides it: the model (coordinates, labels), the solution (displacements, reactions), the continuum
   !> elements (stress, strain at the points), their materials' STATEV (*DEPVAR), the user elements, the user
   !> elements with 4 or 8 nodes (opening from the nodal displacements: top - bottom face, the cohesive layout), the
   !> SVARS positions a '**LDFCZ SVARS' line declares (TRACTION=, DELTA MAX=)
+  !> and DELTA MAX= with LENGTH PROPERTY= (the damage of the exponential law)
   integer, parameter :: PROV_MODEL = 1, PROV_SOLUTION = 2, PROV_CONTINUUM = 3, PROV_STATEV = 4, PROV_USER = 5, &
-    PROV_USER_OPENING = 6, PROV_SVARS_TRACTION = 7, PROV_SVARS_DELTA_MAX = 8
+    PROV_USER_OPENING = 6, PROV_SVARS_TRACTION = 7, PROV_SVARS_DELTA_MAX = 8, PROV_SVARS_DAMAGE = 9
+  !> the block of a frame an array is in (output_block, from the provider): the continuum elements' block, the
+  !> interface (user) elements' block, or both (docs/host.md, "Frames")
+  integer, parameter :: BLOCK_BOTH = 0, BLOCK_CONTINUUM = 1, BLOCK_INTERFACE = 2
   !> in the VTU frames: never, in every frame (when provided), when the field request names it
   integer, parameter :: VTU_NONE = 0, VTU_ALWAYS = 1, VTU_REQUESTED = 2
   !> membership of VARIABLE=PRESELECT / ALL
@@ -53,13 +59,16 @@ module output_registry
     !> in Abaqus' VARIABLE=PRESELECT list of a static step (PRESET_PRESELECT: and in ALL), in ALL only
     !> (PRESET_ALL), in neither (0): the variables of those lists the host has
     integer :: preset = 0
+    !> VTU_REQUESTED of a variable written unasked with another: in the frames when that one (OV_*) is requested
+    integer :: follows = 0
   end type output_variable_t
 
-  integer, parameter :: OV_COORD = 1, OV_U = 2, OV_RF = 3, OV_ELEMENT = 4, OV_S = 5, OV_SP = 6, OV_MISES = 7, &
-    OV_LE = 8, OV_E = 9, OV_SDV = 10, OV_COHESIVE = 11, OV_OPENING = 12, OV_TRACTION = 13, OV_DELTA_MAX = 14
+  integer, parameter :: OV_COORD = 1, OV_U = 2, OV_RF = 3, OV_S_NODAL = 4, OV_LE_NODAL = 5, OV_ELEMENT = 6, &
+    OV_S = 7, OV_SP = 8, OV_MISES = 9, OV_LE = 10, OV_E = 11, OV_SDV = 12, OV_COHESIVE = 13, OV_OPENING = 14, &
+    OV_TRACTION = 15, OV_DELTA_MAX = 16, OV_DAMAGE = 17
 
   !> The variables, in the order the frames hold them (point data, then cell data).
-  type(output_variable_t), parameter :: output_variables(14) = [ &
+  type(output_variable_t), parameter :: output_variables(17) = [ &
     output_variable_t('COORD', '', '', 'COORD1 COORD2 COORD3', 3, '', LOC_NODE, 'mm', &
       'original coordinates (the points of the frames)', PROV_MODEL, vtu_mode=VTU_ALWAYS), &
     output_variable_t('U', '', 'U', 'U1 U2 U3', 3, '', LOC_NODE, 'mm', &
@@ -68,6 +77,12 @@ module output_registry
     output_variable_t('RF', '', 'RF', 'RF1 RF2 RF3', 3, '', LOC_NODE, 'N', &
       'reaction force on prescribed dofs (axisymmetric: total over 2 pi)', PROV_SOLUTION, .true., .true., &
       VTU_ALWAYS, PRESET_PRESELECT), &
+    output_variable_t('', '', 'S_nodal', '', 6, 'XX YY ZZ XY YZ XZ', LOC_NODAL, 'MPa', &
+      'Cauchy stress S extrapolated from the points of each element and averaged at the node; 0 off the continuum', &
+      PROV_CONTINUUM, vtu_mode=VTU_ALWAYS), &
+    output_variable_t('', '', 'LE_nodal', '', 6, 'XX YY ZZ XY YZ XZ', LOC_NODAL, '-', &
+      'strain LE (tensor shears) extrapolated from the points of each element and averaged at the node', &
+      PROV_CONTINUUM, vtu_mode=VTU_REQUESTED, follows=OV_LE), &
     output_variable_t('', '', 'element', '', 1, '', LOC_ELEMENT, '-', 'element label', PROV_MODEL, &
       vtu_mode=VTU_ALWAYS), &
     output_variable_t('S', '', 'S', 'S11 S22 S33 S12 S13 S23', 6, 'XX YY ZZ XY YZ XZ', LOC_POINT, 'MPa', &
@@ -95,7 +110,10 @@ module output_registry
       vtu_mode=VTU_ALWAYS), &
     output_variable_t('', '', 'Delta_max', '', 1, '', LOC_SVARS, 'mm', &
       'largest opening so far, mean over the points, where `**LDFCZ SVARS` declares `DELTA MAX=`', &
-      PROV_SVARS_DELTA_MAX, vtu_mode=VTU_ALWAYS)]
+      PROV_SVARS_DELTA_MAX, vtu_mode=VTU_ALWAYS), &
+    output_variable_t('', '', 'damage', '', 1, '', LOC_SVARS, '-', &
+      'stiffness lost by the secant, 1 - exp(-Delta_max/delta) (exponential law, Eq. 20), mean over the points', &
+      PROV_SVARS_DAMAGE, vtu_mode=VTU_ALWAYS)]
 
 contains
 
@@ -234,10 +252,26 @@ contains
       t = 'user element types declaring `TRACTION=`'
     case (PROV_SVARS_DELTA_MAX)
       t = 'user element types declaring `DELTA MAX=`'
+    case (PROV_SVARS_DAMAGE)
+      t = 'user element types declaring `DELTA MAX=` and `LENGTH PROPERTY=`'
     case default
       t = '?'
     end select
   end function output_provider_text
+
+  !> The block of a frame that holds variable var: the continuum elements' arrays in the continuum block, the user
+  !> elements' in the interface block, the points' arrays, the element label and the cohesive flag in both.
+  pure integer function output_block(var) result(b)
+    integer, intent(in) :: var  !< OV_*
+    select case (output_variables(var)%provider)
+    case (PROV_CONTINUUM, PROV_STATEV)
+      b = BLOCK_CONTINUUM
+    case (PROV_USER_OPENING, PROV_SVARS_TRACTION, PROV_SVARS_DELTA_MAX, PROV_SVARS_DAMAGE)
+      b = BLOCK_INTERFACE
+    case default
+      b = BLOCK_BOTH
+    end select
+  end function output_block
 
   !> The names a request may use, for messages: 'U, RF', 'S, MISES, LE, E, SDV'.
   pure function output_names_text(use) result(t)

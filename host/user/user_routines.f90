@@ -7,6 +7,7 @@ module user_routines
     c_f_procpointer, c_f_pointer, c_size_t
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
+  use command_words, only: user_file_path
   implicit none
   private
   public :: uel_interface, umat_interface, uexternaldb_interface, disp_interface, user_routines_t, &
@@ -210,10 +211,17 @@ contains
       end if
       if (len(file) == 0) cycle
       nfile = nfile + 1
-      inquire (file=file, exist=exists)
-      if (.not. exists) then
+      ! a name without its extension, as Abaqus takes user=NAME: the first of NAME.f, .for, .f90, .F, .o
+      if (len(user_file_path(file)) == 0) then
         stat = 2
-        errmsg = '--user: file not found: '//file
+        errmsg = '--user: file not found: '//file//' (nor '//file//'.f, .for, .f90, .F or .o)'
+        return
+      end if
+      file = user_file_path(file)
+      inquire (file=file//'/.', exist=exists)
+      if (exists) then
+        stat = 2
+        errmsg = '--user: '//file//' is a directory, not a Fortran or object file'
         return
       end if
       k = index(file, '.', back=.true.)

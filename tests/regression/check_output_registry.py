@@ -21,6 +21,8 @@ import re
 import subprocess
 import sys
 
+from ldfcz_tools import outputs
+
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -50,11 +52,16 @@ def frame_arrays(path):
     return arrays
 
 
-def last_frame(out, job):
-    frames = sorted(f for f in os.listdir(out) if re.match(re.escape(job) + r"_\d{4}\.vtu$", f))
+def last_frame(out, job, block=""):
+    """The arrays of the last frame's block ('' the only one of a model of one kind; 'continuum' or 'interface' of
+    a frame of two: JOB_NNNN.vtm)."""
+    frames = outputs.pvd_frames(os.path.join(out, job + ".pvd"))
     if not frames:
         fail("%s: no frame" % job)
-    return frame_arrays(os.path.join(out, frames[-1]))
+    blocks = outputs.frame_files(os.path.join(out, frames[-1][1]))
+    if block not in blocks:
+        fail("%s: the last frame has the blocks %s, not %r" % (job, sorted(blocks), block))
+    return frame_arrays(blocks[block][0])
 
 
 def add_before_end_step(src, dst, lines):
@@ -102,9 +109,10 @@ def case_cohesive_block(a):
                                 ["*ELEMENT OUTPUT", "SDV2"])
     log = run(a.exe, deck, out)
     warned(log, deck, first + 1, "SDV2: not written: no material of these elements has state variables")
-    arr = last_frame(out, "cohesive_block_sdv")
-    if any(k.startswith("SDV") for k in arr):
-        fail("cohesive block (*ELASTIC): SDV arrays %s" % [k for k in arr if k.startswith("SDV")])
+    cont = last_frame(out, "cohesive_block_sdv", "continuum")
+    arr = last_frame(out, "cohesive_block_sdv", "interface")
+    if any(k.startswith("SDV") for k in list(arr) + list(cont)):
+        fail("cohesive block (*ELASTIC): SDV arrays %s" % [k for k in list(arr) + list(cont) if k.startswith("SDV")])
     coh = arr["cohesive"] == 1
     if not (arr["traction"][coh] > 0).all() or not (arr["Delta_max"][coh] > 0).all():
         fail("declared SVARS: traction %s, Delta_max %s" % (arr["traction"], arr["Delta_max"]))

@@ -24,7 +24,7 @@
 Also refused (exit 2): a truncated restart file, a file that is not a restart file, one of another format version
 and one of a build with another summary record.
 With --np N (the LDFCZ_MPI build) every run is `mpirun -np N`: one restart file per process (JOB.rst.RofN, read by a
-run with the same N), the reference and the restart distributed alike; --term sends SIGUSR1 to the launcher, which
+run with the same N; the first restart names rank 0's file JOB.rst.0ofN as it is on disk, the others JOB.rst), the reference and the restart distributed alike; --term sends SIGUSR1 to the launcher, which
 forwards it to every process (OpenMPI; SIGTERM to mpirun is tests/mpi/check_launcher_sigterm.py's), and the
 processes must stop together after the increment under way with the log, status note and closing summary of a
 serial stop (mpirun's own exit status is OpenMPI's, not checked).
@@ -378,8 +378,10 @@ def main():
         rows_cut = len(read_csv(os.path.join(cut, job + ".csv"))) - 1
         if k == 0:
             refusals(a, base, out, rst, run_deck)
-        # 3. the restart
-        p = run(base + ["--out", cut, "--restart-from", rst, run_deck], out, expect=[a.expect_exit])
+        # 3. the restart; distributed, the first from rank 0's file as the user sees it on disk (JOB.rst.0ofN stands
+        # for the set), the others from the set's name
+        given = rst + (".0of%d" % a.np if a.np and k == 0 else "")
+        p = run(base + ["--out", cut, "--restart-from", given, run_deck], out, expect=[a.expect_exit])
         log = open(os.path.join(cut, job + ".log"), errors="replace").read()
         resumed = ": resumed from " in log
         print("%s: the interrupted run left %d rows; the continuation %s" % (mode, rows_cut,

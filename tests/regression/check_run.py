@@ -8,6 +8,7 @@
       a run whose JOB.csv / JOB.sta / JOB.log is checked against a closed-form answer (functions case_<NAME> below).
 """
 import argparse
+import json
 import csv
 import math
 import os
@@ -338,6 +339,27 @@ def case_umat_arguments_small(d, job):
     case_umat_arguments(d, job, nlgeom=False)
 
 
+def check_input_error_files(out, job, message):
+    """A deck error leaves a record like any run's (issue 37): JOB.log with the message, JOB.sta with a status line
+    '# input error', JOB.summary.json with status input_error and exit code 2, and no empty JOB.csv or JOB.dat."""
+    err = message.split("ldfcz: error: ", 1)[-1]
+    with open(os.path.join(out, job + ".log")) as f:
+        if err not in f.read():
+            fail("JOB.log does not hold the message: " + err)
+    with open(os.path.join(out, job + ".sta")) as f:
+        if not any(x.startswith("# input error (exit status 2): ") and err[:80] in x for x in f):
+            fail("JOB.sta has no status line '# input error ...' with the message")
+    with open(os.path.join(out, job + ".summary.json")) as f:
+        doc = json.load(f)
+    if (doc["status"], doc["exit_code"]) != ("input_error", 2):
+        fail("JOB.summary.json: status %s, exit code %s" % (doc["status"], doc["exit_code"]))
+    for ext in (".csv", ".dat"):
+        path = os.path.join(out, job + ext)
+        if os.path.exists(path) and os.path.getsize(path) == 0:
+            fail("an empty %s was left behind" % (job + ext))
+    print("ok: JOB.log, JOB.sta (input error), JOB.summary.json (input_error), no empty job files")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
@@ -379,6 +401,7 @@ def main():
             if needle not in msg:
                 fail("the message does not contain the %s '%s'" % (what, needle))
         print("ok: exit 2, message names %s:%s and %s" % (fname, line, kw))
+        check_input_error_files(a.out, job, msg.strip().splitlines()[-1])
         return
     if p.returncode != a.expect_exit:
         fail("exit status %d, expected %d" % (p.returncode, a.expect_exit))

@@ -177,14 +177,17 @@ def main():
     if rc != 2 or doc['counters']['increments'] != 0 or doc['times']['wall_s'] is None:
         fail('XIT: exit %d, counters %s, times %s' % (rc, doc['counters'], doc['times']))
 
-    # a deck error in a directory with an earlier run's summary: that summary goes, none is written
+    # a deck error in a directory with an earlier run's summary: that summary goes, and the deck error's own is
+    # written (status input_error, no model size: the deck was not read)
     with open(os.path.join(full, 'cohesive_block.inp'), 'w') as f:
         f.write('*HEADING\nbroken\n*NODE\n1, 0., 0., x\n')
     rc = run(a, os.path.join(full, 'cohesive_block.inp'), full)
-    if rc != 2 or os.path.exists(outputs.summary_path(full, 'cohesive_block')):
-        fail('deck error: exit %d, summary of the earlier run %s' % (
-            rc, 'kept' if os.path.exists(outputs.summary_path(full, 'cohesive_block')) else 'gone'))
-    print('deck error                   no summary (the earlier run\'s removed), exit 2')
+    doc = summary_of(full, 'cohesive_block', 'deck error', documented, 'input_error', 2, a.np)
+    if rc != 2 or doc['model']['nodes'] != 0 or doc['counters']['increments'] != 0 or \
+            doc['times']['wall_s'] is not None:
+        fail('deck error: exit %d, model %s, counters %s, times %s' % (rc, doc['model'], doc['counters'],
+                                                                        doc['times']))
+    print('deck error                   its own summary (input_error, no model), exit 2')
     print('PASS')
 
 

@@ -4,6 +4,7 @@ reader's refusals (another JSON, another layout, a truncated file). LDFCZ_EXE na
 LDFCZ_DECKS the deck folder (default decks/ of the source tree)."""
 import json
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -64,7 +65,15 @@ class RealRun(unittest.TestCase):
     def test_frames(self):
         # frame 1 is the initial state; the times increase to the last increment's
         frames = outputs.pvd_frames(os.path.join(WORK, JOB + '.pvd'))
-        self.assertEqual(len(frames), len([f for f in os.listdir(WORK) if f.endswith('.vtu')]))
+        listed = [f for f in os.listdir(WORK) if re.match(re.escape(JOB) + r'_\d{4}\.vtm$', f)] or \
+            [f for f in os.listdir(WORK) if re.match(re.escape(JOB) + r'_\d{4}\.vtu$', f)]
+        self.assertEqual(len(frames), len(listed))
+        # a model of continuum and user elements: each frame a .vtm of the two blocks, each block's file there
+        for _, f in frames:
+            blocks = outputs.frame_files(os.path.join(WORK, f))
+            if f.endswith('.vtm'):
+                self.assertEqual(sorted(blocks), ['continuum', 'interface'])
+            self.assertTrue(all(os.path.exists(x) for files in blocks.values() for x in files))
         times = [t for t, _ in frames]
         self.assertEqual(times[0], 0.0)
         self.assertEqual(times, sorted(times))

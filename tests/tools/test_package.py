@@ -11,9 +11,11 @@ from ldfcz_tools.paths import PACKAGE, ROOT, TOOLS
 
 
 def sources(*folders):
+    # tools/paraview holds scripts for ParaView's own Python (pvpython, pvbatch): not the package's code
     for folder in folders:
         for d, dirs, files in os.walk(os.path.join(ROOT, folder)):
-            dirs[:] = [x for x in dirs if x not in ('__pycache__', 'ldfcz_tools') or d == TOOLS]
+            dirs[:] = [x for x in dirs if x not in ('__pycache__', 'ldfcz_tools', 'paraview') or
+                       (d == TOOLS and x == 'ldfcz_tools')]
             for f in files:
                 if f.endswith('.py'):
                     yield os.path.join(d, f)
@@ -61,7 +63,8 @@ class Package(unittest.TestCase):
                                     '%s imports %s' % (os.path.relpath(p, ROOT), name))
 
     def test_commands(self):
-        # every tools/NAME.py that names a package module is thin: it imports main from it, and that main exists
+        # every tools/NAME.py that names a package module is thin: it calls ldfcz_tools.cli.run('NAME') (which
+        # imports the module and calls its main, turning bad input into one line: issue 37), and that main exists
         commands = 0
         for f in sorted(os.listdir(TOOLS)):
             name = os.path.splitext(f)[0]
@@ -69,11 +72,28 @@ class Package(unittest.TestCase):
                 continue
             t = tree(os.path.join(TOOLS, f))
             imports = [(n.module, [a.name for a in n.names]) for n in ast.walk(t) if isinstance(n, ast.ImportFrom)]
-            self.assertIn(('ldfcz_tools.' + name, ['main']), imports, f)
+            self.assertIn(('ldfcz_tools.cli', ['run']), imports, f)
+            calls = [c.args[0].value for c in ast.walk(t) if isinstance(c, ast.Call) and
+                     isinstance(c.func, ast.Name) and c.func.id == 'run' and c.args and
+                     isinstance(c.args[0], ast.Constant)]
+            self.assertEqual(calls, [name], f)
             self.assertLessEqual(len([n for n in t.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))]), 0, f)
             self.assertTrue(callable(getattr(importlib.import_module('ldfcz_tools.' + name), 'main', None)), name)
             commands += 1
         self.assertGreaterEqual(commands, 10)
+
+    def test_entry_points_guarded(self):
+        # every `if __name__ == '__main__':` of the package, tools/ and benchmarks/ goes through ldfcz_tools.cli (run
+        # or guard): no traceback on bad input (issue 37)
+        bad = []
+        for p in sources('tools', 'benchmarks'):
+            for n in tree(p).body:
+                if isinstance(n, ast.If) and isinstance(n.test, ast.Compare) and \
+                        getattr(n.test.left, 'id', '') == '__name__':
+                    names = {c.func.id for c in ast.walk(n) if isinstance(c, ast.Call) and isinstance(c.func, ast.Name)}
+                    if not names & {'run', 'guard'}:
+                        bad.append(os.path.relpath(p, ROOT))
+        self.assertEqual(bad, [], 'entry points without ldfcz_tools.cli')
 
     def test_modules_import(self):
         for f in sorted(os.listdir(PACKAGE)):

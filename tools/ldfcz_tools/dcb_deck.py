@@ -20,6 +20,7 @@ seen from the top (1,4,3,2 / 5,8,7,6), 'swap' gives the top face first. ldfcz re
 """
 import argparse
 import math
+import sys
 
 L, H, B, A0 = 20.0, 1.0, 1.0, 5.0
 E_ARM, PHI, DELTA = 20000.0, 0.2, 0.2 / (math.e * 20.0)
@@ -110,5 +111,6 @@ def main():
         f.write(build(a.le, a.nz, a.flip, a.opening, a.etype))
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import run
+    sys.exit(run('dcb_deck'))

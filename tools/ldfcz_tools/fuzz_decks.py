@@ -25,6 +25,7 @@ import sys
 import tempfile
 import time
 
+from ldfcz_tools.cli import executable
 from ldfcz_tools.paths import ROOT
 CRASH = re.compile(r"Fortran runtime error|Backtrace|Segmentation fault|SIGSEGV|SIGABRT|core dumped|"
                    r"Program received signal|Error termination")
@@ -126,6 +127,7 @@ def main():
     ap.add_argument("--no-save", action="store_true")
     ap.add_argument("--report")
     a = ap.parse_args()
+    executable(a.exe, 'ldfcz program')
     rng = random.Random(a.seed)
     seeds = sorted(glob.glob(os.path.join(ROOT, "decks", "single", "*.inp")) +
                    glob.glob(os.path.join(ROOT, "decks", "patch", "*.inp")) +
@@ -175,5 +177,6 @@ def main():
     sys.exit(1 if crashes else 0)
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import run
+    sys.exit(run('fuzz_decks'))

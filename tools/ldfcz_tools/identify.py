@@ -32,6 +32,9 @@ import time
 from ldfcz_tools import peel_deck  # noqa: E402
 from ldfcz_tools.paths import ROOT  # noqa: E402
 
+#: Python modules the command needs (ldfcz_tools.cli checks them before main: no traceback without NumPy)
+REQUIRES = ('numpy', 'scipy')
+
 # Parameters that can be fitted: name -> (unit, how it enters the generator). All are positive and fitted in ln p.
 INTERFACE = {'phi': 'N/mm', 'tmax': 'MPa'}
 PET_FITTABLE = {'E': 'MPa', 'S_a': '-', 'eta_0r': 'MPa s', 'tau_0': 'MPa', 'mu': '-', 'G_r': 'MPa'}
@@ -1025,4 +1028,5 @@ def add_3d_options(ap):
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    from ldfcz_tools.cli import run
+    sys.exit(run('identify'))

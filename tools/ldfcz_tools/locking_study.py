@@ -23,6 +23,7 @@ import sys
 
 from ldfcz_tools import outputs
 from ldfcz_tools import ring_decks as cl
+from ldfcz_tools.cli import executable
 
 A, B, P = 1.0, 2.0, 1.0
 
@@ -121,6 +122,7 @@ def main():
     ap.add_argument("--out", default=os.path.join("out", "locking_study"))
     ap.add_argument("--nu", type=float, default=0.4999)
     a = ap.parse_args()
+    executable(a.exe, 'ldfcz program')
     a.exe = os.path.abspath(a.exe)   # the runs are made in --out
     cases = []
     for t in ("CPE4", "CPE4I", "CPE4R"):
@@ -144,5 +146,6 @@ def main():
         print("%-7s %-14s %14.4f %14.4f" % (etype, mesh, ratios[0], ratios[1]))
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import run
+    sys.exit(run('locking_study'))

@@ -17,6 +17,7 @@ import subprocess
 import sys
 
 PROPS = [1000.0, 400.0, 250.0, 0.25, 0.15, 0.3, 150.0, 120.0, 90.0]
+from ldfcz_tools.cli import executable
 from ldfcz_tools.paths import ROOT
 
 
@@ -52,6 +53,7 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--out", default="orientation_newton_study")
     o = ap.parse_args()
+    executable(o.exe, 'ldfcz program')
     out = os.path.abspath(o.out)
     os.makedirs(out, exist_ok=True)
     user = os.path.join(ROOT, "tests", "regression", "user_umat_ortho.f90")
@@ -74,5 +76,6 @@ def main():
             print("    inc %s attempt %s: r/q %s" % (w[1], w[2], " ".join(w[w.index("r/q:") + 1:])))
 
 
-if __name__ == "__main__":
-    sys.exit(main())
+if __name__ == '__main__':
+    from ldfcz_tools.cli import run
+    sys.exit(run('orientation_newton_study'))

@@ -131,9 +131,33 @@ def sta_counts(path):
 
 
 def pvd_frames(path):
-    """(total time, file) of each frame listed in JOB.pvd, in order; [] when absent."""
+    """(total time, file) of each frame listed in JOB.pvd, in order; [] when absent. A frame's file is JOB_NNNN.vtu
+    (one block), JOB_NNNN.pvtu (one block in pieces, a distributed run) or JOB_NNNN.vtm (two blocks: continuum and
+    interface elements; frame_files lists its files)."""
     if not os.path.exists(path):
         return []
     with open(path) as f:
         text = f.read()
     return [(float(t), name) for t, name in re.findall(r'timestep="\s*([^"]+)"[^>]*file="([^"]+)"', text)]
+
+
+def frame_files(path):
+    """{block name: [the .vtu files of the block]} of one frame file (.vtu, .pvtu or .vtm). One block (.vtu, .pvtu)
+    is named '' and holds every element; a .vtm names its blocks 'continuum' and 'interface' (the user elements);
+    a block of a distributed run lists its processes' pieces JOB_NNNN[_interface]_R.vtu."""
+    d = os.path.dirname(path)
+    with open(path) as f:
+        text = f.read()
+    if path.endswith('.vtu'):
+        return {'': [path]}
+    if path.endswith('.pvtu'):
+        return {'': [os.path.join(d, x) for x in re.findall(r'<Piece Source="([^"]+)"', text)]}
+    if not path.endswith('.vtm'):
+        raise ValueError('%s: not a frame file (.vtu, .pvtu or .vtm)' % path)
+    blocks = {}
+    for name, body in re.findall(r'<Block [^>]*name="([^"]*)"[^>]*>(.*?)</Block>', text, re.S):
+        blocks[name] = [os.path.join(d, x) for x in re.findall(r'file="([^"]+)"', body)]
+    for name, file in re.findall(r'<DataSet [^>]*name="([^"]*)"[^>]*file="([^"]+)"', re.sub(
+            r'<Block .*?</Block>', '', text, flags=re.S)):
+        blocks[name] = [os.path.join(d, file)]
+    return blocks

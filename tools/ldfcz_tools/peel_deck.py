@@ -490,4 +490,5 @@ def main(argv=None):
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    from ldfcz_tools.cli import run
+    sys.exit(run('peel_deck'))

@@ -510,7 +510,10 @@ def vtu_frames(outdir):
 
 
 def frame_front(files, delta):
-    """The delamination front of a frame: the smallest over its pieces (read_vtu_front)."""
+    """The delamination front of a frame: the smallest over its pieces (read_vtu_front); the cohesive cells are in
+    the frame's interface block beside each piece (JOB_NNNN[_R].vtu: JOB_NNNN_interface[_R].vtu)."""
+    files = files + [x for x in (re.sub(r'_(\d{4,})(_\d+)?\.vtu$', r'_\1_interface\2.vtu', v) for v in files)
+                     if x not in files and os.path.exists(x)]
     fronts = [f for f in (read_vtu_front(v, delta) for v in files) if f is not None]
     return min(fronts) if fronts else None
 
@@ -1853,4 +1856,5 @@ def main(argv=None):
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    from ldfcz_tools.cli import run
+    sys.exit(run('peel_study'))

@@ -19,13 +19,24 @@ import subprocess
 import sys
 import time
 
+from ldfcz_tools.cli import ToolError, executable
+
 
 def read_curve(path):
-    """Return (strain, stress, rows) from a driver CSV."""
+    """Return (strain, stress, rows) from a driver CSV (ToolError naming the file when it is not one)."""
     with open(path, newline="") as fh:
         rows = list(csv.DictReader(fh))
-    strain = [float(r["strain"]) for r in rows]
-    stress = [float(r["stress"]) for r in rows]
+    if not rows:
+        raise ToolError("%s: no data rows (a material_point CSV expected)" % path)
+    missing = [c for c in ("strain", "stress") if c not in rows[0]]
+    if missing:
+        raise ToolError("%s: no column %s (a material_point CSV has time, F.., S.., SDV.., strain, stress, J)"
+                        % (path, ", ".join(missing)))
+    try:
+        strain = [float(r["strain"]) for r in rows]
+        stress = [float(r["stress"]) for r in rows]
+    except (TypeError, ValueError):
+        raise ToolError("%s: a strain or stress value is not a number" % path) from None
     return strain, stress, rows
 
 
@@ -65,7 +76,10 @@ def yield_point(strain, stress):
 
 
 def run_cases(binary, root):
+    executable(binary, "material_point driver")
     decks = sorted(glob.glob(os.path.join(root, "decks", "material", "*.txt")))
+    if not decks:
+        raise ToolError("%s: no cases decks/material/*.txt under this root (--root: the repository)" % root)
     outdir = os.path.join(root, "reports", "umat")
     os.makedirs(outdir, exist_ok=True)
     results = []
@@ -107,6 +121,7 @@ def run_cases(binary, root):
 
 def run_histories(binary, root):
     """Run the PET segment histories and plot strain and stress against time, one PNG per case."""
+    executable(binary, "material_point driver")
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -157,5 +172,6 @@ def main(argv):
     return 0
 
 
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+if __name__ == '__main__':
+    from ldfcz_tools.cli import run
+    sys.exit(run('plot_material'))

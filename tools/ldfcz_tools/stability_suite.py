@@ -21,6 +21,7 @@ import sys
 import time
 
 from ldfcz_tools import outputs
+from ldfcz_tools.cli import executable
 from ldfcz_tools.paths import ROOT
 
 NONFINITE = re.compile(r"(?i)(?<![a-z])[+-]?(nan|inf|infinity)(?![a-z])")
@@ -240,6 +241,7 @@ def main():
     ap.add_argument("--only", nargs="*")
     ap.add_argument("--no-report", action="store_true", help="do not write reports/stability")
     a = ap.parse_args()
+    executable(a.exe, 'ldfcz program')
     decks = sorted(glob.glob(os.path.join(a.decks, "stab_*.inp")))
     if a.only:
         decks = [d for d in decks if any(re.search(p, os.path.basename(d)) for p in a.only)]
@@ -315,5 +317,6 @@ def main():
     sys.exit(0 if nmatch == len(table) else 1)
 
 
-if __name__ == "__main__":
-    main()
+if __name__ == '__main__':
+    from ldfcz_tools.cli import run
+    sys.exit(run('stability_suite'))

@@ -17,6 +17,8 @@ import subprocess
 import sys
 import time
 
+from ldfcz_tools.cli import executable
+
 INCREMENTS = [1.0e-2, 5.0e-3, 2.0e-3, 1.0e-3, 5.0e-4, 2.0e-4, 1.0e-4]
 H_REF = 2.5e-5
 RATE = 1.0e-3
@@ -43,7 +45,7 @@ def main(argv):
     if not argv:
         print(__doc__)
         return 1
-    binary = os.path.abspath(argv[0])
+    binary = executable(os.path.abspath(argv[0]), 'material_point driver')
     root = os.path.abspath(argv[argv.index("--root") + 1]) if "--root" in argv else os.getcwd()
     outdir = os.path.join(root, "reports", "umat")
     os.makedirs(outdir, exist_ok=True)
@@ -108,5 +110,6 @@ def main(argv):
     return 0
 
 
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+if __name__ == '__main__':
+    from ldfcz_tools.cli import run
+    sys.exit(run('umat_step_study'))
