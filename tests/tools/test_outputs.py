@@ -80,6 +80,25 @@ class RealRun(unittest.TestCase):
         self.assertAlmostEqual(times[-1], SUMMARY['steps'][-1]['total_time'], delta=1e-15)
 
 
+    def test_study_frames_see_the_interface_block(self):
+        # the cohesive cells are written in a block of their own (JOB_NNNN_interface.vtu): the peel study's frame
+        # readers must find them there. With delta = half the largest opening of the last frame, that cell's opening
+        # lies in (delta, 6 delta), so the softening zone holds at least one cell and the front is found.
+        from ldfcz_tools import peel_study
+        frames = peel_study.vtu_frames(WORK)
+        self.assertGreater(len(frames), 0)
+        files = peel_study.with_interface_blocks(frames[-1])
+        self.assertIn(os.path.join(WORK, JOB + '_%04d_interface.vtu' % len(frames)), files)
+        openings = [a['opening'] for a in (peel_study.read_vtu_arrays(v, ('opening',))[1] for v in files)
+                    if a['opening']]
+        self.assertEqual(len(openings), 1)
+        d = max(sum(c * c for c in o[3 * i:3 * i + 3]) ** 0.5 for o in openings for i in range(len(o) // 3))
+        self.assertGreater(d, 0.0)
+        cells, _ = peel_study.process_zone(frames[-1], 0.5 * d)
+        self.assertGreaterEqual(cells, 1)
+        self.assertIsNotNone(peel_study.frame_front(frames[-1], 0.5 * d))
+
+
 class Refusals(unittest.TestCase):
 
     def write(self, name, text):

@@ -406,7 +406,8 @@ def steady_force(u, fw, plateau):
 def read_vtu_front(vtu_path, delta):
     """x of the delamination front in a VTU frame: the smallest cell-centre x among cohesive cells whose opening
     magnitude exceeds delta (past the peak traction). None when no cell qualifies."""
-    text = open(vtu_path).read()
+    with open(vtu_path) as fh:
+        text = fh.read()
 
     def array(name):
         m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % name, text, re.S)
@@ -430,7 +431,8 @@ def read_vtu_front(vtu_path, delta):
 
 def read_vtu_arrays(vtu_path, names):
     """Reference points (flat x, y, z list) and the named DataArrays (None where absent) of a VTU frame."""
-    text = open(vtu_path).read()
+    with open(vtu_path) as fh:
+        text = fh.read()
     pm = re.search(r'<Points><DataArray[^>]*>(.*?)</DataArray>', text, re.S)
     out = {}
     for name in names:
@@ -444,7 +446,7 @@ def process_zone(files, delta, rows=1):
     (the peak traction) and 6 delta (4 % of it left), counted per row of cells along x (rows: elements over the
     width). Returns (number of cells per row, their extent along x in mm); (0, 0) when none."""
     n, xs = 0, []
-    for v in files:
+    for v in with_interface_blocks(files):
         pts, a = read_vtu_arrays(v, ('connectivity', 'offsets', 'cohesive', 'opening'))
         if None in a.values():
             continue
@@ -509,11 +511,17 @@ def vtu_frames(outdir):
     return [sorted(frames[k]) for k in sorted(frames)]
 
 
+def with_interface_blocks(files):
+    """The pieces of a frame with their interface blocks: JOB_NNNN[_R].vtu and JOB_NNNN_interface[_R].vtu (the
+    cohesive cells are written in a block of their own beside each piece)."""
+    return files + [x for x in (re.sub(r'_(\d{4,})(_\d+)?\.vtu$', r'_\1_interface\2.vtu', v) for v in files)
+                    if x not in files and os.path.exists(x)]
+
+
 def frame_front(files, delta):
     """The delamination front of a frame: the smallest over its pieces (read_vtu_front); the cohesive cells are in
     the frame's interface block beside each piece (JOB_NNNN[_R].vtu: JOB_NNNN_interface[_R].vtu)."""
-    files = files + [x for x in (re.sub(r'_(\d{4,})(_\d+)?\.vtu$', r'_\1_interface\2.vtu', v) for v in files)
-                     if x not in files and os.path.exists(x)]
+    files = with_interface_blocks(files)
     fronts = [f for f in (read_vtu_front(v, delta) for v in files) if f is not None]
     return min(fronts) if fronts else None
 
@@ -1592,7 +1600,8 @@ def render_mises(vtu_path, info, png, last):
         from matplotlib.collections import PolyCollection
     except ImportError:
         return False
-    text = open(vtu_path).read()
+    with open(vtu_path) as fh:
+        text = fh.read()
 
     def array(name, typ=float):
         m = re.search(r'<DataArray[^>]*Name="%s"[^>]*>(.*?)</DataArray>' % name, text, re.S)
