@@ -19,8 +19,8 @@ add_test(NAME steady_force
   COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_steady_force.py")
 set_tests_properties(steady_force PROPERTIES LABELS "peel" TIMEOUT 60)
 
-# The figures of docs/scenes.md and of the README's peel sections against the reports they cite, and the reports
-# index reports/README.md (no solver needed)
+# The figures of docs/scenes.md, docs/performance.md and of the README's main-job section against the reports they
+# cite, and the reports index reports/README.md (no solver needed)
 add_test(NAME quoted_figures
   COMMAND Python3::Interpreter "${CMAKE_CURRENT_SOURCE_DIR}/regression/check_quoted_figures.py" "${PROJECT_SOURCE_DIR}")
 set_tests_properties(quoted_figures PROPERTIES LABELS "peel" TIMEOUT 60)

@@ -25,6 +25,8 @@ packages=(gfortran gcc make cmake pkg-config python3 python3-matplotlib python3-
 # Pictures of the frames on a machine without a display (tools/render_frame.py, test deck_frames): Debian's VTK
 # renders off-screen through an X server, which xvfb-run provides (it needs xauth)
 packages+=(xvfb xauth)
+# The documentation site and its test (mkdocs.yml, test docs_mkdocs: mkdocs build --strict): Debian 12's MkDocs 1.4
+packages+=(mkdocs)
 # The LDFCZ_MPI build (mpirun -np N ldfcz; its tests run in tools/test.sh): OpenMPI and the parallel MUMPS. The default
 # build does not use them; they are installed always so that the MPI tests never lack them on Debian.
 packages+=(openmpi-bin libopenmpi-dev libmumps-dev)

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Every figure quoted in docs/scenes.md and in the README's peel sections is found in a report it cites, and the
-reports index (reports/README.md) covers every report folder (CTest quoted_figures; no simulation, about a second).
+"""Every figure quoted in docs/scenes.md, docs/performance.md and in the README's main-job section is found in a
+report it cites, and the reports index (reports/README.md) covers every report folder (CTest quoted_figures; no
+simulation, about a second).
 
   check_quoted_figures.py ROOT
 
@@ -241,9 +242,10 @@ def main(argv):
     ins = inputs(root)
     cache, bad = {}, []
     nb = nn = 0
-    with open(os.path.join(root, 'docs', 'scenes.md')) as fh:
-        b, n = check_text(root, 'docs/scenes.md', fh.read(), folders, ins, cache, bad)
-        nb, nn = nb + b, nn + n
+    for doc in ('scenes.md', 'performance.md'):
+        with open(os.path.join(root, 'docs', doc)) as fh:
+            b, n = check_text(root, 'docs/' + doc, fh.read(), folders, ins, cache, bad)
+            nb, nn = nb + b, nn + n
     with open(os.path.join(root, 'README.md')) as fh:
         b, n = check_text(root, 'README.md', readme_sections(fh.read()), folders, ins, cache, bad)
         nb, nn = nb + b, nn + n
