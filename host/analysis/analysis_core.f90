@@ -5,7 +5,7 @@ module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node
+  use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node, model_dof
   use element_catalog, only: element_name
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, &
@@ -201,8 +201,39 @@ contains
     call constraints_build(an%eqs%cs, model, an%used, stat, errmsg)
     if (stat /= 0) return
     call constraints_mark_masters(an%eqs%cs, an%used)
+    call check_loads_attached(an, model, stat, errmsg)
+    if (stat /= 0) return
     call allocate_working_arrays(an, model)
   end subroutine analysis_init
+
+  !> A concentrated load on a dof that no element and no constraint holds (a node without an element, a reference
+  !> node's dof that its coupling does not constrain) would act on nothing: an error at its *CLOAD line.
+  subroutine check_loads_attached(an, model, stat, errmsg)
+    type(analysis_t), intent(in) :: an                   !< analysis data (used set)
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: is, k, j, i
+    stat = 0
+    errmsg = ''
+    do is = 1, model%nstep
+      do k = 1, model%steps(is)%ncload
+        associate (cl => model%steps(is)%cloads(k))
+          if (cl%value == 0.0_dp) cycle
+          do j = 1, size(cl%nodes)
+            i = model_dof(model, cl%nodes(j), cl%dof)
+            if (i == 0) cycle
+            if (an%used(i)) cycle
+            stat = 2
+            errmsg = cl%pos%file//':'//itoa(cl%pos%line)//': *CLOAD: dof '//itoa(cl%dof)//' of node '// &
+              itoa(model%node_id(cl%nodes(j)))//' belongs to no element and no constraint: the load would act '// &
+              'on nothing'
+            return
+          end do
+        end associate
+      end do
+    end do
+  end subroutine check_loads_attached
 
   !> Each element's global dofs (elem_ptr, elem_dof: ndim per node, or a user element type's active dofs), the
   !> dofs attached to an element or a coupling (used) and the element colours of the threaded assembly.

@@ -103,17 +103,9 @@ contains
     end do
     if (model%ncoupling > 0) call add_couplings(cs, model, stat, errmsg)
     if (stat /= 0) return
-    do c = 1, cs%n
-      do i = cs%ptr(c), cs%ptr(c + 1) - 1
-        if (cs%of_dof(cs%mdof(i)) /= 0 .or. cs%mdof(i) == cs%slave(c)) then
-          k = c
-          stat = 2
-          errmsg = 'ldfcz: *EQUATION/*TIE: a dof eliminated by one constraint (an equation''s first term, a tied '// &
-            'slave node) appears in another one: chains of constraints are not supported'
-          return
-        end if
-      end do
-    end do
+    call resolve_chains(cs, stat)
+    if (stat /= 0) errmsg = '*EQUATION/*TIE/*COUPLING: the constraints form a loop (a dof eliminated by one '// &
+      'constraint depends on itself through others): no dof can be eliminated'
 
   contains
 
@@ -310,6 +302,66 @@ contains
     end subroutine exclude_prescribed
 
   end subroutine add_couplings
+
+  !> Chains of constraints (a dof that one constraint eliminates is a retained term of another, as Abaqus allows
+  !> when the eliminating equation comes later: Analysis User's Guide "Linear constraint equations") resolved by
+  !> substitution, so that every row's masters are independent dofs; repeated masters are merged. stat 2: a loop.
+  pure subroutine resolve_chains(cs, stat)
+    type(constraint_set_t), intent(inout) :: cs  !< constraints
+    integer, intent(out) :: stat                 !< 0 ok, 2 a loop
+    integer, allocatable :: ptr(:), mdof(:)
+    real(dp), allocatable :: w(:)
+    integer :: pass, c, i, j, r
+    logical :: changed
+    stat = 0
+    if (cs%n == 0) return
+    if (all(cs%of_dof(cs%mdof) == 0)) return
+    do pass = 1, cs%n + 1
+      changed = .false.
+      allocate (ptr(cs%n + 1), mdof(0), w(0))
+      ptr(1) = 1
+      do c = 1, cs%n
+        do i = cs%ptr(c), cs%ptr(c + 1) - 1
+          r = cs%of_dof(cs%mdof(i))
+          if (r == 0) then
+            call add_term(mdof, w, ptr(c), cs%mdof(i), cs%w(i))
+          else if (r == c) then
+            stat = 2
+            return
+          else
+            changed = .true.
+            do j = cs%ptr(r), cs%ptr(r + 1) - 1
+              call add_term(mdof, w, ptr(c), cs%mdof(j), cs%w(i) * cs%w(j))
+            end do
+          end if
+        end do
+        ptr(c + 1) = size(mdof) + 1
+      end do
+      call move_alloc(ptr, cs%ptr)
+      call move_alloc(mdof, cs%mdof)
+      call move_alloc(w, cs%w)
+      if (.not. changed) return
+    end do
+    stat = 2
+  end subroutine resolve_chains
+
+  !> Term (dof, weight) added to the row that starts at mdof(start) (merged with the same dof already there).
+  pure subroutine add_term(mdof, w, start, dof, wt)
+    integer, allocatable, intent(inout) :: mdof(:)   !< masters of the rows built so far
+    real(dp), allocatable, intent(inout) :: w(:)     !< their weights
+    integer, intent(in) :: start                     !< first term of the row being built
+    integer, intent(in) :: dof                       !< master dof
+    real(dp), intent(in) :: wt                       !< its weight
+    integer :: n
+    do n = start, size(mdof)
+      if (mdof(n) == dof) then
+        w(n) = w(n) + wt
+        return
+      end if
+    end do
+    mdof = [mdof, dof]
+    w = [w, wt]
+  end subroutine add_term
 
   !> used(master) for the masters of every constraint whose slave is used: such a dof carries the slave's stiffness
   !> (a coupling's reference node, a node that ties nodes of elements) even when no element of its own holds it.

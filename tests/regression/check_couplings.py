@@ -34,6 +34,11 @@ Cases:
   equation_sets *EQUATION over node sets: two unsorted sets written in reverse label order, a sorted set written
                 out of order and a single node in every equation, against the same equations written node by
                 node: identical results (1e-12); sets of different sizes are refused naming the line of the term.
+  equation_chain  a chain of *EQUATIONs (u_17,2 = u_16,2 written before u_16,2 = u_12,2: the dof the second one
+                eliminates is a retained term of the first, as Abaqus allows) against the twin deck that writes both
+                against node 12 directly: identical results (1e-12: both solve the same reduced system; the chain
+                is resolved by substitution with weights 1); two equations that eliminate each other's dofs (a
+                loop) are refused.
 """
 import argparse
 import csv
@@ -392,6 +397,24 @@ def case_equation_sets(exe, out):
     print("sets of different sizes refused: " + msg.strip().splitlines()[-1])
 
 
+def case_equation_chain(exe, out):
+    b1 = [11, 12, 13, 14, 15, 16, 17, 18]
+    pairs1 = [(2, 11), (3, 14), (6, 15), (7, 18)]
+    sets1 = ["*NSET, NSET=AF\n7, 2, 6, 3"]
+    chain = node_equations(pairs1) + ["2\n17, 2, 1., 16, 2, -1.", "2\n16, 2, 1., 12, 2, -1."]
+    twin = node_equations(pairs1) + ["2\n17, 2, 1., 12, 2, -1.", "2\n16, 2, 1., 12, 2, -1."]
+    a = run(exe, out, "equation_chain", equation_block(b1, chain, sets1))[-1]
+    b = run(exe, out, "equation_chain_twin", equation_block(b1, twin, sets1))[-1]
+    compare_rows(a, b, 1e-12)
+    check("chained node 17 moves with node 12 in y", float(a["N17.U2"]), float(a["N12.U2"]),
+          1e-12 * abs(float(a["N12.U2"])))
+    loop = node_equations(pairs1) + ["2\n17, 2, 1., 16, 2, -1.", "2\n16, 2, 1., 17, 2, -1."]
+    msg = run(exe, out, "equation_loop", equation_block(b1, loop, sets1), expect=2)
+    if "loop" not in msg:
+        fail("a loop of equations: the message must say so, got: " + msg)
+    print("a loop of equations refused: " + msg.strip().splitlines()[-1])
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--exe", required=True)
@@ -401,7 +424,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     cases = {"kinematic": case_kinematic, "kinematic_twin": case_kinematic_twin, "distributing": case_distributing,
              "distributing_twin": case_distributing_twin, "kinematic_2d": case_kinematic_2d,
-             "equation_sets": case_equation_sets}
+             "equation_sets": case_equation_sets, "equation_chain": case_equation_chain}
     if a.case not in cases:
         fail("unknown case " + a.case)
     cases[a.case](a.exe, a.out)
