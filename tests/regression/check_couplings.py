@@ -37,8 +37,12 @@ Cases:
   equation_chain  a chain of *EQUATIONs (u_17,2 = u_16,2 written before u_16,2 = u_12,2: the dof the second one
                 eliminates is a retained term of the first, as Abaqus allows) against the twin deck that writes both
                 against node 12 directly: identical results (1e-12: both solve the same reduced system; the chain
-                is resolved by substitution with weights 1); two equations that eliminate each other's dofs (a
-                loop) are refused.
+                is resolved by substitution with weights 1); two equations that eliminate each other's retained
+                dofs, u17 = (u16 + u12)/2 and u16 = (u17 + u12)/2, against the same twin (1e-12: the row that
+                comes back to its own slave is solved for it); two equations that are one (u17 = u16 twice, in
+                both orders) refused as dependent; a node of no element defined by an equation (midway between
+                two nodes) and loaded: the force reaches the two nodes half each (against the twin that loads them
+                so, 1e-12), and a one-term equation holds its dof at zero (against *BOUNDARY).
 """
 import argparse
 import csv
@@ -397,6 +401,10 @@ def case_equation_sets(exe, out):
     print("sets of different sizes refused: " + msg.strip().splitlines()[-1])
 
 
+def run_text(exe, out, job, text):
+    return run(exe, out, job, text)[-1]
+
+
 def case_equation_chain(exe, out):
     b1 = [11, 12, 13, 14, 15, 16, 17, 18]
     pairs1 = [(2, 11), (3, 14), (6, 15), (7, 18)]
@@ -408,11 +416,28 @@ def case_equation_chain(exe, out):
     compare_rows(a, b, 1e-12)
     check("chained node 17 moves with node 12 in y", float(a["N17.U2"]), float(a["N12.U2"]),
           1e-12 * abs(float(a["N12.U2"])))
+    # each eliminates a retained dof of the other: u17 = (u16 + u12) / 2, u16 = (u17 + u12) / 2, so u16 = u17 = u12
+    mutual = node_equations(pairs1) + ["3\n17, 2, 1., 16, 2, -0.5, 12, 2, -0.5",
+                                       "3\n16, 2, 1., 17, 2, -0.5, 12, 2, -0.5"]
+    c = run(exe, out, "equation_mutual", equation_block(b1, mutual, sets1))[-1]
+    compare_rows(c, b, 1e-12)
     loop = node_equations(pairs1) + ["2\n17, 2, 1., 16, 2, -1.", "2\n16, 2, 1., 17, 2, -1."]
     msg = run(exe, out, "equation_loop", equation_block(b1, loop, sets1), expect=2)
-    if "loop" not in msg:
-        fail("a loop of equations: the message must say so, got: " + msg)
-    print("a loop of equations refused: " + msg.strip().splitlines()[-1])
+    if "dependent" not in msg:
+        fail("two equations that are one: the message must say they are dependent, got: " + msg)
+    print("dependent equations refused: " + msg.strip().splitlines()[-1])
+    # a node of no element whose motion an equation defines (u99 = (u2 + u3) / 2, node 99 midway between them) and
+    # carrying a force: the force reaches nodes 2 and 3 half each (the twin loads them so); a one-term equation
+    # holds its dof at zero (the twin prescribes it with *BOUNDARY)
+    mid = ["*NODE\n99, 1., 0.5, 0."] + sets1
+    orphan = node_equations(pairs1) + ["*EQUATION"] + ["3\n99, %d, 1., 2, %d, -0.5, 3, %d, -0.5" % (d, d, d)
+                                                       for d in (1, 2, 3)] + ["1\n16, 3, 1."]
+    text = equation_block(b1, orphan, mid).replace("*END STEP", "*CLOAD\n99, 2, 0.3\n*END STEP")
+    twin = node_equations(pairs1) + ["*BOUNDARY\n16, 3, 3"]
+    ttext = equation_block(b1, twin, mid).replace("*END STEP", "*CLOAD\n2, 2, 0.15\n3, 2, 0.15\n*END STEP")
+    d = run_text(exe, out, "equation_orphan", text)
+    e = run_text(exe, out, "equation_orphan_twin", ttext)
+    compare_rows(d, e, 1e-12)
 
 
 def main():
