@@ -63,14 +63,10 @@ CALCULIX_NOTES = [
     ('beammr, beammrco, beammrlin, beamplane, beamstraight, dist',
      '*MPC types MEANROT, PLANE, STRAIGHT and DIST are CalculiX\'s; they are not among the Abaqus *MPC types (KG '
      '*MPC): out of scope.'),
-    ('coupling6, coupling8, coupling11',
-     'a *DISTRIBUTING coupling given dof 6 (or 4) alone, loaded by a force: CalculiX distributes forces whatever '
-     'dofs are given ("No matter what the user specifies, forces are always distributed", its manual, '
-     '*DISTRIBUTING); in Abaqus only the given dofs are coupled and the force would act on an unconstrained dof. '
-     'A CalculiX deviation: ldfcz refuses a distributing coupling without its translations.'),
-    ('coupling9, coupling12',
-     'a *DISTRIBUTING coupling of one rotation (dof 4 alone): ldfcz couples the rotations of a distributing '
-     'coupling all together or not at all (refused, not approximated).'),
+    ('coupling6, coupling8, coupling9, coupling11, coupling12',
+     '*DISTRIBUTING given one rotation (dof 4 or 6): the translations are coupled whatever the data lines say (KG '
+     '*DISTRIBUTING; CalculiX likewise), the one rotation is a partial rotational coupling, which ldfcz refuses '
+     '(what Abaqus constrains then was not found in its documentation).'),
     ('beamdelay', '*CLOAD, TIME DELAY is a CalculiX parameter (its manual, *CLOAD); Abaqus\'s *CLOAD has none.'),
     ('beamnlptp, beampo2, beampo6',
      '*NODE PRINT, TIMEPOINTS= and *EL PRINT, GLOBAL= are CalculiX parameters (KG *NODE PRINT, *EL PRINT have '
