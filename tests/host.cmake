@@ -212,8 +212,9 @@ ldfcz_add_restart_test(restart_model_change_step_end ${LDFCZ_RESTART_DECKS}/mode
   --rel 0 --dat --point end --no-refusals)
 
 # issue 36 item 4 (docs/host.md): *COUPLING against statics, rigid motion, beam theory and twin *EQUATION decks;
-# *EQUATION over node sets against the same equations node by node (tests/regression/check_couplings.py)
-foreach(case kinematic kinematic_twin distributing distributing_twin kinematic_2d equation_sets)
+# *EQUATION over node sets against the same equations node by node, a chain of equations against the direct ones
+# (tests/regression/check_couplings.py)
+foreach(case kinematic kinematic_twin distributing distributing_twin kinematic_2d equation_sets equation_chain)
   add_test(NAME deck_coupling_${case} COMMAND Python3::Interpreter
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_couplings.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/coupling_${case} --case ${case})
@@ -228,8 +229,9 @@ foreach(case centrif_plane_stress centrif_axisymmetric centrif_3d rota centrif_n
   set_tests_properties(deck_rotational_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
 # *MODEL CHANGE against closed forms and the deck without the elements, *TIME POINTS hit exactly, *NODE PRINT,
-# GLOBAL=YES against the transformed components (tests/regression/check_step_options.py)
-foreach(case model_change model_change_nlgeom time_points node_print_global)
+# GLOBAL=YES against the transformed components, *BOUNDARY, FIXED against the held value and the reaction
+# (tests/regression/check_step_options.py)
+foreach(case model_change model_change_nlgeom time_points node_print_global boundary_fixed)
   add_test(NAME deck_step_${case} COMMAND Python3::Interpreter
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_step_options.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/step_${case} --case ${case})

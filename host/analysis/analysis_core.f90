@@ -5,7 +5,7 @@ module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t, etype_user, orientation_axes, model_dof_node
+  use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node, model_dof
   use element_catalog, only: element_name
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, &
@@ -172,8 +172,6 @@ contains
     !> the partition's weights and pieces, the factorization's choices (default: solver_options_t's)
     type(solver_options_t), intent(in), optional :: options
     type(solver_options_t) :: opt
-    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra
-    character(len=16) :: b
 
     stat = 0
     errmsg = ''
@@ -185,6 +183,69 @@ contains
     an%ndim = model%ndim
     ! the displacement dofs of the nodes, then the rotational dofs of the couplings' reference nodes (model_dof)
     an%ndof = model%ndim * model%nnode + model%nrot
+    call element_dof_maps(an, model, stat, errmsg)
+    if (stat /= 0) return
+    call section_materials(an, model, routines, stat, errmsg)
+    if (stat /= 0) return
+    call partition(an, model, opt%partition_pieces, stat, errmsg)
+    if (stat /= 0) return
+    call allocate_element_states(an, model)
+    call reference_geometry(an, model)
+    call element_axes(an, model, stat, errmsg)
+    if (stat /= 0) return
+    call apply_initial_conditions(an, model, stat, errmsg)
+    if (stat /= 0) return
+    call open_loop_trace(an)
+    call node_rotations_build(an%nr, model, stat, errmsg)
+    if (stat /= 0) return
+    call constraints_build(an%eqs%cs, model, an%used, stat, errmsg)
+    if (stat /= 0) return
+    call constraints_mark_masters(an%eqs%cs, an%used)
+    call check_loads_attached(an, model, stat, errmsg)
+    if (stat /= 0) return
+    call allocate_working_arrays(an, model)
+  end subroutine analysis_init
+
+  !> A concentrated load on a dof that no element and no constraint holds (a node without an element, a reference
+  !> node's dof that its coupling does not constrain) would act on nothing: an error at its *CLOAD line.
+  subroutine check_loads_attached(an, model, stat, errmsg)
+    type(analysis_t), intent(in) :: an                   !< analysis data (used set)
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: is, k, j, i
+    stat = 0
+    errmsg = ''
+    do is = 1, model%nstep
+      do k = 1, model%steps(is)%ncload
+        associate (cl => model%steps(is)%cloads(k))
+          if (cl%value == 0.0_dp) cycle
+          do j = 1, size(cl%nodes)
+            i = model_dof(model, cl%nodes(j), cl%dof)
+            if (i == 0) cycle
+            if (an%used(i)) cycle
+            stat = 2
+            errmsg = cl%pos%file//':'//itoa(cl%pos%line)//': *CLOAD: dof '//itoa(cl%dof)//' of node '// &
+              itoa(model%node_id(cl%nodes(j)))//' belongs to no element and no constraint: the load would act '// &
+              'on nothing'
+            return
+          end do
+        end associate
+      end do
+    end do
+  end subroutine check_loads_attached
+
+  !> Each element's global dofs (elem_ptr, elem_dof: ndim per node, or a user element type's active dofs), the
+  !> dofs attached to an element or a coupling (used) and the element colours of the threaded assembly.
+  subroutine element_dof_maps(an, model, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: ie, k, a, j, nn, iu, nact
+    character(len=16) :: b
+    stat = 0
+    errmsg = ''
     allocate (an%elem_ptr(model%nelem + 1), an%elem_nip(model%nelem), an%elem_tname(model%nelem))
     an%elem_ptr(1) = 1
     an%elem_nip = 0
@@ -228,8 +289,19 @@ contains
     call coupling_mark_used(model, an%used)
     an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
     call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)
+  end subroutine element_dof_maps
 
-    ! materials per section
+  !> The material of each section (an%mats) and whether the system is symmetric (no UNSYMM material, user element
+  !> type or step); a *USER MATERIAL without a UMAT, or user elements without a UEL, is an error.
+  subroutine section_materials(an, model, routines, stat, errmsg)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    type(user_routines_t), intent(in) :: routines        !< UEL and UMAT to call
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    integer :: is, im, k, iu
+    stat = 0
+    errmsg = ''
     allocate (an%mats(max(1, model%nsection)))
     an%symmetric = .true.
     do is = 1, model%nsection
@@ -237,33 +309,9 @@ contains
       do k = 1, model%nmat
         if (model%materials(k)%name == model%sections(is)%material) im = k
       end do
-      associate (mt => model%materials(im), sm => an%mats(is))
-        sm%thickness = model%sections(is)%thickness
-        ! CMNAME: Abaqus reads names case-insensitively and passes them in upper case
-        sm%cmname = upper_case(mt%given_name)
-        sm%alpha = mt%alpha
-        ! *ELASTIC/*EXPANSION other than constant isotropic (material_law.f90)
-        call material_elastic_law(mt, sm%law, stat, errmsg)
-        if (stat /= 0) return
-        if (mt%has_elastic) then
-          sm%kind = SOLID_MAT_ELASTIC
-          sm%e = mt%young
-          sm%nu = mt%poisson
-        else
-          sm%kind = SOLID_MAT_UMAT
-          sm%props = mt%props
-          sm%nstatv = mt%nstatv
-          sm%unsymm = mt%unsymm
-          if (mt%unsymm) an%symmetric = .false.
-          if (.not. associated(routines%umat)) then
-            stat = 2
-            errmsg = mt%pos%file//': *MATERIAL: material '//trim(mt%given_name)//' uses *USER MATERIAL but no '// &
-              'UMAT is available: give one with --user FILE'
-            return
-          end if
-          sm%umat => routines%umat
-        end if
-      end associate
+      call section_material(model%materials(im), model%sections(is)%thickness, routines, an%mats(is), stat, errmsg)
+      if (stat /= 0) return
+      if (.not. model%materials(im)%has_elastic .and. model%materials(im)%unsymm) an%symmetric = .false.
     end do
     do iu = 1, model%nutype
       if (model%utypes(iu)%unsymm .and. any(model%elem_utype == iu)) an%symmetric = .false.
@@ -276,11 +324,48 @@ contains
     do is = 1, model%nstep
       if (model%steps(is)%unsymm) an%symmetric = .false.
     end do
+  end subroutine section_materials
 
-    call partition(an, model, opt%partition_pieces, stat, errmsg)
+  !> One section's material: *ELASTIC (with its law: material_law.f90) or the user's UMAT with its constants.
+  subroutine section_material(mt, thickness, routines, sm, stat, errmsg)
+    type(material_t), intent(in) :: mt                   !< the section's material
+    real(dp), intent(in) :: thickness                    !< the section's thickness
+    type(user_routines_t), intent(in) :: routines        !< UEL and UMAT to call
+    type(solid_material_t), intent(inout) :: sm          !< the material as the element computes it
+    integer, intent(out) :: stat                         !< 0 ok, 2 model error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    sm%thickness = thickness
+    ! CMNAME: Abaqus reads names case-insensitively and passes them in upper case
+    sm%cmname = upper_case(mt%given_name)
+    sm%alpha = mt%alpha
+    ! *ELASTIC/*EXPANSION other than constant isotropic (material_law.f90)
+    call material_elastic_law(mt, sm%law, stat, errmsg)
     if (stat /= 0) return
-    ! states: of this process's elements only (all in a one-process run; state_gather brings another process's
-    ! converged state where output needs it)
+    if (mt%has_elastic) then
+      sm%kind = SOLID_MAT_ELASTIC
+      sm%e = mt%young
+      sm%nu = mt%poisson
+    else
+      sm%kind = SOLID_MAT_UMAT
+      sm%props = mt%props
+      sm%nstatv = mt%nstatv
+      sm%unsymm = mt%unsymm
+      if (.not. associated(routines%umat)) then
+        stat = 2
+        errmsg = mt%pos%file//': *MATERIAL: material '//trim(mt%given_name)//' uses *USER MATERIAL but no '// &
+          'UMAT is available: give one with --user FILE'
+        return
+      end if
+      sm%umat => routines%umat
+    end if
+  end subroutine section_material
+
+  !> Integration points of every continuum element, and the converged states of this process's elements only
+  !> (all in a one-process run; state_gather brings another process's converged state where output needs it).
+  subroutine allocate_element_states(an, model)
+    type(analysis_t), intent(inout) :: an  !< analysis data
+    type(model_t), intent(in) :: model     !< the model
+    integer :: ie, nnode, ndim, nip, ntens, ndi, nshr, nextra
     allocate (an%state%conv(model%nelem))
     do ie = 1, model%nelem
       if (model%elem_kind(ie) /= etype_user) then
@@ -289,9 +374,15 @@ contains
       end if
       if (an%owned(ie)) call element_state_allocate(an, model, ie, an%state%conv(ie))
     end do
-    ! reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
-    ! process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
-    ! process's element when output needs it; 41 MB a process on the paper's application mesh when all are kept)
+  end subroutine allocate_element_states
+
+  !> Reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
+  !> process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
+  !> process's element when output needs it; 41 MB a process on the paper's application mesh when all are kept).
+  subroutine reference_geometry(an, model)
+    type(analysis_t), intent(inout) :: an  !< analysis data
+    type(model_t), intent(in) :: model     !< the model
+    integer :: ie, n
     allocate (an%elem_geo(model%nelem))
     an%elem_geo = 0
     n = 0
@@ -307,18 +398,13 @@ contains
       call solid_element_geometry(an%elem_tname(ie), &
         model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
     end do
-    call element_axes(an, model, stat, errmsg)
-    if (stat /= 0) return
-    call apply_initial_conditions(an, model, stat, errmsg)
-    if (stat /= 0) return
-    call open_loop_trace(an)
-    call node_rotations_build(an%nr, model, stat, errmsg)
-    if (stat /= 0) return
-    call constraints_build(an%eqs%cs, model, an%used, stat, errmsg)
-    if (stat /= 0) return
-    call constraints_mark_masters(an%eqs%cs, an%used)
-    ! the state before the first increment (analysis_state): the model data's boundaries, the initial temperatures
-    ! and field variables; the element states above
+  end subroutine reference_geometry
+
+  !> The state before the first increment (analysis_state: the model data's boundaries, the initial temperatures
+  !> and field variables; the element states are already there) and the solver's working arrays, zero.
+  subroutine allocate_working_arrays(an, model)
+    type(analysis_t), intent(inout) :: an  !< analysis data
+    type(model_t), intent(in) :: model     !< the model
     call analysis_state_init(an%state, model, an%ndof)
     ! *MODEL CHANGE: the displacements at reactivation, per element dof (model_change)
     allocate (an%state%u_ref(merge(size(an%elem_dof), 0, model%has_model_change)))
@@ -337,7 +423,7 @@ contains
     allocate (an%eqs%prescribed(an%ndof), an%eqs%eq(an%ndof))
     an%eqs%prescribed = .false.
     an%eqs%eq = 0
-  end subroutine analysis_init
+  end subroutine allocate_working_arrays
 
   !> Equation numbers for the free dofs (an%eqs%prescribed set by the caller) and the sparse system (pattern,
   !> METIS ordering, MUMPS analysis) when the set of free dofs changed.

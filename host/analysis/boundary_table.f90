@@ -63,6 +63,8 @@ contains
           if (dof == 0) cycle
           bc%on(dof) = .true.
           bc%val(dof) = list(k)%value
+          ! FIXED: the value at the start of the step (u_start, set before a step's boundaries are applied)
+          if (list(k)%fixed) bc%val(dof) = bc%u_start(dof)
           bc%amp(dof) = list(k)%amplitude
           bc%vel(dof) = list(k)%velocity
           bc%user(dof) = list(k)%user

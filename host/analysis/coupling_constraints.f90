@@ -36,13 +36,21 @@ module coupling_constraints
 
 contains
 
-  !> used(dof) for the dofs of every coupling's reference node (translations and rotational dofs): they belong to
-  !> no element, yet are unknowns of the analysis.
+  !> used(dof) for the dofs of every coupling's reference node that its constraint holds (translations and rotational
+  !> dofs): they belong to no element, yet are unknowns of the analysis.
   pure subroutine coupling_mark_used(model, used)
     type(model_t), intent(in) :: model  !< the model
     logical, intent(inout) :: used(:)   !< (ndof) dof of the analysis
     integer :: k, d, i
+    type(coupling_rows_t) :: rows
     do k = 1, model%ncoupling
+      if (model%couplings(k)%kinematic) then
+        ! only the reference dofs its rows hold (a coupling of dof 3 alone moves no coupling node with u_R1, u_R2 or
+        ! theta_R3: those stay outside the analysis, like the dofs of a node without an element)
+        call kinematic_rows(model, model%couplings(k), rows)
+        used(rows%mdof) = .true.
+        cycle
+      end if
       do d = 1, 6
         i = model_dof(model, model%couplings(k)%ref, d)
         if (i > 0) used(i) = .true.

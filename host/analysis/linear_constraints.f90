@@ -89,9 +89,14 @@ contains
             call fail('a dof is the first (eliminated) term of two equations')
             return
           end if
+          ! an eliminated dof of a node without an element (a node whose motion the equation defines, e.g. for
+          ! output) is accepted when every retained term belongs to an element (constraints_mark_masters then
+          ! counts it as used: a load there reaches the retained terms)
           if (.not. used(cs%slave(nc))) then
-            call fail('the eliminated dof belongs to no element')
-            return
+            if (.not. all(used(cs%mdof(cs%ptr(nc):cs%ptr(nc + 1) - 1)))) then
+              call fail('the eliminated dof belongs to no element, nor do all of its retained terms')
+              return
+            end if
           end if
           cs%of_dof(cs%slave(nc)) = nc
         end do
@@ -103,17 +108,9 @@ contains
     end do
     if (model%ncoupling > 0) call add_couplings(cs, model, stat, errmsg)
     if (stat /= 0) return
-    do c = 1, cs%n
-      do i = cs%ptr(c), cs%ptr(c + 1) - 1
-        if (cs%of_dof(cs%mdof(i)) /= 0 .or. cs%mdof(i) == cs%slave(c)) then
-          k = c
-          stat = 2
-          errmsg = 'ldfcz: *EQUATION/*TIE: a dof eliminated by one constraint (an equation''s first term, a tied '// &
-            'slave node) appears in another one: chains of constraints are not supported'
-          return
-        end if
-      end do
-    end do
+    call resolve_chains(cs, stat)
+    if (stat /= 0) errmsg = '*EQUATION/*TIE/*COUPLING: the constraints are dependent (a dof eliminated by one constraint '// &
+      'depends on itself through others with weight 1): no dof can be eliminated'
 
   contains
 
@@ -311,12 +308,96 @@ contains
 
   end subroutine add_couplings
 
+  !> Chains of constraints (a dof that one constraint eliminates is a retained term of another, as Abaqus allows
+  !> when the eliminating equation comes later: Analysis User's Guide "Linear constraint equations") resolved by
+  !> substitution, so that every row's masters are independent dofs; repeated masters are merged, zero weights
+  !> dropped. A row that comes back to its own slave (u_s = a u_s + ..., two equations that eliminate each other's
+  !> retained dofs) is solved for it, u_s = (...) / (1 - a); stat 2 where 1 - a vanishes (the equations are
+  !> dependent: no dof can be eliminated).
+  pure subroutine resolve_chains(cs, stat)
+    type(constraint_set_t), intent(inout) :: cs  !< constraints
+    integer, intent(out) :: stat                 !< 0 ok, 2 dependent constraints
+    integer, allocatable :: ptr(:), mdof(:)
+    real(dp), allocatable :: w(:)
+    real(dp) :: self
+    integer :: pass, c, i, j, r
+    logical :: changed
+    stat = 0
+    if (cs%n == 0) return
+    if (all(cs%of_dof(cs%mdof) == 0)) return
+    do pass = 1, 2 * cs%n + 2
+      changed = .false.
+      allocate (ptr(cs%n + 1), mdof(0), w(0))
+      ptr(1) = 1
+      do c = 1, cs%n
+        self = 0.0_dp
+        do i = cs%ptr(c), cs%ptr(c + 1) - 1
+          r = cs%of_dof(cs%mdof(i))
+          if (cs%mdof(i) == cs%slave(c)) then
+            self = self + cs%w(i)
+          else if (r == 0) then
+            call add_term(mdof, w, ptr(c), cs%mdof(i), cs%w(i))
+          else
+            changed = .true.
+            do j = cs%ptr(r), cs%ptr(r + 1) - 1
+              if (cs%mdof(j) == cs%slave(c)) then
+                self = self + cs%w(i) * cs%w(j)
+              else
+                call add_term(mdof, w, ptr(c), cs%mdof(j), cs%w(i) * cs%w(j))
+              end if
+            end do
+          end if
+        end do
+        if (self /= 0.0_dp) then
+          if (abs(1.0_dp - self) <= 1.0e-12_dp) then
+            stat = 2
+            return
+          end if
+          w(ptr(c):) = w(ptr(c):) / (1.0_dp - self)
+          changed = .true.
+        end if
+        ptr(c + 1) = size(mdof) + 1
+      end do
+      call move_alloc(ptr, cs%ptr)
+      call move_alloc(mdof, cs%mdof)
+      call move_alloc(w, cs%w)
+      if (.not. changed) return
+    end do
+    stat = 2
+  end subroutine resolve_chains
+
+  !> Term (dof, weight) added to the row that starts at mdof(start) (merged with the same dof already there).
+  pure subroutine add_term(mdof, w, start, dof, wt)
+    integer, allocatable, intent(inout) :: mdof(:)   !< masters of the rows built so far
+    real(dp), allocatable, intent(inout) :: w(:)     !< their weights
+    integer, intent(in) :: start                     !< first term of the row being built
+    integer, intent(in) :: dof                       !< master dof
+    real(dp), intent(in) :: wt                       !< its weight
+    integer :: n
+    if (wt == 0.0_dp) return
+    do n = start, size(mdof)
+      if (mdof(n) == dof) then
+        w(n) = w(n) + wt
+        return
+      end if
+    end do
+    mdof = [mdof, dof]
+    w = [w, wt]
+  end subroutine add_term
+
   !> used(master) for the masters of every constraint whose slave is used: such a dof carries the slave's stiffness
-  !> (a coupling's reference node, a node that ties nodes of elements) even when no element of its own holds it.
+  !> (a coupling's reference node, a node that ties nodes of elements) even when no element of its own holds it;
+  !> first used(slave) for a slave of no element whose masters all belong to elements (its motion is defined).
   pure subroutine constraints_mark_masters(cs, used)
     type(constraint_set_t), intent(in) :: cs  !< constraints
     logical, intent(inout) :: used(:)         !< (ndof) dofs of the analysis
     integer :: c
+    ! a slave of no element whose masters all belong to elements: held by its constraint
+    do c = 1, cs%n
+      if (cs%ptr(c + 1) > cs%ptr(c) .and. .not. used(cs%slave(c))) then
+        if (all(used(cs%mdof(cs%ptr(c):cs%ptr(c + 1) - 1)))) used(cs%slave(c)) = .true.
+      end if
+    end do
     do c = 1, cs%n
       if (used(cs%slave(c))) used(cs%mdof(cs%ptr(c):cs%ptr(c + 1) - 1)) = .true.
     end do

@@ -133,12 +133,26 @@ contains
     type(boundary_t) :: bc, empty_bc
     character(len=flen), allocatable :: f(:)
     integer :: i, n, id, iset, iamp, ir, istep
-    logical :: velocity, user
+    logical :: velocity, user, fixed
     character(len=:), allocatable :: v, word
-    call ctx_allow_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP', 'TYPE', 'USER'])
+    call ctx_allow_params(ctx, [character(len=12) :: 'AMPLITUDE', 'OP', 'TYPE', 'USER', 'FIXED'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     istep = ctx%istep
+    ! FIXED (history data, Keywords Reference *BOUNDARY): the dofs held at their values at the start of the step;
+    ! not with TYPE or USER (as documented) nor AMPLITUDE (nothing to scale); a magnitude on its lines is refused
+    fixed = deck_has_param(ctx%params, 'FIXED')
+    if (fixed) then
+      if (.not. ctx%in_step) then
+        call ctx_fail(ctx, ir, 'FIXED only inside a step (history data)')
+        return
+      end if
+      if (deck_has_param(ctx%params, 'TYPE') .or. deck_has_param(ctx%params, 'USER') .or. &
+          deck_has_param(ctx%params, 'AMPLITUDE')) then
+        call ctx_fail(ctx, ir, 'FIXED cannot be combined with TYPE, USER or AMPLITUDE')
+        return
+      end if
+    end if
     ! USER: the magnitudes come from the user subroutine DISP (history data only)
     user = deck_has_param(ctx%params, 'USER')
     if (user .and. .not. ctx%in_step) then
@@ -187,6 +201,7 @@ contains
       bc%amplitude = iamp
       bc%velocity = velocity
       bc%user = user
+      bc%fixed = fixed
       bc%pos = ctx_pos(ctx, i)
       if (n < 2) then
         call ctx_fail(ctx, i, 'expected: node or node set, first dof[, last dof[, value]] or a type (XSYMM, ...)')
@@ -248,6 +263,10 @@ contains
         end if
         if (n > 4) then
           call ctx_fail(ctx, i, 'too many fields')
+          return
+        end if
+        if (fixed .and. bc%value /= 0.0_dp) then
+          call ctx_fail(ctx, i, 'FIXED holds the dofs at their values at the start of the step: no magnitude')
           return
         end if
         if (bc%first_dof < 1 .or. bc%last_dof > 6 .or. bc%last_dof < bc%first_dof) then

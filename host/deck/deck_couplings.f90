@@ -8,7 +8,7 @@ module deck_couplings
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: coupling_t
   use deck_lists, only: itoa
-  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_surface, &
+  use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_surface, ctx_warn, &
     ctx_fail, ctx_pos, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, ctx_get_int, ctx_only_value
   implicit none
   private
@@ -157,15 +157,18 @@ contains
       end do
       if (ctx%ir_next == ctx%ir + 1) dofs = .true.
       c%dofs = dofs
-      if (.not. any(dofs(1:3))) then
+      if (kinematic .and. .not. any(dofs(1:3))) then
         call ctx_fail(ctx, ctx%ir, 'constrains no translation: the coupling nodes of a continuum surface have '// &
           'translations only')
         return
       end if
+      ! a distributing coupling: "Only rotational degrees of freedom can be released. All available translational
+      ! degrees of freedom are constrained" (Keywords Reference *DISTRIBUTING): so here, with a warning
       if (.not. kinematic .and. .not. all(dofs(1:3))) then
-        call ctx_fail(ctx, ctx%ir, 'a distributing coupling constrains every translation (only rotations may be '// &
-          'released)')
-        return
+        call ctx_warn(ctx, ctx%ir, 'a distributing coupling constrains every translation, as Abaqus does (only '// &
+          'rotations can be released): dofs 1..3 constrained')
+        dofs(1:3) = .true.
+        c%dofs = dofs
       end if
     end associate
   end subroutine read_coupling_kind

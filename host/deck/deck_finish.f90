@@ -19,27 +19,46 @@ contains
   !> Resolve ids and check the model read from the deck (stat = 2 with a message naming file:line on error).
   subroutine finish_model(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    integer :: maxid, i, k, id, ie, isec, iset, im, is, ib, iu
     logical, allocatable :: has_section(:)
-    type(source_pos_t) :: pos
-    type(boundary_t) :: bc
-    type(cload_t) :: cl
+    call check_model_nonempty(ctx)
+    if (ctx%stat == 0) call resolve_node_ids(ctx)
+    if (ctx%stat == 0) call resolve_element_ids(ctx)
+    if (ctx%stat == 0) call resolve_all_sets(ctx)
+    if (ctx%stat == 0) call resolve_model_conditions(ctx)
+    if (ctx%stat == 0) call resolve_step_conditions(ctx)
+    if (ctx%stat == 0) call resolve_orientations(ctx)
+    if (ctx%stat == 0) call resolve_transforms(ctx)
+    if (ctx%stat == 0) call resolve_monitor(ctx)
+    if (ctx%stat /= 0) return
+    call prepare_section_arrays(ctx%model, has_section)
+    call assign_sections(ctx, has_section)
+    if (ctx%stat == 0) call check_element_sections(ctx, has_section)
+    if (ctx%stat /= 0) return
+    call carry_field_requests(ctx%model)
+    if (ctx%stat == 0) call resolve_surfaces(ctx)
+    if (ctx%stat == 0) call resolve_dloads(ctx)
+    if (ctx%stat == 0) call finish_extras(ctx)
+    if (ctx%stat == 0) call warn_unprovided_outputs(ctx)
+  end subroutine finish_model
+
+  !> A model needs nodes, elements and a step.
+  subroutine check_model_nonempty(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    if (ctx%model%nnode == 0) then
+      call ctx_fail_kw(ctx, 1, '*NODE', 'the deck defines no nodes')
+    else if (ctx%model%nelem == 0) then
+      call ctx_fail_kw(ctx, 1, '*ELEMENT', 'the deck defines no elements')
+    else if (ctx%model%nstep == 0) then
+      call ctx_fail_kw(ctx, ctx%src%nrec, '*STEP', 'the deck defines no step')
+    end if
+  end subroutine check_model_nonempty
+
+  !> Node labels -> indices (node_index); a label defined twice is an error at its second *NODE line.
+  subroutine resolve_node_ids(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: i, id
     associate (model => ctx%model)
-      if (model%nnode == 0) then
-        call ctx_fail_kw(ctx, 1, '*NODE', 'the deck defines no nodes')
-        return
-      end if
-      if (model%nelem == 0) then
-        call ctx_fail_kw(ctx, 1, '*ELEMENT', 'the deck defines no elements')
-        return
-      end if
-      if (model%nstep == 0) then
-        call ctx_fail_kw(ctx, ctx%src%nrec, '*STEP', 'the deck defines no step')
-        return
-      end if
-      ! node ids
-      maxid = maxval(model%node_id(1:model%nnode))
-      allocate (model%node_index(maxid))
+      allocate (model%node_index(maxval(model%node_id(1:model%nnode))))
       model%node_index = 0
       do i = 1, model%nnode
         id = model%node_id(i)
@@ -53,9 +72,15 @@ contains
       end do
       model%node_id = model%node_id(1:model%nnode)
       model%x = model%x(:, 1:model%nnode)
-      ! element ids and connectivity
-      maxid = maxval(model%elem_id(1:model%nelem))
-      allocate (model%elem_index(maxid))
+    end associate
+  end subroutine resolve_node_ids
+
+  !> Element labels -> indices (elem_index) and the connectivity's node labels -> node indices.
+  subroutine resolve_element_ids(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: k, id, ie
+    associate (model => ctx%model)
+      allocate (model%elem_index(maxval(model%elem_id(1:model%nelem))))
       model%elem_index = 0
       do ie = 1, model%nelem
         id = model%elem_id(ie)
@@ -68,17 +93,15 @@ contains
         model%elem_index(id) = ie
         do k = model%conn_ptr(ie), model%conn_ptr(ie + 1) - 1
           id = ctx%conn_raw(k)
-          if (id <= 0 .or. id > size(model%node_index)) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//model_label_text(ctx%model, id, &
-              .true.))
-            return
+          if (id > 0 .and. id <= size(model%node_index)) then
+            if (model%node_index(id) /= 0) then
+              ctx%conn_raw(k) = model%node_index(id)
+              cycle
+            end if
           end if
-          if (model%node_index(id) == 0) then
-            call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//model_label_text(ctx%model, id, &
-              .true.))
-            return
-          end if
-          ctx%conn_raw(k) = model%node_index(id)
+          call ctx_fail_kw(ctx, ctx%elem_rec(ie), '*ELEMENT', 'undefined node '//model_label_text(ctx%model, id, &
+            .true.))
+          return
         end do
       end do
       model%conn = ctx%conn_raw(1:model%conn_ptr(model%nelem + 1) - 1)
@@ -86,18 +109,33 @@ contains
       model%elem_kind = model%elem_kind(1:model%nelem)
       model%elem_utype = model%elem_utype(1:model%nelem)
       model%conn_ptr = model%conn_ptr(1:model%nelem + 1)
-      ! sets: negative raw ids -> indices, duplicates removed
-      do iset = 1, model%n_nset
-        model%nsets(iset)%nodes = model%nsets(iset)%nodes(1:model%nsets(iset)%n)
-        call resolve_members(ctx, .true., iset)
-        if (ctx%stat /= 0) return
-      end do
-      do iset = 1, model%n_elset
-        model%elsets(iset)%elems = model%elsets(iset)%elems(1:model%elsets(iset)%n)
-        call resolve_members(ctx, .false., iset)
-        if (ctx%stat /= 0) return
-      end do
-      ! boundaries
+    end associate
+  end subroutine resolve_element_ids
+
+  !> Node and element sets: raw labels -> indices, duplicates removed.
+  subroutine resolve_all_sets(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: iset
+    do iset = 1, ctx%model%n_nset
+      ctx%model%nsets(iset)%nodes = ctx%model%nsets(iset)%nodes(1:ctx%model%nsets(iset)%n)
+      call resolve_members(ctx, .true., iset)
+      if (ctx%stat /= 0) return
+    end do
+    do iset = 1, ctx%model%n_elset
+      ctx%model%elsets(iset)%elems = ctx%model%elsets(iset)%elems(1:ctx%model%elsets(iset)%n)
+      call resolve_members(ctx, .false., iset)
+      if (ctx%stat /= 0) return
+    end do
+  end subroutine resolve_all_sets
+
+  !> Model-level node data: initial boundaries, *EQUATION terms, initial temperatures and field variables.
+  subroutine resolve_model_conditions(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: ib, k
+    type(boundary_t) :: bc
+    type(cload_t) :: cl
+    ! (each item is resolved as a copy: resolve_bc and resolve_cload also change ctx)
+    associate (model => ctx%model)
       do ib = 1, model%n_initial_bc
         bc = model%initial_bcs(ib)
         call resolve_bc(ctx, bc)
@@ -124,6 +162,17 @@ contains
         model%field_inits(ib) = cl
         if (ctx%stat /= 0) return
       end do
+    end associate
+  end subroutine resolve_model_conditions
+
+  !> Each step's boundaries, concentrated loads, temperatures and field variables; every step needs a procedure.
+  subroutine resolve_step_conditions(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: is, ib
+    type(boundary_t) :: bc
+    type(cload_t) :: cl
+    ! (each item is resolved as a copy: resolve_bc and resolve_cload also change ctx)
+    associate (model => ctx%model)
       do is = 1, model%nstep
         do ib = 1, model%steps(is)%nbc
           bc = model%steps(is)%bcs(ib)
@@ -156,37 +205,57 @@ contains
           return
         end if
       end do
-      call resolve_orientations(ctx)
-      if (ctx%stat /= 0) return
-      call resolve_transforms(ctx)
-      if (ctx%stat /= 0) return
-      if (model%monitor_node > 0) then
-        id = model%monitor_node
-        k = 0
-        if (id <= size(model%node_index)) k = model%node_index(id)
-        pos = model%monitor_pos
-        if (k == 0) then
-          call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
-          return
-        end if
-        if (model%monitor_dof > model%ndim) then
-          call ctx_fail_pos(ctx, pos, 'dof '//itoa(model%monitor_dof)//' does not exist in this '// &
-            itoa(model%ndim)//'D model')
-          return
-        end if
-        model%monitor_node = k
+    end associate
+  end subroutine resolve_step_conditions
+
+  !> The **LDFCZ monitor node: label -> index, its dof within the model's dimension.
+  subroutine resolve_monitor(ctx)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer :: id, k
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      if (model%monitor_node <= 0) return
+      id = model%monitor_node
+      k = 0
+      if (id <= size(model%node_index)) k = model%node_index(id)
+      pos = model%monitor_pos
+      if (k == 0) then
+        call ctx_fail_pos(ctx, pos, 'undefined node '//model_label_text(model, id, .true.))
+        return
       end if
-      ! sections
-      allocate (model%elem_section(model%nelem), has_section(model%nelem))
-      model%elem_section = 0
-      has_section = .false.
-      if (.not. allocated(model%elem_uelprop)) then
-        allocate (model%elem_uelprop(model%nelem))
-        model%elem_uelprop = 0
-      else
-        model%elem_uelprop = model%elem_uelprop(1:model%nelem)
-        if (size(model%elem_uelprop) < model%nelem) call grow_int(model%elem_uelprop, model%nelem)
+      if (model%monitor_dof > model%ndim) then
+        call ctx_fail_pos(ctx, pos, 'dof '//itoa(model%monitor_dof)//' does not exist in this '// &
+          itoa(model%ndim)//'D model')
+        return
       end if
+      model%monitor_node = k
+    end associate
+  end subroutine resolve_monitor
+
+  !> Per-element section and user-element property indices, sized to the model's elements (0: none yet).
+  pure subroutine prepare_section_arrays(model, has_section)
+    type(model_t), intent(inout) :: model                   !< the model
+    logical, allocatable, intent(out) :: has_section(:)     !< element has a section (all false)
+    allocate (model%elem_section(model%nelem), has_section(model%nelem))
+    model%elem_section = 0
+    has_section = .false.
+    if (.not. allocated(model%elem_uelprop)) then
+      allocate (model%elem_uelprop(model%nelem))
+      model%elem_uelprop = 0
+    else
+      model%elem_uelprop = model%elem_uelprop(1:model%nelem)
+      if (size(model%elem_uelprop) < model%nelem) call grow_int(model%elem_uelprop, model%nelem)
+    end if
+  end subroutine prepare_section_arrays
+
+  !> *SOLID SECTION: its element set, orientation and material resolved, and the section given to each element
+  !> of the set (one section per element; not to user elements).
+  subroutine assign_sections(ctx, has_section)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical, intent(inout) :: has_section(:)    !< element has a section
+    integer :: isec, iset, im, k
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
       do isec = 1, model%nsection
         pos = model%sections(isec)%pos
         associate (sec => model%sections(isec))
@@ -204,49 +273,81 @@ contains
               return
             end if
           end if
-          im = model_find_material(model, sec%material)
-          if (im == 0) then
-            call ctx_fail_pos(ctx, pos, 'undefined material '//trim(sec%material))
-            return
-          end if
-          if (.not. (model%materials(im)%has_elastic .or. model%materials(im)%has_user)) then
-            pos = model%materials(im)%pos
-            call ctx_fail_pos(ctx, pos, 'material '//trim(sec%material)//' has no *ELASTIC or *USER MATERIAL')
-            return
-          end if
-          if (model%materials(im)%has_elastic .and. model%materials(im)%has_user) then
-            pos = model%materials(im)%pos
-            call ctx_fail_pos(ctx, pos, 'material '//trim(sec%material)//' has both *ELASTIC and *USER MATERIAL')
-            return
-          end if
+          call section_material(ctx, isec, im)
+          if (ctx%stat /= 0) return
           do k = 1, size(model%elsets(iset)%elems)
-            ie = model%elsets(iset)%elems(k)
-            if (model%elem_kind(ie) == etype_user) then
-              call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
-                ' is a user element (use *UEL PROPERTY)')
-              return
-            end if
-            ! *ELASTIC, TYPE=LAMINA has no through-thickness constants: plane-stress elements, small strain
-            if (model%materials(im)%elastic_kind == elastic_lamina) then
-              if (.not. element_is_plane_stress(model%elem_kind(ie)) &
-                  .or. any(model%steps(1:model%nstep)%nlgeom)) then
-                call ctx_fail_pos(ctx, model%materials(im)%elastic_pos, 'TYPE=LAMINA (material '// &
-                  trim(model%materials(im)%given_name)//', element '// &
-                  model_label_text(model, model%elem_id(ie), .false.)//') needs plane-stress elements (CPS) '// &
-                  'without NLGEOM: its constants give no through-thickness stiffness (ENGINEERING CONSTANTS do)')
-                return
-              end if
-            end if
-            if (has_section(ie)) then
-              call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
-                ' has two sections')
-              return
-            end if
-            has_section(ie) = .true.
-            model%elem_section(ie) = isec
+            call give_section(ctx, isec, im, model%elsets(iset)%elems(k), has_section)
+            if (ctx%stat /= 0) return
           end do
         end associate
       end do
+    end associate
+  end subroutine assign_sections
+
+  !> The material of section isec: defined, and with exactly one of *ELASTIC and *USER MATERIAL.
+  subroutine section_material(ctx, isec, im)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: isec                 !< section index
+    integer, intent(out) :: im                  !< material index
+    type(source_pos_t) :: pos
+    associate (model => ctx%model, name => ctx%model%sections(isec)%material)
+      im = model_find_material(model, name)
+      if (im == 0) then
+        pos = model%sections(isec)%pos
+        call ctx_fail_pos(ctx, pos, 'undefined material '//trim(name))
+        return
+      end if
+      pos = model%materials(im)%pos
+      if (.not. (model%materials(im)%has_elastic .or. model%materials(im)%has_user)) then
+        call ctx_fail_pos(ctx, pos, 'material '//trim(name)//' has no *ELASTIC or *USER MATERIAL')
+      else if (model%materials(im)%has_elastic .and. model%materials(im)%has_user) then
+        call ctx_fail_pos(ctx, pos, 'material '//trim(name)//' has both *ELASTIC and *USER MATERIAL')
+      end if
+    end associate
+  end subroutine section_material
+
+  !> Element ie takes section isec (material im): not a user element, not already sectioned, and a LAMINA
+  !> material only on plane-stress elements without NLGEOM.
+  subroutine give_section(ctx, isec, im, ie, has_section)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: isec                 !< section index
+    integer, intent(in) :: im                   !< its material
+    integer, intent(in) :: ie                   !< element index
+    logical, intent(inout) :: has_section(:)    !< element has a section
+    type(source_pos_t) :: pos
+    associate (model => ctx%model)
+      pos = model%sections(isec)%pos
+      if (model%elem_kind(ie) == etype_user) then
+        call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
+          ' is a user element (use *UEL PROPERTY)')
+        return
+      end if
+      ! *ELASTIC, TYPE=LAMINA has no through-thickness constants: plane-stress elements, small strain
+      if (model%materials(im)%elastic_kind == elastic_lamina) then
+        if (.not. element_is_plane_stress(model%elem_kind(ie)) .or. any(model%steps(1:model%nstep)%nlgeom)) then
+          call ctx_fail_pos(ctx, model%materials(im)%elastic_pos, 'TYPE=LAMINA (material '// &
+            trim(model%materials(im)%given_name)//', element '// &
+            model_label_text(model, model%elem_id(ie), .false.)//') needs plane-stress elements (CPS) '// &
+            'without NLGEOM: its constants give no through-thickness stiffness (ENGINEERING CONSTANTS do)')
+          return
+        end if
+      end if
+      if (has_section(ie)) then
+        call ctx_fail_pos(ctx, pos, 'element '//model_label_text(model, model%elem_id(ie), .false.)// &
+          ' has two sections')
+        return
+      end if
+      has_section(ie) = .true.
+      model%elem_section(ie) = isec
+    end associate
+  end subroutine give_section
+
+  !> Every continuum element has a section; every user element with properties has its *UEL PROPERTY.
+  subroutine check_element_sections(ctx, has_section)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    logical, intent(in) :: has_section(:)       !< element has a section
+    integer :: ie, iu
+    associate (model => ctx%model)
       do ie = 1, model%nelem
         if (model%elem_kind(ie) == etype_user) then
           iu = model%elem_utype(ie)
@@ -263,13 +364,8 @@ contains
           return
         end if
       end do
-      call carry_field_requests(model)
-      if (ctx%stat == 0) call resolve_surfaces(ctx)
-      if (ctx%stat == 0) call resolve_dloads(ctx)
-      if (ctx%stat == 0) call finish_extras(ctx)
-      if (ctx%stat == 0) call warn_unprovided_outputs(ctx)
     end associate
-  end subroutine finish_model
+  end subroutine check_element_sections
 
   !> A warning, once per request line, for every output request that nothing in the model provides (output
   !> registry: e.g. SDV5 with materials of 3 state variables, S in a model of user elements only, SDV of user

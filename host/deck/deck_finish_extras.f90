@@ -132,7 +132,7 @@ contains
             if (model%ndim == 3 .and. any(c%dofs(4:6)) .and. .not. all(c%dofs(4:6))) then
               pos = c%kind_pos
               call ctx_fail_pos(ctx, pos, 'the rotations of a distributing coupling: all (4..6) or none (partial '// &
-                'rotational coupling is not supported)')
+                'rotational coupling is not supported; the translations are always coupled)')
               return
             end if
             if (model%ndim == 2 .and. .not. c%dofs(6)) cycle

@@ -166,6 +166,7 @@ module model_types
     integer :: amplitude = 0               !< amplitude index, 0 = default (ramp in a static step)
     logical :: velocity = .false.          !< TYPE=VELOCITY: value is a velocity (increment = v dt)
     logical :: user = .false.              !< USER: the value is what the user subroutine DISP returns
+    logical :: fixed = .false.             !< FIXED: held at the value the dof has at the start of the step
     type(source_pos_t) :: pos
   end type boundary_t
 

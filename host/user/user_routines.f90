@@ -166,17 +166,7 @@ contains
     integer, intent(in) :: log_unit                      !< where to echo the compile command (-1: nowhere)
     character(len=*), intent(in), optional :: compiler   !< Fortran compiler (default gfortran)
     character(len=*), intent(in), optional :: fflags     !< extra compiler options (default none)
-    character(len=:), allocatable :: lib, cmd, base, fc, incs, objs, file, obj, case_dir, rest, flags, runtime
-    integer :: estat, cstat, k, nfile
-    logical :: exists
-    type(c_funptr) :: f
-    procedure(uel_interface), pointer :: pu
-    procedure(umat_interface), pointer :: pm
-    procedure(uexternaldb_interface), pointer :: px
-    procedure(disp_interface), pointer :: pd
-
-    stat = 0
-    errmsg = ''
+    character(len=:), allocatable :: lib, fc, incs, objs, flags
     if (.not. allocated(r%uel_origin)) r%uel_origin = 'none'
     if (.not. allocated(r%umat_origin)) r%umat_origin = 'none'
     fc = 'gfortran'
@@ -185,18 +175,67 @@ contains
     end if
     flags = ''
     if (present(fflags)) flags = trim(fflags)
+    call prepare_includes(outdir, include_dir, incs, stat, errmsg)
+    if (stat == 0) call compile_user_files(source, outdir, fc, incs, flags, log_unit, objs, stat, errmsg)
+    if (stat == 0 .and. index(fc, 'flang') > 0) call add_flang_units(fc, outdir, objs, stat, errmsg)
+    if (stat /= 0) return
+    lib = user_library_path(source, outdir)
+    call link_user_library(lib, objs, fc, log_unit, stat, errmsg)
+    if (stat /= 0) return
+    r%handle = c_dlopen(lib//c_null_char, ior(rtld_lazy, rtld_global))
+    if (.not. c_associated(r%handle)) then
+      stat = 2
+      errmsg = '--user: dlopen failed: '//dl_error()
+      return
+    end if
+    call take_user_symbols(r, source)
+    if (r%uel_origin /= source .and. r%umat_origin /= source .and. .not. associated(r%disp)) then
+      stat = 2
+      errmsg = '--user: '//source//' defines none of SUBROUTINE UEL, UMAT and DISP'
+    end if
+  end subroutine user_routines_load
+
+  !> The -I options of a user compilation: ABA_PARAM.INC of include_dir, also under the names user files include
+  !> it by (public routines write include 'aba_param.inc'; Abaqus on Windows does not tell the cases apart).
+  subroutine prepare_includes(outdir, include_dir, incs, stat, errmsg)
+    character(len=*), intent(in) :: outdir               !< output directory
+    character(len=*), intent(in) :: include_dir          !< directory of ABA_PARAM.INC
+    character(len=:), allocatable, intent(out) :: incs   !< -I options (quoted directories)
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=:), allocatable :: case_dir
+    logical :: exists
+    stat = 0
+    errmsg = ''
+    incs = ''
     inquire (file=include_dir//'/ABA_PARAM.INC', exist=exists)
     if (.not. exists) then
       stat = 2
       errmsg = '--user: ABA_PARAM.INC not found in '//include_dir
       return
     end if
-    ! ABA_PARAM.INC also under the names user files include it by (public routines write include 'aba_param.inc';
-    ! Abaqus on Windows does not tell the cases apart)
     case_dir = outdir//'/ldfcz_user_include'
     call make_case_copies(include_dir//'/ABA_PARAM.INC', case_dir, stat, errmsg)
     if (stat /= 0) return
     incs = ' -I'''//case_dir//''' -I'''//include_dir//''''
+  end subroutine prepare_includes
+
+  !> Each file of the comma-separated list: a Fortran source compiled into outdir, an object or library taken as
+  !> it is; objs lists what goes into the library (quoted, space-separated).
+  subroutine compile_user_files(source, outdir, fc, incs, flags, log_unit, objs, stat, errmsg)
+    character(len=*), intent(in) :: source               !< user files, comma-separated
+    character(len=*), intent(in) :: outdir               !< output directory
+    character(len=*), intent(in) :: fc                   !< Fortran compiler
+    character(len=*), intent(in) :: incs                 !< -I options
+    character(len=*), intent(in) :: flags                !< the user's extra options
+    integer, intent(in) :: log_unit                      !< where to echo the compile command (-1: nowhere)
+    character(len=:), allocatable, intent(out) :: objs   !< objects to link
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=:), allocatable :: rest, file
+    integer :: k, nfile
+    stat = 0
+    errmsg = ''
     objs = ''
     nfile = 0
     rest = source
@@ -211,61 +250,98 @@ contains
       end if
       if (len(file) == 0) cycle
       nfile = nfile + 1
-      ! a name without its extension, as Abaqus takes user=NAME: the first of NAME.f, .for, .f90, .F, .o
-      if (len(user_file_path(file)) == 0) then
-        stat = 2
-        errmsg = '--user: file not found: '//file//' (nor '//file//'.f, .for, .f90, .F or .o)'
-        return
-      end if
-      file = user_file_path(file)
-      inquire (file=file//'/.', exist=exists)
-      if (exists) then
-        stat = 2
-        errmsg = '--user: '//file//' is a directory, not a Fortran or object file'
-        return
-      end if
-      k = index(file, '.', back=.true.)
-      if (k > 0) then
-        select case (file(k + 1:))
-        case ('o', 'a', 'so')
-          objs = objs//' '''//file//''''
-          cycle
-        end select
-      end if
-      k = index(file, '/', back=.true.)
-      base = file(k + 1:)
-      k = index(base, '.', back=.true.)
-      if (k > 1) base = base(1:k - 1)
-      obj = outdir//'/ldfcz_user_'//base//'.o'
-      cmd = user_source_compile_command(fc, file, obj, incs//' -I'''//dir_of(file)//'''', flags)
-      if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: compiling user routines: '//cmd
-      call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
-      if (cstat /= 0 .or. estat /= 0) then
-        stat = 2
-        errmsg = '--user: compilation of '//file//' failed (command: '//cmd//')'
-        return
-      end if
-      objs = objs//' '''//obj//''''
+      call compile_user_file(file, outdir, fc, incs, flags, log_unit, objs, stat, errmsg)
+      if (stat /= 0) return
     end do
     if (nfile == 0) then
       stat = 2
       errmsg = '--user: no file given'
+    end if
+  end subroutine compile_user_files
+
+  !> One user file: located as Abaqus takes user=NAME (a name without its extension: the first of NAME.f, .for,
+  !> .f90, .F, .o), compiled unless it is an object or library, and appended to objs.
+  subroutine compile_user_file(given, outdir, fc, incs, flags, log_unit, objs, stat, errmsg)
+    character(len=*), intent(in) :: given                !< the file as the user named it
+    character(len=*), intent(in) :: outdir               !< output directory
+    character(len=*), intent(in) :: fc                   !< Fortran compiler
+    character(len=*), intent(in) :: incs                 !< -I options
+    character(len=*), intent(in) :: flags                !< the user's extra options
+    integer, intent(in) :: log_unit                      !< where to echo the compile command (-1: nowhere)
+    character(len=:), allocatable, intent(inout) :: objs !< objects to link
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=:), allocatable :: file, base, obj, cmd
+    integer :: k, estat, cstat
+    logical :: exists
+    stat = 0
+    errmsg = ''
+    if (len(user_file_path(given)) == 0) then
+      stat = 2
+      errmsg = '--user: file not found: '//given//' (nor '//given//'.f, .for, .f90, .F or .o)'
       return
     end if
-    if (index(fc, 'flang') > 0) then
-      ! flang's run time has its own unit 7: a small routine of the same compiler connects it to JOB.msg
-      call write_flang_unit_opener(outdir//'/ldfcz_flang_units.f90', stat, errmsg)
-      if (stat /= 0) return
-      obj = outdir//'/ldfcz_flang_units.o'
-      cmd = user_source_compile_command(fc, outdir//'/ldfcz_flang_units.f90', obj, '', '')
-      call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
-      if (cstat /= 0 .or. estat /= 0) then
-        stat = 2
-        errmsg = '--user: compilation failed (command: '//cmd//')'
-        return
-      end if
-      objs = objs//' '''//obj//''''
+    file = user_file_path(given)
+    inquire (file=file//'/.', exist=exists)
+    if (exists) then
+      stat = 2
+      errmsg = '--user: '//file//' is a directory, not a Fortran or object file'
+      return
     end if
+    k = index(file, '.', back=.true.)
+    if (k > 0) then
+      select case (file(k + 1:))
+      case ('o', 'a', 'so')
+        objs = objs//' '''//file//''''
+        return
+      end select
+    end if
+    k = index(file, '/', back=.true.)
+    base = file(k + 1:)
+    k = index(base, '.', back=.true.)
+    if (k > 1) base = base(1:k - 1)
+    obj = outdir//'/ldfcz_user_'//base//'.o'
+    cmd = user_source_compile_command(fc, file, obj, incs//' -I'''//dir_of(file)//'''', flags)
+    if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: compiling user routines: '//cmd
+    call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
+    if (cstat /= 0 .or. estat /= 0) then
+      stat = 2
+      errmsg = '--user: compilation of '//file//' failed (command: '//cmd//')'
+      return
+    end if
+    objs = objs//' '''//obj//''''
+  end subroutine compile_user_file
+
+  !> flang's run time has its own unit 7: a small routine of the same compiler connects it to JOB.msg.
+  subroutine add_flang_units(fc, outdir, objs, stat, errmsg)
+    character(len=*), intent(in) :: fc                   !< Fortran compiler (an LLVM flang)
+    character(len=*), intent(in) :: outdir               !< output directory
+    character(len=:), allocatable, intent(inout) :: objs !< objects to link
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=:), allocatable :: obj, cmd
+    integer :: estat, cstat
+    call write_flang_unit_opener(outdir//'/ldfcz_flang_units.f90', stat, errmsg)
+    if (stat /= 0) return
+    obj = outdir//'/ldfcz_flang_units.o'
+    cmd = user_source_compile_command(fc, outdir//'/ldfcz_flang_units.f90', obj, '', '')
+    call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
+    if (cstat /= 0 .or. estat /= 0) then
+      stat = 2
+      errmsg = '--user: compilation failed (command: '//cmd//')'
+      return
+    end if
+    objs = objs//' '''//obj//''''
+  end subroutine add_flang_units
+
+  !> The shared library's path: outdir/libldfcz_user_BASE.so, BASE the first file's name without directory and
+  !> extension (./ before a relative path, for dlopen).
+  pure function user_library_path(source, outdir) result(lib)
+    character(len=*), intent(in) :: source  !< user files, comma-separated
+    character(len=*), intent(in) :: outdir  !< output directory
+    character(len=:), allocatable :: lib
+    character(len=:), allocatable :: base
+    integer :: k
     k = index(source, ',')
     base = source
     if (k > 1) base = source(1:k - 1)
@@ -275,8 +351,21 @@ contains
     if (k > 1) base = base(1:k - 1)
     lib = outdir//'/libldfcz_user_'//base//'.so'
     if (lib(1:1) /= '/') lib = './'//lib
-    ! linked by gfortran, the host's compiler. Files compiled by LLVM flang also need flang's run-time library
-    ! (Fortran I/O, intrinsics): its static archives, found beside the compiler, go into the library
+  end function user_library_path
+
+  !> Links the objects into lib with gfortran, the host's compiler. Files compiled by LLVM flang also need flang's
+  !> run-time library (Fortran I/O, intrinsics): its static archives, found beside the compiler, go into it.
+  subroutine link_user_library(lib, objs, fc, log_unit, stat, errmsg)
+    character(len=*), intent(in) :: lib                  !< shared library to write
+    character(len=*), intent(in) :: objs                 !< objects (quoted, space-separated)
+    character(len=*), intent(in) :: fc                   !< Fortran compiler of the user files
+    integer, intent(in) :: log_unit                      !< where to echo the link command (-1: nowhere)
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=:), allocatable :: cmd, runtime
+    integer :: estat, cstat
+    stat = 0
+    errmsg = ''
     runtime = ''
     if (index(fc, 'flang') > 0) runtime = ' "$(dirname "$(readlink -f "$(command -v '//fc//')")")/../lib/'// &
       'libFortranRuntime.a" "$(dirname "$(readlink -f "$(command -v '//fc//')")")/../lib/libFortranDecimal.a"'// &
@@ -287,14 +376,19 @@ contains
     if (cstat /= 0 .or. estat /= 0) then
       stat = 2
       errmsg = '--user: linking the user routines failed (command: '//cmd//')'
-      return
     end if
-    r%handle = c_dlopen(lib//c_null_char, ior(rtld_lazy, rtld_global))
-    if (.not. c_associated(r%handle)) then
-      stat = 2
-      errmsg = '--user: dlopen failed: '//dl_error()
-      return
-    end if
+  end subroutine link_user_library
+
+  !> The UEL, UMAT, UEXTERNALDB and DISP that the loaded library defines replace r's (UEL and UMAT marked as
+  !> coming from source).
+  subroutine take_user_symbols(r, source)
+    type(user_routines_t), intent(inout) :: r  !< routines (r%handle: the loaded library)
+    character(len=*), intent(in) :: source     !< user files, comma-separated
+    type(c_funptr) :: f
+    procedure(uel_interface), pointer :: pu
+    procedure(umat_interface), pointer :: pm
+    procedure(uexternaldb_interface), pointer :: px
+    procedure(disp_interface), pointer :: pd
     f = c_dlsym(r%handle, 'uel_'//c_null_char)
     if (c_associated(f)) then
       call c_f_procpointer(f, pu)
@@ -317,11 +411,7 @@ contains
       call c_f_procpointer(f, pd)
       r%disp => pd
     end if
-    if (r%uel_origin /= source .and. r%umat_origin /= source .and. .not. associated(r%disp)) then
-      stat = 2
-      errmsg = '--user: '//source//' defines none of SUBROUTINE UEL, UMAT and DISP'
-    end if
-  end subroutine user_routines_load
+  end subroutine take_user_symbols
 
   !> Connects unit 7 of the user library's own Fortran run time (a library compiled by LLVM flang) to msg_path
   !> (JOB.msg, which the host has created); nothing for the built-in routines or a gfortran-compiled library, whose

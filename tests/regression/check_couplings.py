@@ -27,13 +27,23 @@ Cases:
                 inner nodes of the 2 x 2 face), from the printed tip displacements: within 1e-9 of |u_R|.
   distributing_twin  *DISTRIBUTING 1, 3 (translations), R at the face's centre, force F at R, against the twin deck
                 with the same three constraints as *EQUATION (sum w_n u_n,i - u_R,i = 0, a tip node's dof first):
-                every displacement and root reaction within 1e-9.
+                every displacement and root reaction within 1e-9; *DISTRIBUTING 1, 2 runs as 1, 3 with a warning
+                (Abaqus constrains every translation of a distributing coupling; 1e-12).
   kinematic_2d  a CPE4 cantilever 20 x 2 (L = 10, h = 1), *KINEMATIC with R at (L + 1, 0.8), force (0.2, -0.5) and
                 a moment 0.3 (*CLOAD dof 6) at R: the root reactions' sum and moment equal -F and -(x_R x F + M)
                 (1e-9), the tip edge rigid (1e-9).
   equation_sets *EQUATION over node sets: two unsorted sets written in reverse label order, a sorted set written
                 out of order and a single node in every equation, against the same equations written node by
                 node: identical results (1e-12); sets of different sizes are refused naming the line of the term.
+  equation_chain  a chain of *EQUATIONs (u_17,2 = u_16,2 written before u_16,2 = u_12,2: the dof the second one
+                eliminates is a retained term of the first, as Abaqus allows) against the twin deck that writes both
+                against node 12 directly: identical results (1e-12: both solve the same reduced system; the chain
+                is resolved by substitution with weights 1); two equations that eliminate each other's retained
+                dofs, u17 = (u16 + u12)/2 and u16 = (u17 + u12)/2, against the same twin (1e-12: the row that
+                comes back to its own slave is solved for it); two equations that are one (u17 = u16 twice, in
+                both orders) refused as dependent; a node of no element defined by an equation (midway between
+                two nodes) and loaded: the force reaches the two nodes half each (against the twin that loads them
+                so, 1e-12), and a one-term equation holds its dof at zero (against *BOUNDARY).
 """
 import argparse
 import csv
@@ -316,6 +326,18 @@ def case_distributing_twin(exe, out):
     a = run(exe, out, "distributing_translations", dist)[-1]
     b = run(exe, out, "distributing_equation_twin", "\n".join(lines + beam.prints() + ["*END STEP"]) + "\n")[-1]
     compare_rows(a, b, 1e-9)
+    # dofs 1, 2 only: Abaqus constrains every translation of a distributing coupling anyway (a warning here)
+    text = coupling_deck(beam, ref, ["*DISTRIBUTING", "1, 2"], loads)
+    path = os.path.join(out, "distributing_released.inp")
+    with open(path, "w") as f:
+        f.write(text)
+    r = subprocess.run([exe, "-q", "--out", os.path.join(out, "distributing_released"), path], capture_output=True,
+                       text=True)
+    if r.returncode != 0 or "constrains every translation" not in r.stderr:
+        fail("*DISTRIBUTING 1, 2: expected a run with a warning, got %d: %s" % (r.returncode, r.stderr[-1000:]))
+    with open(os.path.join(out, "distributing_released", "distributing_released.csv")) as f:
+        c = list(csv.DictReader(f))[-1]
+    compare_rows(c, a, 1e-12)
 
 
 def case_kinematic_2d(exe, out):
@@ -392,6 +414,45 @@ def case_equation_sets(exe, out):
     print("sets of different sizes refused: " + msg.strip().splitlines()[-1])
 
 
+def run_text(exe, out, job, text):
+    return run(exe, out, job, text)[-1]
+
+
+def case_equation_chain(exe, out):
+    b1 = [11, 12, 13, 14, 15, 16, 17, 18]
+    pairs1 = [(2, 11), (3, 14), (6, 15), (7, 18)]
+    sets1 = ["*NSET, NSET=AF\n7, 2, 6, 3"]
+    chain = node_equations(pairs1) + ["2\n17, 2, 1., 16, 2, -1.", "2\n16, 2, 1., 12, 2, -1."]
+    twin = node_equations(pairs1) + ["2\n17, 2, 1., 12, 2, -1.", "2\n16, 2, 1., 12, 2, -1."]
+    a = run(exe, out, "equation_chain", equation_block(b1, chain, sets1))[-1]
+    b = run(exe, out, "equation_chain_twin", equation_block(b1, twin, sets1))[-1]
+    compare_rows(a, b, 1e-12)
+    check("chained node 17 moves with node 12 in y", float(a["N17.U2"]), float(a["N12.U2"]),
+          1e-12 * abs(float(a["N12.U2"])))
+    # each eliminates a retained dof of the other: u17 = (u16 + u12) / 2, u16 = (u17 + u12) / 2, so u16 = u17 = u12
+    mutual = node_equations(pairs1) + ["3\n17, 2, 1., 16, 2, -0.5, 12, 2, -0.5",
+                                       "3\n16, 2, 1., 17, 2, -0.5, 12, 2, -0.5"]
+    c = run(exe, out, "equation_mutual", equation_block(b1, mutual, sets1))[-1]
+    compare_rows(c, b, 1e-12)
+    loop = node_equations(pairs1) + ["2\n17, 2, 1., 16, 2, -1.", "2\n16, 2, 1., 17, 2, -1."]
+    msg = run(exe, out, "equation_loop", equation_block(b1, loop, sets1), expect=2)
+    if "dependent" not in msg:
+        fail("two equations that are one: the message must say they are dependent, got: " + msg)
+    print("dependent equations refused: " + msg.strip().splitlines()[-1])
+    # a node of no element whose motion an equation defines (u99 = (u2 + u3) / 2, node 99 midway between them) and
+    # carrying a force: the force reaches nodes 2 and 3 half each (the twin loads them so); a one-term equation
+    # holds its dof at zero (the twin prescribes it with *BOUNDARY)
+    mid = ["*NODE\n99, 1., 0.5, 0."] + sets1
+    orphan = node_equations(pairs1) + ["*EQUATION"] + ["3\n99, %d, 1., 2, %d, -0.5, 3, %d, -0.5" % (d, d, d)
+                                                       for d in (1, 2, 3)] + ["1\n16, 3, 1."]
+    text = equation_block(b1, orphan, mid).replace("*END STEP", "*CLOAD\n99, 2, 0.3\n*END STEP")
+    twin = node_equations(pairs1) + ["*BOUNDARY\n16, 3, 3"]
+    ttext = equation_block(b1, twin, mid).replace("*END STEP", "*CLOAD\n2, 2, 0.15\n3, 2, 0.15\n*END STEP")
+    d = run_text(exe, out, "equation_orphan", text)
+    e = run_text(exe, out, "equation_orphan_twin", ttext)
+    compare_rows(d, e, 1e-12)
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--exe", required=True)
@@ -401,7 +462,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     cases = {"kinematic": case_kinematic, "kinematic_twin": case_kinematic_twin, "distributing": case_distributing,
              "distributing_twin": case_distributing_twin, "kinematic_2d": case_kinematic_2d,
-             "equation_sets": case_equation_sets}
+             "equation_sets": case_equation_sets, "equation_chain": case_equation_chain}
     if a.case not in cases:
         fail("unknown case " + a.case)
     cases[a.case](a.exe, a.out)

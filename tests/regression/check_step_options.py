@@ -29,6 +29,11 @@ Cases (decks written into DIR):
             times the local columns (GLOBAL=NO, the default) within 1e-12, U the VTU frame's global U (1e-8:
             the frame's 9 digits), RF global of the prescribed local dof; GLOBAL=YES on a set without
             transformed nodes keeps the plain column names and values.
+  boundary_fixed  *BOUNDARY, FIXED (Keywords Reference *BOUNDARY: the dofs held at their values at the start of
+            the step): the bar of model_change without bar 2 (k = 1000) loaded by F = 10 in step 1 (u = 0.01), its
+            top held by FIXED in step 2 while the force rises to 14: u stays 0.01 in every increment (1e-12: the
+            held value is the converged one) and the top's reaction is 10 - 14 = -4 (1e-9 of 10); a magnitude
+            on a FIXED line is refused naming its line.
 """
 import argparse
 import csv
@@ -215,6 +220,33 @@ def case_node_print_global(exe, out):
               float(r["LOADED.U%d.GLOBAL" % (i + 1)]), 1e-8 * max(abs(float(x)) for x in u[6]))
 
 
+def case_boundary_fixed(exe, out):
+    step = ["*STATIC", "0.5, 1."]
+    prints = ["*NODE PRINT, NSET=TOP", "U3, RF3"]
+    deck = bars(False) + ["*STEP"] + step + ["*CLOAD", "TOP, 3, 10."] + prints + ["*END STEP"]
+    deck += ["*STEP"] + step + ["*BOUNDARY, FIXED", "TOP, 3, 3", "*CLOAD", "TOP, 3, 14.", "*END STEP"]
+    rows = run(exe, out, "boundary_fixed", deck)
+    for r in rows:
+        if int(r["step"]) != 2:
+            continue
+        check("step 2 time %s: U3 held" % r["step_time"], float(r["TOP.U3"]), 0.01, 1e-12)
+    last = rows[-1]
+    check("reaction at the held top", float(last["TOP.RF3"]), -4.0, 1e-9 * 10.0)
+    print("step 2: U3 %.15g held, RF3 %.15g (10 - 14)" % (float(last["TOP.U3"]), float(last["TOP.RF3"])))
+    bad = deck[:]
+    k = bad.index("*BOUNDARY, FIXED")
+    bad[k + 1] = "TOP, 3, 3, 0.5"
+    path = os.path.join(out, "boundary_fixed_value.inp")
+    with open(path, "w") as f:
+        f.write("\n".join(bad) + "\n")
+    r = subprocess.run([exe, "-q", "--out", os.path.join(out, "boundary_fixed_value"), path], capture_output=True,
+                       text=True)
+    where = "boundary_fixed_value.inp:%d: *BOUNDARY" % ("\n".join(bad).split("\n").index("TOP, 3, 3, 0.5") + 1)
+    if r.returncode != 2 or where not in r.stderr:
+        fail("a magnitude with FIXED: expected exit 2 naming %s, got %d: %s" % (where, r.returncode, r.stderr))
+    print("a magnitude with FIXED refused: " + r.stderr.strip().splitlines()[-1])
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--exe", required=True)
@@ -223,7 +255,8 @@ def main():
     a = p.parse_args()
     os.makedirs(a.out, exist_ok=True)
     cases = {"model_change": case_model_change, "model_change_nlgeom": case_model_change_nlgeom,
-             "time_points": case_time_points, "node_print_global": case_node_print_global}
+             "time_points": case_time_points, "node_print_global": case_node_print_global,
+             "boundary_fixed": case_boundary_fixed}
     if a.case not in cases:
         fail("unknown case " + a.case)
     cases[a.case](a.exe, a.out)
