@@ -615,7 +615,8 @@ contains
     if (an%work%stop%asked) call parallel_lowest(an%par, an%work%stop%elem, an%work%stop%text, an%work%stop%rank)
   end subroutine reduce_over_processes
 
-  !> One element: UEL through the procedure pointer, or the continuum element with its material.
+  !> One element: UEL through the procedure pointer, or the continuum element with its material; then, at nodes
+  !> with a *TRANSFORM, back to the system components.
   subroutine element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
     type(analysis_t), intent(inout) :: an
     type(model_t), intent(in) :: model
@@ -626,11 +627,38 @@ contains
     real(dp), intent(inout) :: pnewdt
     integer, intent(out) :: stat
     character(len=*), intent(out) :: msg
+    if (model%elem_kind(ie) == etype_user) then
+      call user_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    else
+      call continuum_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    end if
+    if (an%nr%elem_has(ie)) then
+      ! back to the system components of the transformed nodes (T_e^T f, T_e^T K T_e)
+      associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
+        call element_to_local(an%nr, nodes, fel)
+        if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
+          an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+        if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
+      end associate
+    end if
+  end subroutine element_compute
+
+  !> A user element: the UEL through the procedure pointer, with the Abaqus arguments (docs/conventions.md).
+  subroutine user_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    type(analysis_t), intent(inout) :: an
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: ie, n
+    type(increment_t), intent(in) :: inc
+    logical, intent(in) :: want_k
+    real(dp), intent(out) :: fel(n), ke(n, n)
+    real(dp), intent(inout) :: pnewdt
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: msg
     integer :: nn, a, iu, ip, mcrd, nsv, nf, nd
-    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8)
-    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho
+    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), energy(8)
+    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1)
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
-    integer :: jdltyp(mdload, 1), lflags(5), ndload, im
+    integer :: jdltyp(mdload, 1), lflags(5), ndload
     integer, allocatable :: jprops(:)
     character(len=16) :: b
     integer :: kstep, kinc
@@ -654,111 +682,151 @@ contains
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ue)
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(:, 1))
     end if
-    if (model%elem_kind(ie) == etype_user) then
-      iu = model%elem_utype(ie)
-      mcrd = model%utypes(iu)%mcrd
-      nf = model%nfield
-      allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
-      do a = 1, nn
-        xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
-      end do
-      ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
-      ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
-      do a = 1, nn
-        nd = model%conn(model%conn_ptr(ie) + a - 1)
-        predef(1, 1, a) = an%work%temp_end(nd)
-        predef(2, 1, a) = predef(1, 1, a) - an%state%temp_start(nd)
-        predef(1, 2:1 + nf, a) = an%work%field_end((nd - 1) * nf + 1:nd * nf)
-        predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%state%field_start((nd - 1) * nf + 1:nd * nf)
-      end do
-      ip = model%elem_uelprop(ie)
-      if (ip > 0) then
-        props = model%uelprops(ip)%props
-        jprops = model%uelprops(ip)%jprops
-      else
-        allocate (props(0), jprops(0))
-      end if
-      if (size(props) == 0) props = [0.0_dp]
-      if (size(jprops) == 0) jprops = [0]
-      nsv = model%utypes(iu)%nsvars
-      ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
-      sv = an%state%conv(ie)%svars
-      if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
-      energy = an%state%conv(ie)%energy
-      rhs = 0.0_dp
-      ke = 0.0_dp
-      v = 0.0_dp
-      acc = 0.0_dp
-      params = 0.0_dp
-      ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
-      ! DDLMAG(k,1) its increment (Abaqus UEL interface)
-      call dload_uel_arrays(an%state%loads%dload, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
-        ddlmag(:, 1))
-      ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
-      ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
-      ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
-      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
-      call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
-        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
-        adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
-      fel = -rhs(:, 1)
-      if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
-        write (b, '(i0)') model%elem_id(ie)
-        stat = 1
-        msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
-        return
-      end if
-      if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
-      an%work%trial(ie)%energy = energy
-      ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
-      if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+    iu = model%elem_utype(ie)
+    mcrd = model%utypes(iu)%mcrd
+    nf = model%nfield
+    allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
+    do a = 1, nn
+      xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
+    end do
+    ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
+    ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
+    do a = 1, nn
+      nd = model%conn(model%conn_ptr(ie) + a - 1)
+      predef(1, 1, a) = an%work%temp_end(nd)
+      predef(2, 1, a) = predef(1, 1, a) - an%state%temp_start(nd)
+      predef(1, 2:1 + nf, a) = an%work%field_end((nd - 1) * nf + 1:nd * nf)
+      predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%state%field_start((nd - 1) * nf + 1:nd * nf)
+    end do
+    ip = model%elem_uelprop(ie)
+    if (ip > 0) then
+      props = model%uelprops(ip)%props
+      jprops = model%uelprops(ip)%jprops
     else
-      do a = 1, nn
-        coords(1:an%ndim, a) = model%x(1:an%ndim, model%conn(model%conn_ptr(ie) + a - 1))
-      end do
-      associate (st => an%work%trial(ie), cv => an%state%conv(ie))
-        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
+      allocate (props(0), jprops(0))
+    end if
+    if (size(props) == 0) props = [0.0_dp]
+    if (size(jprops) == 0) jprops = [0]
+    nsv = model%utypes(iu)%nsvars
+    ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
+    sv = an%state%conv(ie)%svars
+    if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
+    energy = an%state%conv(ie)%energy
+    rhs = 0.0_dp
+    ke = 0.0_dp
+    v = 0.0_dp
+    acc = 0.0_dp
+    params = 0.0_dp
+    ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
+    ! DDLMAG(k,1) its increment (Abaqus UEL interface)
+    call dload_uel_arrays(an%state%loads%dload, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
+      ddlmag(:, 1))
+    ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
+    ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
+    ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
+    lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
+    call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
+      ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
+      adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
+    fel = -rhs(:, 1)
+    if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
+      write (b, '(i0)') model%elem_id(ie)
+      stat = 1
+      msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
+      return
+    end if
+    if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
+    an%work%trial(ie)%energy = energy
+    ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
+    if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+  end subroutine user_element_compute
+
+  !> A continuum element (solid_element_compute) with its section's material, and its distributed loads. Fixed-size
+  !> work arrays (at most 20 nodes, 60 dofs): no heap allocation per call.
+  subroutine continuum_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    type(analysis_t), intent(inout) :: an
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: ie, n
+    type(increment_t), intent(in) :: inc
+    logical, intent(in) :: want_k
+    real(dp), intent(out) :: fel(n), ke(n, n)
+    real(dp), intent(inout) :: pnewdt
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: msg
+    integer, parameter :: mnode = 20, mdof = 3 * mnode
+    integer :: nn, a, nd, im
+    real(dp) :: ue(mdof), due(mdof), coords(3, mnode), t0(mnode), dtn(mnode), e2(2), fl(mdof), kl(mdof, mdof), rho
+    real(dp) :: no_fields(0, mnode)
+    real(dp), allocatable :: fld0(:, :), dfld(:, :)
+    character(len=16) :: b
+    integer :: kstep, kinc
+    real(dp) :: time(2), dtime
+    logical :: nlgeom
+
+    kstep = inc%step
+    kinc = inc%kinc
+    time = increment_time(inc)
+    dtime = inc%dt
+    nlgeom = inc%nlgeom
+    stat = 0
+    msg = ''
+    nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+    ue(1:n) = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    due(1:n) = ue(1:n) - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    if (an%nr%elem_has(ie)) then
+      ! *TRANSFORM: the element works in global components
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ue(1:n))
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(1:n))
+    end if
+    do a = 1, nn
+      nd = model%conn(model%conn_ptr(ie) + a - 1)
+      coords(1:an%ndim, a) = model%x(1:an%ndim, nd)
+      t0(a) = an%state%temp_start(nd)
+      dtn(a) = an%work%temp_end(nd) - an%state%temp_start(nd)
+    end do
+    if (model%nfield > 0) then
+      fld0 = element_fields(an%state%field_start)
+      dfld = element_fields(an%work%field_end) - fld0
+    end if
+    associate (st => an%work%trial(ie), cv => an%state%conv(ie))
+      if (model%nfield > 0) then
+        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
           an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
           model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
-          temp_nodes=an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
-          dtemp_nodes=an%work%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
-          an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t, &
-          field_nodes=element_fields(an%state%field_start), dfield_nodes=element_fields(an%work%field_end) - &
-          element_fields(an%state%field_start))
-        st%energy = 0.0_dp
-        st%energy(2) = e2(1)
-        st%energy(4) = e2(2)
-      end associate
-      if (stat /= 0) then
-        ! the element's own message names the element already; say which routine it came from
-        write (b, '(i0)') model%elem_id(ie)
-        if (index(msg, 'element '//trim(b)//':') == 1) msg = msg(len('element '//trim(b)//':') + 2:)
-        msg = 'element '//trim(b)//' ('//trim(merge('UMAT    ', '*ELASTIC', &
-          an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
-        stat = 1
+          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), temp_nodes=t0(1:nn), &
+          dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fld0, dfield_nodes=dfld)
+      else
+        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
+          an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+          model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), temp_nodes=t0(1:nn), &
+          dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=no_fields(:, 1:nn), &
+          dfield_nodes=no_fields(:, 1:nn))
       end if
-      if (stat == 0 .and. dload_has(an%state%loads%dload, ie)) then
-        ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
-        im = model%elem_section(ie)
-        rho = 0.0_dp
-        if (im > 0) rho = model_density(model, im)
-        associate (g => an%geo(an%elem_geo(ie)))
-          call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue, nlgeom, &
-            g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, fl, kl)
-        end associate
-        an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
-        if (want_k) ke = ke + kl
-      end if
+      st%energy = 0.0_dp
+      st%energy(2) = e2(1)
+      st%energy(4) = e2(2)
+    end associate
+    if (stat /= 0) then
+      ! the element's own message names the element already; say which routine it came from
+      write (b, '(i0)') model%elem_id(ie)
+      if (index(msg, 'element '//trim(b)//':') == 1) msg = msg(len('element '//trim(b)//':') + 2:)
+      msg = 'element '//trim(b)//' ('//trim(merge('UMAT    ', '*ELASTIC', &
+        an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
+      stat = 1
     end if
-    if (an%nr%elem_has(ie)) then
-      ! back to the system components of the transformed nodes (T_e^T f, T_e^T K T_e)
-      associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
-        call element_to_local(an%nr, nodes, fel)
-        if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
-          an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-        if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
+    if (stat == 0 .and. dload_has(an%state%loads%dload, ie)) then
+      ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
+      im = model%elem_section(ie)
+      rho = 0.0_dp
+      if (im > 0) rho = model_density(model, im)
+      associate (g => an%geo(an%elem_geo(ie)))
+        call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue(1:n), &
+          nlgeom, g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, &
+          fl(1:n), kl(1:n, 1:n))
       end associate
+      an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl(1:n)
+      if (want_k) ke = ke + kl(1:n, 1:n)
     end if
 
   contains
@@ -773,7 +841,7 @@ contains
         fe(:, b) = v((m - 1) * model%nfield + 1:m * model%nfield)
       end do
     end function element_fields
-  end subroutine element_compute
+  end subroutine continuum_element_compute
 
   !> Local material axes at the integration points of the elements whose section has an *ORIENTATION (the points'
   !> reference coordinates for CYLINDRICAL). A plane element's axes must keep local 3 along z.
