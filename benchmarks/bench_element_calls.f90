@@ -1,19 +1,22 @@
 !> Time per call of the continuum element routine (host/elements: solid_element_compute) on one distorted C3D8
 !> under NLGEOM, with the built-in *ELASTIC and with the Leonov UMAT (umat/umat.f, Table 1 properties):
-!>   bench_element_calls [N]     (N calls of each case; default 2*10^5)
-!> Each case twice: by the generic path (solid_element_compute's generic_only) and by the type's fixed-size kernel
-!> (solid_c3d8.f90), which must give the same fingerprint. Cases: *ELASTIC with the tangent and forces only; Leonov at an elastic increment (the UMAT's fast path) and at a
-!> plastic one (the return), with the tangent. The element is the unit cube with its nodes moved by up to 0.1
-!> (a general hexahedron: every integration point differs), deformed homogeneously from F_n = I + small shear to
-!> F_n+1 (elastic: 1e-4 more; plastic: shear 0.1 and stretch 1.02 from Be~_12 = 0.05, dt = 0.5 s, as
-!> bench_leonov_calls). Prints microseconds per call (CPU time), the floating-point operations per call of the
-!> fixed-size C3D8 path counted analytically (docs/performance.md "The C3D8 kernel": element_flops below) and the
-!> rate they give, and a checksum of the forces, tangents and stresses (two builds compare for speed and results).
+!>   bench_element_calls [N]     (N calls of each case, N/5 of the plastic one; default 2*10^5)
+!> Cases: *ELASTIC with the tangent and forces only; Leonov at an elastic increment (the UMAT's elastic fast path)
+!> and at a plastic one (the return), with the tangent. Each case three ways: the generic path (generic_only), the
+!> type's fixed-size kernel (solid_c3d8.f90) with the whole reference data (geo), and the kernel with the compact
+!> reference data the host keeps for a C3D8 under NLGEOM (geo_compact): the three must give the same fingerprint.
+!> The element is the unit cube with its nodes moved by up to 0.08 (every integration point differs), deformed
+!> homogeneously from F_n = I + small shear to F_n+1 (elastic: 1e-4 more; plastic: shear 0.1 and stretch 1.02 from
+!> Be~_12 = 0.05, dt = 0.5 s, as bench_leonov_calls). Prints microseconds per call (CPU time), the floating-point
+!> operations per call of the kernel counted by hand (element_flops below; docs/performance.md "The C3D8 kernel")
+!> and the rate they give (the same count for the three ways: it is the work of the formulation), a checksum of the
+!> forces, tangents and stresses over the calls and a fingerprint of the bits of the last call's outputs (two builds
+!> or two ways compare for speed and results: equal fingerprints, identical outputs).
 program bench_element_calls
   use, intrinsic :: iso_fortran_env, only: int64
   use ldfcz_kinds, only: dp
   use solid_element, only: solid_material_t, solid_element_compute, solid_geometry_t, solid_element_geometry, &
-    SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, umat_interface
+    solid_compact_geometry, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, umat_interface
   use leonov_parameters, only: leonov_props_table1
   implicit none
   procedure(umat_interface) :: umat
@@ -22,10 +25,12 @@ program bench_element_calls
     0, 1, 1], [3, nn]) * 1.0_dp
   real(dp), parameter :: jitter(3, nn) = reshape([0.02, -0.03, 0.01, 0.05, 0.04, -0.02, -0.06, 0.03, 0.08, &
     0.01, -0.07, 0.02, 0.03, 0.02, -0.05, -0.04, 0.06, 0.03, 0.07, -0.02, 0.04, -0.03, -0.05, -0.01], [3, nn]) * 1.0_dp
+  !> the ways of computing an element: generic path, kernel with geo, kernel with geo_compact
+  character(len=16), parameter :: ways(3) = [character(len=16) :: 'generic', 'kernel', 'kernel, compact']
   type(solid_material_t) :: elastic, leonov
   type(solid_geometry_t) :: geo
-  real(dp) :: x(3, nn), f0(3, 3), f1(3, 3), be12
-  integer :: n, st, path
+  real(dp) :: x(3, nn), f0(3, 3), f1(3, 3), gc(90)
+  integer :: n, way
   character(len=32) :: arg
 
   n = 200000
@@ -35,7 +40,8 @@ program bench_element_calls
   end if
   x = xcube + jitter
   call solid_element_geometry('C3D8', x, geo)
-  if (.not. geo%valid) stop 'bench_element_calls: invalid geometry'
+  call solid_compact_geometry('C3D8', x, gc)
+  if (.not. (geo%valid .and. gc(1) == 1.0_dp)) stop 'bench_element_calls: invalid geometry'
   elastic%kind = SOLID_MAT_ELASTIC
   elastic%e = 210000.0_dp
   elastic%nu = 0.3_dp
@@ -46,40 +52,45 @@ program bench_element_calls
   leonov%unsymm = .true.
   leonov%umat => umat
 
+  print '(a)', 'case                     way              us per call   flops per call  GFLOP/s  checksum' // &
+    '                fingerprint'
   f0 = identity3()
   f0(1, 2) = 2.0e-4_dp
   f1 = f0
   f1(1, 1) = 1.0_dp + 1.0e-4_dp
-  do path = 1, 2
-    call run('*ELASTIC, tangent', elastic, f0, f1, 0.5_dp, 0.0_dp, .true., n, path == 1, st)
-    call run('*ELASTIC, forces only', elastic, f0, f1, 0.5_dp, 0.0_dp, .false., n, path == 1, st)
-    call run('Leonov elastic, tangent', leonov, f0, f1, 0.5_dp, 2.0e-4_dp, .true., n, path == 1, st)
+  do way = 1, 3
+    call run('*ELASTIC, tangent', elastic, f0, f1, 0.0_dp, .true., n, way)
+  end do
+  do way = 1, 3
+    call run('*ELASTIC, forces only', elastic, f0, f1, 0.0_dp, .false., n, way)
+  end do
+  do way = 1, 3
+    call run('Leonov elastic, tangent', leonov, f0, f1, 2.0e-4_dp, .true., n, way)
   end do
   f0 = identity3()
   f1 = identity3()
   f1(1, 2) = 0.1_dp
   f1(1, 1) = 1.02_dp
-  be12 = 0.05_dp
-  do path = 1, 2
-    call run('Leonov plastic, tangent', leonov, f0, f1, 0.5_dp, be12, .true., max(1, n / 5), path == 1, st)
+  do way = 1, 3
+    call run('Leonov plastic, tangent', leonov, f0, f1, 0.05_dp, .true., max(1, n / 5), way)
   end do
 
 contains
 
-  !> n calls of one case by the generic path or the type's kernel; prints the time per call, the analytic flops,
-  !> the rate, the checksum and the fingerprint.
-  subroutine run(label, mat, f0, f1, dt, be12, want_k, n, generic, st)
+  !> n calls of one case one way (dt = 0.5 s, converged Be~_12 = be12 for the Leonov material); prints the time
+  !> per call, the counted flops, the rate, the checksum and the fingerprint.
+  subroutine run(label, mat, f0, f1, be12, want_k, n, way)
     character(len=*), intent(in) :: label
     type(solid_material_t), intent(in) :: mat
-    real(dp), intent(in) :: f0(3, 3), f1(3, 3), dt, be12
-    logical, intent(in) :: want_k, generic
-    integer, intent(in) :: n
-    integer, intent(out) :: st
+    real(dp), intent(in) :: f0(3, 3), f1(3, 3), be12
+    logical, intent(in) :: want_k
+    integer, intent(in) :: n, way
     real(dp) :: u(3 * nn), du(3 * nn), s_old(ntens, nip), e_old(ntens, nip), v_old(nstatv, nip)
     real(dp) :: s_new(ntens, nip), e_new(ntens, nip), v_new(nstatv, nip), fe(3 * nn), ke(3 * nn, 3 * nn)
     real(dp) :: en(2), eip_old(3, nip), eip_new(3, nip), pnewdt, t0, t1, check, us, flops, du1
     character(len=200) :: msg
-    integer :: i, a
+    character(len=25) :: lab
+    integer :: i, a, st
     do a = 1, nn
       u(3 * a - 2:3 * a) = matmul(f1, x(:, a)) - x(:, a)
       du(3 * a - 2:3 * a) = u(3 * a - 2:3 * a) - (matmul(f0, x(:, a)) - x(:, a))
@@ -91,38 +102,64 @@ contains
     v_old(4, :) = be12            ! Leonov STATEV(4) = Be~_12 (Be~ - I, Voigt order)
     eip_old = 0.0_dp
     check = 0.0_dp
+    st = 0
     call cpu_time(t0)
     do i = 1, n
       ! a different last bit each call: the compiler cannot hoist the work out of the loop
       du(1) = du1 + 1.0e-15_dp * mod(i, 3)
       pnewdt = 1.0e36_dp
-      call solid_element_compute('C3D8', x, u, du, mat, s_old, e_old, v_old, [0.0_dp, 0.0_dp], dt, 1, 1, 1, &
-        .true., want_k, fe, ke, s_new, e_new, v_new, en, pnewdt, st, msg, energy_ip_old=eip_old, &
-        energy_ip_new=eip_new, geo=geo, generic_only=generic)
+      select case (way)
+      case (1)
+        call solid_element_compute('C3D8', x, u, du, mat, s_old, e_old, v_old, [0.0_dp, 0.0_dp], 0.5_dp, 1, 1, 1, &
+          .true., want_k, fe, ke, s_new, e_new, v_new, en, pnewdt, st, msg, energy_ip_old=eip_old, &
+          energy_ip_new=eip_new, geo=geo, generic_only=.true.)
+      case (2)
+        call solid_element_compute('C3D8', x, u, du, mat, s_old, e_old, v_old, [0.0_dp, 0.0_dp], 0.5_dp, 1, 1, 1, &
+          .true., want_k, fe, ke, s_new, e_new, v_new, en, pnewdt, st, msg, energy_ip_old=eip_old, &
+          energy_ip_new=eip_new, geo=geo)
+      case default
+        call solid_element_compute('C3D8', x, u, du, mat, s_old, e_old, v_old, [0.0_dp, 0.0_dp], 0.5_dp, 1, 1, 1, &
+          .true., want_k, fe, ke, s_new, e_new, v_new, en, pnewdt, st, msg, energy_ip_old=eip_old, &
+          energy_ip_new=eip_new, geo_compact=gc)
+      end select
       check = check + fe(7) + ke(5, 11) + s_new(4, 3)
     end do
     call cpu_time(t1)
     if (st /= 0) then
-      print '(a)', 'bench_element_calls: '//trim(msg)
+      print '(a)', 'bench_element_calls: ' // trim(msg)
       stop 1
     end if
     us = 1.0e6_dp * (t1 - t0) / n
     flops = element_flops(mat%kind, want_k, v_new(7, 1) > 0.0_dp)
-    print '(a25,a9,f9.3,a,f8.0,a,f6.2,a,es23.15,a,z16.16)', label, merge(' generic ', ' kernel  ', generic), us, &
-      ' us per call, ', flops, ' flops per call, ', &
-      1.0e-3_dp * flops / us, ' GFLOP/s, checksum ', check, ', bits ', bits([fe, reshape(ke, [size(ke)]), &
-      reshape(s_new, [size(s_new)]), reshape(v_new, [size(v_new)]), reshape(eip_new, [size(eip_new)]), en])
+    lab = label
+    print '(a25,a16,f10.3,f17.0,f9.2,es24.15,2x,z16.16)', lab, ways(way), us, flops, 1.0e-3_dp * flops / us, check, &
+      bits([fe, reshape(ke, [size(ke)]), reshape(s_new, [size(s_new)]), reshape(v_new, [size(v_new)]), &
+      reshape(eip_new, [size(eip_new)]), en])
   end subroutine run
 
-  !> Floating-point operations (additions, multiplications, divisions, square roots; a transcendental call counted
-  !> as one) of one call of the fixed-size C3D8 path (host/elements/solid_c3d8.f90), counted by hand from its loops
-  !> (docs/performance.md "The C3D8 kernel" lists the terms); the Leonov material's own operations are those of
-  !> bench_leonov_calls' count for the branch taken.
+  !> Floating-point operations (+, -, *, /, sqrt; a call of exp, log, pow, tanh or sinh counted as one) of one call of
+  !> the C3D8 kernel (host/elements/solid_c3d8.f90), counted by hand from its loops, as the element runs here (no
+  !> temperatures, no field variables; docs/performance.md "The C3D8 kernel" lists the terms):
+  !>   per element 3070: u_n 24, F and J at the centre at t_n, t_n+1 316, dN/dx there 170, F and J at the 8 points
+  !>     8 x 318, CELENT 1, the *ELASTIC matrix 15;
+  !>   per point, forces 818: F-bar 22, mid-point F, its J and inverse 82, G 54, DROT 97, DSTRAN 21, STRESS and STRAN
+  !>     rotated 189, STRAN + DSTRAN 6, dN/dx at the point 170, dv, energies and the stress tensor 9, f_int 168;
+  !>   per point, material: *ELASTIC 91 (C : DSTRAN, SSE); UMAT 69 (COORDS) + the Leonov UMAT: its adapter
+  !>     (umat.f: PROPS, STATEV, energies) 160 and the core (umat/leonov.f90) 954 at an elastic increment, 5080 at
+  !>     this plastic one (bench_leonov_calls: the same increments; its 4 evaluations of g, 5 local residuals,
+  !>     4 Newton steps, 1 Jacobi rotation counted by an instrumented build);
+  !>   per point, tangent 5496: the Jaumann terms and q 288, bc 24, the kernel 5184 (216 columns' t_ij x 8, 576
+  !>     entries x 6).
   pure real(dp) function element_flops(kind, want_k, plastic) result(f)
     integer, intent(in) :: kind
     logical, intent(in) :: want_k, plastic
-    f = 0.0_dp
-    if (.false.) f = real(kind, dp) + merge(1.0_dp, 0.0_dp, want_k .or. plastic)
+    f = 3070.0_dp + 8 * 818.0_dp
+    if (kind == SOLID_MAT_ELASTIC) then
+      f = f + 8 * 91.0_dp
+    else
+      f = f + 8 * (69.0_dp + 160.0_dp + merge(5080.0_dp, 954.0_dp, plastic))
+    end if
+    if (want_k) f = f + 8 * 5496.0_dp
   end function element_flops
 
   !> A fingerprint of the bits of the last call's outputs: equal fingerprints mean identical outputs (to the bit,

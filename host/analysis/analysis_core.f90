@@ -8,7 +8,7 @@ module analysis_core
   use model_types, only: model_t, etype_user, orientation_axes
   use element_catalog, only: element_name
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
-    solid_geometry_t, solid_element_geometry, &
+    solid_geometry_t, solid_element_geometry, solid_compact_geometry_size, solid_compact_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
   use element_colors, only: color_elements
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
@@ -131,10 +131,14 @@ module analysis_core
     character(len=8), allocatable :: elem_tname(:) !< Abaqus element type name ('C3D8', ...) or 'U'
     type(solid_material_t), allocatable :: mats(:)  !< per section
     type(elem_axes_t), allocatable :: axes(:)   !< (nelem) local material axes (*ORIENTATION)
-    !> (nelem) index into geo of a continuum element this process computes, 0 otherwise (user elements, other
-    !> processes' elements: element_geometry computes theirs)
+    !> (nelem) where the reference data of a continuum element this process computes is kept: k > 0 in geo(k),
+    !> k < 0 in geo_compact(:, -k); 0 otherwise (user elements, other processes' elements: element_geometry
+    !> computes theirs)
     integer, allocatable :: elem_geo(:)
     type(solid_geometry_t), allocatable :: geo(:)  !< reference data of those elements (computed once)
+    !> compact reference data (solid_compact_geometry) of the elements whose type's fixed-size kernel serves them
+    !> in every step (C3D8 under NLGEOM without *ORIENTATION): 720 bytes a C3D8 instead of about 3.4 kB in geo
+    real(dp), allocatable :: geo_compact(:, :)
     type(node_rotation_t) :: nr                 !< *TRANSFORM local node systems (node_rotations): u, u_conv, fint,
                                                 !< fext, fdl and the system are in their components at those nodes
     type(user_routines_t) :: routines           !< UEL and UMAT in use
@@ -168,7 +172,8 @@ contains
     !> the partition's weights and pieces, the factorization's choices (default: solver_options_t's)
     type(solver_options_t), intent(in), optional :: options
     type(solver_options_t) :: opt
-    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra
+    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra, nc, kc
+    logical :: all_nlgeom
     character(len=16) :: b
 
     stat = 0
@@ -283,20 +288,42 @@ contains
     ! reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
     ! process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
     ! process's element when output needs it; 41 MB a process on the paper's application mesh when all are kept)
+    ! An element whose type's fixed-size kernel serves it in every step (C3D8: every step NLGEOM, no *ORIENTATION
+    ! on its section) keeps the kernel's compact form (about a fifth of the memory; the kernel rebuilds the arrays
+    ! from it to the bit), the others the whole arrays.
     allocate (an%elem_geo(model%nelem))
     an%elem_geo = 0
     n = 0
+    nc = 0
+    kc = 0
+    all_nlgeom = model%nstep > 0
+    do is = 1, model%nstep
+      all_nlgeom = all_nlgeom .and. model%steps(is)%nlgeom
+    end do
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) /= etype_user .and. an%owned(ie)) then
+      if (model%elem_kind(ie) == etype_user .or. .not. an%owned(ie)) cycle
+      k = 0
+      if (all_nlgeom .and. model%sections(model%elem_section(ie))%iorient == 0) &
+        k = solid_compact_geometry_size(an%elem_tname(ie))
+      if (k > 0 .and. (kc == 0 .or. k == kc)) then
+        kc = k
+        nc = nc + 1
+        an%elem_geo(ie) = -nc
+      else
         n = n + 1
         an%elem_geo(ie) = n
       end if
     end do
-    allocate (an%geo(n))
+    allocate (an%geo(n), an%geo_compact(kc, nc))
     do ie = 1, model%nelem
-      if (an%elem_geo(ie) == 0) cycle
-      call solid_element_geometry(an%elem_tname(ie), &
-        model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+      if (an%elem_geo(ie) > 0) then
+        call solid_element_geometry(an%elem_tname(ie), &
+          model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+      else if (an%elem_geo(ie) < 0) then
+        call solid_compact_geometry(an%elem_tname(ie), &
+          model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
+          an%geo_compact(:, -an%elem_geo(ie)))
+      end if
     end do
     call element_axes(an, model, stat, errmsg)
     if (stat /= 0) return
@@ -758,6 +785,7 @@ contains
     real(dp) :: ue(mdof), due(mdof), coords(3, mnode), t0(mnode), dtn(mnode), e2(2), fl(mdof), kl(mdof, mdof), rho
     real(dp) :: no_fields(0, mnode)
     real(dp), allocatable :: fld0(:, :), dfld(:, :)
+    type(solid_geometry_t) :: gw
     character(len=16) :: b
     integer :: kstep, kinc
     real(dp) :: time(2), dtime
@@ -787,26 +815,10 @@ contains
     if (model%nfield > 0) then
       fld0 = element_fields(an%state%field_start)
       dfld = element_fields(an%work%field_end) - fld0
+      call element_call(fld0, dfld)
+    else
+      call element_call(no_fields(:, 1:nn), no_fields(:, 1:nn))
     end if
-    associate (st => an%work%trial(ie), cv => an%state%conv(ie))
-      if (model%nfield > 0) then
-        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
-          an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
-          model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), temp_nodes=t0(1:nn), &
-          dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fld0, dfield_nodes=dfld)
-      else
-        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
-          an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
-          model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), temp_nodes=t0(1:nn), &
-          dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=no_fields(:, 1:nn), &
-          dfield_nodes=no_fields(:, 1:nn))
-      end if
-      st%energy = 0.0_dp
-      st%energy(2) = e2(1)
-      st%energy(4) = e2(2)
-    end associate
     if (stat /= 0) then
       ! the element's own message names the element already; say which routine it came from
       write (b, '(i0)') model%elem_id(ie)
@@ -820,11 +832,19 @@ contains
       im = model%elem_section(ie)
       rho = 0.0_dp
       if (im > 0) rho = model_density(model, im)
-      associate (g => an%geo(an%elem_geo(ie)))
+      if (an%elem_geo(ie) < 0) then
+        ! compact reference data: the whole arrays computed for the load (elements with distributed loads only)
+        call element_geometry(an, model, ie, gw)
         call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue(1:n), &
-          nlgeom, g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, &
-          fl(1:n), kl(1:n, 1:n))
-      end associate
+          nlgeom, gw%nfun(1:nn, 1:an%elem_nip(ie)), gw%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, &
+          want_k, fl(1:n), kl(1:n, 1:n))
+      else
+        associate (g => an%geo(an%elem_geo(ie)))
+          call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue(1:n), &
+            nlgeom, g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, &
+            want_k, fl(1:n), kl(1:n, 1:n))
+        end associate
+      end if
       an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl(1:n)
       if (want_k) ke = ke + kl(1:n, 1:n)
     end if
@@ -841,6 +861,30 @@ contains
         fe(:, b) = v((m - 1) * model%nfield + 1:m * model%nfield)
       end do
     end function element_fields
+
+    !> solid_element_compute with the element's data and its reference data in the form the host keeps.
+    subroutine element_call(fields0, dfields)
+      real(dp), intent(in) :: fields0(:, :), dfields(:, :)   !< (nfield, nn) field variables, increments
+      associate (st => an%work%trial(ie), cv => an%state%conv(ie))
+        if (an%elem_geo(ie) < 0) then
+          call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
+            an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+            model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+            energy_ip_old=cv%eip, energy_ip_new=st%eip, geo_compact=an%geo_compact(:, -an%elem_geo(ie)), &
+            temp_nodes=t0(1:nn), dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fields0, &
+            dfield_nodes=dfields)
+        else
+          call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
+            an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+            model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+            energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), temp_nodes=t0(1:nn), &
+            dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fields0, dfield_nodes=dfields)
+        end if
+        st%energy = 0.0_dp
+        st%energy(2) = e2(1)
+        st%energy(4) = e2(2)
+      end associate
+    end subroutine element_call
   end subroutine continuum_element_compute
 
   !> Local material axes at the integration points of the elements whose section has an *ORIENTATION (the points'

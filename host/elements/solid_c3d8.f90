@@ -17,12 +17,35 @@ module solid_c3d8
   use ldfcz_kinds, only: dp
   use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, SOLID_MAT_ELASTIC, SOLID_PNEWDT_LARGE
   use solid_elastic, only: elastic_isotropic_ddsdde
+  use solid_shape, only: solid_shape_eval, solid_gauss_point
+  use element_catalog, only: FAM_HEX8
   use solid_tangent_kernel, only: k_point_c3d8_spatial, tangent_kernel_level
   implicit none
   private
-  public :: c3d8_nlgeom
+  public :: c3d8_nlgeom, c3d8_compact_geometry, c3d8_compact_size
 
   real(dp), parameter :: third = 1.0_dp / 3.0_dp
+  !> entries of the compact reference data of a C3D8 (c3d8_compact_geometry): validity, the 8 weights x det, the
+  !> inverse reference Jacobian at the centre and at the 8 points
+  integer, parameter :: c3d8_compact_size = 1 + 8 + 9 + 72
+  ! The parent shape functions and their derivatives at the 2x2x2 points (xi fastest) and at the centre, as constant
+  ! expressions with solid_shape_eval's operations for the HEX8 family (N_a = (1/8) p q r, dN_a/dxi = (1/8) s_a q r,
+  ! ..., p = 1 + s_a xi, q = 1 + t_a eta, r = 1 + u_a zeta), so that they are its values to the bit: the compiler
+  ! rounds each operation as the run time does
+  real(dp), parameter, private :: g2 = 0.577350269189625764509148780502_dp   ! 1/sqrt(3), solid_gauss_point's
+  real(dp), parameter, private :: sn(8) = [-1, 1, 1, -1, -1, 1, 1, -1] * 1.0_dp, tn(8) = [-1, -1, 1, 1, -1, -1, 1, 1] &
+    * 1.0_dp, un_(8) = [-1, -1, -1, -1, 1, 1, 1, 1] * 1.0_dp
+  real(dp), parameter, private :: gx(9) = [-g2, g2, -g2, g2, -g2, g2, -g2, g2, 0.0_dp], &
+    gy(9) = [-g2, -g2, g2, g2, -g2, -g2, g2, g2, 0.0_dp], gz(9) = [-g2, -g2, -g2, -g2, g2, g2, g2, g2, 0.0_dp]
+  real(dp), parameter, private :: ps(8, 9) = 1 + spread(sn, 2, 9) * spread(gx, 1, 8), &
+    qs(8, 9) = 1 + spread(tn, 2, 9) * spread(gy, 1, 8), rs(8, 9) = 1 + spread(un_, 2, 9) * spread(gz, 1, 8)
+  real(dp), parameter, private :: parent_n(8, 9) = 0.125_dp * ps * qs * rs
+  real(dp), parameter, private :: parent_d1(8, 9) = 0.125_dp * spread(sn, 2, 9) * qs * rs
+  real(dp), parameter, private :: parent_d2(8, 9) = 0.125_dp * spread(tn, 2, 9) * ps * rs
+  real(dp), parameter, private :: parent_d3(8, 9) = 0.125_dp * spread(un_, 2, 9) * ps * qs
+  !> dN_a/dxi_j at point ip (9: the centre)
+  real(dp), parameter, private :: parent_d(8, 3, 9) = reshape([parent_d1, parent_d2, parent_d3], [8, 3, 9], &
+    order=[1, 3, 2])
   !> Voigt position of tensor component (i,j), order 11,22,33,12,13,23 (solid_element's vidx)
   integer, parameter :: vidx(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
 
@@ -31,11 +54,10 @@ contains
   !> solid_element_compute's work for a C3D8 under NLGEOM without local axes, after its argument checks, with the
   !> same results to the bit. stat 1 (inverted element) or 3 (non-finite material output) with errmsg; the caller
   !> then records the failure (solid_element_compute's fail).
-  subroutine c3d8_nlgeom(mat, gp, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, &
+  subroutine c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, &
       noel, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, energy_ip_old, &
-      energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes)
+      energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gp, gc)
     type(solid_material_t), intent(in) :: mat       !< material and section
-    type(solid_geometry_t), intent(in) :: gp        !< the element's reference data (valid)
     real(dp), intent(in) :: coords0(3, 8)           !< original coordinates
     real(dp), intent(in) :: u(24), du(24)           !< total displacement, increment since the converged state
     real(dp), intent(in) :: stress_old(6, 8), stran_old(6, 8)   !< converged stress and strain
@@ -54,6 +76,11 @@ contains
     real(dp), intent(out), optional :: energy_ip_new(:, :)       !< (3, 8) updated
     real(dp), intent(in), optional :: temp_nodes(:), dtemp_nodes(:)              !< nodal temperatures, increments
     real(dp), intent(in), optional :: field_nodes(:, :), dfield_nodes(:, :)      !< nodal field variables, increments
+    !> the element's reference data, either whole (solid_element_geometry, valid) or compact (c3d8_compact_geometry,
+    !> valid): one of them
+    type(solid_geometry_t), intent(in), optional :: gp
+    real(dp), intent(in), optional :: gc(c3d8_compact_size)
+    real(dp) :: nfun(8, 8), wdet(8), dndx_0c(8, 3)
     real(dp) :: u1(3, 8), un(3, 8), dref(8, 3, 8), fg0(3, 3, 8), fg1(3, 3, 8), j0(8), j1(8)
     real(dp) :: fc0(3, 3), fc1(3, 3), jc0, jc1, dndx_c(8, 3), vol, celent, cel(6, 6)
     real(dp) :: kl(8, 3, 3, 8), fe(24), fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3)
@@ -74,9 +101,17 @@ contains
       u1(:, a) = u(3 * a - 2:3 * a)
       un(:, a) = u1(:, a) - du(3 * a - 2:3 * a)
     end do
+    if (present(gp)) then
+      nfun = gp%nfun(1:8, 1:8)
+      wdet = gp%wdet(1:8)
+      dndx_0c = gp%dndx_0c(1:8, 1:3)
+      dref = gp%dndx_ref(1:8, 1:3, 1:8)
+    else
+      call c3d8_expand_geometry(gc, nfun, wdet, dndx_0c, dref)
+    end if
     ! element centre: J_c at t_n and t_n+1 (F-bar), spatial derivatives for the tangent
-    fc0 = f_of(un, gp%dndx_0c(1:8, 1:3))
-    fc1 = f_of(u1, gp%dndx_0c(1:8, 1:3))
+    fc0 = f_of(un, dndx_0c)
+    fc1 = f_of(u1, dndx_0c)
     jc0 = det3(fc0)
     jc1 = det3(fc1)
     if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
@@ -84,11 +119,10 @@ contains
       errmsg = 'inverted element ' // itoa(noel) // ' (J <= 0 at the centre)'
       return
     end if
-    dndx_c = matmul(gp%dndx_0c(1:8, 1:3), inv3(fc1))
+    dndx_c = matmul(dndx_0c, inv3(fc1))
     ! first pass: kinematics at the points, checks, the current volume for CELENT
     vol = 0.0_dp
     do ip = 1, 8
-      dref(:, :, ip) = gp%dndx_ref(1:8, 1:3, ip)
       fg0(:, :, ip) = f_of(un, dref(:, :, ip))
       fg1(:, :, ip) = f_of(u1, dref(:, :, ip))
       j0(ip) = det3(fg0(:, :, ip))
@@ -98,7 +132,7 @@ contains
         errmsg = 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')'
         return
       end if
-      vol = vol + gp%wdet(ip) * j1(ip)
+      vol = vol + wdet(ip) * j1(ip)
     end do
     celent = vol**third
     if (elastic) call elastic_isotropic_ddsdde(mat%e, mat%nu, 3, 3, cel)
@@ -140,8 +174,8 @@ contains
       end if
       temp_ip = 0.0_dp
       dtemp_ip = 0.0_dp
-      if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:8, ip), temp_nodes(1:8))
-      if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:8, ip), dtemp_nodes(1:8))
+      if (present(temp_nodes)) temp_ip = dot_product(nfun(:, ip), temp_nodes(1:8))
+      if (present(dtemp_nodes)) dtemp_ip = dot_product(nfun(:, ip), dtemp_nodes(1:8))
       if (mat%alpha /= 0.0_dp) dstran(1:3) = dstran(1:3) - mat%alpha * dtemp_ip
       stran_new(:, ip) = stran + dstran
       pn = SOLID_PNEWDT_LARGE
@@ -168,7 +202,7 @@ contains
       ! spatial derivatives, volume element, internal force
       finv = inv3(fg1(:, :, ip))
       dndx = matmul(dref(:, :, ip), finv)
-      dv = gp%wdet(ip) * j1(ip) * mat%thickness
+      dv = wdet(ip) * j1(ip) * mat%thickness
       energy = energy + [sse, spd] * dv
       sig = sym_of(stress, 1.0_dp)
       do a = 1, 8
@@ -210,7 +244,7 @@ contains
       real(dp) :: no_statev(1)
       ! Abaqus: the current coordinates under NLGEOM
       do j = 1, 3
-        c_coords(j) = dot_product(gp%nfun(1:8, ip), coords0(j, :) + u1(j, :))
+        c_coords(j) = dot_product(nfun(:, ip), coords0(j, :) + u1(j, :))
       end do
       ddsdde = 0.0_dp
       c_ddsddt = 0.0_dp
@@ -225,8 +259,8 @@ contains
       c_predef = 0.0_dp
       c_dpred = 0.0_dp
       if (present(field_nodes) .and. present(dfield_nodes)) then
-        c_predef(1:nfld) = matmul(field_nodes(:, 1:8), gp%nfun(1:8, ip))
-        c_dpred(1:nfld) = matmul(dfield_nodes(:, 1:8), gp%nfun(1:8, ip))
+        c_predef(1:nfld) = matmul(field_nodes(:, 1:8), nfun(:, ip))
+        c_dpred(1:nfld) = matmul(dfield_nodes(:, 1:8), nfun(:, ip))
       end if
       c_ndi = 3
       c_nshr = 3
@@ -254,6 +288,59 @@ contains
     end subroutine umat_point
 
   end subroutine c3d8_nlgeom
+
+  !> The compact reference data of a C3D8 (c3d8_compact_size entries, 720 bytes instead of the 2.5 kB of
+  !> solid_geometry_t's arrays and their descriptors): gc(1) = 1 when every reference Jacobian is > 0 (else 0 and
+  !> nothing else set), gc(2:9) the points' Gauss weight x det(dX/dxi), gc(10:18) the inverse reference Jacobian at
+  !> the centre, gc(19:90) at the 8 points. The same operations as solid_element_geometry
+  !> (solid_reference_derivatives), so that c3d8_expand_geometry rebuilds its arrays to the bit.
+  pure subroutine c3d8_compact_geometry(coords0, gc)
+    real(dp), intent(in) :: coords0(3, 8)                 !< original coordinates
+    real(dp), intent(out) :: gc(c3d8_compact_size)        !< compact reference data
+    real(dp) :: xi(3), w, detj, jinv(3, 3)
+    integer :: ip
+    gc = 0.0_dp
+    call reference_jacobian([0.0_dp, 0.0_dp, 0.0_dp], detj, jinv)
+    if (.not. (detj > 0.0_dp)) return
+    gc(10:18) = reshape(jinv, [9])
+    do ip = 1, 8
+      call solid_gauss_point(2, 3, ip, xi, w)
+      call reference_jacobian(xi, detj, jinv)
+      if (.not. (detj > 0.0_dp)) then
+        gc = 0.0_dp
+        return
+      end if
+      gc(1 + ip) = w * detj
+      gc(19 + 9 * (ip - 1):27 + 9 * (ip - 1)) = reshape(jinv, [9])
+    end do
+    gc(1) = 1.0_dp
+  contains
+    pure subroutine reference_jacobian(xi, detj, jinv)
+      real(dp), intent(in) :: xi(3)
+      real(dp), intent(out) :: detj, jinv(3, 3)
+      real(dp) :: jac(3, 3), n(8), dndxi(8, 3)
+      call solid_shape_eval(FAM_HEX8, xi, n, dndxi)
+      jac = matmul(coords0, dndxi)
+      detj = det3(jac)
+      jinv = 0.0_dp
+      if (detj > 0.0_dp) jinv = inv3(jac)
+    end subroutine reference_jacobian
+  end subroutine c3d8_compact_geometry
+
+  !> solid_geometry_t's arrays of a C3D8 from its compact reference data (valid): N_a at the points, weight x det,
+  !> dN_a/dX at the centre and at the points (dN/dxi J^-1 as solid_reference_derivatives forms them, with the
+  !> parent values as constants: 1080 operations a call).
+  pure subroutine c3d8_expand_geometry(gc, nfun, wdet, dndx_0c, dref)
+    real(dp), intent(in) :: gc(c3d8_compact_size)
+    real(dp), intent(out) :: nfun(8, 8), wdet(8), dndx_0c(8, 3), dref(8, 3, 8)
+    integer :: ip
+    dndx_0c = matmul(parent_d(:, :, 9), reshape(gc(10:18), [3, 3]))
+    do ip = 1, 8
+      dref(:, :, ip) = matmul(parent_d(:, :, ip), reshape(gc(19 + 9 * (ip - 1):27 + 9 * (ip - 1)), [3, 3]))
+    end do
+    nfun = parent_n(:, 1:8)
+    wdet = gc(2:9)
+  end subroutine c3d8_expand_geometry
 
   !> F = I + sum_a disp_a (x) dN_a/dX over the 8 nodes (solid_element_compute's def_grad, in its order).
   pure function f_of(disp, dn) result(f)

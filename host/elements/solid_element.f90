@@ -48,7 +48,7 @@ module solid_element
   use solid_umat_interface, only: umat_interface
   use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, &
     SOLID_PNEWDT_LARGE
-  use solid_c3d8, only: c3d8_nlgeom
+  use solid_c3d8, only: c3d8_nlgeom, c3d8_compact_geometry, c3d8_compact_size
   use element_catalog, only: element_types, element_kind_of, element_nnode, element_ndim, element_ndi, &
     element_nshr, element_is_axisymmetric, element_is_plane_stress, KERNEL_C3D8
   use solid_shape, only: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
@@ -58,6 +58,7 @@ module solid_element
   private
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
   public :: solid_geometry_t, solid_element_geometry, polar_rotation
+  public :: solid_compact_geometry_size, solid_compact_geometry
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
 
   !> nodes (plus incompatible-mode pseudo-nodes) and integration points at most
@@ -235,6 +236,31 @@ contains
     geo%valid = .true.
   end subroutine solid_element_geometry
 
+  !> Entries of the compact reference data of a type (solid_compact_geometry), 0 for a type without one (only the
+  !> types with a fixed-size kernel have it: C3D8, 90 entries).
+  pure integer function solid_compact_geometry_size(etype) result(n)
+    character(len=*), intent(in) :: etype             !< element type name
+    integer :: it
+    n = 0
+    it = element_kind_of(etype)
+    if (it == 0) return
+    if (element_types(it)%kernel == KERNEL_C3D8) n = c3d8_compact_size
+  end function solid_compact_geometry_size
+
+  !> The compact reference data of an element of a type with a fixed-size kernel (solid_compact_geometry_size
+  !> entries; gc(1) = 1 when valid): what the kernel rebuilds solid_element_geometry's arrays from, to the bit, at a
+  !> small cost per call (C3D8: 720 bytes instead of about 3.4 kB with the arrays' descriptors). gc = 0 (not valid)
+  !> for a type without one or coordinates of another size.
+  pure subroutine solid_compact_geometry(etype, coords0, gc)
+    character(len=*), intent(in) :: etype             !< element type name
+    real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
+    real(dp), intent(out) :: gc(:)                    !< (solid_compact_geometry_size(etype)) compact reference data
+    gc = 0.0_dp
+    if (solid_compact_geometry_size(etype) /= c3d8_compact_size .or. size(gc) /= c3d8_compact_size) return
+    if (size(coords0, 1) /= 3 .or. size(coords0, 2) /= 8) return
+    call c3d8_compact_geometry(coords0, gc)
+  end subroutine solid_compact_geometry
+
   !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi), jinv its inverse
   !> (dndx = 0 if detj <= 0).
   pure subroutine solid_reference_derivatives(family, nnode, ndim, coords0, xi, n_p, dndx_p, detj, jinv)
@@ -262,7 +288,7 @@ contains
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
       energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient, field_nodes, dfield_nodes, &
-      generic_only)
+      generic_only, geo_compact)
     character(len=*), intent(in) :: etype             !< element type name (element_catalog)
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -302,6 +328,9 @@ contains
     !> .true.: the generic path even where the type's fixed-size kernel would serve (tests and benchmarks compare
     !> the two; the results are the same bits)
     logical, intent(in), optional :: generic_only
+    !> compact reference data (solid_compact_geometry) instead of geo, for a type with a fixed-size kernel: the
+    !> kernel rebuilds the arrays it needs from it (the generic path, where it serves, computes them from coords0)
+    real(dp), intent(in), optional :: geo_compact(:)
 
     integer, parameter :: max_local_iter = 30      ! element-level Newton on the incompatible modes
     integer :: it, nnode, nne, ndim, nip, ntens, ndi, nshr, nextra, ndof, ndofe, nalpha, nsv, np
@@ -323,6 +352,7 @@ contains
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
     character(len=200) :: kmsg
+    integer :: kgeo
     character(len=*), parameter :: here = 'solid_element_compute: '
 
     stat = 0
@@ -388,6 +418,43 @@ contains
       return
     end if
 
+    ! ---- a type's fixed-size kernel where it covers the call (element_catalog: kernel), with the host's reference
+    ! data in either form
+    if (element_types(it)%kernel == KERNEL_C3D8 .and. nlgeom .and. .not. present(orient) .and. &
+        .not. flag(generic_only)) then
+      kgeo = 0
+      if (present(geo)) then
+        if (geo%valid) kgeo = 1
+      end if
+      if (kgeo == 0 .and. present(geo_compact)) then
+        if (size(geo_compact) == c3d8_compact_size) then
+          if (geo_compact(1) == 1.0_dp) kgeo = 2
+        end if
+      end if
+      if (kgeo == 0) then
+        ! no reference data from the host: computed now (as the generic path would)
+        call solid_element_geometry(etype, coords0, gl)
+        if (gl%valid) kgeo = 3
+      end if
+      if (kgeo == 1) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gp=geo)
+      else if (kgeo == 3) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gp=gl)
+      else if (kgeo == 2) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gc=geo_compact)
+      end if
+      if (kgeo /= 0) then
+        if (stat /= 0) call fail(stat, trim(kmsg))
+        return
+      end if
+    end if
+
     ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
     gp => gl
     if (present(geo)) then
@@ -397,15 +464,6 @@ contains
     if (.not. gp%valid) then
       call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
                 'integration point, or radius <= 0 at a point of an axisymmetric element)')
-      return
-    end if
-    ! ---- a type's fixed-size kernel where it covers the call (element_catalog: kernel)
-    if (element_types(it)%kernel == KERNEL_C3D8 .and. nlgeom .and. .not. present(orient) .and. &
-        .not. flag(generic_only)) then
-      call c3d8_nlgeom(mat, gp, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
-        want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
-        energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes)
-      if (stat /= 0) call fail(stat, trim(kmsg))
       return
     end if
 
