@@ -1,6 +1,11 @@
 !> Time per call of the continuum element routine (host/elements: solid_element_compute) on one distorted C3D8
 !> under NLGEOM, with the built-in *ELASTIC and with the Leonov UMAT (umat/umat.f, Table 1 properties):
 !>   bench_element_calls [N]     (N calls of each case, N/5 of the plastic one; default 2*10^5)
+!> Built by the Release build (build/bin/). Against an older build, compiled with its modules and libraries and
+!> LDFCZ_BASELINE_API (the element routine of commit e9cbdfd: no generic_only, no geo_compact; one way):
+!>   gfortran -O2 -cpp -fopenmp -DLDFCZ_BASELINE_API -I OLD/build/modules benchmarks/bench_element_calls.F90 \
+!>     OLD/build/lib/libldfcz_elements.a OLD/build/lib/libldfcz_umat.a OLD/build/lib/libldfcz_abaqus_utils.a \
+!>     OLD/build/lib/libldfcz_kinds.a -o bench_element_calls_old
 !> Cases: *ELASTIC with the tangent and forces only; Leonov at an elastic increment (the UMAT's elastic fast path)
 !> and at a plastic one (the return), with the tangent. Each case three ways: the generic path (generic_only), the
 !> type's fixed-size kernel (solid_c3d8.f90) with the whole reference data (geo), and the kernel with the compact
@@ -15,8 +20,13 @@
 program bench_element_calls
   use, intrinsic :: iso_fortran_env, only: int64
   use ldfcz_kinds, only: dp
+#ifdef LDFCZ_BASELINE_API
+  use solid_element, only: solid_material_t, solid_element_compute, solid_geometry_t, solid_element_geometry, &
+    SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, umat_interface
+#else
   use solid_element, only: solid_material_t, solid_element_compute, solid_geometry_t, solid_element_geometry, &
     solid_compact_geometry, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, umat_interface
+#endif
   use leonov_parameters, only: leonov_props_table1
   implicit none
   procedure(umat_interface) :: umat
@@ -25,8 +35,15 @@ program bench_element_calls
     0, 1, 1], [3, nn]) * 1.0_dp
   real(dp), parameter :: jitter(3, nn) = reshape([0.02, -0.03, 0.01, 0.05, 0.04, -0.02, -0.06, 0.03, 0.08, &
     0.01, -0.07, 0.02, 0.03, 0.02, -0.05, -0.04, 0.06, 0.03, 0.07, -0.02, 0.04, -0.03, -0.05, -0.01], [3, nn]) * 1.0_dp
+#ifdef LDFCZ_BASELINE_API
+  !> the older build's only way
+  integer, parameter :: nway = 1
+  character(len=16), parameter :: ways(1) = [character(len=16) :: 'older build']
+#else
   !> the ways of computing an element: generic path, kernel with geo, kernel with geo_compact
+  integer, parameter :: nway = 3
   character(len=16), parameter :: ways(3) = [character(len=16) :: 'generic', 'kernel', 'kernel, compact']
+#endif
   type(solid_material_t) :: elastic, leonov
   type(solid_geometry_t) :: geo
   real(dp) :: x(3, nn), f0(3, 3), f1(3, 3), gc(90)
@@ -40,7 +57,10 @@ program bench_element_calls
   end if
   x = xcube + jitter
   call solid_element_geometry('C3D8', x, geo)
+  gc = 1.0_dp
+#ifndef LDFCZ_BASELINE_API
   call solid_compact_geometry('C3D8', x, gc)
+#endif
   if (.not. (geo%valid .and. gc(1) == 1.0_dp)) stop 'bench_element_calls: invalid geometry'
   elastic%kind = SOLID_MAT_ELASTIC
   elastic%e = 210000.0_dp
@@ -58,20 +78,20 @@ program bench_element_calls
   f0(1, 2) = 2.0e-4_dp
   f1 = f0
   f1(1, 1) = 1.0_dp + 1.0e-4_dp
-  do way = 1, 3
+  do way = 1, nway
     call run('*ELASTIC, tangent', elastic, f0, f1, 0.0_dp, .true., n, way)
   end do
-  do way = 1, 3
+  do way = 1, nway
     call run('*ELASTIC, forces only', elastic, f0, f1, 0.0_dp, .false., n, way)
   end do
-  do way = 1, 3
+  do way = 1, nway
     call run('Leonov elastic, tangent', leonov, f0, f1, 2.0e-4_dp, .true., n, way)
   end do
   f0 = identity3()
   f1 = identity3()
   f1(1, 2) = 0.1_dp
   f1(1, 1) = 1.02_dp
-  do way = 1, 3
+  do way = 1, nway
     call run('Leonov plastic, tangent', leonov, f0, f1, 0.05_dp, .true., max(1, n / 5), way)
   end do
 
@@ -109,6 +129,12 @@ contains
       du(1) = du1 + 1.0e-15_dp * mod(i, 3)
       pnewdt = 1.0e36_dp
       select case (way)
+#ifdef LDFCZ_BASELINE_API
+      case (1)
+        call solid_element_compute('C3D8', x, u, du, mat, s_old, e_old, v_old, [0.0_dp, 0.0_dp], 0.5_dp, 1, 1, 1, &
+          .true., want_k, fe, ke, s_new, e_new, v_new, en, pnewdt, st, msg, energy_ip_old=eip_old, &
+          energy_ip_new=eip_new, geo=geo)
+#else
       case (1)
         call solid_element_compute('C3D8', x, u, du, mat, s_old, e_old, v_old, [0.0_dp, 0.0_dp], 0.5_dp, 1, 1, 1, &
           .true., want_k, fe, ke, s_new, e_new, v_new, en, pnewdt, st, msg, energy_ip_old=eip_old, &
@@ -121,6 +147,7 @@ contains
         call solid_element_compute('C3D8', x, u, du, mat, s_old, e_old, v_old, [0.0_dp, 0.0_dp], 0.5_dp, 1, 1, 1, &
           .true., want_k, fe, ke, s_new, e_new, v_new, en, pnewdt, st, msg, energy_ip_old=eip_old, &
           energy_ip_new=eip_new, geo_compact=gc)
+#endif
       end select
       check = check + fe(7) + ke(5, 11) + s_new(4, 3)
     end do
