@@ -17,7 +17,7 @@ heaptrack names, so a build with line information is needed: RelWithDebInfo, `-g
   matrix: pattern and values      sparse_setup, build_pattern (the host's entries: row/column indices, values)
   element reference geometry      solid_element_geometry, solid_compact_geometry and analysis_init's geo arrays
   element states                  element_state_allocate, analysis_init's conv/trial arrays (converged and trial)
-  dof vectors, element forces     analysis_init's work% vectors
+  dof vectors, element forces     analysis_init's dof vectors (u, u_conv, fint, fext, fdl) and element forces
   model and the rest              everything else (deck, boundaries, loads, output, Newton vectors, ...)
 
 The deck `block` is the CalculiX comparison's (benchmarks/bench_calculix.py: 40x40x10 C3D8, *ELASTIC, NLGEOM) with
@@ -71,10 +71,10 @@ def component(function, where):
         return 'matrix: pattern and values'
     if 'solid_element_geometry' in f or 'compact_geometry' in f or ('analysis_init' in f and 'geo' in text):
         return 'element reference geometry'
+    if 'analysis_init' in f and re.search(r'%(u|u_conv|fint|fe|fext|fdl|fdle)\s*\(', text):
+        return 'dof vectors, element forces'
     if 'element_state_allocate' in f or ('analysis_init' in f and ('conv' in text or 'trial' in text)):
         return 'element states'
-    if 'analysis_init' in f and 'work%' in text:
-        return 'dof vectors, element forces'
     return 'model and the rest'
 
 
