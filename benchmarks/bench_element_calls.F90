@@ -16,14 +16,17 @@
 !> operations per call of the kernel counted by hand (element_flops below; docs/performance.md "The C3D8 kernel")
 !> and the rate they give (the same count for the three ways: it is the work of the formulation), a checksum of the
 !> forces, tangents and stresses over the calls and a fingerprint of the bits of the last call's outputs (two builds
-!> or two ways compare for speed and results: equal fingerprints, identical outputs).
+!> or two ways compare for speed and results: equal fingerprints, identical outputs). Last, the tangent
+!> accumulation alone at each instruction-set build of the point kernel (level 0 baseline, 1 AVX2, 2 AVX-512).
 program bench_element_calls
   use, intrinsic :: iso_fortran_env, only: int64
   use ldfcz_kinds, only: dp
 #ifdef LDFCZ_BASELINE_API
   use solid_element, only: solid_material_t, solid_element_compute, solid_geometry_t, solid_element_geometry, &
     SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, umat_interface
+  use solid_tangent_kernel, only: k_point_c3d8
 #else
+  use solid_tangent_kernel, only: k_point_c3d8, k_point_c3d8_spatial, tangent_kernel_level, KERNEL_LEVEL_BASE
   use solid_element, only: solid_material_t, solid_element_compute, solid_geometry_t, solid_element_geometry, &
     solid_compact_geometry, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, umat_interface
 #endif
@@ -94,6 +97,7 @@ program bench_element_calls
   do way = 1, nway
     call run('Leonov plastic, tangent', leonov, f0, f1, 0.05_dp, .true., max(1, n / 5), way)
   end do
+  call tangent_alone(n)
 
 contains
 
@@ -163,6 +167,59 @@ contains
       bits([fe, reshape(ke, [size(ke)]), reshape(s_new, [size(s_new)]), reshape(v_new, [size(v_new)]), &
       reshape(eip_new, [size(eip_new)]), en])
   end subroutine run
+
+  !> The tangent accumulation alone: the 8 points' calls of the point kernel (solid_tangent_kernel) for one element,
+  !> random operands: under NLGEOM (no row term) at each instruction-set build this CPU runs, and with the row
+  !> term (the generic path's small-strain call; the older build has only this one, called under NLGEOM with a zero
+  !> row term). 41 472 flops a C3D8 (216 columns' t_ij x 8 per point, 576 entries x 6), 51 072 with the row term
+  !> (576 entries x 8, 24 traces x 2).
+  subroutine tangent_alone(n)
+    integer, intent(in) :: n
+    real(dp) :: a4(3, 3, 3, 3), q(3, 3), d(8, 3), bc(8, 3), bcr(8, 3), kl(8, 3, 3, 8), t0, t1, s
+    integer :: i, ip, level, variant
+    character(len=40) :: lab
+    call random_seed(put=[(4321 + 7 * i, i = 1, 64)])
+    call random_number(a4)
+    call random_number(q)
+    call random_number(d)
+    call random_number(bc)
+    bcr = 0.0_dp
+#ifdef LDFCZ_BASELINE_API
+    do variant = 2, 2
+      level = 0
+#else
+    do variant = 1, 2
+      do level = KERNEL_LEVEL_BASE, tangent_kernel_level()
+#endif
+        s = 0.0_dp
+        call cpu_time(t0)
+        do i = 1, n
+          kl = 0.0_dp
+          do ip = 1, 8
+#ifdef LDFCZ_BASELINE_API
+            call k_point_c3d8(a4, q, d, bc, bcr, 1.0_dp + 1.0e-9_dp * ip, kl)
+#else
+            if (variant == 1) then
+              call k_point_c3d8_spatial(level, a4, q, d, bc, 1.0_dp + 1.0e-9_dp * ip, kl)
+            else
+              call k_point_c3d8(level, a4, q, d, bc, bcr, 1.0_dp + 1.0e-9_dp * ip, kl)
+            end if
+#endif
+          end do
+          s = s + kl(3, 2, 1, 5)
+          d(1, 1) = d(1, 1) + 1.0e-12_dp
+        end do
+        call cpu_time(t1)
+        write (lab, '(a,a,i0)') trim(merge('tangent alone, NLGEOM   ', 'tangent alone, row term ', variant == 1)), &
+          ', level ', level
+        print '(a40,f10.3,f17.0,f9.2,es24.15)', lab, 1.0e6_dp * (t1 - t0) / n, &
+          merge(41472.0_dp, 51072.0_dp, variant == 1), merge(41472.0_dp, 51072.0_dp, variant == 1) * 1.0e-3_dp &
+          / (1.0e6_dp * (t1 - t0) / n), s
+#ifndef LDFCZ_BASELINE_API
+      end do
+#endif
+    end do
+  end subroutine tangent_alone
 
   !> Floating-point operations (+, -, *, /, sqrt; a call of exp, log, pow, tanh or sinh counted as one) of one call of
   !> the C3D8 kernel (host/elements/solid_c3d8.f90), counted by hand from its loops, as the element runs here (no
