@@ -8,7 +8,7 @@ module analysis_core
   use model_types, only: model_t, etype_user, orientation_axes, model_dof_node
   use element_catalog, only: element_name
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
-    solid_geometry_t, solid_element_geometry, &
+    solid_geometry_t, solid_element_geometry, solid_compact_geometry_size, solid_compact_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
   use element_colors, only: color_elements
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
@@ -135,10 +135,14 @@ module analysis_core
     character(len=8), allocatable :: elem_tname(:) !< Abaqus element type name ('C3D8', ...) or 'U'
     type(solid_material_t), allocatable :: mats(:)  !< per section
     type(elem_axes_t), allocatable :: axes(:)   !< (nelem) local material axes (*ORIENTATION)
-    !> (nelem) index into geo of a continuum element this process computes, 0 otherwise (user elements, other
-    !> processes' elements: element_geometry computes theirs)
+    !> (nelem) where the reference data of a continuum element this process computes is kept: k > 0 in geo(k),
+    !> k < 0 in geo_compact(:, -k); 0 otherwise (user elements, other processes' elements: element_geometry
+    !> computes theirs)
     integer, allocatable :: elem_geo(:)
     type(solid_geometry_t), allocatable :: geo(:)  !< reference data of those elements (computed once)
+    !> compact reference data (solid_compact_geometry) of the elements whose type's fixed-size kernel serves them
+    !> in every step (C3D8 under NLGEOM without *ORIENTATION): 720 bytes a C3D8 instead of about 3.4 kB in geo
+    real(dp), allocatable :: geo_compact(:, :)
     type(node_rotation_t) :: nr                 !< *TRANSFORM local node systems (node_rotations): u, u_conv, fint,
                                                 !< fext, fdl and the system are in their components at those nodes
     type(user_routines_t) :: routines           !< UEL and UMAT in use
@@ -172,7 +176,8 @@ contains
     !> the partition's weights and pieces, the factorization's choices (default: solver_options_t's)
     type(solver_options_t), intent(in), optional :: options
     type(solver_options_t) :: opt
-    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra
+    integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra, nc, kc
+    logical :: all_nlgeom
     character(len=16) :: b
 
     stat = 0
@@ -292,20 +297,42 @@ contains
     ! reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
     ! process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
     ! process's element when output needs it; 41 MB a process on the paper's application mesh when all are kept)
+    ! An element whose type's fixed-size kernel serves it in every step (C3D8: every step NLGEOM, no *ORIENTATION
+    ! on its section, no *MODEL CHANGE, whose reactivation moves the reference) keeps the kernel's compact form (about a fifth of the memory; the kernel rebuilds the arrays
+    ! from it to the bit), the others the whole arrays.
     allocate (an%elem_geo(model%nelem))
     an%elem_geo = 0
     n = 0
+    nc = 0
+    kc = 0
+    all_nlgeom = model%nstep > 0
+    do is = 1, model%nstep
+      all_nlgeom = all_nlgeom .and. model%steps(is)%nlgeom
+    end do
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) /= etype_user .and. an%owned(ie)) then
+      if (model%elem_kind(ie) == etype_user .or. .not. an%owned(ie)) cycle
+      k = 0
+      if (all_nlgeom .and. model%sections(model%elem_section(ie))%iorient == 0 .and. .not. model%has_model_change) &
+        k = solid_compact_geometry_size(an%elem_tname(ie))
+      if (k > 0 .and. (kc == 0 .or. k == kc)) then
+        kc = k
+        nc = nc + 1
+        an%elem_geo(ie) = -nc
+      else
         n = n + 1
         an%elem_geo(ie) = n
       end if
     end do
-    allocate (an%geo(n))
+    allocate (an%geo(n), an%geo_compact(kc, nc))
     do ie = 1, model%nelem
-      if (an%elem_geo(ie) == 0) cycle
-      call solid_element_geometry(an%elem_tname(ie), &
-        model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+      if (an%elem_geo(ie) > 0) then
+        call solid_element_geometry(an%elem_tname(ie), &
+          model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+      else if (an%elem_geo(ie) < 0) then
+        call solid_compact_geometry(an%elem_tname(ie), &
+          model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
+          an%geo_compact(:, -an%elem_geo(ie)))
+      end if
     end do
     call element_axes(an, model, stat, errmsg)
     if (stat /= 0) return
@@ -638,7 +665,8 @@ contains
     if (an%work%stop%asked) call parallel_lowest(an%par, an%work%stop%elem, an%work%stop%text, an%work%stop%rank)
   end subroutine reduce_over_processes
 
-  !> One element: UEL through the procedure pointer, or the continuum element with its material.
+  !> One element: UEL through the procedure pointer, or the continuum element with its material; then, at nodes
+  !> with a *TRANSFORM, back to the system components.
   subroutine element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
     type(analysis_t), intent(inout) :: an
     type(model_t), intent(in) :: model
@@ -649,11 +677,50 @@ contains
     real(dp), intent(inout) :: pnewdt
     integer, intent(out) :: stat
     character(len=*), intent(out) :: msg
-    integer :: nn, a, iu, ip, mcrd, nsv, nf, nd
-    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8)
-    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho, ushift(n)
+    if (model%elem_kind(ie) == etype_user) then
+      call user_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    else
+      call continuum_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    end if
+    if (an%nr%elem_has(ie)) then
+      ! back to the system components of the transformed nodes (T_e^T f, T_e^T K T_e)
+      associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
+        call element_to_local(an%nr, nodes, fel)
+        if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
+          an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+        if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
+      end associate
+    end if
+  end subroutine element_compute
+
+  !> The displacement an element reactivated strain-free (model_change) works from: it sees X + u_ref and the
+  !> displacement u - u_ref; zero for every other element (system components).
+  subroutine element_shift(an, ie, n, ushift)
+    type(analysis_t), intent(in) :: an  !< the analysis
+    integer, intent(in) :: ie, n        !< the element, its dofs
+    real(dp), intent(out) :: ushift(n)  !< u_ref at its dofs
+    ushift = 0.0_dp
+    if (size(an%state%shifted) > 0) then
+      if (an%state%shifted(ie)) ushift = an%state%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)
+    end if
+  end subroutine element_shift
+
+  !> A user element: the UEL through the procedure pointer, with the Abaqus arguments (docs/conventions.md).
+  subroutine user_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    type(analysis_t), intent(inout) :: an
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: ie, n
+    type(increment_t), intent(in) :: inc
+    logical, intent(in) :: want_k
+    real(dp), intent(out) :: fel(n), ke(n, n)
+    real(dp), intent(inout) :: pnewdt
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: msg
+    integer :: nn, a, iu, ip, mcrd, nsv, nf, nd, nact, jd
+    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), energy(8), ushift(n)
+    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1)
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
-    integer :: jdltyp(mdload, 1), lflags(5), ndload, im, nact, jd
+    integer :: jdltyp(mdload, 1), lflags(5), ndload
     integer, allocatable :: jprops(:)
     character(len=16) :: b
     integer :: kstep, kinc
@@ -672,11 +739,7 @@ contains
     nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
     ue = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
     due(:, 1) = ue - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-    ! an element reactivated strain-free (model_change) works from X + u_ref with the displacement u - u_ref
-    ushift = 0.0_dp
-    if (size(an%state%shifted) > 0) then
-      if (an%state%shifted(ie)) ushift = an%state%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)
-    end if
+    call element_shift(an, ie, n, ushift)
     ue = ue - ushift
     if (an%nr%elem_has(ie)) then
       ! *TRANSFORM: the element works in global components
@@ -684,118 +747,155 @@ contains
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(:, 1))
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ushift)
     end if
-    if (model%elem_kind(ie) == etype_user) then
-      iu = model%elem_utype(ie)
-      mcrd = model%utypes(iu)%mcrd
-      nf = model%nfield
-      allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
-      nact = size(model%utypes(iu)%active)
-      do a = 1, nn
-        xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
-        if (.not. nlgeom) cycle
-        do jd = 1, nact
-          if (model%utypes(iu)%active(jd) <= mcrd) xc(model%utypes(iu)%active(jd), a) = &
-            xc(model%utypes(iu)%active(jd), a) + ushift((a - 1) * nact + jd)
-        end do
+    iu = model%elem_utype(ie)
+    mcrd = model%utypes(iu)%mcrd
+    nf = model%nfield
+    allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
+    nact = size(model%utypes(iu)%active)
+    do a = 1, nn
+      xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
+      if (.not. nlgeom) cycle
+      do jd = 1, nact
+        if (model%utypes(iu)%active(jd) <= mcrd) xc(model%utypes(iu)%active(jd), a) = &
+          xc(model%utypes(iu)%active(jd), a) + ushift((a - 1) * nact + jd)
       end do
-      ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
-      ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
-      do a = 1, nn
-        nd = model%conn(model%conn_ptr(ie) + a - 1)
-        predef(1, 1, a) = an%work%temp_end(nd)
-        predef(2, 1, a) = predef(1, 1, a) - an%state%temp_start(nd)
-        predef(1, 2:1 + nf, a) = an%work%field_end((nd - 1) * nf + 1:nd * nf)
-        predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%state%field_start((nd - 1) * nf + 1:nd * nf)
-      end do
-      ip = model%elem_uelprop(ie)
-      if (ip > 0) then
-        props = model%uelprops(ip)%props
-        jprops = model%uelprops(ip)%jprops
-      else
-        allocate (props(0), jprops(0))
-      end if
-      if (size(props) == 0) props = [0.0_dp]
-      if (size(jprops) == 0) jprops = [0]
-      nsv = model%utypes(iu)%nsvars
-      ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
-      sv = an%state%conv(ie)%svars
-      if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
-      energy = an%state%conv(ie)%energy
-      rhs = 0.0_dp
-      ke = 0.0_dp
-      v = 0.0_dp
-      acc = 0.0_dp
-      params = 0.0_dp
-      ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
-      ! DDLMAG(k,1) its increment (Abaqus UEL interface)
-      call dload_uel_arrays(an%state%loads%dload, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
-        ddlmag(:, 1))
-      ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
-      ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
-      ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
-      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
-      call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
-        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
-        adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
-      fel = -rhs(:, 1)
-      if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
-        write (b, '(i0)') model%elem_id(ie)
-        stat = 1
-        msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
-        return
-      end if
-      if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
-      an%work%trial(ie)%energy = energy
-      ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
-      if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+    end do
+    ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
+    ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
+    do a = 1, nn
+      nd = model%conn(model%conn_ptr(ie) + a - 1)
+      predef(1, 1, a) = an%work%temp_end(nd)
+      predef(2, 1, a) = predef(1, 1, a) - an%state%temp_start(nd)
+      predef(1, 2:1 + nf, a) = an%work%field_end((nd - 1) * nf + 1:nd * nf)
+      predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%state%field_start((nd - 1) * nf + 1:nd * nf)
+    end do
+    ip = model%elem_uelprop(ie)
+    if (ip > 0) then
+      props = model%uelprops(ip)%props
+      jprops = model%uelprops(ip)%jprops
     else
-      do a = 1, nn
-        coords(1:an%ndim, a) = model%x(1:an%ndim, model%conn(model%conn_ptr(ie) + a - 1))
-        if (nlgeom) coords(1:an%ndim, a) = coords(1:an%ndim, a) + ushift((a - 1) * an%ndim + 1:a * an%ndim)
-      end do
-      associate (st => an%work%trial(ie), cv => an%state%conv(ie))
-        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
-          an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
-          model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
-          temp_nodes=an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
-          dtemp_nodes=an%work%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
-          an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t, &
-          field_nodes=element_fields(an%state%field_start), dfield_nodes=element_fields(an%work%field_end) - &
-          element_fields(an%state%field_start))
-        st%energy = 0.0_dp
-        st%energy(2) = e2(1)
-        st%energy(4) = e2(2)
-      end associate
-      if (stat /= 0) then
-        ! the element's own message names the element already; say which routine it came from
-        write (b, '(i0)') model%elem_id(ie)
-        if (index(msg, 'element '//trim(b)//':') == 1) msg = msg(len('element '//trim(b)//':') + 2:)
-        msg = 'element '//trim(b)//' ('//trim(merge('UMAT    ', '*ELASTIC', &
-          an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
-        stat = 1
-      end if
-      if (stat == 0 .and. dload_has(an%state%loads%dload, ie)) then
-        ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
-        im = model%elem_section(ie)
-        rho = 0.0_dp
-        if (im > 0) rho = model_density(model, im)
-        associate (g => an%geo(an%elem_geo(ie)))
-          call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue, nlgeom, &
-            g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, fl, kl)
-        end associate
-        an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
-        if (want_k) ke = ke + kl
-      end if
+      allocate (props(0), jprops(0))
     end if
+    if (size(props) == 0) props = [0.0_dp]
+    if (size(jprops) == 0) jprops = [0]
+    nsv = model%utypes(iu)%nsvars
+    ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
+    sv = an%state%conv(ie)%svars
+    if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
+    energy = an%state%conv(ie)%energy
+    rhs = 0.0_dp
+    ke = 0.0_dp
+    v = 0.0_dp
+    acc = 0.0_dp
+    params = 0.0_dp
+    ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
+    ! DDLMAG(k,1) its increment (Abaqus UEL interface)
+    call dload_uel_arrays(an%state%loads%dload, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
+      ddlmag(:, 1))
+    ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
+    ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
+    ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
+    lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
+    call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
+      ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
+      adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
+    fel = -rhs(:, 1)
+    if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
+      write (b, '(i0)') model%elem_id(ie)
+      stat = 1
+      msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
+      return
+    end if
+    if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
+    an%work%trial(ie)%energy = energy
+    ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
+    if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+  end subroutine user_element_compute
+
+  !> A continuum element (solid_element_compute) with its section's material, and its distributed loads. Fixed-size
+  !> work arrays (at most 20 nodes, 60 dofs): no heap allocation per call.
+  subroutine continuum_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    type(analysis_t), intent(inout) :: an
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: ie, n
+    type(increment_t), intent(in) :: inc
+    logical, intent(in) :: want_k
+    real(dp), intent(out) :: fel(n), ke(n, n)
+    real(dp), intent(inout) :: pnewdt
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: msg
+    integer, parameter :: mnode = 20, mdof = 3 * mnode
+    integer :: nn, a, nd, im
+    real(dp) :: ue(mdof), due(mdof), coords(3, mnode), t0(mnode), dtn(mnode), e2(2), fl(mdof), kl(mdof, mdof), rho
+    real(dp) :: ushift(mdof)
+    real(dp) :: no_fields(0, mnode)
+    real(dp), allocatable :: fld0(:, :), dfld(:, :)
+    type(solid_geometry_t) :: gw
+    character(len=16) :: b
+    integer :: kstep, kinc
+    real(dp) :: time(2), dtime
+    logical :: nlgeom
+
+    kstep = inc%step
+    kinc = inc%kinc
+    time = increment_time(inc)
+    dtime = inc%dt
+    nlgeom = inc%nlgeom
+    stat = 0
+    msg = ''
+    nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+    ue(1:n) = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    due(1:n) = ue(1:n) - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    call element_shift(an, ie, n, ushift(1:n))
+    ue(1:n) = ue(1:n) - ushift(1:n)
     if (an%nr%elem_has(ie)) then
-      ! back to the system components of the transformed nodes (T_e^T f, T_e^T K T_e)
-      associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
-        call element_to_local(an%nr, nodes, fel)
-        if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
-          an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-        if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
-      end associate
+      ! *TRANSFORM: the element works in global components
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ue(1:n))
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(1:n))
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ushift(1:n))
+    end if
+    do a = 1, nn
+      nd = model%conn(model%conn_ptr(ie) + a - 1)
+      coords(1:an%ndim, a) = model%x(1:an%ndim, nd)
+      if (nlgeom) coords(1:an%ndim, a) = coords(1:an%ndim, a) + ushift((a - 1) * an%ndim + 1:a * an%ndim)
+      t0(a) = an%state%temp_start(nd)
+      dtn(a) = an%work%temp_end(nd) - an%state%temp_start(nd)
+    end do
+    if (model%nfield > 0) then
+      fld0 = element_fields(an%state%field_start)
+      dfld = element_fields(an%work%field_end) - fld0
+      call element_call(fld0, dfld)
+    else
+      call element_call(no_fields(:, 1:nn), no_fields(:, 1:nn))
+    end if
+    if (stat /= 0) then
+      ! the element's own message names the element already; say which routine it came from
+      write (b, '(i0)') model%elem_id(ie)
+      if (index(msg, 'element '//trim(b)//':') == 1) msg = msg(len('element '//trim(b)//':') + 2:)
+      msg = 'element '//trim(b)//' ('//trim(merge('UMAT    ', '*ELASTIC', &
+        an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
+      stat = 1
+    end if
+    if (stat == 0 .and. dload_has(an%state%loads%dload, ie)) then
+      ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
+      im = model%elem_section(ie)
+      rho = 0.0_dp
+      if (im > 0) rho = model_density(model, im)
+      if (an%elem_geo(ie) < 0) then
+        ! compact reference data: the whole arrays computed for the load (elements with distributed loads only)
+        call element_geometry(an, model, ie, gw)
+        call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue(1:n), &
+          nlgeom, gw%nfun(1:nn, 1:an%elem_nip(ie)), gw%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, &
+          want_k, fl(1:n), kl(1:n, 1:n))
+      else
+        associate (g => an%geo(an%elem_geo(ie)))
+          call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue(1:n), &
+            nlgeom, g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, &
+            want_k, fl(1:n), kl(1:n, 1:n))
+        end associate
+      end if
+      an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl(1:n)
+      if (want_k) ke = ke + kl(1:n, 1:n)
     end if
 
   contains
@@ -810,7 +910,31 @@ contains
         fe(:, b) = v((m - 1) * model%nfield + 1:m * model%nfield)
       end do
     end function element_fields
-  end subroutine element_compute
+
+    !> solid_element_compute with the element's data and its reference data in the form the host keeps.
+    subroutine element_call(fields0, dfields)
+      real(dp), intent(in) :: fields0(:, :), dfields(:, :)   !< (nfield, nn) field variables, increments
+      associate (st => an%work%trial(ie), cv => an%state%conv(ie))
+        if (an%elem_geo(ie) < 0) then
+          call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
+            an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+            model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+            energy_ip_old=cv%eip, energy_ip_new=st%eip, geo_compact=an%geo_compact(:, -an%elem_geo(ie)), &
+            temp_nodes=t0(1:nn), dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fields0, &
+            dfield_nodes=dfields)
+        else
+          call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
+            an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+            model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+            energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), temp_nodes=t0(1:nn), &
+            dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fields0, dfield_nodes=dfields)
+        end if
+        st%energy = 0.0_dp
+        st%energy(2) = e2(1)
+        st%energy(4) = e2(2)
+      end associate
+    end subroutine element_call
+  end subroutine continuum_element_compute
 
   !> Local material axes at the integration points of the elements whose section has an *ORIENTATION (the points'
   !> reference coordinates for CYLINDRICAL). A plane element's axes must keep local 3 along z.

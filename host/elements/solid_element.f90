@@ -46,21 +46,22 @@ module solid_element
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
+  use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, &
+    SOLID_PNEWDT_LARGE
+  use solid_c3d8, only: c3d8_nlgeom, c3d8_compact_geometry, c3d8_compact_size
   use element_catalog, only: element_types, element_kind_of, element_nnode, element_ndim, element_ndi, &
-    element_nshr, element_is_axisymmetric, element_is_plane_stress
+    element_nshr, element_is_axisymmetric, element_is_plane_stress, KERNEL_C3D8
   use solid_shape, only: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
-  use solid_elastic, only: elastic_update, elastic_check, elastic_law_t, elastic_law_update, elastic_law_check, &
+  use solid_elastic, only: elastic_update, elastic_check, elastic_law_update, elastic_law_check, &
     thermal_strain_increment, elastic_law_shear_modulus, elastic_thickness_increment, law_lamina
-  use solid_tangent_kernel, only: k_point_c3d8
+  use solid_tangent_kernel, only: k_point_c3d8, tangent_kernel_level
   implicit none
   private
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
   public :: solid_geometry_t, solid_element_geometry, polar_rotation
+  public :: solid_compact_geometry_size, solid_compact_geometry
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
 
-  integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
-  integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer
-  real(dp), parameter :: SOLID_PNEWDT_LARGE = 1.0e36_dp  !< PNEWDT handed to each UMAT call ("a large value")
   !> nodes (plus incompatible-mode pseudo-nodes) and integration points at most
   integer, parameter :: maxnode = 20, maxip = 27
   real(dp), parameter :: no_field(0) = [real(dp) ::]  !< PREDEF/DPRED of a model without field variables
@@ -73,45 +74,6 @@ module solid_element
   integer, parameter :: vidx(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
   !> the same for plane stress (NTENS = 3: 11,22,12; no 33 entry, never addressed in 2D)
   integer, parameter :: vidx_ps(3, 3) = reshape([1, 3, 0, 3, 2, 0, 0, 0, 0], [3, 3])
-
-  !> Material (and section) data of an element set.
-  type :: solid_material_t
-    integer :: kind = SOLID_MAT_ELASTIC                 !< SOLID_MAT_ELASTIC or SOLID_MAT_UMAT
-    real(dp) :: e = 0.0_dp                              !< *ELASTIC Young's modulus (MPa)
-    real(dp) :: nu = 0.0_dp                             !< *ELASTIC Poisson's ratio
-    real(dp), allocatable :: props(:)                   !< *USER MATERIAL constants (PROPS)
-    integer :: nstatv = 0                               !< *DEPVAR count (NSTATV)
-    character(len=80) :: cmname = ' '                   !< material name as passed in CMNAME (upper case in Abaqus)
-    logical :: unsymm = .false.                         !< *USER MATERIAL, UNSYMM: keep the unsymmetric tangent
-    real(dp) :: thickness = 1.0_dp                      !< *SOLID SECTION thickness of plane elements (CPE4)
-    real(dp) :: alpha = 0.0_dp                          !< *EXPANSION isotropic coefficient (thermal strain alpha dT)
-    type(elastic_law_t) :: law                          !< law%general: *ELASTIC/*EXPANSION other than constant
-                                                        !< isotropic (then used instead of e, nu, alpha)
-    procedure(umat_interface), pointer, nopass :: umat => null()  !< the UMAT to call when kind = SOLID_MAT_UMAT
-  end type solid_material_t
-
-  !> Reference-configuration data of one element, the same on every call (original coordinates): shape functions,
-  !> dN/dX and Gauss weight x det(dX/dxi) at the integration points, dN/dX at the centre and its volume mean. Rows
-  !> nnode+1..nnode+nmode of dndx_ref are the incompatible modes' reference gradients (C3D8I, CPE4I). Sized to the
-  !> element. A host may compute it once per element (solid_element_geometry) and pass it to solid_element_compute
-  !> instead of the per-call recomputation.
-  type :: solid_geometry_t
-    logical :: valid = .false.                 !< computed, every reference Jacobian > 0
-    real(dp), allocatable :: nfun(:, :)        !< (nnode+nmode, nip) N_a at the integration points (0 for modes)
-    real(dp), allocatable :: dndx_ref(:, :, :) !< (nnode+nmode, 3, nip) dN_a/dX_j at the integration points
-    real(dp), allocatable :: wdet(:)           !< (nip) Gauss weight x det(dX/dxi)
-    real(dp), allocatable :: dndx_0c(:, :)     !< (nnode+nmode, 3) dN_a/dX_j at the element centre
-    real(dp), allocatable :: dndx_0m(:, :)     !< (nnode+nmode, 3) volume mean of dN_a/dX_j (B-bar, small strain)
-    real(dp), allocatable :: gamma(:, :)       !< (nnode, nhg) Flanagan-Belytschko hourglass vectors (one-point types)
-    real(dp), allocatable :: hoop(:, :)        !< (nnode+nmode, nip) N_a / R at the points (axisymmetric types)
-    real(dp), allocatable :: hoop_0c(:)        !< (nnode+nmode) N_a / R at the element centre (axisymmetric)
-    real(dp), allocatable :: hoop_0m(:)        !< (nnode+nmode) volume mean of N_a / R (axisymmetric B-bar)
-    integer :: nhg = 0                         !< hourglass vectors (0: none)
-    real(dp) :: hg_vsum = 0.0_dp               !< reference volume x sum_(a,j) (dN_a/dX_j)^2 at the point
-    !> (nnode, 4) one-point axisymmetric types: sqrt(w_q) (N_a/R - <N_a/R>) at the 2x2 points q, w_q = 2 pi R_q x
-    !> Gauss weight x det: sum_q (hoop_fl(:, q) . u_r)^2 = int (hoop strain - its element mean)^2 dV
-    real(dp), allocatable :: hoop_fl(:, :)
-  end type solid_geometry_t
 
 contains
 
@@ -274,6 +236,31 @@ contains
     geo%valid = .true.
   end subroutine solid_element_geometry
 
+  !> Entries of the compact reference data of a type (solid_compact_geometry), 0 for a type without one (only the
+  !> types with a fixed-size kernel have it: C3D8, 90 entries).
+  pure integer function solid_compact_geometry_size(etype) result(n)
+    character(len=*), intent(in) :: etype             !< element type name
+    integer :: it
+    n = 0
+    it = element_kind_of(etype)
+    if (it == 0) return
+    if (element_types(it)%kernel == KERNEL_C3D8) n = c3d8_compact_size
+  end function solid_compact_geometry_size
+
+  !> The compact reference data of an element of a type with a fixed-size kernel (solid_compact_geometry_size
+  !> entries; gc(1) = 1 when valid): what the kernel rebuilds solid_element_geometry's arrays from, to the bit, at a
+  !> small cost per call (C3D8: 720 bytes instead of about 3.4 kB with the arrays' descriptors). gc = 0 (not valid)
+  !> for a type without one or coordinates of another size.
+  pure subroutine solid_compact_geometry(etype, coords0, gc)
+    character(len=*), intent(in) :: etype             !< element type name
+    real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
+    real(dp), intent(out) :: gc(:)                    !< (solid_compact_geometry_size(etype)) compact reference data
+    gc = 0.0_dp
+    if (solid_compact_geometry_size(etype) /= c3d8_compact_size .or. size(gc) /= c3d8_compact_size) return
+    if (size(coords0, 1) /= 3 .or. size(coords0, 2) /= 8) return
+    call c3d8_compact_geometry(coords0, gc)
+  end subroutine solid_compact_geometry
+
   !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi), jinv its inverse
   !> (dndx = 0 if detj <= 0).
   pure subroutine solid_reference_derivatives(family, nnode, ndim, coords0, xi, n_p, dndx_p, detj, jinv)
@@ -300,7 +287,8 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient, field_nodes, dfield_nodes)
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient, field_nodes, dfield_nodes, &
+      generic_only, geo_compact)
     character(len=*), intent(in) :: etype             !< element type name (element_catalog)
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -337,6 +325,12 @@ contains
     real(dp), intent(in), optional :: orient(:, :, :) !< (3, 3, nip) local material axes T0 (columns) per point
     real(dp), intent(in), optional :: field_nodes(:, :)  !< (nfield, nnode) field variables at the increment's start
     real(dp), intent(in), optional :: dfield_nodes(:, :) !< (nfield, nnode) their increments (PREDEF, DPRED at points)
+    !> .true.: the generic path even where the type's fixed-size kernel would serve (tests and benchmarks compare
+    !> the two; the results are the same bits)
+    logical, intent(in), optional :: generic_only
+    !> compact reference data (solid_compact_geometry) instead of geo, for a type with a fixed-size kernel: the
+    !> kernel rebuilds the arrays it needs from it (the generic path, where it serves, computes them from coords0)
+    real(dp), intent(in), optional :: geo_compact(:)
 
     integer, parameter :: max_local_iter = 30      ! element-level Newton on the incompatible modes
     integer :: it, nnode, nne, ndim, nip, ntens, ndi, nshr, nextra, ndof, ndofe, nalpha, nsv, np
@@ -357,6 +351,8 @@ contains
     integer :: mh
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
+    character(len=200) :: kmsg
+    integer :: kgeo
     character(len=*), parameter :: here = 'solid_element_compute: '
 
     stat = 0
@@ -430,6 +426,55 @@ contains
       return
     end if
 
+    ! ---- a type's fixed-size kernel where it covers the call (element_catalog: kernel), with the host's reference
+    ! data in either form
+    if (element_types(it)%kernel == KERNEL_C3D8 .and. nlgeom .and. .not. present(orient) .and. &
+        .not. mat%law%general .and. .not. flag(generic_only)) then
+      kgeo = 0
+      if (present(geo)) then
+        if (geo%valid) kgeo = 1
+      end if
+      if (kgeo == 0 .and. present(geo_compact)) then
+        if (size(geo_compact) == c3d8_compact_size) then
+          if (geo_compact(1) == 1.0_dp) kgeo = 2
+        end if
+      end if
+      if (kgeo == 0) then
+        ! no reference data from the host: computed now (as the generic path would)
+        call solid_element_geometry(etype, coords0, gl)
+        if (gl%valid) kgeo = 3
+      end if
+      if (kgeo == 1) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gp=geo)
+      else if (kgeo == 3) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gp=gl)
+      else if (kgeo == 2) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gc=geo_compact)
+      end if
+      if (kgeo /= 0) then
+        if (stat /= 0) call fail(stat, trim(kmsg))
+        return
+      end if
+    end if
+
+    ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
+    gp => gl
+    if (present(geo)) then
+      if (geo%valid) gp => geo
+    end if
+    if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
+    if (.not. gp%valid) then
+      call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
+                'integration point, or radius <= 0 at a point of an axisymmetric element)')
+      return
+    end if
+
     eye = identity()
     m = real(ndim, dp)
     nf = merge(3, ndim, element_is_axisymmetric(it))
@@ -450,17 +495,6 @@ contains
       alpha_n(k) = statev_old(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1)
     end do
 
-    ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
-    gp => gl
-    if (present(geo)) then
-      if (geo%valid) gp => geo
-    end if
-    if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
-    if (.not. gp%valid) then
-      call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
-                'integration point, or radius <= 0 at a point of an axisymmetric element)')
-      return
-    end if
 
     ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
     fc0 = def_grad(un, gp%dndx_0c)
@@ -943,7 +977,7 @@ contains
             d8 = dndx(1:8, :)
             b8 = bc(1:8, :)
             r8 = bcr(1:8, :) / mf
-            call k_point_c3d8(a4, q, d8, b8, r8, dv, kl8)
+            call k_point_c3d8(tangent_kernel_level(), a4, q, d8, b8, r8, dv, kl8)
           else
             do b = 1, nne
               do k = 1, ndim
@@ -1019,6 +1053,13 @@ contains
     end function def_grad
 
   end subroutine solid_element_compute
+
+  !> An optional flag's value (.false. when absent).
+  pure logical function flag(f)
+    logical, intent(in), optional :: f
+    flag = .false.
+    if (present(f)) flag = f
+  end function flag
 
   !> Solve a x = b in place (b holds x on return) by Gaussian elimination with partial pivoting; stat 1 when a is
   !> singular (zero pivot).
@@ -1132,13 +1173,6 @@ contains
     if (nlgeom) q(1:ndim, 1:ndim) = q(1:ndim, 1:ndim) - (1.0_dp - 1.0_dp / m) * sig(1:ndim, 1:ndim)
   end subroutine spatial_tangent
 
-  !> Number of PROPS of a material (0 when none were given).
-  pure integer function nprops_of(mat)
-    type(solid_material_t), intent(in) :: mat
-    nprops_of = 0
-    if (allocated(mat%props)) nprops_of = size(mat%props)
-  end function nprops_of
-
   !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain. Layout by
   !> ntens: 6 (11,22,33,12,13,23), 4 (11,22,33,12: plane strain), 3 (11,22,12: plane stress).
   pure subroutine voigt_to_tensor(v, ntens, t, shear_factor)
@@ -1198,40 +1232,6 @@ contains
     end do
   end function polar_rotation
 
-  pure function identity() result(e)
-    real(dp) :: e(3, 3)
-    e = 0.0_dp
-    e(1, 1) = 1.0_dp; e(2, 2) = 1.0_dp; e(3, 3) = 1.0_dp
-  end function identity
-
-  pure real(dp) function det3(a)
-    real(dp), intent(in) :: a(3, 3)
-    det3 = a(1, 1) * (a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)) - a(1, 2) * (a(2, 1) * a(3, 3) - a(2, 3) * a(3, 1)) &
-         + a(1, 3) * (a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1))
-  end function det3
-
-  !> Inverse of a 3x3 matrix by its adjugate (callers ensure det > 0).
-  pure function inv3(a) result(b)
-    real(dp), intent(in) :: a(3, 3)
-    real(dp) :: b(3, 3)
-    b(1, 1) = a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)
-    b(1, 2) = a(1, 3) * a(3, 2) - a(1, 2) * a(3, 3)
-    b(1, 3) = a(1, 2) * a(2, 3) - a(1, 3) * a(2, 2)
-    b(2, 1) = a(2, 3) * a(3, 1) - a(2, 1) * a(3, 3)
-    b(2, 2) = a(1, 1) * a(3, 3) - a(1, 3) * a(3, 1)
-    b(2, 3) = a(1, 3) * a(2, 1) - a(1, 1) * a(2, 3)
-    b(3, 1) = a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1)
-    b(3, 2) = a(1, 2) * a(3, 1) - a(1, 1) * a(3, 2)
-    b(3, 3) = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)
-    b = b / det3(a)
-  end function inv3
-
-  pure function itoa(n) result(s)
-    integer, intent(in) :: n
-    character(len=:), allocatable :: s
-    character(len=16) :: buf
-    write (buf, '(i0)') n
-    s = trim(buf)
-  end function itoa
+  include 'solid_tensor3.inc'
 
 end module solid_element
