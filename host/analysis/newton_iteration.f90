@@ -8,7 +8,8 @@ module newton_iteration
   use linear_constraints, only: constraints_residual, constraints_apply
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_system_t, sparse_factorize, sparse_solve, sparse_is_factored, &
-    sparse_solve_krylov, sparse_factors_exact, sparse_factor_flops, sparse_iteration_flops
+    sparse_solve_krylov, sparse_factors_exact, sparse_factor_flops, sparse_iteration_flops, sparse_pipelined, &
+    sparse_factor_install
   use output_files, only: output_t, output_log
   use solver_options, only: newton_modified, newton_krylov, newton_auto
   use run_summary, only: run_summary_t
@@ -31,6 +32,13 @@ module newton_iteration
   ! half the measured time ratio gave on that machine (0.345 / 0.0283 / 2 = 6.1).
   real(dp), parameter :: krylov_budget_share = 0.5_dp   !< GMRES time with older factors, of a factorization's
   real(dp), parameter :: krylov_speed = 0.235_dp        !< operations per second: GMRES iteration / factorization
+  ! Mode auto pipelines its refactorizations (two factor instances, sparse_system): when GMRES with the last factors
+  ! has not converged within its budget, the factorization of the current tangent begins (on a thread of its own
+  ! when the run has two) while GMRES goes on with the older factors for krylov_overlap iterations, about one
+  ! factorization's time (counted in operations, as the budget); then the new factors are installed (waited for if
+  ! late) and GMRES restarts from its iterate with them. The iterates depend on those counts only, never on when
+  ! the factorization ends: one thread runs the same schedule in sequence (docs/performance.md, "Pipelined
+  ! refactorization"). The older factors' iterations are no longer discarded either: GMRES continues from them.
   ! Mode auto is an inexact Newton-Krylov method: GMRES is stopped at the relative residual eta_k of
   ! Eisenstat & Walker (1996, SIAM J. Sci. Comput. 17:16-32, "choice 2": eta_k = gamma (|r_k| / |r_(k-1)|)^2,
   ! safeguarded by gamma eta_(k-1)^2 when that exceeds 0.1, capped by eta_max), and never solved more accurately
@@ -83,6 +91,18 @@ contains
       kbudget = max(2, min(krylov_max_iter, int(krylov_budget_share * krylov_speed * f_fact / f_iter)))
   end function krylov_budget
 
+  !> Mode auto's GMRES iterations with the older factors while a pipelined factorization runs (see above): as many
+  !> as cost one factorization, counted in operations; between 2 and krylov_max_iter.
+  integer function krylov_overlap(sys) result(koverlap)
+    type(sparse_system_t), intent(in) :: sys  !< factored system
+    real(dp) :: f_fact, f_iter
+    koverlap = krylov_max_iter
+    f_fact = sparse_factor_flops(sys)
+    f_iter = sparse_iteration_flops(sys)
+    if (f_fact > 0.0_dp .and. f_iter > 0.0_dp) &
+      koverlap = max(2, min(krylov_max_iter, int(krylov_speed * f_fact / f_iter)))
+  end function krylov_overlap
+
   !> After a failed attempt: modified Newton starts the next one with a fresh tangent.
   pure subroutine newton_forget_factors(ns)
     type(newton_state_t), intent(inout) :: ns  !< Newton state
@@ -111,7 +131,7 @@ contains
     logical, intent(out) :: stopped                      !< a user routine asked to stop (XIT)
     real(dp), intent(out) :: q_now                       !< typical force of the last residual
     real(dp), intent(in) :: carry(:)                     !< (ndof) change of an%work%u carried through the first tangent
-    integer :: i, stat, kit, kbudget
+    integer :: i, stat, kit, kbudget, koverlap
     character(len=:), allocatable :: errmsg, pnewdt_who
     character(len=256) :: smsg
     real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, r_norm, r_norm_prev, eta, eta_prev, tol
@@ -270,6 +290,34 @@ contains
           ns%reuse_count = ns%reuse_count + 1
           summary%reused_solves = summary%reused_solves + 1
           k_fresh = stat /= 0
+        else if (newton == newton_auto .and. sparse_pipelined(an%eqs%sys) .and. sparse_is_factored(an%eqs%sys)) then
+          ! fresh tangent, GMRES preconditioned by the last factors, refactorized on the way (pipelined, see above)
+          call sparse_factor_install(an%eqs%sys, stat, smsg)
+          if (stat /= 0) then
+            outcome = 'cutback: singular tangent'
+            if (verbose) call output_log(out, '  '//trim(smsg))
+            exit newton_loop
+          end if
+          kbudget = krylov_budget(an%eqs%sys)
+          koverlap = krylov_overlap(an%eqs%sys)
+          call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, kbudget + koverlap + krylov_max_iter, &
+            krylov_max_iter, kit, stat, smsg, refactor_at=kbudget, switch_at=kbudget + koverlap)
+          summary%krylov_iterations = summary%krylov_iterations + kit
+          summary%krylov_solves = summary%krylov_solves + 1
+          if (kit > kbudget) summary%krylov_failures = summary%krylov_failures + 1
+          if (stat == 1) then
+            ! still short of the forcing term after the refactorization: the best iterate, an inexact Newton step
+            if (verbose) call output_log(out, '    GMRES short of its tolerance after '//itoa(kit)// &
+              ' iterations (a refactorization on the way): best iterate used (an inexact Newton step)')
+            stat = 0
+          end if
+          if (stat /= 0) then
+            outcome = 'cutback: solve failed'
+            if (stat == -10) outcome = 'cutback: singular tangent'
+            if (verbose) call output_log(out, '  '//trim(smsg))
+            exit newton_loop
+          end if
+          k_fresh = .false.
         else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%eqs%sys)) then
           ! fresh tangent, GMRES preconditioned by the last factorization
           kbudget = krylov_max_iter

@@ -37,6 +37,8 @@ module solver_options
     !> BLAS threads of a large factorization (blas_threads_default; 0: the BLAS is left as it is)
     integer :: factor_blas_threads = 0
     real(dp) :: factor_min_flops = 0.0_dp       !< operations from which a factorization uses them
+    integer :: threads = 1                      !< threads of the element loop (a second one runs pipelined
+                                                !< factorizations of --newton auto beside GMRES)
   end type solver_options_t
 
 contains
