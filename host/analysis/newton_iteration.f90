@@ -49,13 +49,15 @@ module newton_iteration
   real(dp), parameter :: ew_gamma = 0.9_dp              !< Eisenstat-Walker gamma
   real(dp), parameter :: ew_eta_max = 0.1_dp            !< largest forcing term (also the first iteration's)
   ! Mode auto also skips the tangent of an iteration that is likely to be the last, since a converged iteration's
-  ! tangent is never used: when the residual, shrinking at its last rate (r_k^2 / r_(k-1), an upper estimate once
-  ! Newton converges quadratically), comes within skip_margin of the force criterion, the elements compute
-  ! forces only (UEL LFLAGS(3) = 5). If the criterion is not met after all, GMRES solves with the tangent still
-  ! assembled, that of the previous iterate (a Newton step with a one-iteration-old Jacobian, close to the
-  ! solution), and the next iteration assembles it anew. Late in the application scene about one skip per
-  ! increment, few of them not converged (docs/performance.md, fifth pass).
-  real(dp), parameter :: skip_margin = 10.0_dp          !< skip when r_k^2 / r_(k-1) < skip_margin R_n q_avg
+  ! tangent is never used. Both criteria of that iteration are tested beforehand: the correction criterion
+  ! exactly (the last correction and the displacement increment are known before its element loop), the force
+  ! criterion on the residual expected at quadratic convergence, r_k = r_(k-1) (r_(k-1) / r_(k-2))^2, within
+  ! skip_margin of R_n q_avg. Then the elements compute forces only (UEL LFLAGS(3) = 5). If the iteration does
+  ! not converge after all, GMRES solves with the tangent still assembled, that of the previous iterate (a Newton
+  ! step with a one-iteration-old Jacobian, close to the solution), and the next iteration assembles it anew. The
+  ! estimate at the last rate, r_(k-1)^2 / r_(k-2) within 10 R_n q_avg, skipped as often but failed twice as
+  ! often, half of its failures on the correction criterion (docs/performance.md, "A sharper last-iteration test").
+  real(dp), parameter :: skip_margin = 1.0_dp           !< skip when the expected r_k < skip_margin R_n q_avg
   ! The first iteration of an increment evaluates the elements at the start of the increment, the prescribed dofs
   ! at their start values, and carries the prescribed increment du_p through that tangent: it solves
   ! K_ff du_f = r_f - K_fp du_p (r = f_ext - f_int), then sets u_p to its end value (as CalculiX does; that Abaqus
@@ -170,8 +172,9 @@ contains
         end if
         ! mode auto: no tangent for an iteration likely to converge (see skip_margin above); never twice running
         k_skip = newton == newton_auto .and. iter >= 2 .and. .not. k_stale .and. an%eqs%sys_ready
-        if (k_skip) k_skip = sparse_is_factored(an%eqs%sys) .and. r_prev < huge(1.0_dp)
-        if (k_skip) k_skip = r_max * (r_max / r_prev) < skip_margin * st%r_n * q_avg
+        if (k_skip) k_skip = sparse_is_factored(an%eqs%sys) .and. r_max < r_prev   ! (contracting: no overflow below)
+        if (k_skip) k_skip = c_max <= st%c_n * maxval(abs(an%work%u - an%state%u_conv))
+        if (k_skip) k_skip = r_max * (r_max / r_prev)**2 < skip_margin * st%r_n * q_avg
         k_stale = k_skip
         if (k_skip) then
           want_k = .false.
