@@ -103,6 +103,7 @@ module sparse_system
     type(c_ptr) :: task = c_null_ptr                !< the thread running it (null: none, or run already)
     real(dp) :: t_factor_wait = 0.0_dp              !< wall seconds waited at installations for a running one
     real(dp) :: t_factor_beside = 0.0_dp            !< wall seconds of the factorizations run on their own thread
+    real(dp) :: t_factor_here = 0.0_dp              !< wall seconds of pipelined ones run on the caller's thread
     integer :: factor_threads = 0                   !< > 1: BLAS threads of a large factorization (see sparse_factorize)
     real(dp) :: factor_min_flops = huge(1.0_dp)     !< operations from which a factorization is large
     type(parallel_t) :: par                         !< processes of the run (distributed: several)
@@ -462,6 +463,7 @@ contains
     if (wide) wide = blas_threads_set(sys%factor_threads)
     call factor_task(c_loc(sys%job))
     if (wide) wide = blas_threads_set(1)
+    sys%t_factor_here = sys%t_factor_here + sys%job%seconds
   end subroutine run_job_here
 
   !> A pending pipelined factorization dropped (its thread waited for): its factors are never used.
@@ -803,6 +805,7 @@ contains
     integer :: n, m, m_cycle, begin_at
     integer(i8) :: c0
     logical :: done
+    real(dp) :: t_here0
 
     stat = 0
     errmsg = ''
@@ -813,6 +816,7 @@ contains
       return
     end if
     c0 = clock_count()
+    t_here0 = sys%t_factor_here     ! a pipelined factorization run here is factorization time, not solve time
     n = sys%neq
     m = max(1, restart)
     m_cycle = m
@@ -857,7 +861,7 @@ contains
     end if
     rhs = x
     sys%n_krylov = sys%n_krylov + iterations
-    sys%t_solve = sys%t_solve + seconds_since(c0)
+    sys%t_solve = sys%t_solve + seconds_since(c0) - (sys%t_factor_here - t_here0)
   end subroutine sparse_solve_krylov
 
   !> One cycle of GMRES(m) from x: Arnoldi with modified Gram-Schmidt and Givens rotations, right-preconditioned
@@ -970,6 +974,7 @@ contains
     sys%background = .false.
     sys%t_factor_wait = 0.0_dp
     sys%t_factor_beside = 0.0_dp
+    sys%t_factor_here = 0.0_dp
     if (allocated(sys%row_ptr)) deallocate(sys%row_ptr)
     if (allocated(sys%irn)) deallocate(sys%irn)
     if (allocated(sys%jcn)) deallocate(sys%jcn)
