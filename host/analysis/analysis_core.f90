@@ -12,14 +12,15 @@ module analysis_core
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
   use element_colors, only: color_elements
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
-    sparse_set_factor_threads, sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
+    sparse_set_factor_threads, sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count, &
+    sparse_time_factor_beside, sparse_time_factor_wait
   use user_routines, only: user_routines_t
   use material_law, only: material_elastic_law
   use distributed_loads, only: dload_element, dload_uel_arrays, dload_has
   use element_state, only: elem_state_t, element_state_free, element_state_copy
   use analysis_state, only: analysis_state_t, analysis_state_init
   use increment, only: increment_t, increment_time, increment_end
-  use solver_options, only: solver_options_t
+  use solver_options, only: solver_options_t, newton_auto
   use solver_text, only: itoa, rtoa
   use abaqus_host_state, only: abaqus_set_caller, abaqus_stop_requested, abaqus_stop_element, abaqus_stop_message
   use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_max, &
@@ -52,6 +53,8 @@ module analysis_core
     integer :: blas_threads = 0           !< BLAS threads of a large factorization (0: BLAS untouched)
     real(dp) :: min_flops = 0.0_dp        !< operations from which a factorization uses them
     logical :: one_process = .false.      !< distributed: factorize and solve on rank 0 (--reproducible)
+    logical :: pipelined = .false.        !< two factor instances: refactorizations beside GMRES (Newton auto)
+    logical :: background = .false.       !< the pipelined factorization on a thread of its own (2+ threads)
   end type factoring_t
 
   !> The equations of the current step: the free dofs numbered (prescribed ones and *EQUATION/*TIE-eliminated ones
@@ -98,6 +101,8 @@ module analysis_core
   type :: loop_timings_t
     real(dp) :: t_factor_done = 0.0_dp          !< factorization seconds of earlier sparse systems (pattern changes)
     real(dp) :: t_solve_done = 0.0_dp           !< solve seconds of earlier sparse systems
+    real(dp) :: t_beside_done = 0.0_dp          !< of t_factor_done: factorizations on their own thread
+    real(dp) :: t_wait_done = 0.0_dp            !< of t_solve_done: waits for them
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
     integer :: n_factor_done = 0                !< factorizations of earlier sparse systems
     real(dp) :: t_assembly = 0.0_dp             !< wall seconds in element loops
@@ -177,15 +182,18 @@ contains
     type(solver_options_t), intent(in), optional :: options
     type(solver_options_t) :: opt
     integer :: ie, k, n, a, j, nn, nnode, ndim, nip, ntens, ndi, nshr, is, im, iu, nact, nextra, nc, kc
-    logical :: all_nlgeom
+    logical :: all_nlgeom, beside
     character(len=16) :: b
 
     stat = 0
     errmsg = ''
     if (present(options)) opt = options
     an%cost_weight = opt%element_weights
+    ! Newton auto's refactorizations pipelined beside GMRES, on a thread of their own with two threads or more
+    ! (LDFCZ_PIPELINE_THREAD=0: in sequence, for measurements; the results are the same: docs/host.md)
+    beside = .not. env_is_zero('LDFCZ_PIPELINE_THREAD')
     an%eqs%factoring = factoring_t(opt%symmetric_factors, opt%single_factors, opt%factor_blas_threads, &
-      opt%factor_min_flops, opt%reproducible)
+      opt%factor_min_flops, opt%reproducible, opt%newton == newton_auto, opt%threads > 1 .and. beside)
     an%routines = routines
     an%ndim = model%ndim
     ! the displacement dofs of the nodes, then the rotational dofs of the couplings' reference nodes (model_dof)
@@ -404,6 +412,8 @@ contains
       ! the old system goes away with its timers: keep them for the summary
       an%timing%t_factor_done = an%timing%t_factor_done + sparse_time_factor(an%eqs%sys)
       an%timing%t_solve_done = an%timing%t_solve_done + sparse_time_solve(an%eqs%sys)
+      an%timing%t_beside_done = an%timing%t_beside_done + sparse_time_factor_beside(an%eqs%sys)
+      an%timing%t_wait_done = an%timing%t_wait_done + sparse_time_factor_wait(an%eqs%sys)
       an%timing%t_setup_done = an%timing%t_setup_done + sparse_time_analysis(an%eqs%sys)
       an%timing%n_factor_done = an%timing%n_factor_done + sparse_factor_count(an%eqs%sys)
     end if
@@ -425,12 +435,14 @@ contains
       call constraints_extend(an%eqs%cs, an%elem_ptr, an%elem_dof, an%eqs%eq)
       call color_elements(model%nelem, an%ndof, an%eqs%cs%xptr, an%eqs%cs%xdof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)
       call sparse_setup(an%eqs%sys, n, an%eqs%cs%xptr, an%eqs%cs%xeq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned, &
-        one_process=an%eqs%factoring%one_process)
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, &
+        owned=an%owned, one_process=an%eqs%factoring%one_process, pipelined=an%eqs%factoring%pipelined, &
+        background=an%eqs%factoring%background)
     else
       call sparse_setup(an%eqs%sys, n, an%elem_ptr, an%eqs%elem_eq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned, &
-        one_process=an%eqs%factoring%one_process)
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, &
+        owned=an%owned, one_process=an%eqs%factoring%one_process, pipelined=an%eqs%factoring%pipelined, &
+        background=an%eqs%factoring%background)
     end if
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
@@ -441,6 +453,15 @@ contains
     an%eqs%sys_ready = .true.
     if (.false.) print *, model%nnode
   end subroutine analysis_number_equations
+
+  !> True when the environment variable is set to 0.
+  logical function env_is_zero(name)
+    character(len=*), intent(in) :: name            !< variable
+    character(len=8) :: val
+    integer :: length, status
+    call get_environment_variable(name, val, length, status)
+    env_is_zero = status == 0 .and. trim(val) == '0'
+  end function env_is_zero
 
   !> Element loop at the current estimate an%work%u (increment du = u - u_conv): every element gets a fresh copy of its
   !> converged state; internal forces into an%work%fint, tangents into an%eqs%sys when want_k. pnewdt_min is the smallest

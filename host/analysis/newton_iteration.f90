@@ -8,7 +8,8 @@ module newton_iteration
   use linear_constraints, only: constraints_residual, constraints_apply
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_system_t, sparse_factorize, sparse_solve, sparse_is_factored, &
-    sparse_solve_krylov, sparse_factors_exact, sparse_factor_flops, sparse_iteration_flops
+    sparse_solve_krylov, sparse_factors_exact, sparse_factor_flops, sparse_iteration_flops, sparse_pipelined, &
+    sparse_factor_install
   use output_files, only: output_t, output_log
   use solver_options, only: newton_modified, newton_krylov, newton_auto
   use run_summary, only: run_summary_t
@@ -31,6 +32,13 @@ module newton_iteration
   ! half the measured time ratio gave on that machine (0.345 / 0.0283 / 2 = 6.1).
   real(dp), parameter :: krylov_budget_share = 0.5_dp   !< GMRES time with older factors, of a factorization's
   real(dp), parameter :: krylov_speed = 0.235_dp        !< operations per second: GMRES iteration / factorization
+  ! Mode auto pipelines its refactorizations (two factor instances, sparse_system): when GMRES with the last factors
+  ! has not converged within its budget, the factorization of the current tangent begins (on a thread of its own
+  ! when the run has two) while GMRES goes on with the older factors for krylov_overlap iterations, about one
+  ! factorization's time (counted in operations, as the budget); then the new factors are installed (waited for if
+  ! late) and GMRES restarts from its iterate with them. The iterates depend on those counts only, never on when
+  ! the factorization ends: one thread runs the same schedule in sequence (docs/performance.md, "Pipelined
+  ! refactorization"). The older factors' iterations are no longer discarded either: GMRES continues from them.
   ! Mode auto is an inexact Newton-Krylov method: GMRES is stopped at the relative residual eta_k of
   ! Eisenstat & Walker (1996, SIAM J. Sci. Comput. 17:16-32, "choice 2": eta_k = gamma (|r_k| / |r_(k-1)|)^2,
   ! safeguarded by gamma eta_(k-1)^2 when that exceeds 0.1, capped by eta_max), and never solved more accurately
@@ -41,13 +49,15 @@ module newton_iteration
   real(dp), parameter :: ew_gamma = 0.9_dp              !< Eisenstat-Walker gamma
   real(dp), parameter :: ew_eta_max = 0.1_dp            !< largest forcing term (also the first iteration's)
   ! Mode auto also skips the tangent of an iteration that is likely to be the last, since a converged iteration's
-  ! tangent is never used: when the residual, shrinking at its last rate (r_k^2 / r_(k-1), an upper estimate once
-  ! Newton converges quadratically), comes within skip_margin of the force criterion, the elements compute
-  ! forces only (UEL LFLAGS(3) = 5). If the criterion is not met after all, GMRES solves with the tangent still
-  ! assembled, that of the previous iterate (a Newton step with a one-iteration-old Jacobian, close to the
-  ! solution), and the next iteration assembles it anew. Late in the application scene about one skip per
-  ! increment, few of them not converged (docs/performance.md, fifth pass).
-  real(dp), parameter :: skip_margin = 10.0_dp          !< skip when r_k^2 / r_(k-1) < skip_margin R_n q_avg
+  ! tangent is never used. Both criteria of that iteration are tested beforehand: the correction criterion
+  ! exactly (the last correction and the displacement increment are known before its element loop), the force
+  ! criterion on the residual expected at quadratic convergence, r_k = r_(k-1) (r_(k-1) / r_(k-2))^2, within
+  ! skip_margin of R_n q_avg. Then the elements compute forces only (UEL LFLAGS(3) = 5). If the iteration does
+  ! not converge after all, GMRES solves with the tangent still assembled, that of the previous iterate (a Newton
+  ! step with a one-iteration-old Jacobian, close to the solution), and the next iteration assembles it anew. The
+  ! estimate at the last rate, r_(k-1)^2 / r_(k-2) within 10 R_n q_avg, skipped as often but failed twice as
+  ! often, half of its failures on the correction criterion (docs/performance.md, "A sharper last-iteration test").
+  real(dp), parameter :: skip_margin = 1.0_dp           !< skip when the expected r_k < skip_margin R_n q_avg
   ! The first iteration of an increment evaluates the elements at the start of the increment, the prescribed dofs
   ! at their start values, and carries the prescribed increment du_p through that tangent: it solves
   ! K_ff du_f = r_f - K_fp du_p (r = f_ext - f_int), then sets u_p to its end value (as CalculiX does; that Abaqus
@@ -83,6 +93,18 @@ contains
       kbudget = max(2, min(krylov_max_iter, int(krylov_budget_share * krylov_speed * f_fact / f_iter)))
   end function krylov_budget
 
+  !> Mode auto's GMRES iterations with the older factors while a pipelined factorization runs (see above): as many
+  !> as cost one factorization, counted in operations; between 2 and krylov_max_iter.
+  integer function krylov_overlap(sys) result(koverlap)
+    type(sparse_system_t), intent(in) :: sys  !< factored system
+    real(dp) :: f_fact, f_iter
+    koverlap = krylov_max_iter
+    f_fact = sparse_factor_flops(sys)
+    f_iter = sparse_iteration_flops(sys)
+    if (f_fact > 0.0_dp .and. f_iter > 0.0_dp) &
+      koverlap = max(2, min(krylov_max_iter, int(krylov_speed * f_fact / f_iter)))
+  end function krylov_overlap
+
   !> After a failed attempt: modified Newton starts the next one with a fresh tangent.
   pure subroutine newton_forget_factors(ns)
     type(newton_state_t), intent(inout) :: ns  !< Newton state
@@ -111,7 +133,7 @@ contains
     logical, intent(out) :: stopped                      !< a user routine asked to stop (XIT)
     real(dp), intent(out) :: q_now                       !< typical force of the last residual
     real(dp), intent(in) :: carry(:)                     !< (ndof) change of an%work%u carried through the first tangent
-    integer :: i, stat, kit, kbudget
+    integer :: i, stat, kit, kbudget, koverlap
     character(len=:), allocatable :: errmsg, pnewdt_who
     character(len=256) :: smsg
     real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, r_norm, r_norm_prev, eta, eta_prev, tol
@@ -150,8 +172,9 @@ contains
         end if
         ! mode auto: no tangent for an iteration likely to converge (see skip_margin above); never twice running
         k_skip = newton == newton_auto .and. iter >= 2 .and. .not. k_stale .and. an%eqs%sys_ready
-        if (k_skip) k_skip = sparse_is_factored(an%eqs%sys) .and. r_prev < huge(1.0_dp)
-        if (k_skip) k_skip = r_max * (r_max / r_prev) < skip_margin * st%r_n * q_avg
+        if (k_skip) k_skip = sparse_is_factored(an%eqs%sys) .and. r_max < r_prev   ! (contracting: no overflow below)
+        if (k_skip) k_skip = c_max <= st%c_n * maxval(abs(an%work%u - an%state%u_conv))
+        if (k_skip) k_skip = r_max * (r_max / r_prev)**2 < skip_margin * st%r_n * q_avg
         k_stale = k_skip
         if (k_skip) then
           want_k = .false.
@@ -270,6 +293,34 @@ contains
           ns%reuse_count = ns%reuse_count + 1
           summary%reused_solves = summary%reused_solves + 1
           k_fresh = stat /= 0
+        else if (newton == newton_auto .and. sparse_pipelined(an%eqs%sys) .and. sparse_is_factored(an%eqs%sys)) then
+          ! fresh tangent, GMRES preconditioned by the last factors, refactorized on the way (pipelined, see above)
+          call sparse_factor_install(an%eqs%sys, stat, smsg)
+          if (stat /= 0) then
+            outcome = 'cutback: singular tangent'
+            if (verbose) call output_log(out, '  '//trim(smsg))
+            exit newton_loop
+          end if
+          kbudget = krylov_budget(an%eqs%sys)
+          koverlap = krylov_overlap(an%eqs%sys)
+          call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, kbudget + koverlap + krylov_max_iter, &
+            krylov_max_iter, kit, stat, smsg, refactor_at=kbudget, switch_at=kbudget + koverlap)
+          summary%krylov_iterations = summary%krylov_iterations + kit
+          summary%krylov_solves = summary%krylov_solves + 1
+          if (kit > kbudget) summary%krylov_failures = summary%krylov_failures + 1
+          if (stat == 1) then
+            ! still short of the forcing term after the refactorization: the best iterate, an inexact Newton step
+            if (verbose) call output_log(out, '    GMRES short of its tolerance after '//itoa(kit)// &
+              ' iterations (a refactorization on the way): best iterate used (an inexact Newton step)')
+            stat = 0
+          end if
+          if (stat /= 0) then
+            outcome = 'cutback: solve failed'
+            if (stat == -10) outcome = 'cutback: singular tangent'
+            if (verbose) call output_log(out, '  '//trim(smsg))
+            exit newton_loop
+          end if
+          k_fresh = .false.
         else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%eqs%sys)) then
           ! fresh tangent, GMRES preconditioned by the last factorization
           kbudget = krylov_max_iter
