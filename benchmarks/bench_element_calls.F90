@@ -13,7 +13,7 @@
 !> The element is the unit cube with its nodes moved by up to 0.08 (every integration point differs), deformed
 !> homogeneously from F_n = I + small shear to F_n+1 (elastic: 1e-4 more; plastic: shear 0.1 and stretch 1.02 from
 !> Be~_12 = 0.05, dt = 0.5 s, as bench_leonov_calls). Prints microseconds per call (CPU time), the floating-point
-!> operations per call of the kernel counted by hand (element_flops below; docs/performance.md "The C3D8 kernel")
+!> operations per call of the kernel counted by hand (element_flops below; reports/bench/kernel/flops.md)
 !> and the rate they give (the same count for the three ways: it is the work of the formulation), a checksum of the
 !> forces, tangents and stresses over the calls and a fingerprint of the bits of the last call's outputs (two builds
 !> or two ways compare for speed and results: equal fingerprints, identical outputs). Last, the tangent
@@ -223,7 +223,7 @@ contains
 
   !> Floating-point operations (+, -, *, /, sqrt; a call of exp, log, pow, tanh or sinh counted as one) of one call of
   !> the C3D8 kernel (host/elements/solid_c3d8.f90), counted by hand from its loops, as the element runs here (no
-  !> temperatures, no field variables; docs/performance.md "The C3D8 kernel" lists the terms):
+  !> temperatures, no field variables; reports/bench/kernel/flops.md lists the terms):
   !>   per element 3070: u_n 24, F and J at the centre at t_n, t_n+1 316, dN/dx there 170, F and J at the 8 points
   !>     8 x 318, CELENT 1, the *ELASTIC matrix 15;
   !>   per point, forces 818: F-bar 22, mid-point F, its J and inverse 82, G 54, DROT 97, DSTRAN 21, STRESS and STRAN

@@ -1,5 +1,5 @@
 !> The fixed-size C3D8 kernel of the continuum element (element_catalog: KERNEL_C3D8; docs/elements.md "Kernels",
-!> docs/performance.md "The C3D8 kernel"): the generic path of solid_element_compute for 8 nodes, 2x2x2 points,
+!> reports/bench/kernel/README.md): the generic path of solid_element_compute for 8 nodes, 2x2x2 points,
 !> F-bar under NLGEOM, without *ORIENTATION, written with every size known to the compiler. The formulation is the
 !> module header's (solid_element.f90) and so is every operation: each value is formed by the same operations in
 !> the same order as in the generic path, so that both give the same bits (bench_element_calls' fingerprints, test

@@ -5,7 +5,7 @@
 !> same code), each at -O3 without fused multiply-add; tangent_kernel_level says which one this CPU runs, and the
 !> callers pass it. The three give the same bits (no operation differs, only the vector width), so a run gives the
 !> same results on every CPU that runs the same build; AVX-512 computes a C3D8 tangent about 4x faster than the
-!> baseline SSE2 (docs/performance.md "The C3D8 kernel").
+!> baseline SSE2 (reports/bench/kernel/README.md).
 module solid_tangent_kernel
   use, intrinsic :: iso_c_binding, only: c_int
   use ldfcz_kinds, only: dp
