@@ -146,9 +146,6 @@ contains
     !> (background, with two MUMPS instances; not distributed) or in sequence when the factors in use are no longer
     !> needed (one instance): the same factors at the same points either way
     logical, intent(in), optional :: pipelined, background
-    character(len=*), parameter :: here = 'sparse_setup'
-    integer, allocatable :: xadj(:), adjncy(:), node_position(:), own_eq(:)
-    integer :: nnode, nelem, i, k, m, j
     integer(i8) :: c0
     logical :: metis
     real(dp) :: entries(1)
@@ -159,32 +156,8 @@ contains
     call sparse_destroy(sys)
     metis = .true.
     if (present(use_metis)) metis = use_metis
-    nelem = size(elem_ptr) - 1
-    if (neq < 1) then
-      stat = 1
-      write(errmsg, '(a,a,i0)') here, ': no equations, neq = ', neq
-      return
-    end if
-    if (size(eq_node) /= neq) then
-      stat = 1
-      errmsg = here//': eq_node must have neq entries'
-      return
-    end if
-    if (nelem < 1 .or. elem_ptr(1) /= 1 .or. elem_ptr(nelem + 1) - 1 > size(elem_eq)) then
-      stat = 1
-      errmsg = here//': elem_ptr is not a valid CSR pointer array into elem_eq'
-      return
-    end if
-    if (any(elem_ptr(2:) < elem_ptr(:nelem))) then
-      stat = 1
-      errmsg = here//': elem_ptr decreases'
-      return
-    end if
-    if (any(eq_node < 1)) then
-      stat = 1
-      errmsg = here//': eq_node holds a node index < 1'
-      return
-    end if
+    call setup_check_input(neq, elem_ptr, elem_eq, eq_node, stat, errmsg)
+    if (stat /= 0) return
     sys%neq = neq
     sys%symmetric = symmetric
     sys%distributed = .false.
@@ -201,78 +174,18 @@ contains
     allocate (sys%solvers(merge(2, 1, sys%background)))
     sys%cur = 1
 
-    ! a process of a distributed run builds its part of the matrix only: the pattern of its own elements (the others
-    ! as if all their dofs were constrained). Its entries are its MUMPS input (MUMPS sums the entries that several
-    ! processes give) and its part of every product; the whole pattern is never built (docs/performance.md, "Memory
-    ! of a process")
-    if (sys%distributed) then
-      own_eq = elem_eq(1:elem_ptr(nelem + 1) - 1)
-      do k = 1, nelem
-        if (.not. owned(k)) own_eq(elem_ptr(k):elem_ptr(k + 1) - 1) = 0
-      end do
-      call build_pattern(neq, elem_ptr, own_eq, symmetric, sys%row_ptr, sys%jcn, stat, errmsg, empty_rows=.true.)
-      deallocate (own_eq)
-    else
-      call build_pattern(neq, elem_ptr, elem_eq(1:elem_ptr(nelem + 1) - 1), symmetric, sys%row_ptr, sys%jcn, &
-                         stat, errmsg)
-    end if
+    call setup_pattern(sys, elem_ptr, elem_eq, owned, stat, errmsg)
     if (stat /= 0) return
-    allocate(sys%irn(size(sys%jcn)), sys%val(size(sys%jcn)))
-    do i = 1, neq
-      sys%irn(sys%row_ptr(i):sys%row_ptr(i + 1) - 1) = i
-    end do
-    sys%val = 0.0_dp
-    ! and maps only its own elements (the maps of all elements are 2.3 kB a C3D8: 50 MB on the paper's application
-    ! mesh)
-    if (sys%distributed) then
-      call build_slot_map(elem_ptr, elem_eq, symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot, keep=owned)
-    else
-      call build_slot_map(elem_ptr, elem_eq, symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot)
-    end if
-    allocate(sys%elem_size(nelem))
-    sys%elem_size = elem_ptr(2:) - elem_ptr(:nelem)
-
-    ! Fill-reducing order: METIS nested dissection of the node graph (of every element: the same order on every
-    ! process), expanded to equations.
-    nnode = maxval(eq_node)
-    allocate(sys%eq_position(neq))
-    if (metis) then
-      call node_graph_from_elements(nnode, elem_ptr, elem_eq, eq_node, xadj, adjncy)
-      call metis_node_order(nnode, xadj, adjncy, node_position, stat, errmsg)
-      if (stat /= 0) return
-    else
-      node_position = [(i, i = 1, nnode)]
-    end if
-    call equation_order_from_nodes(nnode, node_position, eq_node, sys%eq_position)
-    if (.not. is_permutation(sys%eq_position)) then
-      stat = 2
-      errmsg = here//': the expanded equation order is not a permutation'
-      return
-    end if
+    call setup_ordering(sys, elem_ptr, elem_eq, eq_node, metis, stat, errmsg)
+    if (stat /= 0) return
 
     sys%sym_factors = .false.
     if (present(symmetric_factors)) sys%sym_factors = symmetric_factors .and. .not. symmetric
     sys%single_factors = .false.
     if (present(single_factors)) sys%single_factors = single_factors
     if (sys%sym_factors) then
-      ! the upper triangle of the (structurally symmetric: element pattern) full pattern and each entry's mirror
-      m = count(sys%irn <= sys%jcn)
-      allocate(sys%up_entry(m), sys%lo_entry(m), sys%val_sym(m))
-      m = 0
-      do k = 1, size(sys%jcn)
-        i = sys%irn(k)
-        j = sys%jcn(k)
-        if (i > j) cycle
-        m = m + 1
-        sys%up_entry(m) = k
-        sys%lo_entry(m) = find_in_row(sys%jcn, sys%row_ptr(j), sys%row_ptr(j + 1) - 1, i)
-        if (sys%lo_entry(m) == 0) then
-          stat = 2
-          errmsg = here//': the pattern is not structurally symmetric; symmetric factors impossible'
-          return
-        end if
-      end do
-      sys%val_sym = 0.0_dp
+      call setup_mirror(sys, stat, errmsg)
+      if (stat /= 0) return
       call analyse_instances(sys, .true., sys%irn(sys%up_entry), sys%jcn(sys%up_entry), stat, errmsg)
     else
       call analyse_instances(sys, symmetric, sys%irn, sys%jcn, stat, errmsg)
@@ -290,6 +203,138 @@ contains
     sys%t_analysis = sys%t_analysis + seconds_since(c0)
     sys%ready = .true.
   end subroutine sparse_setup
+
+  !> sparse_setup's arguments checked: at least one equation, a node for each, a valid element CSR.
+  subroutine setup_check_input(neq, elem_ptr, elem_eq, eq_node, stat, errmsg)
+    integer, intent(in) :: neq                      !< number of free equations
+    integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
+    integer, intent(in) :: elem_eq(:)               !< equation of each element dof; 0 = constrained
+    integer, intent(in) :: eq_node(:)               !< node of each equation
+    integer, intent(out) :: stat                    !< 0 when valid
+    character(len=*), intent(out) :: errmsg         !< reason otherwise
+    character(len=*), parameter :: here = 'sparse_setup'
+    integer :: nelem
+    stat = 1
+    nelem = size(elem_ptr) - 1
+    if (neq < 1) then
+      write(errmsg, '(a,a,i0)') here, ': no equations, neq = ', neq
+    else if (size(eq_node) /= neq) then
+      errmsg = here//': eq_node must have neq entries'
+    else if (nelem < 1) then
+      errmsg = here//': elem_ptr is not a valid CSR pointer array into elem_eq'
+    else if (elem_ptr(1) /= 1 .or. elem_ptr(nelem + 1) - 1 > size(elem_eq)) then
+      errmsg = here//': elem_ptr is not a valid CSR pointer array into elem_eq'
+    else if (any(elem_ptr(2:) < elem_ptr(:nelem))) then
+      errmsg = here//': elem_ptr decreases'
+    else if (any(eq_node < 1)) then
+      errmsg = here//': eq_node holds a node index < 1'
+    else
+      stat = 0
+      errmsg = ''
+    end if
+  end subroutine setup_check_input
+
+  !> The host's pattern (row pointers, columns, rows, values) and the element -> slot maps. A process of a
+  !> distributed run builds its part of the matrix only: the pattern of its own elements (the others as if all
+  !> their dofs were constrained). Its entries are its MUMPS input (MUMPS sums the entries that several processes
+  !> give) and its part of every product; the whole pattern is never built (docs/performance.md, "Memory of a
+  !> process"), and it maps only its own elements (the maps of all elements are 2.3 kB a C3D8: 50 MB on the paper's
+  !> application mesh).
+  subroutine setup_pattern(sys, elem_ptr, elem_eq, owned, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< system being set up (neq, symmetric, distributed set)
+    integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
+    integer, intent(in) :: elem_eq(:)               !< equation of each element dof; 0 = constrained
+    logical, intent(in), optional :: owned(:)       !< (nelem) this process's elements (distributed)
+    integer, intent(out) :: stat                    !< 0 on success
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    integer, allocatable :: own_eq(:)
+    integer :: nelem, i, k
+    nelem = size(elem_ptr) - 1
+    if (sys%distributed) then
+      own_eq = elem_eq(1:elem_ptr(nelem + 1) - 1)
+      do k = 1, nelem
+        if (.not. owned(k)) own_eq(elem_ptr(k):elem_ptr(k + 1) - 1) = 0
+      end do
+      call build_pattern(sys%neq, elem_ptr, own_eq, sys%symmetric, sys%row_ptr, sys%jcn, stat, errmsg, &
+                         empty_rows=.true.)
+      deallocate (own_eq)
+    else
+      call build_pattern(sys%neq, elem_ptr, elem_eq(1:elem_ptr(nelem + 1) - 1), sys%symmetric, sys%row_ptr, &
+                         sys%jcn, stat, errmsg)
+    end if
+    if (stat /= 0) return
+    allocate(sys%irn(size(sys%jcn)), sys%val(size(sys%jcn)))
+    do i = 1, sys%neq
+      sys%irn(sys%row_ptr(i):sys%row_ptr(i + 1) - 1) = i
+    end do
+    sys%val = 0.0_dp
+    if (sys%distributed) then
+      call build_slot_map(elem_ptr, elem_eq, sys%symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot, &
+                          keep=owned)
+    else
+      call build_slot_map(elem_ptr, elem_eq, sys%symmetric, sys%row_ptr, sys%jcn, sys%slot_ptr, sys%slot)
+    end if
+    allocate(sys%elem_size(nelem))
+    sys%elem_size = elem_ptr(2:) - elem_ptr(:nelem)
+  end subroutine setup_pattern
+
+  !> Fill-reducing order: METIS nested dissection of the node graph (of every element: the same order on every
+  !> process), expanded to equations (sys%eq_position); the natural order without metis.
+  subroutine setup_ordering(sys, elem_ptr, elem_eq, eq_node, metis, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< system being set up
+    integer, intent(in) :: elem_ptr(:)              !< size nelem+1, CSR pointers into elem_eq
+    integer, intent(in) :: elem_eq(:)               !< equation of each element dof; 0 = constrained
+    integer, intent(in) :: eq_node(:)               !< node of each equation
+    logical, intent(in) :: metis                    !< METIS (else the natural order)
+    integer, intent(out) :: stat                    !< 0 on success
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    integer, allocatable :: xadj(:), adjncy(:), node_position(:)
+    integer :: nnode, i
+    stat = 0
+    errmsg = ''
+    nnode = maxval(eq_node)
+    allocate(sys%eq_position(sys%neq))
+    if (metis) then
+      call node_graph_from_elements(nnode, elem_ptr, elem_eq, eq_node, xadj, adjncy)
+      call metis_node_order(nnode, xadj, adjncy, node_position, stat, errmsg)
+      if (stat /= 0) return
+    else
+      node_position = [(i, i = 1, nnode)]
+    end if
+    call equation_order_from_nodes(nnode, node_position, eq_node, sys%eq_position)
+    if (.not. is_permutation(sys%eq_position)) then
+      stat = 2
+      errmsg = 'sparse_setup: the expanded equation order is not a permutation'
+    end if
+  end subroutine setup_ordering
+
+  !> Symmetric factors of an unsymmetric system: the upper triangle of the (structurally symmetric: element
+  !> pattern) full pattern (sys%up_entry) and each entry's mirror (sys%lo_entry).
+  subroutine setup_mirror(sys, stat, errmsg)
+    type(sparse_system_t), intent(inout) :: sys     !< system being set up (pattern built)
+    integer, intent(out) :: stat                    !< 0 on success
+    character(len=*), intent(out) :: errmsg         !< reason on failure
+    integer :: m, k, i, j
+    stat = 0
+    errmsg = ''
+    m = count(sys%irn <= sys%jcn)
+    allocate(sys%up_entry(m), sys%lo_entry(m), sys%val_sym(m))
+    m = 0
+    do k = 1, size(sys%jcn)
+      i = sys%irn(k)
+      j = sys%jcn(k)
+      if (i > j) cycle
+      m = m + 1
+      sys%up_entry(m) = k
+      sys%lo_entry(m) = find_in_row(sys%jcn, sys%row_ptr(j), sys%row_ptr(j + 1) - 1, i)
+      if (sys%lo_entry(m) == 0) then
+        stat = 2
+        errmsg = 'sparse_setup: the pattern is not structurally symmetric; symmetric factors impossible'
+        return
+      end if
+    end do
+    sys%val_sym = 0.0_dp
+  end subroutine setup_mirror
 
   !> The MUMPS analysis of the pattern (irn, jcn) with the host's ordering, for every instance of the system (solo:
   !> on rank 0 alone; distributed: collective).
