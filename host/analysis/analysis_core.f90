@@ -482,13 +482,12 @@ contains
     !> (symmetrised for LDL^T) over all dofs, prescribed ones included
     real(dp), intent(in), optional :: carry(:)
     real(dp), intent(out), optional :: k_carry(:)          !< (ndof) K carry
-    integer :: ie, ic, c, n, fail_elem, st, pn_elem, kc
-    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :), fk(:)
+    integer :: fail_elem, pn_elem
+    real(dp), allocatable :: fk(:)
     real(dp) :: ctime(n_cost_class)        !< seconds in the element routines per cost class (this loop)
     integer(i8) :: ccalls(n_cost_class)    !< calls per cost class
-    integer(i8) :: e0, e1
-    real(dp) :: pn, pn_worst, comm0, comm1, loop_own, loop_slowest, cpu0, cpu1
-    character(len=256) :: msg, first_msg
+    real(dp) :: pn_worst, comm0, comm1, loop_own, loop_slowest, cpu0, cpu1
+    character(len=256) :: first_msg
     character(len=:), allocatable :: who, fail_text
     integer(i8) :: c0, c1, rate
     logical :: with_carry
@@ -514,6 +513,78 @@ contains
     end if
     ctime = 0.0_dp
     ccalls = 0
+    call colour_loop(an, model, inc, want_k, with_carry, pnewdt_min, fail_elem, first_msg, pn_worst, pn_elem, ctime, &
+      ccalls, carry, fk)
+    an%timing%class_time = an%timing%class_time + ctime / real(rate, dp)
+    an%timing%class_calls = an%timing%class_calls + ccalls
+    call record_stop_request(an)
+    ! the element forces into the dofs' (and K carry's)
+    call scatter_add(an, an%work%fe, an%work%fint)
+    call scatter_add(an, an%work%fdle, an%work%fdl)
+    if (present(k_carry)) then
+      k_carry = 0.0_dp
+      if (with_carry) call scatter_add(an, fk, k_carry)
+    end if
+    who = ''
+    if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
+      trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
+    fail_text = trim(first_msg)
+    ! this process's loop, before any reduction (what the slowest process's time is the largest of)
+    call system_clock(c1)
+    loop_own = real(c1 - c0, dp) / real(rate, dp)
+    if (an%timing%loop_trace /= 0) call cpu_time(cpu1)
+    loop_slowest = loop_own
+    if (parallel_distributed(an%par)) then
+      comm1 = an%par%t_comm
+      loop_slowest = parallel_max(an%par, loop_own)
+      an%timing%t_assembly_slowest = an%timing%t_assembly_slowest + loop_slowest
+      an%timing%t_loop_own = an%timing%t_loop_own + loop_own
+      an%timing%t_loop_wait = an%timing%t_loop_wait + (an%par%t_comm - comm1)
+      if (with_carry) then
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
+      else
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text)
+      end if
+    end if
+    if (fail_elem /= huge(1)) then
+      stat = 1
+      errmsg = fail_text
+    end if
+    if (present(pnewdt_who)) pnewdt_who = who
+    call system_clock(c1)
+    ! the reductions are communication, not assembly
+    an%timing%t_assembly = an%timing%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
+    an%timing%n_assembly = an%timing%n_assembly + 1
+    if (an%timing%loop_trace /= 0) write (an%timing%loop_trace, '(i0,3(",",i0),6(",",es10.4e2),3(",",i0))') &
+      an%timing%n_assembly, inc%step, inc%kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, &
+      ctime / real(rate, dp), ccalls
+  end subroutine analysis_assemble
+
+  !> The element loop of analysis_assemble: every element this process computes, colour by colour, its force into
+  !> an%work%fe and its tangent into the sparse system (with carry: its K carry into fk); the first failure (lowest
+  !> label), the smallest PNEWDT and the element that asked for the smallest below 1, the time and calls per class.
+  subroutine colour_loop(an, model, inc, want_k, with_carry, pnewdt_min, fail_elem, first_msg, pn_worst, pn_elem, &
+      ctime, ccalls, carry, fk)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    type(increment_t), intent(in) :: inc                 !< the increment
+    logical, intent(in) :: want_k                        !< assemble the tangent
+    logical, intent(in) :: with_carry                    !< K carry wanted (carry and fk present)
+    real(dp), intent(inout) :: pnewdt_min                !< smallest PNEWDT (in: pnewdt_large)
+    integer, intent(inout) :: fail_elem                  !< label of the first failed element (in: huge)
+    character(len=*), intent(inout) :: first_msg         !< its message
+    real(dp), intent(inout) :: pn_worst                  !< smallest PNEWDT below 1 (in: 1)
+    integer, intent(inout) :: pn_elem                    !< the element that asked for it (in: 0)
+    real(dp), intent(inout) :: ctime(n_cost_class)       !< clock ticks in the element routines per cost class
+    integer(i8), intent(inout) :: ccalls(n_cost_class)   !< calls per cost class
+    real(dp), intent(in), optional :: carry(:)           !< (ndof) the displacement change carried
+    real(dp), intent(inout), optional :: fk(:)           !< (element dofs) K carry per element
+    integer :: ie, ic, c, n, st, kc
+    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :)
+    integer(i8) :: e0, e1
+    real(dp) :: pn
+    character(len=256) :: msg
+
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
     !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, kc, e0, e1)
@@ -573,9 +644,11 @@ contains
     call abaqus_set_caller(0)
     deallocate (ke, fel, kx)
     !$omp end parallel
-    an%timing%class_time = an%timing%class_time + ctime / real(rate, dp)
-    an%timing%class_calls = an%timing%class_calls + ccalls
-    ! a stop asked by a user routine, with the element recorded when it asked
+  end subroutine colour_loop
+
+  !> A stop asked by a user routine in the element loop, with the element recorded when it asked.
+  subroutine record_stop_request(an)
+    type(analysis_t), intent(inout) :: an                !< analysis data
     an%work%stop%asked = abaqus_stop_requested()
     an%work%stop%elem = 0
     an%work%stop%text = ''
@@ -583,47 +656,7 @@ contains
       an%work%stop%elem = abaqus_stop_element()
       an%work%stop%text = abaqus_stop_message()
     end if
-    ! the element forces into the dofs' (and K carry's)
-    call scatter_add(an, an%work%fe, an%work%fint)
-    call scatter_add(an, an%work%fdle, an%work%fdl)
-    if (present(k_carry)) then
-      k_carry = 0.0_dp
-      if (with_carry) call scatter_add(an, fk, k_carry)
-    end if
-    who = ''
-    if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
-      trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
-    fail_text = trim(first_msg)
-    ! this process's loop, before any reduction (what the slowest process's time is the largest of)
-    call system_clock(c1)
-    loop_own = real(c1 - c0, dp) / real(rate, dp)
-    if (an%timing%loop_trace /= 0) call cpu_time(cpu1)
-    loop_slowest = loop_own
-    if (parallel_distributed(an%par)) then
-      comm1 = an%par%t_comm
-      loop_slowest = parallel_max(an%par, loop_own)
-      an%timing%t_assembly_slowest = an%timing%t_assembly_slowest + loop_slowest
-      an%timing%t_loop_own = an%timing%t_loop_own + loop_own
-      an%timing%t_loop_wait = an%timing%t_loop_wait + (an%par%t_comm - comm1)
-      if (with_carry) then
-        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
-      else
-        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text)
-      end if
-    end if
-    if (fail_elem /= huge(1)) then
-      stat = 1
-      errmsg = fail_text
-    end if
-    if (present(pnewdt_who)) pnewdt_who = who
-    call system_clock(c1)
-    ! the reductions are communication, not assembly
-    an%timing%t_assembly = an%timing%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
-    an%timing%n_assembly = an%timing%n_assembly + 1
-    if (an%timing%loop_trace /= 0) write (an%timing%loop_trace, '(i0,3(",",i0),6(",",es10.4e2),3(",",i0))') &
-      an%timing%n_assembly, inc%step, inc%kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, &
-      ctime / real(rate, dp), ccalls
-  end subroutine analysis_assemble
+  end subroutine record_stop_request
 
   !> Element ie's tangent ke into the sparse system (symmetrised for LDL^T; T^T K T on the extended dofs of an
   !> element holding *EQUATION-eliminated dofs, kx the work matrix for it); with carry, fk of the element = K carry.
