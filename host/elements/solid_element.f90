@@ -334,8 +334,8 @@ contains
 
     integer, parameter :: max_local_iter = 30      ! element-level Newton on the incompatible modes
     integer :: it, nnode, nne, ndim, nip, ntens, ndi, nshr, nextra, ndof, ndofe, nalpha, nsv, np
-    integer :: a, b, i, k, r, c, jstep(4), iter
-    logical :: fbar, last
+    integer :: a, b, i, k, r, c, jstep(4)
+    logical :: fbar
     real(dp) :: xref(3, maxnode), un(3, maxnode), u1(3, maxnode), dun(3, maxnode)
     type(solid_geometry_t), target :: gl          ! reference data computed here when the host has none
     type(solid_geometry_t), pointer :: gp         ! the reference data in use (no per-call copy of the host's)
@@ -346,12 +346,9 @@ contains
     integer :: nf
     real(dp) :: mf, hcc(maxnode)
     real(dp) :: fe(3 * maxnode), ke(3 * maxnode, 3 * maxnode), kl(maxnode, 3, 3, maxnode)
-    real(dp) :: alpha_n(maxalpha), alpha(maxalpha), dalpha(maxalpha), kaa(maxalpha, maxalpha)
-    real(dp) :: rhs(maxalpha, 3 * maxnode + 1), scale, g_shear, ghg, khg, qhg(3)
-    integer :: mh
+    real(dp) :: alpha_n(maxalpha), g_shear
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
-    character(len=200) :: kmsg
     integer :: kgeo
     character(len=*), parameter :: here = 'solid_element_compute: '
 
@@ -376,60 +373,100 @@ contains
     ndofe = ndim * nne
     nalpha = ndofe - ndof
     fbar = element_types(it)%fbar
-    if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
-        size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
-        size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
-        size(stran_old, 2) /= nip .or. size(stress_new, 1) /= ntens .or. size(stress_new, 2) /= nip .or. &
-        size(stran_new, 1) /= ntens .or. size(stran_new, 2) /= nip .or. size(statev_old, 1) < nsv + nextra .or. &
-        size(statev_old, 2) /= nip .or. size(statev_new, 1) < nsv + nextra .or. size(statev_new, 2) /= nip) then
-      call fail(2, here // 'array sizes do not match element type ' // trim(etype))
-      return
-    end if
-    if (present(energy_ip_old)) then
-      if (size(energy_ip_old, 1) < 3 .or. size(energy_ip_old, 2) /= nip) then
-        call fail(2, here // 'energy_ip_old must be (3, nip)')
-        return
-      end if
-    end if
-    if (present(energy_ip_new)) then
-      if (size(energy_ip_new, 1) < 3 .or. size(energy_ip_new, 2) /= nip) then
-        call fail(2, here // 'energy_ip_new must be (3, nip)')
-        return
-      end if
-    end if
-    select case (mat%kind)
-    case (SOLID_MAT_ELASTIC)
-      if (mat%law%general) then
-        call elastic_law_check(mat%law, i, errmsg)
-        if (i == 0 .and. mat%law%kind == law_lamina .and. .not. (element_is_plane_stress(it) .and. .not. nlgeom)) &
-          errmsg = '*ELASTIC, TYPE=LAMINA: plane-stress elements without NLGEOM only (its constants give no '// &
-          'through-thickness stiffness; ENGINEERING CONSTANTS give it)'
-        if (len_trim(errmsg) > 0) i = 1
-      else
-        call elastic_check(mat%e, mat%nu, i, errmsg)
-      end if
-      if (i /= 0) then
-        call fail(2, here // trim(errmsg))
-        return
-      end if
-    case (SOLID_MAT_UMAT)
-      if (.not. associated(mat%umat)) then
-        call fail(2, here // 'material kind UMAT without a UMAT procedure')
-        return
-      end if
-    case default
-      call fail(2, here // 'unknown material kind')
-      return
-    end select
-    if (.not. (mat%thickness > 0.0_dp)) then
-      call fail(2, here // 'section thickness must be > 0')
-      return
-    end if
+    call check_arguments()
+    if (stat /= 0) return
 
-    ! ---- a type's fixed-size kernel where it covers the call (element_catalog: kernel), with the host's reference
-    ! data in either form
+    ! ---- a type's fixed-size kernel where it covers the call (element_catalog: kernel)
     if (element_types(it)%kernel == KERNEL_C3D8 .and. nlgeom .and. .not. present(orient) .and. &
         .not. mat%law%general .and. .not. flag(generic_only)) then
+      call run_kernel(kgeo)
+      if (kgeo /= 0) return
+    end if
+
+    call reference_and_nodal_state()
+    if (stat /= 0) return
+
+    call centre_operators()
+    if (stat /= 0) return
+
+    jstep = [kstep, 1, merge(1, 0, nlgeom), 0]
+    cmname = mat%cmname
+    if (np > 0) pr(1:np) = mat%props
+
+    if (nalpha == 0) then
+      call element_pass(want_k)
+      if (stat /= 0) return
+      f_int = fe(1:ndof)
+      if (want_k) k_e = ke(1:ndof, 1:ndof)
+      if (element_types(it)%hourglass) call hourglass_terms()
+    else
+      call incompatible_modes()
+      if (stat /= 0) return
+    end if
+    if (.not. want_k) k_e = 0.0_dp
+
+  contains
+
+    !> The arguments' sizes against the element type, the energies' shapes, the material and the section
+    !> (bad input: stat = 2).
+    subroutine check_arguments()
+      integer :: i
+      if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
+          size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
+          size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
+          size(stran_old, 2) /= nip .or. size(stress_new, 1) /= ntens .or. size(stress_new, 2) /= nip .or. &
+          size(stran_new, 1) /= ntens .or. size(stran_new, 2) /= nip .or. size(statev_old, 1) < nsv + nextra .or. &
+          size(statev_old, 2) /= nip .or. size(statev_new, 1) < nsv + nextra .or. size(statev_new, 2) /= nip) then
+        call fail(2, here // 'array sizes do not match element type ' // trim(etype))
+        return
+      end if
+      if (present(energy_ip_old)) then
+        if (size(energy_ip_old, 1) < 3 .or. size(energy_ip_old, 2) /= nip) then
+          call fail(2, here // 'energy_ip_old must be (3, nip)')
+          return
+        end if
+      end if
+      if (present(energy_ip_new)) then
+        if (size(energy_ip_new, 1) < 3 .or. size(energy_ip_new, 2) /= nip) then
+          call fail(2, here // 'energy_ip_new must be (3, nip)')
+          return
+        end if
+      end if
+      select case (mat%kind)
+      case (SOLID_MAT_ELASTIC)
+        if (mat%law%general) then
+          call elastic_law_check(mat%law, i, errmsg)
+          if (i == 0 .and. mat%law%kind == law_lamina .and. .not. (element_is_plane_stress(it) .and. .not. nlgeom)) &
+            errmsg = '*ELASTIC, TYPE=LAMINA: plane-stress elements without NLGEOM only (its constants give no '// &
+            'through-thickness stiffness; ENGINEERING CONSTANTS give it)'
+          if (len_trim(errmsg) > 0) i = 1
+        else
+          call elastic_check(mat%e, mat%nu, i, errmsg)
+        end if
+        if (i /= 0) then
+          call fail(2, here // trim(errmsg))
+          return
+        end if
+      case (SOLID_MAT_UMAT)
+        if (.not. associated(mat%umat)) then
+          call fail(2, here // 'material kind UMAT without a UMAT procedure')
+          return
+        end if
+      case default
+        call fail(2, here // 'unknown material kind')
+        return
+      end select
+      if (.not. (mat%thickness > 0.0_dp)) then
+        call fail(2, here // 'section thickness must be > 0')
+        return
+      end if
+    end subroutine check_arguments
+
+    !> The type's fixed-size kernel (C3D8 under NLGEOM) with the host's reference data in either form, or computed
+    !> now; kgeo = 0: no valid reference data (the generic path reports the inverted element).
+    subroutine run_kernel(kgeo)
+      integer, intent(out) :: kgeo  !< 1 geo, 2 geo_compact, 3 computed here; 0 none valid
+      character(len=200) :: kmsg
       kgeo = 0
       if (present(geo)) then
         if (geo%valid) kgeo = 1
@@ -459,137 +496,143 @@ contains
       end if
       if (kgeo /= 0) then
         if (stat /= 0) call fail(stat, trim(kmsg))
+      end if
+    end subroutine run_kernel
+
+    !> The reference data in use (gp: the host's copy, or computed now; stat = 1 when not valid), the nodal
+    !> coordinates and displacements at t_n and t_n+1 and the converged incompatible-mode parameters alpha_n.
+    subroutine reference_and_nodal_state()
+      ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
+      gp => gl
+      if (present(geo)) then
+        if (geo%valid) gp => geo
+      end if
+      if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
+      if (.not. gp%valid) then
+        call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
+                  'integration point, or radius <= 0 at a point of an axisymmetric element)')
         return
       end if
-    end if
 
-    ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
-    gp => gl
-    if (present(geo)) then
-      if (geo%valid) gp => geo
-    end if
-    if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
-    if (.not. gp%valid) then
-      call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
-                'integration point, or radius <= 0 at a point of an axisymmetric element)')
-      return
-    end if
+      eye = identity()
+      m = real(ndim, dp)
+      nf = merge(3, ndim, element_is_axisymmetric(it))
+      mf = real(nf, dp)
+      xref = 0.0_dp
+      un = 0.0_dp
+      u1 = 0.0_dp
+      dun = 0.0_dp
+      do a = 1, nnode
+        xref(1:ndim, a) = coords0(:, a)
+        u1(1:ndim, a) = u(ndim * (a - 1) + 1:ndim * a)
+        dun(1:ndim, a) = du(ndim * (a - 1) + 1:ndim * a)
+        un(1:ndim, a) = u1(1:ndim, a) - dun(1:ndim, a)
+      end do
+      ! incompatible-mode parameters of the last converged state, kept after NSTATV in the STATEV rows
+      alpha_n = 0.0_dp
+      do k = 1, nalpha
+        alpha_n(k) = statev_old(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1)
+      end do
+    end subroutine reference_and_nodal_state
 
-    eye = identity()
-    m = real(ndim, dp)
-    nf = merge(3, ndim, element_is_axisymmetric(it))
-    mf = real(nf, dp)
-    xref = 0.0_dp
-    un = 0.0_dp
-    u1 = 0.0_dp
-    dun = 0.0_dp
-    do a = 1, nnode
-      xref(1:ndim, a) = coords0(:, a)
-      u1(1:ndim, a) = u(ndim * (a - 1) + 1:ndim * a)
-      dun(1:ndim, a) = du(ndim * (a - 1) + 1:ndim * a)
-      un(1:ndim, a) = u1(1:ndim, a) - dun(1:ndim, a)
-    end do
-    ! incompatible-mode parameters of the last converged state, kept after NSTATV in the STATEV rows
-    alpha_n = 0.0_dp
-    do k = 1, nalpha
-      alpha_n(k) = statev_old(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1)
-    end do
-
-
-    ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
-    fc0 = def_grad(un, gp%dndx_0c)
-    fc1 = def_grad(u1, gp%dndx_0c)
-    if (element_is_axisymmetric(it)) then
-      ! hoop stretch at the centre r_c / R_c: J_c is the 3D volume ratio there
-      fc0(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), un(1, 1:nne))
-      fc1(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), u1(1, 1:nne))
-    end if
-    jc0 = det3(fc0)
-    jc1 = det3(fc1)
-    if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
-      call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at the centre)')
-      return
-    end if
-    dndx_c = 0.0_dp
-    hcc = 0.0_dp
-    if (fbar) then
-      if (nlgeom) then
-        finv = inv3(fc1)
-        dndx_c(1:nne, 1:ndim) = matmul(gp%dndx_0c(1:nne, 1:ndim), finv(1:ndim, 1:ndim))
-        if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0c(1:nne) / fc1(3, 3)   ! N_a / r_c, current
-      else
-        dndx_c(1:nne, :) = gp%dndx_0m
-        if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0m(1:nne)
+    !> The element centre: J_c at t_n and t_n+1 (J <= 0: stat = 1), the spatial derivatives dndx_c (and hcc) of
+    !> the F-bar (B-bar) tangent.
+    subroutine centre_operators()
+      ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
+      fc0 = def_grad(un, gp%dndx_0c)
+      fc1 = def_grad(u1, gp%dndx_0c)
+      if (element_is_axisymmetric(it)) then
+        ! hoop stretch at the centre r_c / R_c: J_c is the 3D volume ratio there
+        fc0(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), un(1, 1:nne))
+        fc1(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), u1(1, 1:nne))
       end if
-    end if
-
-    jstep = [kstep, 1, merge(1, 0, nlgeom), 0]
-    cmname = mat%cmname
-    if (np > 0) pr(1:np) = mat%props
-
-    if (nalpha == 0) then
-      call element_pass(want_k)
-      if (stat /= 0) return
-      f_int = fe(1:ndof)
-      if (want_k) k_e = ke(1:ndof, 1:ndof)
-      if (element_types(it)%hourglass) then
-        ! ---- hourglass stiffness (Flanagan-Belytschko stiffness form on the total displacement, reference
-        ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
-        ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
-        ! (STATEV row nstatv+1) so that k is constant and the tangent consistent after the first increment.
-        if (mat%kind == SOLID_MAT_ELASTIC .and. mat%law%general) then
-          ghg = elastic_law_shear_modulus(mat%law)
-        else if (mat%kind == SOLID_MAT_ELASTIC) then
-          ghg = mat%e / (2 * (1 + mat%nu))
+      jc0 = det3(fc0)
+      jc1 = det3(fc1)
+      if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
+        call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at the centre)')
+        return
+      end if
+      dndx_c = 0.0_dp
+      hcc = 0.0_dp
+      if (fbar) then
+        if (nlgeom) then
+          finv = inv3(fc1)
+          dndx_c(1:nne, 1:ndim) = matmul(gp%dndx_0c(1:nne, 1:ndim), finv(1:ndim, 1:ndim))
+          if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0c(1:nne) / fc1(3, 3)   ! N_a / r_c, current
         else
-          ghg = statev_old(nsv + 1, 1)
-          if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
+          dndx_c(1:nne, :) = gp%dndx_0m
+          if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0m(1:nne)
         end if
-        statev_new(nsv + 1, 1) = ghg
-        ! (axisymmetric: hg_vsum has the 2 pi R weighted volume; no section thickness)
-        khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, element_is_axisymmetric(it))
-        do mh = 1, gp%nhg
-          qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
+      end if
+    end subroutine centre_operators
+
+    !> Hourglass stiffness of a one-point element added to f_int, k_e and the energies.
+    subroutine hourglass_terms()
+      integer :: mh, a, b, i, r, c
+      real(dp) :: ghg, khg, qhg(3)
+      ! ---- hourglass stiffness (Flanagan-Belytschko stiffness form on the total displacement, reference
+      ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
+      ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
+      ! (STATEV row nstatv+1) so that k is constant and the tangent consistent after the first increment.
+      if (mat%kind == SOLID_MAT_ELASTIC .and. mat%law%general) then
+        ghg = elastic_law_shear_modulus(mat%law)
+      else if (mat%kind == SOLID_MAT_ELASTIC) then
+        ghg = mat%e / (2 * (1 + mat%nu))
+      else
+        ghg = statev_old(nsv + 1, 1)
+        if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
+      end if
+      statev_new(nsv + 1, 1) = ghg
+      ! (axisymmetric: hg_vsum has the 2 pi R weighted volume; no section thickness)
+      khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, element_is_axisymmetric(it))
+      do mh = 1, gp%nhg
+        qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
+        do a = 1, nnode
+          r = ndim * (a - 1)
+          f_int(r + 1:r + ndim) = f_int(r + 1:r + ndim) + khg * gp%gamma(a, mh) * qhg(1:ndim)
+          if (want_k) then
+            do b = 1, nnode
+              c = ndim * (b - 1)
+              do i = 1, ndim
+                k_e(r + i, c + i) = k_e(r + i, c + i) + khg * gp%gamma(a, mh) * gp%gamma(b, mh)
+              end do
+            end do
+          end if
+        end do
+        energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+        if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+      end do
+      if (allocated(gp%hoop_fl)) then
+        ! axisymmetric one point (CAX4R): the mean hoop strain at the point misses the variation of u_r / R over
+        ! the element, and u_r = Z - c, u_z = -R (c = <Z/R> / <1/R>) is a zero-energy mode that the
+        ! Flanagan-Belytschko vectors (orthogonal to every linear field) cannot see. Stabilisation: the shear
+        ! part of the energy of that variation, (1/2) 2 G int (u_r/R - <u_r/R>)^2 dV (the bulk part would lock),
+        ! zero for u_r = a R (constant hoop strain): the patch test is kept
+        khg = hourglass_factor * 2 * ghg
+        do mh = 1, size(gp%hoop_fl, 2)
+          qhg(1) = dot_product(gp%hoop_fl(:, mh), u1(1, 1:nnode))
           do a = 1, nnode
-            r = ndim * (a - 1)
-            f_int(r + 1:r + ndim) = f_int(r + 1:r + ndim) + khg * gp%gamma(a, mh) * qhg(1:ndim)
+            r = ndim * (a - 1) + 1
+            f_int(r) = f_int(r) + khg * gp%hoop_fl(a, mh) * qhg(1)
             if (want_k) then
               do b = 1, nnode
-                c = ndim * (b - 1)
-                do i = 1, ndim
-                  k_e(r + i, c + i) = k_e(r + i, c + i) + khg * gp%gamma(a, mh) * gp%gamma(b, mh)
-                end do
+                c = ndim * (b - 1) + 1
+                k_e(r, c) = k_e(r, c) + khg * gp%hoop_fl(a, mh) * gp%hoop_fl(b, mh)
               end do
             end if
           end do
-          energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
-          if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+          energy(1) = energy(1) + 0.5_dp * khg * qhg(1)**2
+          if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * qhg(1)**2
         end do
-        if (allocated(gp%hoop_fl)) then
-          ! axisymmetric one point (CAX4R): the mean hoop strain at the point misses the variation of u_r / R over
-          ! the element, and u_r = Z - c, u_z = -R (c = <Z/R> / <1/R>) is a zero-energy mode that the
-          ! Flanagan-Belytschko vectors (orthogonal to every linear field) cannot see. Stabilisation: the shear
-          ! part of the energy of that variation, (1/2) 2 G int (u_r/R - <u_r/R>)^2 dV (the bulk part would lock),
-          ! zero for u_r = a R (constant hoop strain): the patch test is kept
-          khg = hourglass_factor * 2 * ghg
-          do mh = 1, size(gp%hoop_fl, 2)
-            qhg(1) = dot_product(gp%hoop_fl(:, mh), u1(1, 1:nnode))
-            do a = 1, nnode
-              r = ndim * (a - 1) + 1
-              f_int(r) = f_int(r) + khg * gp%hoop_fl(a, mh) * qhg(1)
-              if (want_k) then
-                do b = 1, nnode
-                  c = ndim * (b - 1) + 1
-                  k_e(r, c) = k_e(r, c) + khg * gp%hoop_fl(a, mh) * gp%hoop_fl(b, mh)
-                end do
-              end if
-            end do
-            energy(1) = energy(1) + 0.5_dp * khg * qhg(1)**2
-            if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * qhg(1)**2
-          end do
-        end if
       end if
-    else
+    end subroutine hourglass_terms
+
+    !> Incompatible modes: Newton on the internal parameters alpha, then static condensation into f_int, k_e;
+    !> alpha into the STATEV rows after NSTATV.
+    subroutine incompatible_modes()
+      integer :: iter, k, i
+      logical :: last
+      real(dp) :: alpha(maxalpha), dalpha(maxalpha), kaa(maxalpha, maxalpha), rhs(maxalpha, 3 * maxnode + 1), scale
       ! ---- incompatible modes: Newton on the internal parameters alpha (f_alpha = 0) from the converged alpha_n,
       ! then static condensation f = f_u - K_ua K_aa^-1 f_a, K = K_uu - K_ua K_aa^-1 K_au (exact at f_a = 0, and
       ! f_u - K_ua K_aa^-1 f_a corrects a residual f_a to first order)
@@ -638,10 +681,7 @@ contains
       do k = 1, nalpha
         statev_new(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1) = alpha(k)
       end do
-    end if
-    if (.not. want_k) k_e = 0.0_dp
-
-  contains
+    end subroutine incompatible_modes
 
     !> One pass over the integration points at the current (u1, un) including the mode pseudo-nodes: material
     !> calls, new point state, fe(1:ndofe) and (want) ke(1:ndofe, 1:ndofe).
