@@ -364,29 +364,14 @@ contains
     nsv = mat%nstatv
     np = nprops_of(mat)
 
-    ! ---- argument checks (bad input: stat = 2)
-    if (it == 0) then
-      call fail(2, here // 'unknown element type "' // trim(etype) // '"')
-      return
-    end if
-    nne = nnode + element_types(it)%nmode
-    ndofe = ndim * nne
-    nalpha = ndofe - ndof
-    fbar = element_types(it)%fbar
     call check_arguments()
     if (stat /= 0) return
 
-    ! ---- a type's fixed-size kernel where it covers the call (element_catalog: kernel)
-    if (element_types(it)%kernel == KERNEL_C3D8 .and. nlgeom .and. .not. present(orient) .and. &
-        .not. mat%law%general .and. .not. flag(generic_only)) then
-      call run_kernel(kgeo)
-      if (kgeo /= 0) return
-    end if
+    call run_kernel(kgeo)   ! a type's fixed-size kernel where it covers the call (element_catalog: kernel)
+    if (kgeo /= 0) return
 
     call reference_and_nodal_state()
-    if (stat /= 0) return
-
-    call centre_operators()
+    if (stat == 0) call centre_operators()
     if (stat /= 0) return
 
     jstep = [kstep, 1, merge(1, 0, nlgeom), 0]
@@ -407,10 +392,18 @@ contains
 
   contains
 
-    !> The arguments' sizes against the element type, the energies' shapes, the material and the section
-    !> (bad input: stat = 2).
+    !> The element type (its sizes with the incompatible modes: nne, ndofe, nalpha; fbar), the arguments' sizes
+    !> against it, the energies' shapes, the material and the section (bad input: stat = 2).
     subroutine check_arguments()
       integer :: i
+      if (it == 0) then
+        call fail(2, here // 'unknown element type "' // trim(etype) // '"')
+        return
+      end if
+      nne = nnode + element_types(it)%nmode
+      ndofe = ndim * nne
+      nalpha = ndofe - ndof
+      fbar = element_types(it)%fbar
       if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
           size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
           size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
@@ -462,12 +455,15 @@ contains
       end if
     end subroutine check_arguments
 
-    !> The type's fixed-size kernel (C3D8 under NLGEOM) with the host's reference data in either form, or computed
-    !> now; kgeo = 0: no valid reference data (the generic path reports the inverted element).
+    !> The type's fixed-size kernel (C3D8 under NLGEOM, without *ORIENTATION or a general elastic law) with the
+    !> host's reference data in either form, or computed now; kgeo = 0: the generic path serves (no kernel, or no
+    !> valid reference data: the generic path reports the inverted element).
     subroutine run_kernel(kgeo)
-      integer, intent(out) :: kgeo  !< 1 geo, 2 geo_compact, 3 computed here; 0 none valid
+      integer, intent(out) :: kgeo  !< 1 geo, 2 geo_compact, 3 computed here; 0 the generic path
       character(len=200) :: kmsg
       kgeo = 0
+      if (.not. (element_types(it)%kernel == KERNEL_C3D8 .and. nlgeom .and. .not. present(orient) .and. &
+          .not. mat%law%general .and. .not. flag(generic_only))) return
       if (present(geo)) then
         if (geo%valid) kgeo = 1
       end if
@@ -688,17 +684,15 @@ contains
     subroutine element_pass(want)
       logical, intent(in) :: want
       integer :: ip
-      real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), j0, j1, vol, temp_ip, dtemp_ip
-      real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3)
-      real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), dv, gc(3, 3), trc, trg
-      real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
-      real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), bc(maxnode, 3), t(3, 3)
+      real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), j0, j1
+      real(dp) :: fb0(3, 3), fb1(3, 3), g(3, 3), drot(3, 3)
+      real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), dv
+      real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6)
+      real(dp) :: sse, spd, scd, bc(maxnode, 3)
       real(dp) :: bcr(maxnode, 3), trs
       real(dp) :: kl8(8, 3, 3, 8)   ! C3D8: contiguous fixed-size accumulator of the vectorised kernel
-      real(dp) :: d8(8, 3), b8(8, 3), r8(8, 3)
-      real(dp) :: hc(maxnode), thk, lt1(maxip), f2m(2, 2), g2(2, 2), dt_ip, t_ip, a2(2, 2), dth(6), r33(3, 3)
-      real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3), s_unit(6), col_g(6, 6)
-      integer :: icol
+      real(dp) :: hc(maxnode), thk, lt1(maxip)
+      real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3)
       logical :: k8, axi, local
       axi = element_is_axisymmetric(it)
       ! section thickness of plane elements; axisymmetric volumes are per 2 pi radians already (geometry)
@@ -707,7 +701,139 @@ contains
 
       fe = 0.0_dp
       energy = 0.0_dp
-      ! ---- first pass: kinematics at the integration points, checks, volume for CELENT
+      call first_pass(axi, fg0, fg1, lt1)
+      if (stat /= 0) return
+
+      ! ---- second pass: material calls, internal force, tangent
+      k8 = ndim == 3 .and. nne == 8
+      if (want) then
+        if (k8) then
+          kl8 = 0.0_dp
+        else
+          kl(1:nne, :, :, 1:nne) = 0.0_dp
+        end if
+      end if
+      do ip = 1, nip
+        j0 = det3(fg0(:, :, ip))
+        j1 = det3(fg1(:, :, ip))
+        fb0 = fg0(:, :, ip)
+        fb1 = fg1(:, :, ip)
+        if (fbar) then
+          ! (axisymmetric: the whole 3x3 F with its hoop stretch, m = 3, so that det Fbar = J_c)
+          fb0(1:nf, 1:nf) = (jc0 / j0)**(1.0_dp / mf) * fb0(1:nf, 1:nf)
+          fb1(1:nf, 1:nf) = (jc1 / j1)**(1.0_dp / mf) * fb1(1:nf, 1:nf)
+        end if
+
+        call strain_increment(ip, axi, fb0, fb1, g, drot)
+        if (stat /= 0) return
+        call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
+
+        local = present(orient)
+        drot_m = drot
+        fl0 = fb0
+        fl1 = fb1
+        if (local) then
+          ! local axes at the start and end of the increment; the material gets every tensor in their components
+          tn = orient(:, :, ip)
+          t1 = orient(:, :, ip)
+          if (nlgeom) then
+            tn = matmul(polar_rotation(fb0), tn)
+            t1 = matmul(polar_rotation(fb1), t1)
+          end if
+          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(tn), sig), tn), ntens, stress, 1.0_dp)
+          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(tn), eps), tn), ntens, stran, 2.0_dp)
+          call voigt_to_tensor(dstran, ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, dstran, 2.0_dp)
+          drot_m = matmul(transpose(tn), t1)
+          fl0 = matmul(matmul(transpose(tn), fb0), orient(:, :, ip))
+          fl1 = matmul(matmul(transpose(t1), fb1), orient(:, :, ip))
+        else
+          ! rotate the converged stress and strain by DROT (identity without NLGEOM)
+          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+          sig = matmul(matmul(drot, sig), transpose(drot))
+          call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
+          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+          eps = matmul(matmul(drot, eps), transpose(drot))
+          call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
+        end if
+
+        call point_material(ip, local, t1, drot_m, fl0, fl1, stress, stran, dstran, ddsdde, sse, spd, scd)
+        if (stat /= 0) return
+        if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
+        if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
+        if (element_is_plane_stress(it) .and. nlgeom) statev_new(nsv + nextra, ip) = lt1(ip)
+        stress_new(:, ip) = stress(1:ntens)
+        stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
+        if (present(energy_ip_new)) then
+          energy_ip_new(:, ip) = 0.0_dp
+          energy_ip_new(1:3, ip) = [sse, spd, scd]
+        end if
+
+        ! spatial derivatives and volume element
+        dndx = 0.0_dp
+        hc = 0.0_dp
+        if (nlgeom) then
+          finv = inv3(fg1(:, :, ip))
+          dndx(1:nne, 1:ndim) = matmul(gp%dndx_ref(1:nne, 1:ndim, ip), finv(1:ndim, 1:ndim))
+          dv = gp%wdet(ip) * j1 * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip) / fg1(3, 3, ip)   ! N_a / r, current radius
+        else
+          dndx(1:nne, 1:ndim) = gp%dndx_ref(1:nne, 1:ndim, ip)
+          dv = gp%wdet(ip) * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip)
+        end if
+        energy = energy + [sse, spd] * dv
+
+        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+        ! bc(b, k) = dN_b/dx_k at the centre (mean without NLGEOM) minus at the point: the F-bar (B-bar)
+        ! dilatation operator (0 for the other element types)
+        bc = 0.0_dp
+        if (fbar) bc(1:nne, 1:ndim) = dndx_c(1:nne, 1:ndim) - dndx(1:nne, 1:ndim)
+        ! axisymmetric: the dilatation of a radial nodal motion includes its hoop strain N_b / r
+        if (fbar .and. axi) bc(1:nne, 1) = bc(1:nne, 1) + hcc(1:nne) - hc(1:nne)
+        ! without NLGEOM the virtual strain is the B-bar one too (f = int Bbar^T sigma dV), so that
+        ! K = int Bbar^T C Bbar is symmetric for a symmetric DDSDDE; under NLGEOM f = int B^T sigma dv
+        ! (de Souza Neto et al., 1996)
+        trs = 0.0_dp
+        if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, nf == 3)) / mf
+        bcr = 0.0_dp
+        if (.not. nlgeom) bcr(1:nne, 1:ndim) = bc(1:nne, 1:ndim)
+        do a = 1, nne
+          do i = 1, ndim
+            r = ndim * (a - 1) + i
+            fe(r) = fe(r) + (dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) + trs * bcr(a, i)) * dv
+          end do
+          ! axisymmetric: the hoop virtual strain du_r / r
+          if (axi) fe(ndim * (a - 1) + 1) = fe(ndim * (a - 1) + 1) + sig(3, 3) * hc(a) * dv
+        end do
+
+        if (want) call point_tangent(ddsdde, sig, dndx, bc, bcr, hc, dv, k8, axi, kl8)
+      end do
+      if (want) then
+        if (k8) kl(1:8, :, :, 1:8) = kl8
+        do b = 1, nne
+          do k = 1, ndim
+            c = ndim * (b - 1) + k
+            do a = 1, nne
+              r = ndim * (a - 1)
+              ke(r + 1:r + ndim, c) = kl(a, 1:ndim, k, b)
+            end do
+          end do
+        end do
+      end if
+    end subroutine element_pass
+
+    !> First pass of element_pass: the deformation gradients at t_n and t_n+1 at the points (the hoop stretch of
+    !> axisymmetric types, the thickness stretch of plane stress under NLGEOM into lt1), J > 0 checked (stat = 1),
+    !> the volume for CELENT.
+    subroutine first_pass(axi, fg0, fg1, lt1)
+      logical, intent(in) :: axi                  !< axisymmetric type
+      real(dp), intent(out) :: fg0(3, 3, maxip), fg1(3, 3, maxip)  !< F at t_n and t_n+1 per point
+      real(dp), intent(inout) :: lt1(maxip)       !< ln of the thickness stretch at t_n+1 (plane stress, NLGEOM)
+      integer :: ip, i
+      real(dp) :: j0, j1, vol, f2m(2, 2), g2(2, 2), dt_ip, t_ip, a2(2, 2), fm(3, 3), r33(3, 3)
       vol = 0.0_dp
       do ip = 1, nip
         fg0(:, :, ip) = def_grad(un, gp%dndx_ref(:, :, ip))
@@ -788,268 +914,190 @@ contains
         end if
       end do
       celent = vol**(1.0_dp / m)
+    end subroutine first_pass
 
-      ! ---- second pass: material calls, internal force, tangent
-      k8 = ndim == 3 .and. nne == 8
-      if (want) then
-        if (k8) then
-          kl8 = 0.0_dp
-        else
-          kl(1:nne, :, :, 1:nne) = 0.0_dp
-        end if
-      end if
-      do ip = 1, nip
-        j0 = det3(fg0(:, :, ip))
-        j1 = det3(fg1(:, :, ip))
-        fb0 = fg0(:, :, ip)
-        fb1 = fg1(:, :, ip)
-        if (fbar) then
-          ! (axisymmetric: the whole 3x3 F with its hoop stretch, m = 3, so that det Fbar = J_c)
-          fb0(1:nf, 1:nf) = (jc0 / j0)**(1.0_dp / mf) * fb0(1:nf, 1:nf)
-          fb1(1:nf, 1:nf) = (jc1 / j1)**(1.0_dp / mf) * fb1(1:nf, 1:nf)
-        end if
-
-        if (nlgeom) then
-          ! Hughes-Winget: G = grad(du) w.r.t. x_mid, with the F-bar modified gradients
-          fm = 0.5_dp * (fb0 + fb1)
-          if (.not. (det3(fm) > 0.0_dp)) then
-            call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
-                      // itoa(ip) // ')')
-            return
-          end if
-          g = matmul(fb1 - fb0, inv3(fm))
-          ! DROT = (I - W/2)^-1 (I + W/2), W = (G - G^T)/2 (Hughes-Winget), in closed form: with A = W/2 (skew,
-          ! axial vector a), A^3 = -|a|^2 A gives (I - A)^-1 = I + (A + A^2)/(1 + |a|^2),
-          ! so DROT = I + 2 (A + A^2)/(1 + |a|^2)
-          wsk = 0.25_dp * (g - transpose(g))
-          drot = eye + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
-        else
-          ! small strain: grad(du) w.r.t. X, with the mean dilatation of the element for F-bar types (B-bar)
-          g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
-          if (axi) g(3, 3) = dot_product(gp%hoop(:, ip), dun(1, 1:nne))   ! hoop strain increment du_r / R
-          if (fbar) then
-            gc = def_grad(dun, gp%dndx_0m) - eye
-            ! axisymmetric: the mean dilatation includes the mean hoop strain (2 pi R weighted)
-            if (axi) gc(3, 3) = dot_product(gp%hoop_0m(1:nne), dun(1, 1:nne))
-            trg = 0.0_dp
-            trc = 0.0_dp
-            do i = 1, nf
-              trg = trg + g(i, i)
-              trc = trc + gc(i, i)
-            end do
-            do i = 1, nf
-              g(i, i) = g(i, i) + (trc - trg) / mf
-            end do
-          end if
-          drot = eye
-        end if
-        call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
-
-        local = present(orient)
-        drot_m = drot
-        fl0 = fb0
-        fl1 = fb1
-        if (local) then
-          ! local axes at the start and end of the increment; the material gets every tensor in their components
-          tn = orient(:, :, ip)
-          t1 = orient(:, :, ip)
-          if (nlgeom) then
-            tn = matmul(polar_rotation(fb0), tn)
-            t1 = matmul(polar_rotation(fb1), t1)
-          end if
-          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
-          call tensor_to_voigt(matmul(matmul(transpose(tn), sig), tn), ntens, stress, 1.0_dp)
-          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(transpose(tn), eps), tn), ntens, stran, 2.0_dp)
-          call voigt_to_tensor(dstran, ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, dstran, 2.0_dp)
-          drot_m = matmul(transpose(tn), t1)
-          fl0 = matmul(matmul(transpose(tn), fb0), orient(:, :, ip))
-          fl1 = matmul(matmul(transpose(t1), fb1), orient(:, :, ip))
-        else
-          ! rotate the converged stress and strain by DROT (identity without NLGEOM)
-          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
-          sig = matmul(matmul(drot, sig), transpose(drot))
-          call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
-          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
-          eps = matmul(matmul(drot, eps), transpose(drot))
-          call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
-        end if
-
-        sse = 0.0_dp
-        spd = 0.0_dp
-        scd = 0.0_dp
-        if (present(energy_ip_old)) then
-          sse = energy_ip_old(1, ip)
-          spd = energy_ip_old(2, ip)
-          scd = energy_ip_old(3, ip)
-        end if
-        ! temperature at the point (TEMP, DTEMP of the UMAT); *EXPANSION: mechanical strain increment = total -
-        ! alpha dT on the direct components (Abaqus subtracts the thermal strain before the material is called)
-        temp_ip = 0.0_dp
-        dtemp_ip = 0.0_dp
-        if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
-        if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
-        if (mat%law%general) then
-          call thermal_strain_increment(mat%law, temp_ip, dtemp_ip, ndi, nshr, dth(1:ntens))
-          dstran(1:ntens) = dstran(1:ntens) - dth(1:ntens)
-        else if (mat%alpha /= 0.0_dp) then
-          dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
-        end if
-        ddsdde = 0.0_dp
-        pn = SOLID_PNEWDT_LARGE
-        select case (mat%kind)
-        case (SOLID_MAT_ELASTIC)
-          if (mat%law%general) then
-            call elastic_law_update(mat%law, temp_ip, dtemp_ip, ndi, nshr, stress(1:ntens), stran(1:ntens), &
-              dstran(1:ntens), ddsdde(1:ntens, 1:ntens), sse)
-          else
-            call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), &
-              sse)
-          end if
-        case default
-          sv = 0.0_dp
-          if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
-          do i = 1, 3
-            ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
-            coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
-          end do
-          ! PREDEF, DPRED: the field variables interpolated to the point (start of the increment) and their increments
-          if (present(field_nodes) .and. present(dfield_nodes)) then
-            call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
-              nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
-              dtemp_ip, matmul(field_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)), &
-              matmul(dfield_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)))
-          else
-            call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
-              nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
-              dtemp_ip, no_field, no_field)
-          end if
-          statev_new(1:nsv, ip) = sv(1:nsv)
-        end select
-        pnewdt = min(pnewdt, pn)
-        if (ip == 1) g_shear = sum([(ddsdde(k, k), k = ndi + 1, ntens)]) / nshr
-        if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
-          call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
-                    // itoa(ip))
+    !> The strain increment's gradient g at point ip and the rotation increment drot: Hughes-Winget at the
+    !> mid-increment configuration under NLGEOM (J <= 0 there: stat = 1), the small-strain gradient otherwise (the
+    !> B-bar mean dilatation for F-bar types); fb0, fb1 the point's (F-bar modified) gradients.
+    subroutine strain_increment(ip, axi, fb0, fb1, g, drot)
+      integer, intent(in) :: ip                   !< integration point
+      logical, intent(in) :: axi                  !< axisymmetric type
+      real(dp), intent(in) :: fb0(3, 3), fb1(3, 3)
+      real(dp), intent(out) :: g(3, 3), drot(3, 3)
+      real(dp) :: fm(3, 3), wsk(3, 3), gc(3, 3), trc, trg
+      integer :: i
+      if (nlgeom) then
+        ! Hughes-Winget: G = grad(du) w.r.t. x_mid, with the F-bar modified gradients
+        fm = 0.5_dp * (fb0 + fb1)
+        if (.not. (det3(fm) > 0.0_dp)) then
+          call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
+                    // itoa(ip) // ')')
           return
         end if
-        if (local) then
-          ! back to global components: stress, strain and the tangent (column by column of unit global strains)
-          call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
-          call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, stress, 1.0_dp)
-          call voigt_to_tensor(stran(1:ntens), ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, stran, 2.0_dp)
-          call voigt_to_tensor(dstran(1:ntens), ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, dstran, 2.0_dp)
-          do icol = 1, ntens
-            s_unit = 0.0_dp
-            s_unit(icol) = 1.0_dp
-            call voigt_to_tensor(s_unit(1:ntens), ntens, eps, 0.5_dp)
-            call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, s_unit, 2.0_dp)
-            s_unit(1:ntens) = matmul(ddsdde(1:ntens, 1:ntens), s_unit(1:ntens))
-            call voigt_to_tensor(s_unit(1:ntens), ntens, sig, 1.0_dp)
-            call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, s_unit, 1.0_dp)
-            col_g(1:ntens, icol) = s_unit(1:ntens)
+        g = matmul(fb1 - fb0, inv3(fm))
+        ! DROT = (I - W/2)^-1 (I + W/2), W = (G - G^T)/2 (Hughes-Winget), in closed form: with A = W/2 (skew,
+        ! axial vector a), A^3 = -|a|^2 A gives (I - A)^-1 = I + (A + A^2)/(1 + |a|^2),
+        ! so DROT = I + 2 (A + A^2)/(1 + |a|^2)
+        wsk = 0.25_dp * (g - transpose(g))
+        drot = eye + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
+      else
+        ! small strain: grad(du) w.r.t. X, with the mean dilatation of the element for F-bar types (B-bar)
+        g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
+        if (axi) g(3, 3) = dot_product(gp%hoop(:, ip), dun(1, 1:nne))   ! hoop strain increment du_r / R
+        if (fbar) then
+          gc = def_grad(dun, gp%dndx_0m) - eye
+          ! axisymmetric: the mean dilatation includes the mean hoop strain (2 pi R weighted)
+          if (axi) gc(3, 3) = dot_product(gp%hoop_0m(1:nne), dun(1, 1:nne))
+          trg = 0.0_dp
+          trc = 0.0_dp
+          do i = 1, nf
+            trg = trg + g(i, i)
+            trc = trc + gc(i, i)
           end do
-          ddsdde(1:ntens, 1:ntens) = col_g(1:ntens, 1:ntens)
+          do i = 1, nf
+            g(i, i) = g(i, i) + (trc - trg) / mf
+          end do
         end if
-        if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
-        if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
-        if (element_is_plane_stress(it) .and. nlgeom) statev_new(nsv + nextra, ip) = lt1(ip)
-        stress_new(:, ip) = stress(1:ntens)
-        stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
-        if (present(energy_ip_new)) then
-          energy_ip_new(:, ip) = 0.0_dp
-          energy_ip_new(1:3, ip) = [sse, spd, scd]
-        end if
+        drot = eye
+      end if
+    end subroutine strain_increment
 
-        ! spatial derivatives and volume element
-        dndx = 0.0_dp
-        hc = 0.0_dp
-        if (nlgeom) then
-          finv = inv3(fg1(:, :, ip))
-          dndx(1:nne, 1:ndim) = matmul(gp%dndx_ref(1:nne, 1:ndim, ip), finv(1:ndim, 1:ndim))
-          dv = gp%wdet(ip) * j1 * thk
-          if (axi) hc(1:nne) = gp%hoop(:, ip) / fg1(3, 3, ip)   ! N_a / r, current radius
+    !> The material at point ip: the temperature and the thermal strain, *ELASTIC or the UMAT (in the local axes
+    !> when local: back to global components after it, the tangent column by column), non-finite results stat = 3.
+    subroutine point_material(ip, local, t1, drot_m, fl0, fl1, stress, stran, dstran, ddsdde, sse, spd, scd)
+      integer, intent(in) :: ip                   !< integration point
+      logical, intent(in) :: local                !< local material axes (*ORIENTATION)
+      real(dp), intent(in) :: t1(3, 3)            !< the local axes at t_n+1 (local only)
+      real(dp), intent(in) :: drot_m(3, 3), fl0(3, 3), fl1(3, 3)  !< DROT, DFGRD0, DFGRD1 as the material sees them
+      real(dp), intent(inout) :: stress(6), stran(6), dstran(6)   !< rotated old stress and strain, DSTRAN
+      real(dp), intent(out) :: ddsdde(6, 6)       !< the material's tangent (global components)
+      real(dp), intent(out) :: sse, spd, scd      !< the point's energies
+      real(dp) :: temp_ip, dtemp_ip, dth(6), coords(3), pn, sig(3, 3), eps(3, 3), s_unit(6), col_g(6, 6)
+      integer :: i, k, icol
+      sse = 0.0_dp
+      spd = 0.0_dp
+      scd = 0.0_dp
+      if (present(energy_ip_old)) then
+        sse = energy_ip_old(1, ip)
+        spd = energy_ip_old(2, ip)
+        scd = energy_ip_old(3, ip)
+      end if
+      ! temperature at the point (TEMP, DTEMP of the UMAT); *EXPANSION: mechanical strain increment = total -
+      ! alpha dT on the direct components (Abaqus subtracts the thermal strain before the material is called)
+      temp_ip = 0.0_dp
+      dtemp_ip = 0.0_dp
+      if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
+      if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
+      if (mat%law%general) then
+        call thermal_strain_increment(mat%law, temp_ip, dtemp_ip, ndi, nshr, dth(1:ntens))
+        dstran(1:ntens) = dstran(1:ntens) - dth(1:ntens)
+      else if (mat%alpha /= 0.0_dp) then
+        dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
+      end if
+      ddsdde = 0.0_dp
+      pn = SOLID_PNEWDT_LARGE
+      select case (mat%kind)
+      case (SOLID_MAT_ELASTIC)
+        if (mat%law%general) then
+          call elastic_law_update(mat%law, temp_ip, dtemp_ip, ndi, nshr, stress(1:ntens), stran(1:ntens), &
+            dstran(1:ntens), ddsdde(1:ntens, 1:ntens), sse)
         else
-          dndx(1:nne, 1:ndim) = gp%dndx_ref(1:nne, 1:ndim, ip)
-          dv = gp%wdet(ip) * thk
-          if (axi) hc(1:nne) = gp%hoop(:, ip)
+          call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), &
+            sse)
         end if
-        energy = energy + [sse, spd] * dv
-
-        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
-        ! bc(b, k) = dN_b/dx_k at the centre (mean without NLGEOM) minus at the point: the F-bar (B-bar)
-        ! dilatation operator (0 for the other element types)
-        bc = 0.0_dp
-        if (fbar) bc(1:nne, 1:ndim) = dndx_c(1:nne, 1:ndim) - dndx(1:nne, 1:ndim)
-        ! axisymmetric: the dilatation of a radial nodal motion includes its hoop strain N_b / r
-        if (fbar .and. axi) bc(1:nne, 1) = bc(1:nne, 1) + hcc(1:nne) - hc(1:nne)
-        ! without NLGEOM the virtual strain is the B-bar one too (f = int Bbar^T sigma dV), so that
-        ! K = int Bbar^T C Bbar is symmetric for a symmetric DDSDDE; under NLGEOM f = int B^T sigma dv
-        ! (de Souza Neto et al., 1996)
-        trs = 0.0_dp
-        if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, nf == 3)) / mf
-        bcr = 0.0_dp
-        if (.not. nlgeom) bcr(1:nne, 1:ndim) = bc(1:nne, 1:ndim)
-        do a = 1, nne
-          do i = 1, ndim
-            r = ndim * (a - 1) + i
-            fe(r) = fe(r) + (dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) + trs * bcr(a, i)) * dv
-          end do
-          ! axisymmetric: the hoop virtual strain du_r / r
-          if (axi) fe(ndim * (a - 1) + 1) = fe(ndim * (a - 1) + 1) + sig(3, 3) * hc(a) * dv
+      case default
+        sv = 0.0_dp
+        if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
+        do i = 1, 3
+          ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
+          coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
         end do
-
-        if (want) then
-          if (.not. (mat%kind == SOLID_MAT_UMAT .and. mat%unsymm)) then
-            ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
-            ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
-          end if
-          ! (axisymmetric: the full 3x3 spatial tangent, the hoop direction being the third)
-          call spatial_tangent(ddsdde, ntens, sig, merge(3, ndim, axi), nlgeom, a4, q)
-          ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then
-          ! K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t
-          ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
-          ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve 2D; kl is a contiguous local)
-          if (k8) then
-            d8 = dndx(1:8, :)
-            b8 = bc(1:8, :)
-            r8 = bcr(1:8, :) / mf
-            call k_point_c3d8(tangent_kernel_level(), a4, q, d8, b8, r8, dv, kl8)
-          else
-            do b = 1, nne
-              do k = 1, ndim
-                t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
-                     + a4(:, :, k, 3) * dndx(b, 3)) * dv
-                ! axisymmetric: the column's hoop gradient L_33 = N_b / r for k = 1
-                if (axi .and. k == 1) t = t + a4(:, :, 3, 3) * hc(b) * dv
-                trs = (t(1, 1) + t(2, 2) + t(3, 3)) / mf
-                do i = 1, ndim
-                  kl(1:nne, i, k, b) = kl(1:nne, i, k, b) + t(i, 1) * dndx(1:nne, 1) &
-                    + t(i, 2) * dndx(1:nne, 2) + t(i, 3) * dndx(1:nne, 3) + trs * bcr(1:nne, i)
-                end do
-                ! and the row's hoop virtual strain for i = 1
-                if (axi) kl(1:nne, 1, k, b) = kl(1:nne, 1, k, b) + t(3, 3) * hc(1:nne)
-              end do
-            end do
-          end if
+        ! PREDEF, DPRED: the field variables interpolated to the point (start of the increment) and their increments
+        if (present(field_nodes) .and. present(dfield_nodes)) then
+          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+            nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
+            dtemp_ip, matmul(field_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)), &
+            matmul(dfield_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)))
+        else
+          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+            nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
+            dtemp_ip, no_field, no_field)
         end if
-      end do
-      if (want) then
-        if (k8) kl(1:8, :, :, 1:8) = kl8
+        statev_new(1:nsv, ip) = sv(1:nsv)
+      end select
+      pnewdt = min(pnewdt, pn)
+      if (ip == 1) g_shear = sum([(ddsdde(k, k), k = ndi + 1, ntens)]) / nshr
+      if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
+        call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
+                  // itoa(ip))
+        return
+      end if
+      if (local) then
+        ! back to global components: stress, strain and the tangent (column by column of unit global strains)
+        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+        call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, stress, 1.0_dp)
+        call voigt_to_tensor(stran(1:ntens), ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, stran, 2.0_dp)
+        call voigt_to_tensor(dstran(1:ntens), ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, dstran, 2.0_dp)
+        do icol = 1, ntens
+          s_unit = 0.0_dp
+          s_unit(icol) = 1.0_dp
+          call voigt_to_tensor(s_unit(1:ntens), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, s_unit, 2.0_dp)
+          s_unit(1:ntens) = matmul(ddsdde(1:ntens, 1:ntens), s_unit(1:ntens))
+          call voigt_to_tensor(s_unit(1:ntens), ntens, sig, 1.0_dp)
+          call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, s_unit, 1.0_dp)
+          col_g(1:ntens, icol) = s_unit(1:ntens)
+        end do
+        ddsdde(1:ntens, 1:ntens) = col_g(1:ntens, 1:ntens)
+      end if
+    end subroutine point_material
+
+    !> The point's contribution to the element tangent: column (b k) t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv,
+    !> then K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t, into kl (kl8 for a C3D8).
+    subroutine point_tangent(ddsdde, sig, dndx, bc, bcr, hc, dv, k8, axi, kl8)
+      real(dp), intent(inout) :: ddsdde(6, 6)     !< the material's tangent (symmetrised here unless UNSYMM)
+      real(dp), intent(in) :: sig(3, 3)           !< Cauchy stress
+      real(dp), intent(in) :: dndx(maxnode, 3), bc(maxnode, 3), bcr(maxnode, 3), hc(maxnode)  !< operators
+      real(dp), intent(in) :: dv                  !< volume element
+      logical, intent(in) :: k8, axi              !< the C3D8 accumulator; axisymmetric type
+      real(dp), intent(inout) :: kl8(8, 3, 3, 8)  !< the C3D8 accumulator
+      real(dp) :: a4(3, 3, 3, 3), q(3, 3), t(3, 3), trs, d8(8, 3), b8(8, 3), r8(8, 3)
+      integer :: b, k, i
+      if (.not. (mat%kind == SOLID_MAT_UMAT .and. mat%unsymm)) then
+        ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
+        ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
+      end if
+      ! (axisymmetric: the full 3x3 spatial tangent, the hoop direction being the third)
+      call spatial_tangent(ddsdde, ntens, sig, merge(3, ndim, axi), nlgeom, a4, q)
+      ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then
+      ! K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t
+      ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
+      ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve 2D; kl is a contiguous local)
+      if (k8) then
+        d8 = dndx(1:8, :)
+        b8 = bc(1:8, :)
+        r8 = bcr(1:8, :) / mf
+        call k_point_c3d8(tangent_kernel_level(), a4, q, d8, b8, r8, dv, kl8)
+      else
         do b = 1, nne
           do k = 1, ndim
-            c = ndim * (b - 1) + k
-            do a = 1, nne
-              r = ndim * (a - 1)
-              ke(r + 1:r + ndim, c) = kl(a, 1:ndim, k, b)
+            t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
+                 + a4(:, :, k, 3) * dndx(b, 3)) * dv
+            ! axisymmetric: the column's hoop gradient L_33 = N_b / r for k = 1
+            if (axi .and. k == 1) t = t + a4(:, :, 3, 3) * hc(b) * dv
+            trs = (t(1, 1) + t(2, 2) + t(3, 3)) / mf
+            do i = 1, ndim
+              kl(1:nne, i, k, b) = kl(1:nne, i, k, b) + t(i, 1) * dndx(1:nne, 1) &
+                + t(i, 2) * dndx(1:nne, 2) + t(i, 3) * dndx(1:nne, 3) + trs * bcr(1:nne, i)
             end do
+            ! and the row's hoop virtual strain for i = 1
+            if (axi) kl(1:nne, 1, k, b) = kl(1:nne, 1, k, b) + t(3, 3) * hc(1:nne)
           end do
         end do
       end if
-    end subroutine element_pass
+    end subroutine point_tangent
 
     !> Record a failure: zero force and tangent, old state kept, cutback requested for an inverted element.
     subroutine fail(code, msg)
