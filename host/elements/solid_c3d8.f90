@@ -61,13 +61,15 @@ contains
     real(dp), intent(in) :: coords0(3, 8)           !< original coordinates
     real(dp), intent(in) :: u(24), du(24)           !< total displacement, increment since the converged state
     real(dp), intent(in) :: stress_old(6, 8), stran_old(6, 8)   !< converged stress and strain
-    real(dp), intent(in), contiguous :: statev_old(:, :)        !< (>= max(1, nstatv), 8) converged STATEV
+    !> (>= max(1, nstatv), 8) converged STATEV (not CONTIGUOUS: the rows of an *ELASTIC element's are 0, and an
+    !> empty actual would be copied into a temporary on every call)
+    real(dp), intent(in) :: statev_old(:, :)
     real(dp), intent(in) :: time(2), dtime          !< step and total time at the increment's start, increment
     integer, intent(in) :: kstep, kinc, noel        !< step, increment, element label
     logical, intent(in) :: want_k                   !< compute k_e (otherwise 0)
     real(dp), intent(out) :: f_int(24), k_e(24, 24) !< internal force, tangent
     real(dp), intent(out) :: stress_new(6, 8), stran_new(6, 8)  !< stress and strain at the increment's end
-    real(dp), intent(out), contiguous :: statev_new(:, :)       !< STATEV at the increment's end
+    real(dp), intent(out) :: statev_new(:, :)       !< STATEV at the increment's end
     real(dp), intent(out) :: energy(2)              !< element integrals of SSE and SPD
     real(dp), intent(inout) :: pnewdt               !< min of the points' PNEWDT
     integer, intent(out) :: stat                    !< 0, 1 or 3 (solid_element_compute)
