@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
-"""One process x T threads against N processes x 1 thread on the paper's application scene, in alternating
-segments so that both meet the same machine speeds (docs/performance.md, "Serial against 2 processes, in
-alternating segments").
+"""Two runs of the paper's application scene in alternating segments, so that both meet the same machine speeds:
+by default one process x T threads against N processes x 1 thread (docs/performance.md, "Serial against 2
+processes, in alternating segments"), or any two commands (--run), e.g. two builds of ldfcz.
 
   bench_alternate.py [--deck DECK] [--work DIR] [--serial EXE] [--mpi EXE] [--ranks N] [--threads T]
                      [--segment K] [--until HH:MM | --budget S] [--options "..."] [--md FILE]
+  bench_alternate.py --run LABEL=COMMAND --run LABEL=COMMAND [--options "..."] ...   (two commands: the launch
+                     of ldfcz up to its options, e.g. --run "e9cbdfd=/path/e9cbdfd/ldfcz -q -t 2"
+                     --run "now=build/bin/ldfcz -q -t 2"; --options are given to both)
   bench_alternate.py --resume --work DIR [--deck DECK] [--until HH:MM | --budget S] ...
                                                   (an earlier comparison continued from its restart files)
   bench_alternate.py --report DIR [--md FILE]     (the tables of an earlier or interrupted comparison)
@@ -20,16 +23,21 @@ seconds from the start) has passed; the pair under way is completed. Each run ke
 starts without factors).
 
 Records per run: the wall time of its segments summed against the pull (LOAD.U1 of JOB.csv, sampled every 2 s:
-DIR/progress_serial.csv, DIR/progress_mpi.csv) and each segment's JOB.summary.json (DIR/RUN/summary_NN.json). The
-report: wall time at equal pull of the two runs and their ratio, and each run's time split summed over its segments
-(element loop, factorization, solve, the host's communication on rank 0) with its mean cost of a Leonov element
-call, and,
-for the default deck, the pull and wall time at which each run's field frames show 1.0 mm of delamination (the
-paper's application measure; the front found as tools/peel_study.py finds it, interpolated between frames).
+DIR/progress_RUN.csv), what each segment's process used as measured from outside (wall, CPU time and peak
+resident memory of the process and its children: DIR/RUN/segment_NN.json) and each segment's JOB.summary.json
+(DIR/RUN/summary_NN.json) when the build writes one. The report: wall time at equal pull of the two runs and their
+ratio; each run's counts (increments, attempts, cutbacks, Newton iterations from JOB.sta; factorizations and GMRES
+iterations from the summaries), wall and CPU time and peak memory from outside, and its time split summed over
+its segments (element loop, factorization, solve, the host's communication on rank 0) with its mean cost of a
+Leonov element call from the summaries ('n/a' for a build that writes none, such as e9cbdfd: nothing is taken
+from JOB.log); and, for the default deck, the pull and wall time at which each run's field frames show 1.0 mm of
+delamination (the paper's application measure; the front found as tools/peel_study.py finds it, interpolated
+between frames).
 
 Defaults: the deck of `tools/peel_study.py application` generated into DIR (tools/peel_deck.py), its solver options
 (`--newton auto --max-opening-increment 0.33 --max-plastic-increment 1.0 --factors symmetric-single`), serial
 build/bin/ldfcz with 2 threads, build-mpi/bin/ldfcz under `mpirun -np 2 --bind-to none` with 1 thread each.
+Each run continues from its own restart files, so builds that read only their own restart format compare alike.
 Python standard library only (tools/ldfcz_tools: the run summary, peel_study's CSV and VTU front readers).
 """
 import argparse
@@ -37,6 +45,7 @@ import csv
 import glob
 import json
 import os
+import shlex
 import shutil
 import subprocess
 import sys
@@ -50,7 +59,16 @@ GEN = ['--3d', '--rigid-substrate', '--ny', '10', '--nz', '3', '--le', '0.002', 
        '--dgamma-max', '1.0', '--fine-length', '1.05', '--bonded', '1.2', '--u-total', '0.72',
        '--field-frequency', '40']
 OPTIONS = '--newton auto --max-opening-increment 0.33 --max-plastic-increment 1.0 --factors symmetric-single'
-RUNS = ('serial', 'mpi')
+LEGACY_RUNS = ('serial', 'mpi')
+
+
+def run_labels(work):
+    """The two runs of a comparison: DIR/runs.json, else the legacy pair (serial, mpi)."""
+    path = os.path.join(work, 'runs.json')
+    if os.path.exists(path):
+        with open(path) as fh:
+            return [r['label'] for r in json.load(fh)]
+    return list(LEGACY_RUNS)
 
 
 def progress(work, run):
@@ -80,6 +98,15 @@ def segment_summary(path):
             'comm': t['communication_s'], 'umat_us': umat['us_per_call'] or 0.0, 'umat_calls': umat['calls']}
 
 
+def outside_records(work, run):
+    """What each segment's process used, measured from outside (segment_NN.json: wall, cpu, maxrss_kb)."""
+    recs = []
+    for f in sorted(glob.glob(os.path.join(work, run, 'segment_*.json'))):
+        with open(f) as fh:
+            recs.append(json.load(fh))
+    return recs
+
+
 def front_info():
     """tools/peel_deck.py's summary of the default deck (initial front x, delta, pull rate, nodes, elements)."""
     deck = os.path.join(os.environ.get('TMPDIR', '/tmp'), 'bench_alternate_%d.inp' % os.getpid())
@@ -93,15 +120,19 @@ def front_history(work, run, info):
     """(pull mm, delaminated mm) of every field frame of a run (JOB.pvd: a .vtu, or a .pvtu whose pieces are
     JOB_NNNN_R.vtu), the front found as tools/peel_study.py finds it, also written to DIR/front_RUN.csv; without
     the frames (a copy of the records only) that file is read instead. [] unless the run is of the default deck
-    (its node and element counts in the first segment's summary)."""
+    (its node and element counts in the first segment's summary, or the run's deck when it writes none)."""
     summaries = sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))
     pvds = glob.glob(os.path.join(work, run, '*.pvd'))
     record = os.path.join(work, 'front_%s.csv' % run)
     if not pvds and os.path.exists(record):
         with open(record) as fh:
             return [(float(r['U1_mm']), float(r['delaminated_mm'])) for r in csv.DictReader(fh)]
-    model = outputs.read_summary_file(summaries[0])['model'] if summaries else {}
-    if len(pvds) != 1 or (model.get('nodes'), model.get('elements')) != (info['nodes'], info['elements']):
+    if summaries:
+        model = outputs.read_summary_file(summaries[0])['model']
+        default = (model.get('nodes'), model.get('elements')) == (info['nodes'], info['elements'])
+    else:
+        default = os.path.exists(os.path.join(work, 'default_deck'))
+    if len(pvds) != 1 or not default:
         return []
     hist = []
     for t, f in outputs.pvd_frames(pvds[0]):
@@ -125,14 +156,44 @@ def pull_at_delamination(hist, d):
     return None
 
 
+def run_row(work, run):
+    """One run's line of the report: counts from JOB.sta (and the summaries when there are), outside measures
+    summed over the segments, the summaries' time split (None for what a build does not write)."""
+    segs = [segment_summary(f) for f in sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))]
+    outside = outside_records(work, run)
+    stas = glob.glob(os.path.join(work, run, '*.sta'))
+    counts = outputs.sta_counts(stas[0]) if stas else {}
+    row = {'segments': max(len(segs), len(outside)), 'inc': counts.get('increments'), 'att': counts.get('attempts'),
+           'cut': counts.get('cutbacks'), 'its': counts.get('iterations'), 'fac': None, 'gmres': None,
+           'wall': sum(o['wall'] for o in outside) if outside else None,
+           'cpu': sum(o['cpu'] for o in outside) if outside else None,
+           'rss': max(o['maxrss_kb'] for o in outside) / 1024.0 if outside else None}
+    if segs:
+        last = segs[-1]
+        row.update({'inc': last['inc'], 'att': last['att'], 'cut': last['cut'], 'its': last['its'],
+                    'fac': last['fac'], 'gmres': last['gmres']})
+        for k in ('asm', 'fact', 'solve', 'comm'):
+            row[k] = sum(s[k] for s in segs)
+        if row['wall'] is None:
+            row['wall'] = sum(s['wall'] for s in segs)
+        calls = sum(s['umat_calls'] for s in segs)
+        row['umat_us'] = sum(s['umat_us'] * s['umat_calls'] for s in segs) / calls if calls else None
+    return row
+
+
+def cell(v, fmt='%d'):
+    return 'n/a' if v is None else fmt % v
+
+
 def report(work, delamination=1.0):
     """Markdown tables of a comparison in work."""
-    ps, pm = progress(work, 'serial'), progress(work, 'mpi')
-    if len(ps) < 2 or len(pm) < 2:
+    runs = run_labels(work)
+    progs = [progress(work, r) for r in runs]
+    if any(len(p) < 2 for p in progs):
         return 'bench_alternate.py: no progress recorded yet in %s\n' % work
+    ps, pm = progs
     umax = min(ps[-1][1], pm[-1][1])
-    out = ['| pull (um) | 1 process (s) | %s processes (s) | 1 process / processes |' % ranks_of(work),
-           '|---|---|---|---|']
+    out = ['| pull (um) | %s (s) | %s (s) | %s / %s |' % (runs[0], runs[1], runs[0], runs[1]), '|---|---|---|---|']
     marks = [u for u in (25, 50, 100, 150, 200, 250, 300, 350, 400, 450, 500, 550, 600, 650, 700)
              if u * 1e-3 < umax]
     for k, u in enumerate(marks + [umax * 1e3]):
@@ -140,23 +201,21 @@ def report(work, delamination=1.0):
         a, b = wall_at(ps, um), wall_at(pm, um)
         out.append('| %s | %.0f | %.0f | %.3f |' % ('%.1f (common end)' % u if k == len(marks) else '%g' % u,
                                                   a, b, a / b))
-    out += ['', '| run | segments | increments | attempts | Newton iterations | factorizations | GMRES iterations '
-            '| wall (s) | element loop (s) | factorization (s) | solve (s) | host communication (s) | Leonov call '
-            '(us, mean) |', '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
-    for run in RUNS:
-        segs = [segment_summary(f) for f in sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))]
-        if not segs:
-            continue
-        tot = {k: sum(s[k] for s in segs) for k in ('wall', 'asm', 'fact', 'solve', 'comm')}
-        calls = sum(s['umat_calls'] for s in segs)
-        us = sum(s['umat_us'] * s['umat_calls'] for s in segs) / calls if calls else 0.0
-        last = segs[-1]
-        out.append('| %s | %d | %d | %d | %d | %d | %d | %.0f | %.0f | %.0f | %.0f | %.0f | %.1f |' % (
-            run, len(segs), last['inc'], last['att'], last['its'], last['fac'], last['gmres'], tot['wall'],
-            tot['asm'], tot['fact'], tot['solve'], tot['comm'], us))
+    out += ['', '| run | segments | increments | attempts | cutbacks | Newton iterations | iterations per increment '
+            '| factorizations | GMRES iterations | wall (s) | CPU (s) | peak memory (MiB) | element loop (s) '
+            '| factorization (s) | solve (s) | host communication (s) | Leonov call (us, mean) |',
+            '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+    for run in runs:
+        r = run_row(work, run)
+        per = r['its'] / r['inc'] if r['its'] is not None and r['inc'] else None
+        out.append('| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |' % (
+            run, r['segments'], cell(r['inc']), cell(r['att']), cell(r['cut']), cell(r['its']), cell(per, '%.2f'),
+            cell(r['fac']), cell(r['gmres']), cell(r['wall'], '%.0f'), cell(r['cpu'], '%.0f'),
+            cell(r['rss'], '%.0f'), cell(r.get('asm'), '%.0f'), cell(r.get('fact'), '%.0f'),
+            cell(r.get('solve'), '%.0f'), cell(r.get('comm'), '%.0f'), cell(r.get('umat_us'), '%.1f')))
     info = front_info()
     rows = []
-    for run, prog in (('serial', ps), ('mpi', pm)):
+    for run, prog in zip(runs, progs):
         u = pull_at_delamination(front_history(work, run, info), delamination)
         w = wall_at(prog, u) if u is not None else None
         if w is not None:
@@ -165,16 +224,42 @@ def report(work, delamination=1.0):
         out += ['', 'Delamination of %g mm (front of each run\'s field frames as tools/peel_study.py finds it, pull '
                 'interpolated between the frames that bracket it, wall time at that pull):' % delamination, '',
                 '| run | pull (um) | wall (s) | wall (h) |', '|---|---|---|---|'] + rows
-    out += ['', 'Leonov call per segment (us; the machine speed each segment met): ' + '; '.join(
-        '%s %s' % (run, ', '.join('%.1f' % segment_summary(f)['umat_us']
-                                  for f in sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))))
-        for run in RUNS)]
+    per_seg = []
+    for run in runs:
+        segs = sorted(glob.glob(os.path.join(work, run, 'summary_*.json')))
+        if segs:
+            per_seg.append('%s %s' % (run, ', '.join('%.1f' % segment_summary(f)['umat_us'] for f in segs)))
+    if per_seg:
+        out += ['', 'Leonov call per segment (us; the machine speed each segment met): ' + '; '.join(per_seg)]
+    out += ['', 'Wall time per segment (s, from outside): ' + '; '.join(
+        '%s %s' % (run, ', '.join('%.0f' % o['wall'] for o in outside_records(work, run))) for run in runs)]
     return '\n'.join(out) + '\n'
 
 
 def ranks_of(work):
     path = os.path.join(work, 'ranks.txt')
     return open(path).read().strip() if os.path.exists(path) else 'N'
+
+
+def define_runs(a, work):
+    """[(label, launch command)] of the comparison: --run, or the legacy serial/mpi pair; kept in DIR/runs.json
+    (read back by --resume)."""
+    path = os.path.join(work, 'runs.json')
+    if a.resume and os.path.exists(path):
+        with open(path) as fh:
+            return [(r['label'], r['command']) for r in json.load(fh)]
+    if a.run:
+        if len(a.run) != 2:
+            sys.exit('bench_alternate.py: give --run twice (two runs are compared)')
+        runs = [(lab, shlex.split(cmd)) for lab, cmd in (r.split('=', 1) for r in a.run)]
+        if runs[0][0] == runs[1][0] or any(not lab.replace('-', '').replace('_', '').isalnum() for lab, _ in runs):
+            sys.exit('bench_alternate.py: --run labels must differ and be letters, digits, - or _')
+    else:
+        runs = [('serial', [os.path.abspath(a.serial), '-q', '-t', str(a.threads)]),
+                ('mpi', ['mpirun', '-np', str(a.ranks), '--bind-to', 'none', os.path.abspath(a.mpi), '-q', '-t', '1'])]
+    with open(path, 'w') as fh:
+        json.dump([{'label': lab, 'command': cmd} for lab, cmd in runs], fh, indent=1)
+    return runs
 
 
 def main():
@@ -185,6 +270,8 @@ def main():
     ap.add_argument('--mpi', default=os.path.join(ROOT, 'build-mpi', 'bin', 'ldfcz'))
     ap.add_argument('--ranks', type=int, default=2)
     ap.add_argument('--threads', type=int, default=2, help='threads of the one-process run')
+    ap.add_argument('--run', action='append', default=[], help='LABEL=COMMAND (twice): compare these two launches '
+                    'instead of --serial/--mpi')
     ap.add_argument('--segment', type=int, default=100, help='converged increments per segment')
     ap.add_argument('--until', help='start no new pair of segments after this time of today (HH:MM)')
     ap.add_argument('--budget', type=float, help='start no new pair after this many seconds')
@@ -208,30 +295,34 @@ def main():
         deadline = time.time() + a.budget
     else:
         sys.exit('bench_alternate.py: give --until HH:MM or --budget SECONDS')
-    for exe in (a.serial, a.mpi):
-        if not os.access(exe, os.X_OK):
-            sys.exit('bench_alternate.py: %s is not an executable (build first)' % exe)
     os.makedirs(a.work, exist_ok=True)
+    runs = define_runs(a, a.work)
+    labels = [lab for lab, _ in runs]
+    for lab, cmd in runs:
+        exe = next((w for w in cmd if os.path.basename(w).startswith('ldfcz')), cmd[0])
+        if not os.access(exe, os.X_OK):
+            sys.exit('bench_alternate.py: %s (run %s) is not an executable (build first)' % (exe, lab))
     deck = a.deck
     if not deck:
         deck = os.path.join(a.work, 'app.inp')
+        open(os.path.join(a.work, 'default_deck'), 'w').write('the deck of tools/peel_study.py application\n')
     if not a.deck and not (a.resume and os.path.exists(deck)):
         subprocess.run([sys.executable, os.path.join(ROOT, 'tools', 'peel_deck.py')] + GEN + ['-o', deck],
                        check=True, stdout=subprocess.DEVNULL)
     deck = os.path.abspath(deck)
     job = os.path.splitext(os.path.basename(deck))[0]
     opts = a.options.split() + ['--restart-write', str(a.segment), '--stop-after-increments', str(a.segment)]
-    launch = {'serial': [os.path.abspath(a.serial), '-q', '-t', str(a.threads)],
-              'mpi': ['mpirun', '-np', str(a.ranks), '--bind-to', 'none', os.path.abspath(a.mpi), '-q', '-t', '1']}
+    launch = dict(runs)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
     state = {}
-    for run in RUNS:
+    for run in labels:
         d = os.path.join(a.work, run)
         if a.resume:
-            # the segments so far (one copy of JOB.summary.json each) and the wall time summed over them
-            segs = len(glob.glob(os.path.join(d, 'summary_*.json')))
+            # the segments so far (one record each) and the wall time summed over them
+            segs = max(len(glob.glob(os.path.join(d, 'summary_*.json'))),
+                       len(glob.glob(os.path.join(d, 'segment_*.json'))))
             if segs == 0 or not glob.glob(os.path.join(d, job + '.rst*')):     # JOB.rst, or JOB.rst.KofN per rank
-                sys.exit('bench_alternate.py: nothing to resume in %s (no summary_NN.json or no %s.rst)' % (d, job))
+                sys.exit('bench_alternate.py: nothing to resume in %s (no segment records or no %s.rst)' % (d, job))
             state[run] = {'wall': progress(a.work, run)[-1][0], 'seg': segs}
             continue
         shutil.rmtree(d, ignore_errors=True)
@@ -239,13 +330,13 @@ def main():
         with open(os.path.join(a.work, 'progress_%s.csv' % run), 'w') as fh:
             fh.write('wall_s,U1_mm\n')
         state[run] = {'wall': 0.0, 'seg': 0}
-    if a.resume and (state['serial']['seg'] != state['mpi']['seg'] or
-                     ranks_of(a.work) != str(a.ranks)):
-        sys.exit('bench_alternate.py: %s holds %d and %d segments on %s processes: resume needs whole pairs and '
-                 'the same --ranks' % (a.work, state['serial']['seg'], state['mpi']['seg'], ranks_of(a.work)))
+    if a.resume and (state[labels[0]]['seg'] != state[labels[1]]['seg'] or
+                     (not a.run and labels == list(LEGACY_RUNS) and ranks_of(a.work) != str(a.ranks))):
+        sys.exit('bench_alternate.py: %s holds %d and %d segments: resume needs whole pairs (and the same --ranks)' % (
+            a.work, state[labels[0]]['seg'], state[labels[1]]['seg']))
     open(os.path.join(a.work, 'ranks.txt'), 'w').write(str(a.ranks))
     with open(os.path.join(a.work, 'commands.txt'), 'a' if a.resume else 'w') as fh:
-        for run in RUNS:
+        for run in labels:
             fh.write('%s: %s\n' % (run, ' '.join(launch[run] + ['-o', os.path.join(a.work, run)] + opts +
                                                 ['[--restart-from DIR/%s.rst]' % job, deck])))
     log = open(os.path.join(a.work, 'segments.txt'), 'a' if a.resume else 'w')
@@ -261,39 +352,48 @@ def main():
         with open(os.path.join(d, 'console_%02d.txt' % st['seg']), 'w') as con, open(prog_path, 'a') as prog:
             p = subprocess.Popen(cmd + [deck], env=env, stdout=con, stderr=subprocess.STDOUT)
             last = None
-            while p.poll() is None:
+            while True:
+                # the process's own resources (and its waited-for children's: mpirun's ranks) at its end
+                pid, status, usage = os.wait4(p.pid, os.WNOHANG)
+                if pid == p.pid:
+                    break
                 time.sleep(2)
                 u = last_u1(os.path.join(d, job + '.csv'))
                 if u is not None and u != last:
                     prog.write('%.2f,%.6g\n' % (st['wall'] + time.time() - t0, u))
                     prog.flush()
                     last = u
+            wall = time.time() - t0
+            rc = os.waitstatus_to_exitcode(status)
+            p.returncode = rc
             u = last_u1(os.path.join(d, job + '.csv'))
-            if p.returncode in (0, 3):
-                st['wall'] += time.time() - t0
+            if rc in (0, 3):
+                st['wall'] += wall
                 if u is not None:
                     prog.write('%.2f,%.6g\n' % (st['wall'], u))
-        if p.returncode not in (0, 3):
+        if rc not in (0, 3):
             # a failed segment leaves no trace that a --resume would count: its progress rows are dropped, its
-            # summary is not kept as a segment (the console file says why it failed)
+            # records are not kept as a segment (the console file says why it failed)
             with open(prog_path, 'r+') as prog:
                 prog.truncate(prog_size)
             log.write('%s %s segment %d: failed, exit %d (not counted)\n' % (time.strftime('%H:%M:%S'), run,
-                                                                            st['seg'], p.returncode))
+                                                                            st['seg'], rc))
             log.flush()
-            return p.returncode
+            return rc
+        with open(os.path.join(d, 'segment_%02d.json' % st['seg']), 'w') as fh:
+            json.dump({'wall': wall, 'cpu': usage.ru_utime + usage.ru_stime, 'maxrss_kb': usage.ru_maxrss,
+                       'exit': rc, 'load': os.getloadavg()[0], 'end': time.strftime('%Y-%m-%d %H:%M:%S')}, fh)
         if os.path.exists(outputs.summary_path(d, job)):
             shutil.copy(outputs.summary_path(d, job), os.path.join(d, 'summary_%02d.json' % st['seg']))
         log.write('%s %s segment %d: exit %d, %.1f s, %.1f s in all, pull %.6g mm, load %.2f\n' % (
-            time.strftime('%H:%M:%S'), run, st['seg'], p.returncode, time.time() - t0, st['wall'], u,
-            os.getloadavg()[0]))
+            time.strftime('%H:%M:%S'), run, st['seg'], rc, wall, st['wall'], u, os.getloadavg()[0]))
         log.flush()
         st['seg'] += 1
-        return p.returncode
+        return rc
 
-    pair, ended = state['serial']['seg'], False     # the turns go on in order after a resume
+    pair, ended = state[labels[0]]['seg'], False     # the turns go on in order after a resume
     while time.time() < deadline and not ended:
-        for run in (RUNS if pair % 2 == 0 else RUNS[::-1]):
+        for run in (labels if pair % 2 == 0 else labels[::-1]):
             rc = segment(run)
             if rc == 0:
                 ended = True        # the analysis is complete (the other run completes in its turn)

@@ -7,11 +7,13 @@ nu = 0.3), NLGEOM, fixed increments (*STATIC, DIRECT) of 0.1 mm of pull, i.e. 10
 beside the loaded face if the increment were applied to the boundary nodes alone. The same deck text is read
 by both programs (Abaqus keywords that CalculiX 2.20 reads alike).
 
-Each configuration (program x threads) runs --repeat times. Per run: the wall time of each increment (the time at
-which the program appended the increment's line to JOB.sta, polled every 10 ms), the Newton iterations per
-increment (JOB.sta), the program's CPU time (user + system of the child), the load average before and after; for
-ldfcz also the closing summary's assembly / factorization / solve split. The report lists the median and the
-spread of the repeats, so the noise of a shared machine shows.
+Each configuration (program x threads) runs --repeat times, the configurations alternating within each repeat.
+Per run: the wall time of each increment (the time at which the program appended the increment's line to
+JOB.sta, polled every 10 ms), the Newton iterations per increment (JOB.sta), the program's CPU time (user + system
+of the child), its peak resident memory (GNU time's %M, kB, where /usr/bin/time exists), the load average before
+and after; for ldfcz also the closing summary's assembly / factorization / solve split (not for a build that
+writes no JOB.summary.json, e.g. e9cbdfd: --ldfcz-exe LABEL=PATH runs another build). The report lists the median
+and the spread of the repeats, so the noise of a shared machine shows.
 
   tools/setup.sh bench      (Release build and calculix-ccx)
   /usr/bin/python3 benchmarks/bench_calculix.py --exe build/bin/ldfcz --threads 1 2 --repeat 3 \\
@@ -64,10 +66,18 @@ class StaWatch:
         self.thread.join()
 
 
+GNU_TIME = '/usr/bin/time'
+
+
 def run_timed(cmd, cwd, env, sta):
-    """Run cmd; returns (wall, cpu user+sys of the child, sta stamps, stdout)."""
+    """Run cmd; returns (wall, cpu user+sys of the child, sta stamps, stdout, peak resident kB or None)."""
     if os.path.exists(sta):
         os.remove(sta)
+    rss_file = os.path.abspath(os.path.join(cwd, 'maxrss.txt'))
+    if os.path.exists(rss_file):
+        os.remove(rss_file)
+    if os.access(GNU_TIME, os.X_OK):
+        cmd = [GNU_TIME, '-f', '%M', '-o', rss_file] + cmd
     r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.monotonic()
     w = StaWatch(sta, t0)
@@ -79,7 +89,12 @@ def run_timed(cmd, cwd, env, sta):
     cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
     if p.returncode != 0:
         sys.exit('bench_calculix: %s failed (exit %d):\n%s' % (' '.join(cmd), p.returncode, p.stdout[-3000:]))
-    return wall, cpu, w.stamps, p.stdout
+    rss = None
+    if os.path.exists(rss_file):
+        with open(rss_file) as f:
+            words = f.read().split()
+        rss = int(words[-1]) if words and words[-1].isdigit() else None
+    return wall, cpu, w.stamps, p.stdout, rss
 
 
 def ldfcz_increments(stamps):
@@ -129,6 +144,9 @@ def main():
     ap.add_argument('--ldfcz-config', action='append', default=[],
                     help="LABEL=ldfcz options: a further ldfcz configuration, run when LABEL is in --programs "
                          "(e.g. 'auto=--newton auto')")
+    ap.add_argument('--ldfcz-exe', action='append', default=[],
+                    help="LABEL=PATH: the ldfcz executable of configuration LABEL (another build; default --exe; "
+                         "a LABEL without --ldfcz-config runs with no options), e.g. 'e9cbdfd=/path/bin/ldfcz'")
     ap.add_argument('--md', default='', help='write the report here (markdown)')
     a = ap.parse_args()
     if 'ldfcz' in a.programs:
@@ -137,6 +155,11 @@ def main():
     for c in a.ldfcz_config:
         label, opts = c.split('=', 1)
         a.ldfcz[label] = opts
+    a.exes = {}
+    for c in a.ldfcz_exe:
+        label, path = c.split('=', 1)
+        a.exes[label] = os.path.abspath(path)
+        a.ldfcz.setdefault(label, '')
     os.makedirs(a.work, exist_ok=True)
     deck = os.path.join(a.work, 'block.inp')
     with open(deck, 'w') as f:
@@ -155,14 +178,18 @@ def main():
                 env = dict(os.environ, OMP_NUM_THREADS=str(nt))
                 la0 = load_avg()
                 if prog in a.ldfcz:
-                    cmd = [exe, '-q', '-t', str(nt)] + a.ldfcz[prog].split() + ['block.inp']
-                    wall, cpu, stamps, _ = run_timed(cmd, wd, env, os.path.join(wd, 'block.sta'))
+                    cmd = [a.exes.get(prog, exe), '-q', '-t', str(nt)] + a.ldfcz[prog].split() + ['block.inp']
+                    summary = outputs.summary_path(wd, 'block')
+                    if os.path.exists(summary):
+                        os.remove(summary)
+                    wall, cpu, stamps, _, rss = run_timed(cmd, wd, env, os.path.join(wd, 'block.sta'))
                     incs = ldfcz_increments(stamps)
-                    split = summary_split(outputs.read_summary(wd, 'block'))
+                    split = summary_split(outputs.read_summary(wd, 'block')) if os.path.exists(summary) else {}
                 else:
                     env.update(CCX_NPROC_STIFFNESS=str(nt), CCX_NPROC_EQUATION_SOLVER=str(nt),
                                CCX_NPROC_RESULTS=str(nt))
-                    wall, cpu, stamps, _ = run_timed([ccx, '-i', 'block'], wd, env, os.path.join(wd, 'block.sta'))
+                    wall, cpu, stamps, _, rss = run_timed([ccx, '-i', 'block'], wd, env,
+                                                          os.path.join(wd, 'block.sta'))
                     incs = ccx_increments(stamps)
                     split = {}
                 la1 = load_avg()
@@ -171,11 +198,11 @@ def main():
                              % (prog, nt, len(incs), a.increments))
                 tinc = [incs[0][0]] + [incs[i][0] - incs[i - 1][0] for i in range(1, len(incs))]
                 row = dict(prog=prog, threads=nt, rep=rep, wall=wall, cpu=cpu, load=(la0 + la1) / 2,
-                           t_inc=tinc, its=[i for _, i in incs], **split)
+                           t_inc=tinc, its=[i for _, i in incs], maxrss_kb=rss, **split)
                 rows.append(row)
-                print('%-5s -t %d rep %d: wall %.1f s, cpu %.1f s, load %.1f, per increment %s s, iterations %s %s'
-                      % (prog, nt, rep, wall, cpu, row['load'], ' '.join('%.2f' % x for x in tinc), row['its'],
-                         ' '.join('%s %.1f' % kv for kv in split.items())), flush=True)
+                print('%-5s -t %d rep %d: wall %.1f s, cpu %.1f s, %s kB, load %.1f, per increment %s s, iterations %s '
+                      '%s' % (prog, nt, rep, wall, cpu, rss, row['load'], ' '.join('%.2f' % x for x in tinc),
+                              row['its'], ' '.join('%s %.1f' % kv for kv in split.items())), flush=True)
     with open(os.path.join(a.work, 'runs.json'), 'w') as f:
         json.dump(rows, f, indent=1)
     if a.md:
@@ -193,8 +220,8 @@ def write_md(a, rows):
            'over increments 2..n. Median of %d repeats, [min-max] in brackets. CPU: user + system of the whole run.'
            % a.repeat, '',
            '| program | threads | iterations per increment | wall (s) | CPU (s) | first increment (s) | later increment (s) | '
-           'assembly / factorization / solve (s) | load average |',
-           '|---|---|---|---|---|---|---|---|---|']
+           'assembly / factorization / solve (s) | peak resident memory (MiB) | load average |',
+           '|---|---|---|---|---|---|---|---|---|---|']
     summary = {}
     for nt in a.threads:
         for prog in a.programs:
@@ -204,31 +231,35 @@ def write_md(a, rows):
             first = [r['t_inc'][0] for r in rs]
             later = [med(r['t_inc'][1:]) if len(r['t_inc']) > 1 else float('nan') for r in rs]
             walls = [r['wall'] for r in rs]
-            summary[(prog, nt)] = (med(walls), med(later), med([r['cpu'] for r in rs]))
+            rss = [r['maxrss_kb'] / 1024 for r in rs if r.get('maxrss_kb')]
+            summary[(prog, nt)] = (med(walls), med(later), med([r['cpu'] for r in rs]), med(rss) if rss else None)
             split = ''
-            if prog in a.ldfcz:
+            if prog in a.ldfcz and all('assembly' in r for r in rs):
                 split = '%.1f / %.1f / %.1f' % tuple(med([r[k] for r in rs]) for k in ('assembly', 'factorization', 'solve'))
-            out.append('| %s | %d | %s | %.1f [%.1f-%.1f] | %.1f | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %.1f-%.1f |' % (
+            out.append('| %s | %d | %s | %.1f [%.1f-%.1f] | %.1f | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %s | %.1f-%.1f |' % (
                 prog, nt, ' '.join(map(str, rs[0]['its'])), med(walls), min(walls), max(walls),
                 med([r['cpu'] for r in rs]), med(first), min(first), max(first), med(later), min(later), max(later),
-                split, min(r['load'] for r in rs), max(r['load'] for r in rs)))
-    out += ['', 'ldfcz configurations: ' + ', '.join('%s = `ldfcz -q -t N %s`' % (k, v) for k, v in a.ldfcz.items()
-                                                  if k in a.programs), '',
+                split, '%.0f [%.0f-%.0f]' % (med(rss), min(rss), max(rss)) if rss else '', min(r['load'] for r in rs),
+                max(r['load'] for r in rs)))
+    out += ['', 'ldfcz configurations: ' + ', '.join('%s = `%s -q -t N %s`' % (k, a.exes.get(k, 'ldfcz'), v)
+                                                  for k, v in a.ldfcz.items() if k in a.programs), '',
             '| threads | CalculiX / ldfcz, wall of the run | CalculiX / ldfcz, later increment | CalculiX / ldfcz, CPU '
-            'of the run |', '|---|---|---|---|']
+            'of the run | ldfcz / CalculiX, peak memory |', '|---|---|---|---|---|']
     for nt in a.threads:
         for prog in a.programs:
             if prog in a.ldfcz and (prog, nt) in summary and ('ccx', nt) in summary:
                 l, c = summary[(prog, nt)], summary[('ccx', nt)]
-                out.append('| %d | %.2f | %.2f | %.2f |' % (nt, c[0] / l[0], c[1] / l[1], c[2] / l[2])
-                           if prog == 'ldfcz' else '| %d, ldfcz %s (`%s`) | %.2f | %.2f | %.2f |'
-                           % (nt, prog, a.ldfcz[prog], c[0] / l[0], c[1] / l[1], c[2] / l[2]))
-    out += ['', 'Every run:', '', '| program | threads | repeat | wall (s) | CPU (s) | per increment (s) | iterations |'
-            ' load average |', '|---|---|---|---|---|---|---|---|']
+                mem = '%.2f' % (l[3] / c[3]) if l[3] and c[3] else ''
+                what = '%d' % nt if prog == 'ldfcz' else '%d, ldfcz %s (%s)' % (nt, prog, ', '.join(
+                    x for x in ['`%s`' % a.ldfcz[prog] if a.ldfcz[prog] else '',
+                                a.exes.get(prog, '')] if x))
+                out.append('| %s | %.2f | %.2f | %.2f | %s |' % (what, c[0] / l[0], c[1] / l[1], c[2] / l[2], mem))
+    out += ['', 'Every run, in the order run:', '', '| program | threads | repeat | wall (s) | CPU (s) | per increment '
+            '(s) | iterations | peak resident (kB) | load average |', '|---|---|---|---|---|---|---|---|---|']
     for r in rows:
-        out.append('| %s | %d | %d | %.1f | %.1f | %s | %s | %.1f |' % (
+        out.append('| %s | %d | %d | %.1f | %.1f | %s | %s | %s | %.1f |' % (
             r['prog'], r['threads'], r['rep'], r['wall'], r['cpu'], ' '.join('%.2f' % x for x in r['t_inc']),
-            ' '.join(map(str, r['its'])), r['load']))
+            ' '.join(map(str, r['its'])), r.get('maxrss_kb') or '', r['load']))
     os.makedirs(os.path.dirname(a.md) or '.', exist_ok=True)
     with open(a.md, 'w') as f:
         f.write('\n'.join(out) + '\n')

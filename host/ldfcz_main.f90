@@ -289,6 +289,7 @@ program ldfcz
   call blas_kernels_note(blas_note, slow_kernels)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   if (slow_kernels .and. parallel_writer(par)) write (error_unit, '(a)') 'ldfcz: warning: '//blas_note
+  options%threads = nthreads
   call blas_threads_default(nthreads, blas_note, options%factor_blas_threads, options%factor_min_flops)
   if (len(blas_note) > 0) call output_log(out, 'ldfcz: '//blas_note)
   call omp_wait_note(nthreads, wait_note)

@@ -135,6 +135,7 @@ ldfcz_add_perf_test(deck_opening_control ${LDFCZ_DECKS}/single/cohesive_block.in
 # *STEP, EXTRAPOLATION=LINEAR (the default) against NO: exact start on a linear ramp, same answers when nonlinear
 ldfcz_add_perf_test(deck_extrapolation_linear ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp extrapolation_linear)
 ldfcz_add_perf_test(deck_extrapolation ${LDFCZ_DECKS}/single/cohesive_block.inp extrapolation)
+ldfcz_add_perf_test(deck_extrapolation_parabolic ${LDFCZ_DECKS}/single/c3d8_uniaxial.inp extrapolation_parabolic)
 # the first Newton iteration carries the prescribed increment through the tangent: a linear block converges in one
 # iteration (residual at round-off), a nonlinear one's residual falls from the first iteration on
 # (tests/regression/check_first_iteration.py)

@@ -8,18 +8,19 @@ module analysis_core
   use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node, model_dof
   use element_catalog, only: element_name
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
-    solid_geometry_t, solid_element_geometry, &
+    solid_geometry_t, solid_element_geometry, solid_compact_geometry_size, solid_compact_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
   use element_colors, only: color_elements
   use sparse_system, only: sparse_system_t, sparse_setup, sparse_zero, sparse_add_element, sparse_destroy, &
-    sparse_set_factor_threads, sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count
+    sparse_set_factor_threads, sparse_time_factor, sparse_time_solve, sparse_time_analysis, sparse_factor_count, &
+    sparse_time_factor_beside, sparse_time_factor_wait
   use user_routines, only: user_routines_t
   use material_law, only: material_elastic_law
   use distributed_loads, only: dload_element, dload_uel_arrays, dload_has
   use element_state, only: elem_state_t, element_state_free, element_state_copy
   use analysis_state, only: analysis_state_t, analysis_state_init
   use increment, only: increment_t, increment_time, increment_end
-  use solver_options, only: solver_options_t
+  use solver_options, only: solver_options_t, newton_auto
   use solver_text, only: itoa, rtoa
   use abaqus_host_state, only: abaqus_set_caller, abaqus_stop_requested, abaqus_stop_element, abaqus_stop_message
   use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_max, &
@@ -52,6 +53,8 @@ module analysis_core
     integer :: blas_threads = 0           !< BLAS threads of a large factorization (0: BLAS untouched)
     real(dp) :: min_flops = 0.0_dp        !< operations from which a factorization uses them
     logical :: one_process = .false.      !< distributed: factorize and solve on rank 0 (--reproducible)
+    logical :: pipelined = .false.        !< two factor instances: refactorizations beside GMRES (Newton auto)
+    logical :: background = .false.       !< the pipelined factorization on a thread of its own (2+ threads)
   end type factoring_t
 
   !> The equations of the current step: the free dofs numbered (prescribed ones and *EQUATION/*TIE-eliminated ones
@@ -98,6 +101,8 @@ module analysis_core
   type :: loop_timings_t
     real(dp) :: t_factor_done = 0.0_dp          !< factorization seconds of earlier sparse systems (pattern changes)
     real(dp) :: t_solve_done = 0.0_dp           !< solve seconds of earlier sparse systems
+    real(dp) :: t_beside_done = 0.0_dp          !< of t_factor_done: factorizations on their own thread
+    real(dp) :: t_wait_done = 0.0_dp            !< of t_solve_done: waits for them
     real(dp) :: t_setup_done = 0.0_dp           !< setup seconds of earlier sparse systems
     integer :: n_factor_done = 0                !< factorizations of earlier sparse systems
     real(dp) :: t_assembly = 0.0_dp             !< wall seconds in element loops
@@ -135,10 +140,14 @@ module analysis_core
     character(len=8), allocatable :: elem_tname(:) !< Abaqus element type name ('C3D8', ...) or 'U'
     type(solid_material_t), allocatable :: mats(:)  !< per section
     type(elem_axes_t), allocatable :: axes(:)   !< (nelem) local material axes (*ORIENTATION)
-    !> (nelem) index into geo of a continuum element this process computes, 0 otherwise (user elements, other
-    !> processes' elements: element_geometry computes theirs)
+    !> (nelem) where the reference data of a continuum element this process computes is kept: k > 0 in geo(k),
+    !> k < 0 in geo_compact(:, -k); 0 otherwise (user elements, other processes' elements: element_geometry
+    !> computes theirs)
     integer, allocatable :: elem_geo(:)
     type(solid_geometry_t), allocatable :: geo(:)  !< reference data of those elements (computed once)
+    !> compact reference data (solid_compact_geometry) of the elements whose type's fixed-size kernel serves them
+    !> in every step (C3D8 under NLGEOM without *ORIENTATION): 720 bytes a C3D8 instead of about 3.4 kB in geo
+    real(dp), allocatable :: geo_compact(:, :)
     type(node_rotation_t) :: nr                 !< *TRANSFORM local node systems (node_rotations): u, u_conv, fint,
                                                 !< fext, fdl and the system are in their components at those nodes
     type(user_routines_t) :: routines           !< UEL and UMAT in use
@@ -172,13 +181,17 @@ contains
     !> the partition's weights and pieces, the factorization's choices (default: solver_options_t's)
     type(solver_options_t), intent(in), optional :: options
     type(solver_options_t) :: opt
+    logical :: beside
 
     stat = 0
     errmsg = ''
     if (present(options)) opt = options
     an%cost_weight = opt%element_weights
+    ! Newton auto's refactorizations pipelined beside GMRES, on a thread of their own with two threads or more
+    ! (LDFCZ_PIPELINE_THREAD=0: in sequence, for measurements; the results are the same: docs/host.md)
+    beside = .not. env_is_zero('LDFCZ_PIPELINE_THREAD')
     an%eqs%factoring = factoring_t(opt%symmetric_factors, opt%single_factors, opt%factor_blas_threads, &
-      opt%factor_min_flops, opt%reproducible)
+      opt%factor_min_flops, opt%reproducible, opt%newton == newton_auto, opt%threads > 1 .and. beside)
     an%routines = routines
     an%ndim = model%ndim
     ! the displacement dofs of the nodes, then the rotational dofs of the couplings' reference nodes (model_dof)
@@ -379,24 +392,47 @@ contains
   !> Reference shape-function derivatives and weights, once (original coordinates), of the continuum elements this
   !> process computes: all in a one-process run, its own in a distributed one (element_geometry gives another
   !> process's element when output needs it; 41 MB a process on the paper's application mesh when all are kept).
+  !> An element whose type's fixed-size kernel serves it in every step (C3D8: every step NLGEOM, no *ORIENTATION
+  !> on its section, no *MODEL CHANGE, whose reactivation moves the reference) keeps the kernel's compact form
+  !> (about a fifth of the memory; the kernel rebuilds the arrays from it to the bit), the others the whole arrays.
   subroutine reference_geometry(an, model)
     type(analysis_t), intent(inout) :: an  !< analysis data
     type(model_t), intent(in) :: model     !< the model
-    integer :: ie, n
+    integer :: ie, n, nc, kc, k, is
+    logical :: all_nlgeom
     allocate (an%elem_geo(model%nelem))
     an%elem_geo = 0
     n = 0
+    nc = 0
+    kc = 0
+    all_nlgeom = model%nstep > 0
+    do is = 1, model%nstep
+      all_nlgeom = all_nlgeom .and. model%steps(is)%nlgeom
+    end do
     do ie = 1, model%nelem
-      if (model%elem_kind(ie) /= etype_user .and. an%owned(ie)) then
+      if (model%elem_kind(ie) == etype_user .or. .not. an%owned(ie)) cycle
+      k = 0
+      if (all_nlgeom .and. model%sections(model%elem_section(ie))%iorient == 0 .and. .not. model%has_model_change) &
+        k = solid_compact_geometry_size(an%elem_tname(ie))
+      if (k > 0 .and. (kc == 0 .or. k == kc)) then
+        kc = k
+        nc = nc + 1
+        an%elem_geo(ie) = -nc
+      else
         n = n + 1
         an%elem_geo(ie) = n
       end if
     end do
-    allocate (an%geo(n))
+    allocate (an%geo(n), an%geo_compact(kc, nc))
     do ie = 1, model%nelem
-      if (an%elem_geo(ie) == 0) cycle
-      call solid_element_geometry(an%elem_tname(ie), &
-        model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+      if (an%elem_geo(ie) > 0) then
+        call solid_element_geometry(an%elem_tname(ie), &
+          model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), an%geo(an%elem_geo(ie)))
+      else if (an%elem_geo(ie) < 0) then
+        call solid_compact_geometry(an%elem_tname(ie), &
+          model%x(1:model%ndim, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
+          an%geo_compact(:, -an%elem_geo(ie)))
+      end if
     end do
   end subroutine reference_geometry
 
@@ -463,6 +499,8 @@ contains
       ! the old system goes away with its timers: keep them for the summary
       an%timing%t_factor_done = an%timing%t_factor_done + sparse_time_factor(an%eqs%sys)
       an%timing%t_solve_done = an%timing%t_solve_done + sparse_time_solve(an%eqs%sys)
+      an%timing%t_beside_done = an%timing%t_beside_done + sparse_time_factor_beside(an%eqs%sys)
+      an%timing%t_wait_done = an%timing%t_wait_done + sparse_time_factor_wait(an%eqs%sys)
       an%timing%t_setup_done = an%timing%t_setup_done + sparse_time_analysis(an%eqs%sys)
       an%timing%n_factor_done = an%timing%n_factor_done + sparse_factor_count(an%eqs%sys)
     end if
@@ -484,12 +522,14 @@ contains
       call constraints_extend(an%eqs%cs, an%elem_ptr, an%elem_dof, an%eqs%eq)
       call color_elements(model%nelem, an%ndof, an%eqs%cs%xptr, an%eqs%cs%xdof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)
       call sparse_setup(an%eqs%sys, n, an%eqs%cs%xptr, an%eqs%cs%xeq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned, &
-        one_process=an%eqs%factoring%one_process)
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, &
+        owned=an%owned, one_process=an%eqs%factoring%one_process, pipelined=an%eqs%factoring%pipelined, &
+        background=an%eqs%factoring%background)
     else
       call sparse_setup(an%eqs%sys, n, an%elem_ptr, an%eqs%elem_eq, eq_node, an%symmetric, stat, msg, &
-        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, owned=an%owned, &
-        one_process=an%eqs%factoring%one_process)
+        symmetric_factors=an%eqs%factoring%symmetric_part, single_factors=an%eqs%factoring%single, par=an%par, &
+        owned=an%owned, one_process=an%eqs%factoring%one_process, pipelined=an%eqs%factoring%pipelined, &
+        background=an%eqs%factoring%background)
     end if
     if (stat /= 0) then
       errmsg = 'sparse solver setup failed: '//trim(msg)
@@ -500,6 +540,15 @@ contains
     an%eqs%sys_ready = .true.
     if (.false.) print *, model%nnode
   end subroutine analysis_number_equations
+
+  !> True when the environment variable is set to 0.
+  logical function env_is_zero(name)
+    character(len=*), intent(in) :: name            !< variable
+    character(len=8) :: val
+    integer :: length, status
+    call get_environment_variable(name, val, length, status)
+    env_is_zero = status == 0 .and. trim(val) == '0'
+  end function env_is_zero
 
   !> Element loop at the current estimate an%work%u (increment du = u - u_conv): every element gets a fresh copy of its
   !> converged state; internal forces into an%work%fint, tangents into an%eqs%sys when want_k. pnewdt_min is the smallest
@@ -520,13 +569,12 @@ contains
     !> (symmetrised for LDL^T) over all dofs, prescribed ones included
     real(dp), intent(in), optional :: carry(:)
     real(dp), intent(out), optional :: k_carry(:)          !< (ndof) K carry
-    integer :: ie, ic, c, n, fail_elem, st, pn_elem, kc
-    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :), fk(:)
+    integer :: fail_elem, pn_elem
+    real(dp), allocatable :: fk(:)
     real(dp) :: ctime(n_cost_class)        !< seconds in the element routines per cost class (this loop)
     integer(i8) :: ccalls(n_cost_class)    !< calls per cost class
-    integer(i8) :: e0, e1
-    real(dp) :: pn, pn_worst, comm0, comm1, loop_own, loop_slowest, cpu0, cpu1
-    character(len=256) :: msg, first_msg
+    real(dp) :: pn_worst, comm0, comm1, loop_own, loop_slowest, cpu0, cpu1
+    character(len=256) :: first_msg
     character(len=:), allocatable :: who, fail_text
     integer(i8) :: c0, c1, rate
     logical :: with_carry
@@ -552,6 +600,78 @@ contains
     end if
     ctime = 0.0_dp
     ccalls = 0
+    call colour_loop(an, model, inc, want_k, with_carry, pnewdt_min, fail_elem, first_msg, pn_worst, pn_elem, ctime, &
+      ccalls, carry, fk)
+    an%timing%class_time = an%timing%class_time + ctime / real(rate, dp)
+    an%timing%class_calls = an%timing%class_calls + ccalls
+    call record_stop_request(an)
+    ! the element forces into the dofs' (and K carry's)
+    call scatter_add(an, an%work%fe, an%work%fint)
+    call scatter_add(an, an%work%fdle, an%work%fdl)
+    if (present(k_carry)) then
+      k_carry = 0.0_dp
+      if (with_carry) call scatter_add(an, fk, k_carry)
+    end if
+    who = ''
+    if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
+      trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
+    fail_text = trim(first_msg)
+    ! this process's loop, before any reduction (what the slowest process's time is the largest of)
+    call system_clock(c1)
+    loop_own = real(c1 - c0, dp) / real(rate, dp)
+    if (an%timing%loop_trace /= 0) call cpu_time(cpu1)
+    loop_slowest = loop_own
+    if (parallel_distributed(an%par)) then
+      comm1 = an%par%t_comm
+      loop_slowest = parallel_max(an%par, loop_own)
+      an%timing%t_assembly_slowest = an%timing%t_assembly_slowest + loop_slowest
+      an%timing%t_loop_own = an%timing%t_loop_own + loop_own
+      an%timing%t_loop_wait = an%timing%t_loop_wait + (an%par%t_comm - comm1)
+      if (with_carry) then
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
+      else
+        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text)
+      end if
+    end if
+    if (fail_elem /= huge(1)) then
+      stat = 1
+      errmsg = fail_text
+    end if
+    if (present(pnewdt_who)) pnewdt_who = who
+    call system_clock(c1)
+    ! the reductions are communication, not assembly
+    an%timing%t_assembly = an%timing%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
+    an%timing%n_assembly = an%timing%n_assembly + 1
+    if (an%timing%loop_trace /= 0) write (an%timing%loop_trace, '(i0,3(",",i0),6(",",es10.4e2),3(",",i0))') &
+      an%timing%n_assembly, inc%step, inc%kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, &
+      ctime / real(rate, dp), ccalls
+  end subroutine analysis_assemble
+
+  !> The element loop of analysis_assemble: every element this process computes, colour by colour, its force into
+  !> an%work%fe and its tangent into the sparse system (with carry: its K carry into fk); the first failure (lowest
+  !> label), the smallest PNEWDT and the element that asked for the smallest below 1, the time and calls per class.
+  subroutine colour_loop(an, model, inc, want_k, with_carry, pnewdt_min, fail_elem, first_msg, pn_worst, pn_elem, &
+      ctime, ccalls, carry, fk)
+    type(analysis_t), intent(inout) :: an                !< analysis data
+    type(model_t), intent(in) :: model                   !< the model
+    type(increment_t), intent(in) :: inc                 !< the increment
+    logical, intent(in) :: want_k                        !< assemble the tangent
+    logical, intent(in) :: with_carry                    !< K carry wanted (carry and fk present)
+    real(dp), intent(inout) :: pnewdt_min                !< smallest PNEWDT (in: pnewdt_large)
+    integer, intent(inout) :: fail_elem                  !< label of the first failed element (in: huge)
+    character(len=*), intent(inout) :: first_msg         !< its message
+    real(dp), intent(inout) :: pn_worst                  !< smallest PNEWDT below 1 (in: 1)
+    integer, intent(inout) :: pn_elem                    !< the element that asked for it (in: 0)
+    real(dp), intent(inout) :: ctime(n_cost_class)       !< clock ticks in the element routines per cost class
+    integer(i8), intent(inout) :: ccalls(n_cost_class)   !< calls per cost class
+    real(dp), intent(in), optional :: carry(:)           !< (ndof) the displacement change carried
+    real(dp), intent(inout), optional :: fk(:)           !< (element dofs) K carry per element
+    integer :: ie, ic, c, n, st, kc
+    real(dp), allocatable :: ke(:, :), fel(:), kx(:, :)
+    integer(i8) :: e0, e1
+    real(dp) :: pn
+    character(len=256) :: msg
+
     ! colour by colour (no dof shared within a colour): no atomic updates, and each matrix entry sums its element
     ! contributions in the same order on any number of threads
     !$omp parallel default(shared) private(ic, ie, c, n, ke, fel, pn, st, msg, kx, kc, e0, e1)
@@ -611,9 +731,11 @@ contains
     call abaqus_set_caller(0)
     deallocate (ke, fel, kx)
     !$omp end parallel
-    an%timing%class_time = an%timing%class_time + ctime / real(rate, dp)
-    an%timing%class_calls = an%timing%class_calls + ccalls
-    ! a stop asked by a user routine, with the element recorded when it asked
+  end subroutine colour_loop
+
+  !> A stop asked by a user routine in the element loop, with the element recorded when it asked.
+  subroutine record_stop_request(an)
+    type(analysis_t), intent(inout) :: an                !< analysis data
     an%work%stop%asked = abaqus_stop_requested()
     an%work%stop%elem = 0
     an%work%stop%text = ''
@@ -621,47 +743,7 @@ contains
       an%work%stop%elem = abaqus_stop_element()
       an%work%stop%text = abaqus_stop_message()
     end if
-    ! the element forces into the dofs' (and K carry's)
-    call scatter_add(an, an%work%fe, an%work%fint)
-    call scatter_add(an, an%work%fdle, an%work%fdl)
-    if (present(k_carry)) then
-      k_carry = 0.0_dp
-      if (with_carry) call scatter_add(an, fk, k_carry)
-    end if
-    who = ''
-    if (pn_elem > 0) who = 'element '//itoa(model%elem_id(pn_elem))//' ('// &
-      trim(merge('UEL ', 'UMAT', model%elem_kind(pn_elem) == etype_user))//') requested PNEWDT = '//rtoa(pn_worst)
-    fail_text = trim(first_msg)
-    ! this process's loop, before any reduction (what the slowest process's time is the largest of)
-    call system_clock(c1)
-    loop_own = real(c1 - c0, dp) / real(rate, dp)
-    if (an%timing%loop_trace /= 0) call cpu_time(cpu1)
-    loop_slowest = loop_own
-    if (parallel_distributed(an%par)) then
-      comm1 = an%par%t_comm
-      loop_slowest = parallel_max(an%par, loop_own)
-      an%timing%t_assembly_slowest = an%timing%t_assembly_slowest + loop_slowest
-      an%timing%t_loop_own = an%timing%t_loop_own + loop_own
-      an%timing%t_loop_wait = an%timing%t_loop_wait + (an%par%t_comm - comm1)
-      if (with_carry) then
-        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text, k_carry)
-      else
-        call reduce_over_processes(an, pnewdt_min, pn_worst, pn_elem, who, fail_elem, fail_text)
-      end if
-    end if
-    if (fail_elem /= huge(1)) then
-      stat = 1
-      errmsg = fail_text
-    end if
-    if (present(pnewdt_who)) pnewdt_who = who
-    call system_clock(c1)
-    ! the reductions are communication, not assembly
-    an%timing%t_assembly = an%timing%t_assembly + real(c1 - c0, dp) / real(rate, dp) - (an%par%t_comm - comm0)
-    an%timing%n_assembly = an%timing%n_assembly + 1
-    if (an%timing%loop_trace /= 0) write (an%timing%loop_trace, '(i0,3(",",i0),6(",",es10.4e2),3(",",i0))') &
-      an%timing%n_assembly, inc%step, inc%kinc, merge(1, 0, want_k), loop_own, loop_slowest, cpu1 - cpu0, &
-      ctime / real(rate, dp), ccalls
-  end subroutine analysis_assemble
+  end subroutine record_stop_request
 
   !> Element ie's tangent ke into the sparse system (symmetrised for LDL^T; T^T K T on the extended dofs of an
   !> element holding *EQUATION-eliminated dofs, kx the work matrix for it); with carry, fk of the element = K carry.
@@ -724,7 +806,8 @@ contains
     if (an%work%stop%asked) call parallel_lowest(an%par, an%work%stop%elem, an%work%stop%text, an%work%stop%rank)
   end subroutine reduce_over_processes
 
-  !> One element: UEL through the procedure pointer, or the continuum element with its material.
+  !> One element: UEL through the procedure pointer, or the continuum element with its material; then, at nodes
+  !> with a *TRANSFORM, back to the system components.
   subroutine element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
     type(analysis_t), intent(inout) :: an
     type(model_t), intent(in) :: model
@@ -735,11 +818,50 @@ contains
     real(dp), intent(inout) :: pnewdt
     integer, intent(out) :: stat
     character(len=*), intent(out) :: msg
-    integer :: nn, a, iu, ip, mcrd, nsv, nf, nd
-    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), coords(3, 20), energy(8)
-    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1), e2(2), fl(n), kl(n, n), rho, ushift(n)
+    if (model%elem_kind(ie) == etype_user) then
+      call user_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    else
+      call continuum_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    end if
+    if (an%nr%elem_has(ie)) then
+      ! back to the system components of the transformed nodes (T_e^T f, T_e^T K T_e)
+      associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
+        call element_to_local(an%nr, nodes, fel)
+        if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
+          an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+        if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
+      end associate
+    end if
+  end subroutine element_compute
+
+  !> The displacement an element reactivated strain-free (model_change) works from: it sees X + u_ref and the
+  !> displacement u - u_ref; zero for every other element (system components).
+  subroutine element_shift(an, ie, n, ushift)
+    type(analysis_t), intent(in) :: an  !< the analysis
+    integer, intent(in) :: ie, n        !< the element, its dofs
+    real(dp), intent(out) :: ushift(n)  !< u_ref at its dofs
+    ushift = 0.0_dp
+    if (size(an%state%shifted) > 0) then
+      if (an%state%shifted(ie)) ushift = an%state%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)
+    end if
+  end subroutine element_shift
+
+  !> A user element: the UEL through the procedure pointer, with the Abaqus arguments (docs/conventions.md).
+  subroutine user_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    type(analysis_t), intent(inout) :: an
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: ie, n
+    type(increment_t), intent(in) :: inc
+    logical, intent(in) :: want_k
+    real(dp), intent(out) :: fel(n), ke(n, n)
+    real(dp), intent(inout) :: pnewdt
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: msg
+    integer :: nn, a, iu, ip, mcrd, nsv, nf, nd, nact, jd
+    real(dp) :: ue(n), due(n, 1), rhs(n, 1), v(n), acc(n), energy(8), ushift(n)
+    real(dp) :: params(3), adlmag(mdload, 1), ddlmag(mdload, 1)
     real(dp), allocatable :: predef(:, :, :), xc(:, :), props(:), sv(:)
-    integer :: jdltyp(mdload, 1), lflags(5), ndload, im, nact, jd
+    integer :: jdltyp(mdload, 1), lflags(5), ndload
     integer, allocatable :: jprops(:)
     character(len=16) :: b
     integer :: kstep, kinc
@@ -758,11 +880,7 @@ contains
     nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
     ue = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
     due(:, 1) = ue - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-    ! an element reactivated strain-free (model_change) works from X + u_ref with the displacement u - u_ref
-    ushift = 0.0_dp
-    if (size(an%state%shifted) > 0) then
-      if (an%state%shifted(ie)) ushift = an%state%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)
-    end if
+    call element_shift(an, ie, n, ushift)
     ue = ue - ushift
     if (an%nr%elem_has(ie)) then
       ! *TRANSFORM: the element works in global components
@@ -770,118 +888,155 @@ contains
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(:, 1))
       call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ushift)
     end if
-    if (model%elem_kind(ie) == etype_user) then
-      iu = model%elem_utype(ie)
-      mcrd = model%utypes(iu)%mcrd
-      nf = model%nfield
-      allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
-      nact = size(model%utypes(iu)%active)
-      do a = 1, nn
-        xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
-        if (.not. nlgeom) cycle
-        do jd = 1, nact
-          if (model%utypes(iu)%active(jd) <= mcrd) xc(model%utypes(iu)%active(jd), a) = &
-            xc(model%utypes(iu)%active(jd), a) + ushift((a - 1) * nact + jd)
-        end do
+    iu = model%elem_utype(ie)
+    mcrd = model%utypes(iu)%mcrd
+    nf = model%nfield
+    allocate (xc(mcrd, nn), predef(2, 1 + nf, nn))
+    nact = size(model%utypes(iu)%active)
+    do a = 1, nn
+      xc(:, a) = model%x(1:mcrd, model%conn(model%conn_ptr(ie) + a - 1))
+      if (.not. nlgeom) cycle
+      do jd = 1, nact
+        if (model%utypes(iu)%active(jd) <= mcrd) xc(model%utypes(iu)%active(jd), a) = &
+          xc(model%utypes(iu)%active(jd), a) + ushift((a - 1) * nact + jd)
       end do
-      ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
-      ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
-      do a = 1, nn
-        nd = model%conn(model%conn_ptr(ie) + a - 1)
-        predef(1, 1, a) = an%work%temp_end(nd)
-        predef(2, 1, a) = predef(1, 1, a) - an%state%temp_start(nd)
-        predef(1, 2:1 + nf, a) = an%work%field_end((nd - 1) * nf + 1:nd * nf)
-        predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%state%field_start((nd - 1) * nf + 1:nd * nf)
-      end do
-      ip = model%elem_uelprop(ie)
-      if (ip > 0) then
-        props = model%uelprops(ip)%props
-        jprops = model%uelprops(ip)%jprops
-      else
-        allocate (props(0), jprops(0))
-      end if
-      if (size(props) == 0) props = [0.0_dp]
-      if (size(jprops) == 0) jprops = [0]
-      nsv = model%utypes(iu)%nsvars
-      ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
-      sv = an%state%conv(ie)%svars
-      if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
-      energy = an%state%conv(ie)%energy
-      rhs = 0.0_dp
-      ke = 0.0_dp
-      v = 0.0_dp
-      acc = 0.0_dp
-      params = 0.0_dp
-      ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
-      ! DDLMAG(k,1) its increment (Abaqus UEL interface)
-      call dload_uel_arrays(an%state%loads%dload, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
-        ddlmag(:, 1))
-      ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
-      ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
-      ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
-      lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
-      call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
-        ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
-        adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
-      fel = -rhs(:, 1)
-      if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
-        write (b, '(i0)') model%elem_id(ie)
-        stat = 1
-        msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
-        return
-      end if
-      if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
-      an%work%trial(ie)%energy = energy
-      ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
-      if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+    end do
+    ! PREDEF(1,1,a): temperature at the end of the increment, PREDEF(2,1,a): its increment; PREDEF(1:2,1+k,a) the
+    ! same of field variable k (Abaqus UEL: NPREDF = 1 + the number of field variables, temperature first)
+    do a = 1, nn
+      nd = model%conn(model%conn_ptr(ie) + a - 1)
+      predef(1, 1, a) = an%work%temp_end(nd)
+      predef(2, 1, a) = predef(1, 1, a) - an%state%temp_start(nd)
+      predef(1, 2:1 + nf, a) = an%work%field_end((nd - 1) * nf + 1:nd * nf)
+      predef(2, 2:1 + nf, a) = predef(1, 2:1 + nf, a) - an%state%field_start((nd - 1) * nf + 1:nd * nf)
+    end do
+    ip = model%elem_uelprop(ie)
+    if (ip > 0) then
+      props = model%uelprops(ip)%props
+      jprops = model%uelprops(ip)%jprops
     else
-      do a = 1, nn
-        coords(1:an%ndim, a) = model%x(1:an%ndim, model%conn(model%conn_ptr(ie) + a - 1))
-        if (nlgeom) coords(1:an%ndim, a) = coords(1:an%ndim, a) + ushift((a - 1) * an%ndim + 1:a * an%ndim)
-      end do
-      associate (st => an%work%trial(ie), cv => an%state%conv(ie))
-        call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue, due(:, 1), &
-          an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
-          model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
-          energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), &
-          temp_nodes=an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), &
-          dtemp_nodes=an%work%temp_end(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)) - &
-          an%state%temp_start(model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1)), orient=an%axes(ie)%t, &
-          field_nodes=element_fields(an%state%field_start), dfield_nodes=element_fields(an%work%field_end) - &
-          element_fields(an%state%field_start))
-        st%energy = 0.0_dp
-        st%energy(2) = e2(1)
-        st%energy(4) = e2(2)
-      end associate
-      if (stat /= 0) then
-        ! the element's own message names the element already; say which routine it came from
-        write (b, '(i0)') model%elem_id(ie)
-        if (index(msg, 'element '//trim(b)//':') == 1) msg = msg(len('element '//trim(b)//':') + 2:)
-        msg = 'element '//trim(b)//' ('//trim(merge('UMAT    ', '*ELASTIC', &
-          an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
-        stat = 1
-      end if
-      if (stat == 0 .and. dload_has(an%state%loads%dload, ie)) then
-        ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
-        im = model%elem_section(ie)
-        rho = 0.0_dp
-        if (im > 0) rho = model_density(model, im)
-        associate (g => an%geo(an%elem_geo(ie)))
-          call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue, nlgeom, &
-            g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, want_k, fl, kl)
-        end associate
-        an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl
-        if (want_k) ke = ke + kl
-      end if
+      allocate (props(0), jprops(0))
     end if
+    if (size(props) == 0) props = [0.0_dp]
+    if (size(jprops) == 0) jprops = [0]
+    nsv = model%utypes(iu)%nsvars
+    ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
+    sv = an%state%conv(ie)%svars
+    if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
+    energy = an%state%conv(ie)%energy
+    rhs = 0.0_dp
+    ke = 0.0_dp
+    v = 0.0_dp
+    acc = 0.0_dp
+    params = 0.0_dp
+    ! Un loads: NDLOAD active ones, JDLTYP(k,1) = n, ADLMAG(k,1) magnitude at the end of the increment,
+    ! DDLMAG(k,1) its increment (Abaqus UEL interface)
+    call dload_uel_arrays(an%state%loads%dload, model, ie, time(1) + dtime, dtime, ndload, jdltyp(:, 1), adlmag(:, 1), &
+      ddlmag(:, 1))
+    ! LFLAGS(3) = 1: RHS and AMATRX (every normal iteration, free equations or not); 5: RHS only (the host
+    ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
+    ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
+    lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
+    call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
+      ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
+      adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
+    fel = -rhs(:, 1)
+    if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
+      write (b, '(i0)') model%elem_id(ie)
+      stat = 1
+      msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
+      return
+    end if
+    if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
+    an%work%trial(ie)%energy = energy
+    ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
+    if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
+  end subroutine user_element_compute
+
+  !> A continuum element (solid_element_compute) with its section's material, and its distributed loads. Fixed-size
+  !> work arrays (at most 20 nodes, 60 dofs): no heap allocation per call.
+  subroutine continuum_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
+    type(analysis_t), intent(inout) :: an
+    type(model_t), intent(in) :: model
+    integer, intent(in) :: ie, n
+    type(increment_t), intent(in) :: inc
+    logical, intent(in) :: want_k
+    real(dp), intent(out) :: fel(n), ke(n, n)
+    real(dp), intent(inout) :: pnewdt
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: msg
+    integer, parameter :: mnode = 20, mdof = 3 * mnode
+    integer :: nn, a, nd, im
+    real(dp) :: ue(mdof), due(mdof), coords(3, mnode), t0(mnode), dtn(mnode), e2(2), fl(mdof), kl(mdof, mdof), rho
+    real(dp) :: ushift(mdof)
+    real(dp) :: no_fields(0, mnode)
+    real(dp), allocatable :: fld0(:, :), dfld(:, :)
+    type(solid_geometry_t) :: gw
+    character(len=16) :: b
+    integer :: kstep, kinc
+    real(dp) :: time(2), dtime
+    logical :: nlgeom
+
+    kstep = inc%step
+    kinc = inc%kinc
+    time = increment_time(inc)
+    dtime = inc%dt
+    nlgeom = inc%nlgeom
+    stat = 0
+    msg = ''
+    nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
+    ue(1:n) = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    due(1:n) = ue(1:n) - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    call element_shift(an, ie, n, ushift(1:n))
+    ue(1:n) = ue(1:n) - ushift(1:n)
     if (an%nr%elem_has(ie)) then
-      ! back to the system components of the transformed nodes (T_e^T f, T_e^T K T_e)
-      associate (nodes => model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1))
-        call element_to_local(an%nr, nodes, fel)
-        if (model%elem_kind(ie) /= etype_user) call element_to_local(an%nr, nodes, &
-          an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-        if (want_k) call element_matrix_to_local(an%nr, nodes, ke)
-      end associate
+      ! *TRANSFORM: the element works in global components
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ue(1:n))
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), due(1:n))
+      call element_to_global(an%nr, model%conn(model%conn_ptr(ie):model%conn_ptr(ie + 1) - 1), ushift(1:n))
+    end if
+    do a = 1, nn
+      nd = model%conn(model%conn_ptr(ie) + a - 1)
+      coords(1:an%ndim, a) = model%x(1:an%ndim, nd)
+      if (nlgeom) coords(1:an%ndim, a) = coords(1:an%ndim, a) + ushift((a - 1) * an%ndim + 1:a * an%ndim)
+      t0(a) = an%state%temp_start(nd)
+      dtn(a) = an%work%temp_end(nd) - an%state%temp_start(nd)
+    end do
+    if (model%nfield > 0) then
+      fld0 = element_fields(an%state%field_start)
+      dfld = element_fields(an%work%field_end) - fld0
+      call element_call(fld0, dfld)
+    else
+      call element_call(no_fields(:, 1:nn), no_fields(:, 1:nn))
+    end if
+    if (stat /= 0) then
+      ! the element's own message names the element already; say which routine it came from
+      write (b, '(i0)') model%elem_id(ie)
+      if (index(msg, 'element '//trim(b)//':') == 1) msg = msg(len('element '//trim(b)//':') + 2:)
+      msg = 'element '//trim(b)//' ('//trim(merge('UMAT    ', '*ELASTIC', &
+        an%mats(model%elem_section(ie))%kind == SOLID_MAT_UMAT))//'): '//trim(msg)
+      stat = 1
+    end if
+    if (stat == 0 .and. dload_has(an%state%loads%dload, ie)) then
+      ! distributed loads: forces apart (external), follower-pressure load stiffness into the tangent
+      im = model%elem_section(ie)
+      rho = 0.0_dp
+      if (im > 0) rho = model_density(model, im)
+      if (an%elem_geo(ie) < 0) then
+        ! compact reference data: the whole arrays computed for the load (elements with distributed loads only)
+        call element_geometry(an, model, ie, gw)
+        call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue(1:n), &
+          nlgeom, gw%nfun(1:nn, 1:an%elem_nip(ie)), gw%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, &
+          want_k, fl(1:n), kl(1:n, 1:n))
+      else
+        associate (g => an%geo(an%elem_geo(ie)))
+          call dload_element(an%state%loads%dload, model, ie, time(1) + dtime, coords(1:an%ndim, 1:nn), ue(1:n), &
+            nlgeom, g%nfun(1:nn, 1:an%elem_nip(ie)), g%wdet(1:an%elem_nip(ie)), an%mats(im)%thickness, rho, &
+            want_k, fl(1:n), kl(1:n, 1:n))
+        end associate
+      end if
+      an%work%fdle(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = fl(1:n)
+      if (want_k) ke = ke + kl(1:n, 1:n)
     end if
 
   contains
@@ -896,7 +1051,31 @@ contains
         fe(:, b) = v((m - 1) * model%nfield + 1:m * model%nfield)
       end do
     end function element_fields
-  end subroutine element_compute
+
+    !> solid_element_compute with the element's data and its reference data in the form the host keeps.
+    subroutine element_call(fields0, dfields)
+      real(dp), intent(in) :: fields0(:, :), dfields(:, :)   !< (nfield, nn) field variables, increments
+      associate (st => an%work%trial(ie), cv => an%state%conv(ie))
+        if (an%elem_geo(ie) < 0) then
+          call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
+            an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+            model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+            energy_ip_old=cv%eip, energy_ip_new=st%eip, geo_compact=an%geo_compact(:, -an%elem_geo(ie)), &
+            temp_nodes=t0(1:nn), dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fields0, &
+            dfield_nodes=dfields)
+        else
+          call solid_element_compute(an%elem_tname(ie), coords(1:an%ndim, 1:nn), ue(1:n), due(1:n), &
+            an%mats(model%elem_section(ie)), cv%stress, cv%stran, cv%statev, time, dtime, kstep, kinc, &
+            model%elem_id(ie), nlgeom, want_k, fel, ke, st%stress, st%stran, st%statev, e2, pnewdt, stat, msg, &
+            energy_ip_old=cv%eip, energy_ip_new=st%eip, geo=an%geo(an%elem_geo(ie)), temp_nodes=t0(1:nn), &
+            dtemp_nodes=dtn(1:nn), orient=an%axes(ie)%t, field_nodes=fields0, dfield_nodes=dfields)
+        end if
+        st%energy = 0.0_dp
+        st%energy(2) = e2(1)
+        st%energy(4) = e2(2)
+      end associate
+    end subroutine element_call
+  end subroutine continuum_element_compute
 
   !> Local material axes at the integration points of the elements whose section has an *ORIENTATION (the points'
   !> reference coordinates for CYLINDRICAL). A plane element's axes must keep local 3 along z.

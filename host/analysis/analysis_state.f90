@@ -29,10 +29,12 @@ module analysis_state
     integer :: reuse_count = 0            !< modified Newton: solves with the current factors
   end type progress_t
 
-  !> The last converged increment, as the next one uses it.
+  !> The last converged increment, as the next one uses it (and the one before it, for EXTRAPOLATION=PARABOLIC).
   type :: last_increment_t
     real(dp) :: dt = 0.0_dp               !< its size (0: no extrapolation, as at the start of a step)
     real(dp), allocatable :: du(:)        !< (ndof) its displacement change (extrapolation)
+    real(dp) :: dt_before = 0.0_dp        !< the size of the increment before it (0: none in this step)
+    real(dp), allocatable :: du_before(:) !< (ndof) that increment's displacement change
     real(dp), allocatable :: rf(:)        !< (ndof) its reactions (energy balance; released by OP=NEW)
     real(dp), allocatable :: fext(:)      !< (ndof) its external and distributed-load forces (energy balance)
     real(dp), allocatable :: fcl(:)       !< (ndof) its concentrated loads (the next step's inherited loads)
@@ -75,6 +77,8 @@ contains
     call loads_init(s%loads, model, ndof)
     s%last%dt = 0.0_dp
     s%last%du = spread(0.0_dp, 1, ndof)
+    s%last%dt_before = 0.0_dp
+    s%last%du_before = s%last%du
     s%last%rf = s%last%du
     s%last%fext = s%last%du
     s%last%fcl = s%last%du

@@ -8,7 +8,8 @@ module newton_iteration
   use linear_constraints, only: constraints_residual, constraints_apply
   use convergence_check, only: newton_converged, typical_force
   use sparse_system, only: sparse_system_t, sparse_factorize, sparse_solve, sparse_is_factored, &
-    sparse_solve_krylov, sparse_factors_exact, sparse_factor_flops, sparse_iteration_flops
+    sparse_solve_krylov, sparse_factors_exact, sparse_factor_flops, sparse_iteration_flops, sparse_pipelined, &
+    sparse_factor_install
   use output_files, only: output_t, output_log
   use solver_options, only: newton_modified, newton_krylov, newton_auto
   use run_summary, only: run_summary_t
@@ -31,6 +32,13 @@ module newton_iteration
   ! half the measured time ratio gave on that machine (0.345 / 0.0283 / 2 = 6.1).
   real(dp), parameter :: krylov_budget_share = 0.5_dp   !< GMRES time with older factors, of a factorization's
   real(dp), parameter :: krylov_speed = 0.235_dp        !< operations per second: GMRES iteration / factorization
+  ! Mode auto pipelines its refactorizations (two factor instances, sparse_system): when GMRES with the last factors
+  ! has not converged within its budget, the factorization of the current tangent begins (on a thread of its own
+  ! when the run has two) while GMRES goes on with the older factors for krylov_overlap iterations, about one
+  ! factorization's time (counted in operations, as the budget); then the new factors are installed (waited for if
+  ! late) and GMRES restarts from its iterate with them. The iterates depend on those counts only, never on when
+  ! the factorization ends: one thread runs the same schedule in sequence (docs/performance.md, "Pipelined
+  ! refactorization"). The older factors' iterations are no longer discarded either: GMRES continues from them.
   ! Mode auto is an inexact Newton-Krylov method: GMRES is stopped at the relative residual eta_k of
   ! Eisenstat & Walker (1996, SIAM J. Sci. Comput. 17:16-32, "choice 2": eta_k = gamma (|r_k| / |r_(k-1)|)^2,
   ! safeguarded by gamma eta_(k-1)^2 when that exceeds 0.1, capped by eta_max), and never solved more accurately
@@ -41,13 +49,15 @@ module newton_iteration
   real(dp), parameter :: ew_gamma = 0.9_dp              !< Eisenstat-Walker gamma
   real(dp), parameter :: ew_eta_max = 0.1_dp            !< largest forcing term (also the first iteration's)
   ! Mode auto also skips the tangent of an iteration that is likely to be the last, since a converged iteration's
-  ! tangent is never used: when the residual, shrinking at its last rate (r_k^2 / r_(k-1), an upper estimate once
-  ! Newton converges quadratically), comes within skip_margin of the force criterion, the elements compute
-  ! forces only (UEL LFLAGS(3) = 5). If the criterion is not met after all, GMRES solves with the tangent still
-  ! assembled, that of the previous iterate (a Newton step with a one-iteration-old Jacobian, close to the
-  ! solution), and the next iteration assembles it anew. Late in the application scene about one skip per
-  ! increment, few of them not converged (docs/performance.md, fifth pass).
-  real(dp), parameter :: skip_margin = 10.0_dp          !< skip when r_k^2 / r_(k-1) < skip_margin R_n q_avg
+  ! tangent is never used. Both criteria of that iteration are tested beforehand: the correction criterion
+  ! exactly (the last correction and the displacement increment are known before its element loop), the force
+  ! criterion on the residual expected at quadratic convergence, r_k = r_(k-1) (r_(k-1) / r_(k-2))^2, within
+  ! skip_margin of R_n q_avg. Then the elements compute forces only (UEL LFLAGS(3) = 5). If the iteration does
+  ! not converge after all, GMRES solves with the tangent still assembled, that of the previous iterate (a Newton
+  ! step with a one-iteration-old Jacobian, close to the solution), and the next iteration assembles it anew. The
+  ! estimate at the last rate, r_(k-1)^2 / r_(k-2) within 10 R_n q_avg, skipped as often but failed twice as
+  ! often, half of its failures on the correction criterion (docs/performance.md, "A sharper last-iteration test").
+  real(dp), parameter :: skip_margin = 1.0_dp           !< skip when the expected r_k < skip_margin R_n q_avg
   ! The first iteration of an increment evaluates the elements at the start of the increment, the prescribed dofs
   ! at their start values, and carries the prescribed increment du_p through that tangent: it solves
   ! K_ff du_f = r_f - K_fp du_p (r = f_ext - f_int), then sets u_p to its end value (as CalculiX does; that Abaqus
@@ -83,6 +93,18 @@ contains
       kbudget = max(2, min(krylov_max_iter, int(krylov_budget_share * krylov_speed * f_fact / f_iter)))
   end function krylov_budget
 
+  !> Mode auto's GMRES iterations with the older factors while a pipelined factorization runs (see above): as many
+  !> as cost one factorization, counted in operations; between 2 and krylov_max_iter.
+  integer function krylov_overlap(sys) result(koverlap)
+    type(sparse_system_t), intent(in) :: sys  !< factored system
+    real(dp) :: f_fact, f_iter
+    koverlap = krylov_max_iter
+    f_fact = sparse_factor_flops(sys)
+    f_iter = sparse_iteration_flops(sys)
+    if (f_fact > 0.0_dp .and. f_iter > 0.0_dp) &
+      koverlap = max(2, min(krylov_max_iter, int(krylov_speed * f_fact / f_iter)))
+  end function krylov_overlap
+
   !> After a failed attempt: modified Newton starts the next one with a fresh tangent.
   pure subroutine newton_forget_factors(ns)
     type(newton_state_t), intent(inout) :: ns  !< Newton state
@@ -111,13 +133,13 @@ contains
     logical, intent(out) :: stopped                      !< a user routine asked to stop (XIT)
     real(dp), intent(out) :: q_now                       !< typical force of the last residual
     real(dp), intent(in) :: carry(:)                     !< (ndof) change of an%work%u carried through the first tangent
-    integer :: i, stat, kit, kbudget
+    integer :: i, stat, kit, kbudget, koverlap
     character(len=:), allocatable :: errmsg, pnewdt_who
     character(len=256) :: smsg
     real(dp) :: r_max, r_prev, r_prev2, c_max, du_max, q_avg, r_norm, r_norm_prev, eta, eta_prev, tol
     real(dp) :: pnewdt_min   ! smallest PNEWDT of the user routines (inc%pnewdt at the end)
     real(dp), allocatable :: r_copy(:), k_carry(:)
-    logical :: want_k, k_fresh, k_skip, k_stale, carrying
+    logical :: want_k, k_fresh, k_skip, k_stale, carrying, failed
 
     associate (st => model%steps(inc%step), is => inc%step, kinc => inc%kinc, iter => inc%iter, outcome => inc%cause)
       converged = .false.
@@ -138,29 +160,7 @@ contains
         allocate (ratios(st%max_iter + 1))
       end if
       newton_loop: do
-        ! a tangent is needed unless modified Newton can reuse the factors (docs/performance.md)
-        want_k = .true.
-        if (newton == newton_modified .and. an%eqs%sys_ready) then
-          if (sparse_is_factored(an%eqs%sys)) then
-            want_k = ns%reuse_count >= modified_max_reuse
-            if (iter >= 1 .and. r_prev < huge(1.0_dp)) then
-              if (r_max > modified_contraction * r_prev) want_k = .true.
-            end if
-          end if
-        end if
-        ! mode auto: no tangent for an iteration likely to converge (see skip_margin above); never twice running
-        k_skip = newton == newton_auto .and. iter >= 2 .and. .not. k_stale .and. an%eqs%sys_ready
-        if (k_skip) k_skip = sparse_is_factored(an%eqs%sys) .and. r_prev < huge(1.0_dp)
-        if (k_skip) k_skip = r_max * (r_max / r_prev) < skip_margin * st%r_n * q_avg
-        k_stale = k_skip
-        if (k_skip) then
-          want_k = .false.
-          ns%tangents_skipped = ns%tangents_skipped + 1
-        end if
-        if (iter >= 1) then
-          r_prev2 = r_prev
-          r_prev = r_max
-        end if
+        call decide_tangent()
         ! the first iteration carries the prescribed increment through the tangent, when it assembles one
         carrying = .false.
         if (iter == 0 .and. want_k .and. an%eqs%neq > 0) &
@@ -189,43 +189,7 @@ contains
           call log_reason(pnewdt_who)
           exit newton_loop
         end if
-        do i = 1, an%ndof
-          if (an%eqs%eq(i) > 0) r(an%eqs%eq(i)) = an%work%fext(i) + an%work%fdl(i) - an%work%fint(i)
-        end do
-        if (carrying) then
-          ! the residual predicted at the end values of the prescribed dofs: r - K carry
-          do i = 1, an%ndof
-            if (an%eqs%eq(i) > 0) r(an%eqs%eq(i)) = r(an%eqs%eq(i)) - k_carry(i)
-          end do
-        end if
-        ! *EQUATION: the residual of an eliminated dof acts on its masters
-        if (an%eqs%cs%n > 0 .and. an%eqs%neq > 0) then
-          if (carrying) then
-            call constraints_residual(an%eqs%cs, an%eqs%eq, an%work%fext + an%work%fdl - an%work%fint - k_carry, r)
-          else
-            call constraints_residual(an%eqs%cs, an%eqs%eq, an%work%fext + an%work%fdl - an%work%fint, r)
-          end if
-        end if
-        r_max = 0.0_dp
-        if (an%eqs%neq > 0) r_max = maxval(abs(r(1:an%eqs%neq)))
-        r_norm = 0.0_dp
-        if (an%eqs%neq > 0) r_norm = norm2(r(1:an%eqs%neq))
-        ! typical force: of the internal forces, or of the applied loads where they are larger (the first iteration
-        ! of a load-controlled increment starts from zero internal force; Abaqus counts the applied loads in q)
-        ! (a carried increment: of the internal forces predicted at its end, f_int + K carry)
-        if (carrying) then
-          q_now = max(typical_force(an%work%fint + k_carry), typical_force(an%work%fext + an%work%fdl))
-        else
-          q_now = max(typical_force(an%work%fint), typical_force(an%work%fext + an%work%fdl))
-        end if
-        q_avg = (q_sum + q_now) / real(kinc, dp)
-        du_max = maxval(abs(an%work%u - an%state%u_conv))
-        if (carrying) du_max = maxval(abs(an%work%u + carry - an%state%u_conv))
-        ratios(iter + 1) = 0.0_dp
-        if (q_avg > 1.0e-300_dp * r_max) ratios(iter + 1) = r_max / q_avg   ! (no overflow when q_avg ~ 0)
-        if (verbose) call output_log(out, '    step '//itoa(is)//' inc '//itoa(kinc)//' iter '//itoa(iter)// &
-          ': r_max '//rtoa(r_max)//' q_avg '//rtoa(q_avg)//' c_max '//rtoa(c_max)//' du_max '//rtoa(du_max)// &
-          merge(' (tangent)      ', ' (reused LU/LDL)', want_k))
+        call form_residual()
         ! (a carried increment is not applied yet: never converged before it is)
         if (an%eqs%neq == 0 .or. (.not. carrying .and. newton_converged(r_max, q_avg, c_max, du_max, st%r_n, st%c_n, &
             iter))) then
@@ -246,76 +210,8 @@ contains
           r_prev = huge(1.0_dp)
           r_prev2 = huge(1.0_dp)
         end if
-        tol = krylov_rel_tol
-        if (newton == newton_auto) then
-          ! inexact Newton: the forcing term eta_k (see ew_gamma above)
-          eta = ew_eta_max
-          if (iter >= 1 .and. r_norm_prev > 0.0_dp) then
-            eta = ew_gamma * (r_norm / r_norm_prev)**2
-            if (ew_gamma * eta_prev**2 > 0.1_dp) eta = max(eta, ew_gamma * eta_prev**2)
-          end if
-          eta = min(ew_eta_max, max(eta, 0.1_dp * st%r_n * q_avg / max(r_norm, tiny(1.0_dp))))
-          eta_prev = eta
-          tol = max(krylov_rel_tol, eta)
-        end if
-        k_fresh = .true.
-        if (k_skip) then
-          ! the expected convergence did not come: GMRES with the previous iterate's tangent (still assembled)
-          want_k = .true.
-          ns%stale_solves = ns%stale_solves + 1
-        end if
-        if (.not. want_k) then
-          ! modified Newton: the last factors, a residual-only element loop
-          call sparse_solve(an%eqs%sys, r, stat, smsg)
-          ns%reuse_count = ns%reuse_count + 1
-          summary%reused_solves = summary%reused_solves + 1
-          k_fresh = stat /= 0
-        else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%eqs%sys)) then
-          ! fresh tangent, GMRES preconditioned by the last factorization
-          kbudget = krylov_max_iter
-          if (newton == newton_auto) kbudget = krylov_budget(an%eqs%sys)
-          r_copy = r(1:an%eqs%neq)
-          call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, kbudget, kbudget, kit, stat, smsg)
-          summary%krylov_iterations = summary%krylov_iterations + kit
-          if (stat == 0) then
-            summary%krylov_solves = summary%krylov_solves + 1
-            k_fresh = .false.
-          else
-            summary%krylov_failures = summary%krylov_failures + 1
-            r(1:an%eqs%neq) = r_copy
-          end if
-        end if
-        if (k_fresh) then
-          if (.not. want_k) then
-            outcome = 'cutback: solve failed'
-            exit newton_loop
-          end if
-          call sparse_factorize(an%eqs%sys, stat, smsg)
-          ns%reuse_count = 0
-          if (stat /= 0) then
-            outcome = 'cutback: singular tangent'
-            if (verbose) call output_log(out, '  '//trim(smsg))
-            exit newton_loop
-          end if
-          if (sparse_factors_exact(an%eqs%sys)) then
-            call sparse_solve(an%eqs%sys, r, stat, smsg)
-          else
-            ! preconditioning factors only (--factors symmetric/single): GMRES with them, the whole budget; when
-            ! it does not reach tol, its best iterate (the residual only decreases in GMRES) is an inexact step
-            call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, krylov_max_iter, krylov_max_iter, kit, stat, smsg)
-            summary%krylov_iterations = summary%krylov_iterations + kit
-            summary%krylov_solves = summary%krylov_solves + 1
-            if (stat == 1) then
-              if (verbose) call output_log(out, '    GMRES with fresh preconditioning factors short of its tolerance '// &
-                'after '//itoa(kit)//' iterations: best iterate used (an inexact Newton step)')
-              stat = 0
-            end if
-          end if
-          if (stat /= 0) then
-            outcome = 'cutback: solve failed'
-            exit newton_loop
-          end if
-        end if
+        call linear_step(failed)
+        if (failed) exit newton_loop
         iter = iter + 1
         r_norm_prev = r_norm
         c_max = maxval(abs(r(1:max(an%eqs%neq, 1))))
@@ -328,6 +224,189 @@ contains
     end associate
     inc%pnewdt = pnewdt_min
   contains
+    !> Whether this iteration assembles a tangent (want_k): modified Newton reuses the factors while they contract
+    !> (docs/performance.md); mode auto skips it for an iteration likely to converge (see skip_margin above), never
+    !> twice running (k_skip, k_stale). Keeps r_prev, r_prev2.
+    subroutine decide_tangent()
+      want_k = .true.
+      if (newton == newton_modified .and. an%eqs%sys_ready) then
+        if (sparse_is_factored(an%eqs%sys)) then
+          want_k = ns%reuse_count >= modified_max_reuse
+          if (inc%iter >= 1 .and. r_prev < huge(1.0_dp)) then
+            if (r_max > modified_contraction * r_prev) want_k = .true.
+          end if
+        end if
+      end if
+      ! mode auto: no tangent for an iteration likely to converge (see skip_margin above); never twice running
+      k_skip = newton == newton_auto .and. inc%iter >= 2 .and. .not. k_stale .and. an%eqs%sys_ready
+      if (k_skip) k_skip = sparse_is_factored(an%eqs%sys) .and. r_max < r_prev   ! (contracting: no overflow below)
+      if (k_skip) k_skip = c_max <= model%steps(inc%step)%c_n * maxval(abs(an%work%u - an%state%u_conv))
+      if (k_skip) k_skip = r_max * (r_max / r_prev)**2 < skip_margin * model%steps(inc%step)%r_n * q_avg
+      k_stale = k_skip
+      if (k_skip) then
+        want_k = .false.
+        ns%tangents_skipped = ns%tangents_skipped + 1
+      end if
+      if (inc%iter >= 1) then
+        r_prev2 = r_prev
+        r_prev = r_max
+      end if
+    end subroutine decide_tangent
+
+    !> The residual r of the free equations (with a carried increment: predicted at its end, r - K carry; *EQUATION:
+    !> an eliminated dof's on its masters), its largest entry and norm, the typical force q_now and q_avg, du_max and
+    !> the iteration's ratio r_max / q_avg; the verbose line.
+    subroutine form_residual()
+      do i = 1, an%ndof
+        if (an%eqs%eq(i) > 0) r(an%eqs%eq(i)) = an%work%fext(i) + an%work%fdl(i) - an%work%fint(i)
+      end do
+      if (carrying) then
+        ! the residual predicted at the end values of the prescribed dofs: r - K carry
+        do i = 1, an%ndof
+          if (an%eqs%eq(i) > 0) r(an%eqs%eq(i)) = r(an%eqs%eq(i)) - k_carry(i)
+        end do
+      end if
+      ! *EQUATION: the residual of an eliminated dof acts on its masters
+      if (an%eqs%cs%n > 0 .and. an%eqs%neq > 0) then
+        if (carrying) then
+          call constraints_residual(an%eqs%cs, an%eqs%eq, an%work%fext + an%work%fdl - an%work%fint - k_carry, r)
+        else
+          call constraints_residual(an%eqs%cs, an%eqs%eq, an%work%fext + an%work%fdl - an%work%fint, r)
+        end if
+      end if
+      r_max = 0.0_dp
+      if (an%eqs%neq > 0) r_max = maxval(abs(r(1:an%eqs%neq)))
+      r_norm = 0.0_dp
+      if (an%eqs%neq > 0) r_norm = norm2(r(1:an%eqs%neq))
+      ! typical force: of the internal forces, or of the applied loads where they are larger (the first iteration
+      ! of a load-controlled increment starts from zero internal force; Abaqus counts the applied loads in q)
+      ! (a carried increment: of the internal forces predicted at its end, f_int + K carry)
+      if (carrying) then
+        q_now = max(typical_force(an%work%fint + k_carry), typical_force(an%work%fext + an%work%fdl))
+      else
+        q_now = max(typical_force(an%work%fint), typical_force(an%work%fext + an%work%fdl))
+      end if
+      q_avg = (q_sum + q_now) / real(inc%kinc, dp)
+      du_max = maxval(abs(an%work%u - an%state%u_conv))
+      if (carrying) du_max = maxval(abs(an%work%u + carry - an%state%u_conv))
+      ratios(inc%iter + 1) = 0.0_dp
+      if (q_avg > 1.0e-300_dp * r_max) ratios(inc%iter + 1) = r_max / q_avg   ! (no overflow when q_avg ~ 0)
+      if (verbose) call output_log(out, '    step '//itoa(inc%step)//' inc '//itoa(inc%kinc)//' inc%iter '//itoa(inc%iter)// &
+        ': r_max '//rtoa(r_max)//' q_avg '//rtoa(q_avg)//' c_max '//rtoa(c_max)//' du_max '//rtoa(du_max)// &
+        merge(' (tangent)      ', ' (reused LU/LDL)', want_k))
+    end subroutine form_residual
+
+    !> The linear solve of the iteration into r (the Newton correction): the forcing term of mode auto, then the
+    !> factors reused (modified Newton), GMRES beside a pipelined refactorization, GMRES with the last factors, or a
+    !> fresh factorization. failed: a cutback (inc%cause set).
+    subroutine linear_step(failed)
+      logical, intent(out) :: failed  !< the step failed: a cutback
+      failed = .false.
+      tol = krylov_rel_tol
+      if (newton == newton_auto) then
+        ! inexact Newton: the forcing term eta_k (see ew_gamma above)
+        eta = ew_eta_max
+        if (inc%iter >= 1 .and. r_norm_prev > 0.0_dp) then
+          eta = ew_gamma * (r_norm / r_norm_prev)**2
+          if (ew_gamma * eta_prev**2 > 0.1_dp) eta = max(eta, ew_gamma * eta_prev**2)
+        end if
+        eta = min(ew_eta_max, max(eta, 0.1_dp * model%steps(inc%step)%r_n * q_avg / max(r_norm, tiny(1.0_dp))))
+        eta_prev = eta
+        tol = max(krylov_rel_tol, eta)
+      end if
+      k_fresh = .true.
+      if (k_skip) then
+        ! the expected convergence did not come: GMRES with the previous iterate's tangent (still assembled)
+        want_k = .true.
+        ns%stale_solves = ns%stale_solves + 1
+      end if
+      if (.not. want_k) then
+        ! modified Newton: the last factors, a residual-only element loop
+        call sparse_solve(an%eqs%sys, r, stat, smsg)
+        ns%reuse_count = ns%reuse_count + 1
+        summary%reused_solves = summary%reused_solves + 1
+        k_fresh = stat /= 0
+      else if (newton == newton_auto .and. sparse_pipelined(an%eqs%sys) .and. sparse_is_factored(an%eqs%sys)) then
+        ! fresh tangent, GMRES preconditioned by the last factors, refactorized on the way (pipelined, see above)
+        call sparse_factor_install(an%eqs%sys, stat, smsg)
+        if (stat /= 0) then
+          inc%cause = 'cutback: singular tangent'
+          if (verbose) call output_log(out, '  '//trim(smsg))
+          failed = .true.
+          return
+        end if
+        kbudget = krylov_budget(an%eqs%sys)
+        koverlap = krylov_overlap(an%eqs%sys)
+        call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, kbudget + koverlap + krylov_max_iter, &
+          krylov_max_iter, kit, stat, smsg, refactor_at=kbudget, switch_at=kbudget + koverlap)
+        summary%krylov_iterations = summary%krylov_iterations + kit
+        summary%krylov_solves = summary%krylov_solves + 1
+        if (kit > kbudget) summary%krylov_failures = summary%krylov_failures + 1
+        if (stat == 1) then
+          ! still short of the forcing term after the refactorization: the best iterate, an inexact Newton step
+          if (verbose) call output_log(out, '    GMRES short of its tolerance after '//itoa(kit)// &
+            ' iterations (a refactorization on the way): best iterate used (an inexact Newton step)')
+          stat = 0
+        end if
+        if (stat /= 0) then
+          inc%cause = 'cutback: solve failed'
+          if (stat == -10) inc%cause = 'cutback: singular tangent'
+          if (verbose) call output_log(out, '  '//trim(smsg))
+          failed = .true.
+          return
+        end if
+        k_fresh = .false.
+      else if ((newton == newton_krylov .or. newton == newton_auto) .and. sparse_is_factored(an%eqs%sys)) then
+        ! fresh tangent, GMRES preconditioned by the last factorization
+        kbudget = krylov_max_iter
+        if (newton == newton_auto) kbudget = krylov_budget(an%eqs%sys)
+        r_copy = r(1:an%eqs%neq)
+        call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, kbudget, kbudget, kit, stat, smsg)
+        summary%krylov_iterations = summary%krylov_iterations + kit
+        if (stat == 0) then
+          summary%krylov_solves = summary%krylov_solves + 1
+          k_fresh = .false.
+        else
+          summary%krylov_failures = summary%krylov_failures + 1
+          r(1:an%eqs%neq) = r_copy
+        end if
+      end if
+      if (k_fresh) then
+        if (.not. want_k) then
+          inc%cause = 'cutback: solve failed'
+          failed = .true.
+          return
+        end if
+        call sparse_factorize(an%eqs%sys, stat, smsg)
+        ns%reuse_count = 0
+        if (stat /= 0) then
+          inc%cause = 'cutback: singular tangent'
+          if (verbose) call output_log(out, '  '//trim(smsg))
+          failed = .true.
+          return
+        end if
+        if (sparse_factors_exact(an%eqs%sys)) then
+          call sparse_solve(an%eqs%sys, r, stat, smsg)
+        else
+          ! preconditioning factors only (--factors symmetric/single): GMRES with them, the whole budget; when
+          ! it does not reach tol, its best iterate (the residual only decreases in GMRES) is an inexact step
+          call sparse_solve_krylov(an%eqs%sys, r(1:an%eqs%neq), tol, krylov_max_iter, krylov_max_iter, kit, stat, smsg)
+          summary%krylov_iterations = summary%krylov_iterations + kit
+          summary%krylov_solves = summary%krylov_solves + 1
+          if (stat == 1) then
+            if (verbose) call output_log(out, '    GMRES with fresh preconditioning factors short of its tolerance '// &
+              'after '//itoa(kit)//' iterations: best iterate used (an inexact Newton step)')
+            stat = 0
+          end if
+        end if
+        if (stat /= 0) then
+          inc%cause = 'cutback: solve failed'
+          failed = .true.
+          return
+        end if
+      end if
+    end subroutine linear_step
+
     !> A cutback's cause (element, point, routine, reason) in the log at default verbosity, once: the same reason
     !> again is only counted, and the count is logged when another reason comes.
     subroutine log_reason(reason)

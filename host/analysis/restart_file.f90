@@ -5,7 +5,7 @@
 !> fingerprint, the output marks, the run summary, the VTU frame times). The solver's working data (trial states,
 !> sparse system, work vectors, timings) are never in it.
 !>
-!> Format (version 8): unformatted stream, native byte order: magic 'LDFCZRST', format version, the size in bits
+!> Format (version 10): unformatted stream, native byte order: magic 'LDFCZRST', format version, the size in bits
 !> of the run summary record (written whole, so that a build whose summary type has other fields refuses the file
 !> by name instead of misreading it), the fingerprint (nodes, elements, dofs, checksum of the model's numbers:
 !> restart_checksum), the analysis state (scalars, then each array preceded by its size, element states by their
@@ -34,8 +34,8 @@ module restart_file
   !> states of its own elements only; 8: the whole analysis state (loads, predefined fields, distributed loads,
   !> velocity boundaries and OP=NEW releases: a restart of every deck), the internal forces no longer; 9: the
   !> active elements and reactivation displacements (*MODEL CHANGE), the forces of removed elements, the axes of
-  !> CENTRIF/ROTA loads
-  integer, parameter :: restart_version = 9
+  !> CENTRIF/ROTA loads; 10: the increment before the last (EXTRAPOLATION=PARABOLIC)
+  integer, parameter :: restart_version = 10
   integer, parameter :: max_records = 100000000  !< sanity bound on a count read from a file
 
   !> The checkpoint's record beside the analysis state.
@@ -178,7 +178,7 @@ contains
     integer :: j
     associate (st => model%steps(k))
       call hash_ints(hs, merge(1, 0, [st%nlgeom, st%direct, st%extrapolate, st%unsymm, st%op_new, st%amp_step, &
-        st%cload_op_new, st%dload_op_new]))
+        st%cload_op_new, st%dload_op_new, st%parabolic]))
       call hash_ints(hs, [st%max_inc, st%max_iter, st%nbc, st%ncload, st%ndload, st%ntemp, st%nfielddef])
       call hash_reals(hs, [st%dt_initial, st%period, st%dt_min, st%dt_max, st%r_n, st%c_n])
       if (st%nbc > 0) call hash_boundaries(hs, st%bcs, st%nbc)
@@ -344,8 +344,9 @@ contains
     call write_load(u, s%loads%temperature, ios, iom)
     call write_load(u, s%loads%field, ios, iom)
     call write_dload(u, s%loads%dload, ios, iom)
-    if (ios == 0) write (u, iostat=ios, iomsg=iom) s%last%dt
+    if (ios == 0) write (u, iostat=ios, iomsg=iom) s%last%dt, s%last%dt_before
     call put_reals(u, s%last%du, ios, iom)
+    call put_reals(u, s%last%du_before, ios, iom)
     call put_reals(u, s%last%rf, ios, iom)
     call put_reals(u, s%last%fext, ios, iom)
     call put_reals(u, s%last%fcl, ios, iom)
@@ -583,8 +584,9 @@ contains
     call read_load(u, s%loads%temperature, ios, ok)
     call read_load(u, s%loads%field, ios, ok)
     call read_dload(u, s%loads%dload, nelem, ios, ok)
-    if (ios == 0 .and. ok) read (u, iostat=ios) s%last%dt
+    if (ios == 0 .and. ok) read (u, iostat=ios) s%last%dt, s%last%dt_before
     call get_reals(u, s%last%du, ios, ok)
+    call get_reals(u, s%last%du_before, ios, ok)
     call get_reals(u, s%last%rf, ios, ok)
     call get_reals(u, s%last%fext, ios, ok)
     call get_reals(u, s%last%fcl, ios, ok)

@@ -5,7 +5,7 @@ module run_summary
   use model_types, only: model_t, etype_user
   use analysis_core, only: analysis_t, n_cost_class
   use sparse_system, only: sparse_time_analysis, sparse_time_factor, sparse_time_solve, sparse_factor_count, &
-    sparse_time_comm, sparse_factor_entries, sparse_factor_flops
+    sparse_time_comm, sparse_factor_entries, sparse_factor_flops, sparse_time_factor_beside, sparse_time_factor_wait
   use output_files, only: output_t, output_log
   use parallel_context, only: parallel_t, parallel_max, parallel_sum
   use solver_options, only: newton_full, newton_mode_name
@@ -27,6 +27,8 @@ module run_summary
     integer :: increments = 0, attempts = 0, cutbacks = 0, iterations = 0, factorizations = 0
     integer :: neq = 0, ndof = 0
     real(dp) :: t_assembly = 0, t_factor = 0, t_solve = 0, t_output = 0, t_analysis = 0, wall = 0, cpu = 0
+    real(dp) :: t_factor_beside = 0             !< of t_factor: factorizations on their own thread (pipelined)
+    real(dp) :: t_factor_wait = 0               !< of t_solve: waits for them
     real(dp) :: w_ext = 0                       !< external work of the reactions (trapezoidal)
     real(dp) :: e_int = 0                       !< stored + dissipated energy of elements and materials
     real(dp) :: max_open_ratio = 0              !< largest cohesive |Delta| increment / delta
@@ -188,11 +190,15 @@ contains
     summary%e_int = e(1)
     summary%t_factor = an%timing%t_factor_done
     summary%t_solve = an%timing%t_solve_done
+    summary%t_factor_beside = an%timing%t_beside_done
+    summary%t_factor_wait = an%timing%t_wait_done
     summary%t_analysis = an%timing%t_setup_done
     summary%factorizations = an%timing%n_factor_done + fact_offset
     if (an%eqs%sys_ready) then
       summary%t_factor = summary%t_factor + sparse_time_factor(an%eqs%sys)
       summary%t_solve = summary%t_solve + sparse_time_solve(an%eqs%sys)
+      summary%t_factor_beside = summary%t_factor_beside + sparse_time_factor_beside(an%eqs%sys)
+      summary%t_factor_wait = summary%t_factor_wait + sparse_time_factor_wait(an%eqs%sys)
       summary%t_analysis = summary%t_analysis + sparse_time_analysis(an%eqs%sys)
       summary%factorizations = summary%factorizations + sparse_factor_count(an%eqs%sys)
       summary%factor_entries = sparse_factor_entries(an%eqs%sys)
@@ -293,6 +299,12 @@ contains
     write (line, '(a,4(f10.3,a))') 'wall time split: assembly ', summary%t_assembly, ' s, factorization ', &
       summary%t_factor, ' s, solve ', summary%t_solve, ' s, output ', summary%t_output, ' s'
     call output_log(out, trim(line))
+    if (summary%t_factor_beside > 0.0_dp) then
+      write (line, '(a,f10.3,a,f10.3,a)') 'pipelined factorizations: ', summary%t_factor_beside, &
+        ' s of the factorization time on a thread of their own beside GMRES and the element loop, ', &
+        summary%t_factor_wait, ' s of the solve time waited for them'
+      call output_log(out, trim(line))
+    end if
     write (line, '(a,f10.3,a,i0,a,es10.3)') 'solver setup (pattern, METIS ordering, MUMPS analysis) ', &
       summary%t_analysis, ' s, entries in the last factors ', summary%factor_entries, ', flops of the last ', &
       summary%factor_flops

@@ -40,6 +40,8 @@ module solver_options
     !> a distributed run factorizes and solves its linear systems on rank 0 alone, so that identical runs give
     !> identical bits (MUMPS' parallel factorization sums in the order its messages arrive); --reproducible
     logical :: reproducible = .false.
+    integer :: threads = 1                      !< threads of the element loop (a second one runs pipelined
+                                                !< factorizations of --newton auto beside GMRES)
   end type solver_options_t
 
 contains

@@ -14,7 +14,7 @@ module static_step
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
-  use analysis_state, only: analysis_state_step_begin
+  use analysis_state, only: analysis_state_step_begin, last_increment_t
   use increment, only: increment_t, increment_time, increment_end
   use boundary_table, only: boundary_prescribe, boundary_rates_update
   use step_loads, only: loads_at_end
@@ -367,6 +367,7 @@ contains
         p%kinc = 0
         p%q_sum = 0.0_dp
         an%state%last%dt = 0.0_dp  ! Abaqus: no extrapolation into the first increment of a step
+        an%state%last%dt_before = 0.0_dp
         call output_step_begin(run%os, st)
       end if
     end associate
@@ -394,8 +395,8 @@ contains
   end subroutine begin_increment
 
   !> Predict the next attempt: its size (step_control), UEXTERNALDB's LOP 1, the start (the converged state, or
-  !> with *STEP, EXTRAPOLATION=LINEAR, Abaqus' default, the last converged increment's change scaled to this one;
-  !> a failed extrapolated start is retried once, then from the converged state), the prescribed values at the end
+  !> with *STEP, EXTRAPOLATION=LINEAR, Abaqus' default, the last converged increment's change scaled to this one, or
+  !> PARABOLIC, the quadratic through the last two: extrapolate); a failed extrapolated start is retried once, then from the converged state), the prescribed values at the end
   !> of the increment (what they add to the start, the first Newton iteration carries through the tangent) and the
   !> loads and predefined fields there.
   subroutine predict(model, an, run, inc)
@@ -416,7 +417,7 @@ contains
       call external_db(an%routines, 1, 0, increment_time(inc), inc%dt, inc%step, inc%kinc)
       an%work%u = s%u_conv
       inc%extrapolated = st%extrapolate .and. s%last%dt > 0.0_dp .and. inc%attempt <= extrapolated_attempts
-      if (inc%extrapolated) an%work%u = s%u_conv + (inc%dt / s%last%dt) * s%last%du
+      if (inc%extrapolated) call extrapolate(s%last, st%parabolic, inc%dt, s%u_conv, an%work%u)
       if (an%eqs%cs%n > 0) call constraints_apply(an%eqs%cs, an%work%u)
       run%u_carry = an%work%u
       call boundary_prescribe(s%bc, model, inc, s%u_conv, an%nr, an%routines, an%eqs%prescribed, an%work%u)
@@ -425,6 +426,21 @@ contains
       call loads_at_end(s%loads, model, inc, an%work%fext, an%work%temp_end, an%work%field_end)
     end associate
   end subroutine predict
+
+  !> The extrapolated start u of an increment of size dt from the converged u_conv (*STEP, EXTRAPOLATION): the last
+  !> increment's change scaled to dt (LINEAR); with PARABOLIC and an increment before it in the step, the quadratic
+  !> in time through the last three converged states, u_conv + h d1/h1 + h (h + h1) (d1/h1 - d0/h0) / (h1 + h0) (d1,
+  !> h1: the last change and size, d0, h0: the one before; Newton's divided differences), else linear.
+  pure subroutine extrapolate(last, parabolic, dt, u_conv, u)
+    type(last_increment_t), intent(in) :: last     !< the last converged increments
+    logical, intent(in) :: parabolic               !< EXTRAPOLATION=PARABOLIC
+    real(dp), intent(in) :: dt                     !< size of the increment
+    real(dp), intent(in) :: u_conv(:)              !< converged displacement
+    real(dp), intent(out) :: u(:)                  !< the start
+    u = u_conv + (dt / last%dt) * last%du
+    if (parabolic .and. last%dt_before > 0.0_dp) u = u + dt * (dt + last%dt) / (last%dt + last%dt_before) * &
+      (last%du / last%dt - last%du_before / last%dt_before)
+  end subroutine extrapolate
 
   !> Iterate: Newton from the predicted start (newton_iteration); a converged attempt whose cohesive opening
   !> increment exceeds --max-opening-increment (paper section 7) is rejected; a stop asked by a user routine ends
@@ -577,6 +593,8 @@ contains
       end where
       last%fext = w%fext + w%fdl
       last%fcl = w%fext
+      last%du_before = last%du
+      last%dt_before = last%dt
       last%du = w%u - u_conv
       last%dt = inc%dt
     end associate

@@ -94,7 +94,7 @@ contains
       ctx%model%steps(istep)%extrapolate = .false.
     case ('PARABOLIC')
       ctx%model%steps(istep)%extrapolate = .true.
-      call ctx_warn(ctx, ir, 'EXTRAPOLATION=PARABOLIC: ldfcz extrapolates linearly')
+      ctx%model%steps(istep)%parabolic = .true.
     case default
       call ctx_fail(ctx, ir, 'EXTRAPOLATION must be LINEAR, PARABOLIC or NO')
       return

@@ -30,6 +30,7 @@ module element_catalog
   public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6
   public :: RULE_TET1, RULE_TET4, RULE_WEDGE2
   public :: KIN_3D, KIN_PLANE_STRAIN, KIN_PLANE_STRESS, KIN_AXISYMMETRIC
+  public :: KERNEL_GENERIC, KERNEL_C3D8
 
   !> shape-function families (solid_shape: shape functions, parent coordinates, node order)
   integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6, &
@@ -39,6 +40,10 @@ module element_catalog
   integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4, RULE_WEDGE2 = -12
   !> kinematic classes: NDI, NSHR of the material call and the meaning of the coordinates
   integer, parameter :: KIN_3D = 1, KIN_PLANE_STRAIN = 2, KIN_PLANE_STRESS = 3, KIN_AXISYMMETRIC = 4
+  !> element kernels (solid_element): the generic path, sized at run time, serves every type; a type with a
+  !> fixed-size kernel takes it where the kernel covers the call (KERNEL_C3D8: 8 nodes, 2x2x2 points, F-bar, under
+  !> NLGEOM without *ORIENTATION; solid_c3d8.f90), with the same results to the bit
+  integer, parameter :: KERNEL_GENERIC = 0, KERNEL_C3D8 = 1
 
   !> The node layout of a shape-function family.
   type :: element_family_t
@@ -63,6 +68,7 @@ module element_catalog
     integer :: nmode = 0                   !< incompatible displacement modes (each ndim parameters), condensed
     logical :: hourglass = .false.         !< one point with Flanagan-Belytschko hourglass stiffness
     character(len=112) :: formulation = ''  !< the formulation in a few words (docs/elements.md)
+    integer :: kernel = KERNEL_GENERIC     !< KERNEL_*: the fixed-size kernel of the type, if it has one
   end type element_type_t
 
   integer, parameter :: ident20(20) = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20]
@@ -118,7 +124,7 @@ module element_catalog
   !> The element types (docs/elements.md: the table generated from these rows).
   type(element_type_t), parameter :: element_types(22) = [ &
     element_type_t('C3D8', FAM_HEX8, KIN_3D, 2, 8, fbar=.true., &
-      formulation='F-bar under NLGEOM; mean-dilatation B-bar without'), &
+      formulation='F-bar under NLGEOM; mean-dilatation B-bar without', kernel=KERNEL_C3D8), &
     element_type_t('C3D8I', FAM_HEX8, KIN_3D, 2, 8, nmode=3, &
       formulation='incompatible modes (3 x 3 parameters, condensed)'), &
     element_type_t('C3D8R', FAM_HEX8, KIN_3D, 1, 1, hourglass=.true., &

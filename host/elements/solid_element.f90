@@ -46,21 +46,22 @@ module solid_element
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
+  use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, &
+    SOLID_PNEWDT_LARGE
+  use solid_c3d8, only: c3d8_nlgeom, c3d8_compact_geometry, c3d8_compact_size
   use element_catalog, only: element_types, element_kind_of, element_nnode, element_ndim, element_ndi, &
-    element_nshr, element_is_axisymmetric, element_is_plane_stress
+    element_nshr, element_is_axisymmetric, element_is_plane_stress, KERNEL_C3D8
   use solid_shape, only: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base
-  use solid_elastic, only: elastic_update, elastic_check, elastic_law_t, elastic_law_update, elastic_law_check, &
+  use solid_elastic, only: elastic_update, elastic_check, elastic_law_update, elastic_law_check, &
     thermal_strain_increment, elastic_law_shear_modulus, elastic_thickness_increment, law_lamina
-  use solid_tangent_kernel, only: k_point_c3d8
+  use solid_tangent_kernel, only: k_point_c3d8, tangent_kernel_level
   implicit none
   private
   public :: solid_material_t, solid_element_info, solid_element_compute, umat_interface
   public :: solid_geometry_t, solid_element_geometry, polar_rotation
+  public :: solid_compact_geometry_size, solid_compact_geometry
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
 
-  integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
-  integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer
-  real(dp), parameter :: SOLID_PNEWDT_LARGE = 1.0e36_dp  !< PNEWDT handed to each UMAT call ("a large value")
   !> nodes (plus incompatible-mode pseudo-nodes) and integration points at most
   integer, parameter :: maxnode = 20, maxip = 27
   real(dp), parameter :: no_field(0) = [real(dp) ::]  !< PREDEF/DPRED of a model without field variables
@@ -73,45 +74,6 @@ module solid_element
   integer, parameter :: vidx(3, 3) = reshape([1, 4, 5, 4, 2, 6, 5, 6, 3], [3, 3])
   !> the same for plane stress (NTENS = 3: 11,22,12; no 33 entry, never addressed in 2D)
   integer, parameter :: vidx_ps(3, 3) = reshape([1, 3, 0, 3, 2, 0, 0, 0, 0], [3, 3])
-
-  !> Material (and section) data of an element set.
-  type :: solid_material_t
-    integer :: kind = SOLID_MAT_ELASTIC                 !< SOLID_MAT_ELASTIC or SOLID_MAT_UMAT
-    real(dp) :: e = 0.0_dp                              !< *ELASTIC Young's modulus (MPa)
-    real(dp) :: nu = 0.0_dp                             !< *ELASTIC Poisson's ratio
-    real(dp), allocatable :: props(:)                   !< *USER MATERIAL constants (PROPS)
-    integer :: nstatv = 0                               !< *DEPVAR count (NSTATV)
-    character(len=80) :: cmname = ' '                   !< material name as passed in CMNAME (upper case in Abaqus)
-    logical :: unsymm = .false.                         !< *USER MATERIAL, UNSYMM: keep the unsymmetric tangent
-    real(dp) :: thickness = 1.0_dp                      !< *SOLID SECTION thickness of plane elements (CPE4)
-    real(dp) :: alpha = 0.0_dp                          !< *EXPANSION isotropic coefficient (thermal strain alpha dT)
-    type(elastic_law_t) :: law                          !< law%general: *ELASTIC/*EXPANSION other than constant
-                                                        !< isotropic (then used instead of e, nu, alpha)
-    procedure(umat_interface), pointer, nopass :: umat => null()  !< the UMAT to call when kind = SOLID_MAT_UMAT
-  end type solid_material_t
-
-  !> Reference-configuration data of one element, the same on every call (original coordinates): shape functions,
-  !> dN/dX and Gauss weight x det(dX/dxi) at the integration points, dN/dX at the centre and its volume mean. Rows
-  !> nnode+1..nnode+nmode of dndx_ref are the incompatible modes' reference gradients (C3D8I, CPE4I). Sized to the
-  !> element. A host may compute it once per element (solid_element_geometry) and pass it to solid_element_compute
-  !> instead of the per-call recomputation.
-  type :: solid_geometry_t
-    logical :: valid = .false.                 !< computed, every reference Jacobian > 0
-    real(dp), allocatable :: nfun(:, :)        !< (nnode+nmode, nip) N_a at the integration points (0 for modes)
-    real(dp), allocatable :: dndx_ref(:, :, :) !< (nnode+nmode, 3, nip) dN_a/dX_j at the integration points
-    real(dp), allocatable :: wdet(:)           !< (nip) Gauss weight x det(dX/dxi)
-    real(dp), allocatable :: dndx_0c(:, :)     !< (nnode+nmode, 3) dN_a/dX_j at the element centre
-    real(dp), allocatable :: dndx_0m(:, :)     !< (nnode+nmode, 3) volume mean of dN_a/dX_j (B-bar, small strain)
-    real(dp), allocatable :: gamma(:, :)       !< (nnode, nhg) Flanagan-Belytschko hourglass vectors (one-point types)
-    real(dp), allocatable :: hoop(:, :)        !< (nnode+nmode, nip) N_a / R at the points (axisymmetric types)
-    real(dp), allocatable :: hoop_0c(:)        !< (nnode+nmode) N_a / R at the element centre (axisymmetric)
-    real(dp), allocatable :: hoop_0m(:)        !< (nnode+nmode) volume mean of N_a / R (axisymmetric B-bar)
-    integer :: nhg = 0                         !< hourglass vectors (0: none)
-    real(dp) :: hg_vsum = 0.0_dp               !< reference volume x sum_(a,j) (dN_a/dX_j)^2 at the point
-    !> (nnode, 4) one-point axisymmetric types: sqrt(w_q) (N_a/R - <N_a/R>) at the 2x2 points q, w_q = 2 pi R_q x
-    !> Gauss weight x det: sum_q (hoop_fl(:, q) . u_r)^2 = int (hoop strain - its element mean)^2 dV
-    real(dp), allocatable :: hoop_fl(:, :)
-  end type solid_geometry_t
 
 contains
 
@@ -274,6 +236,31 @@ contains
     geo%valid = .true.
   end subroutine solid_element_geometry
 
+  !> Entries of the compact reference data of a type (solid_compact_geometry), 0 for a type without one (only the
+  !> types with a fixed-size kernel have it: C3D8, 90 entries).
+  pure integer function solid_compact_geometry_size(etype) result(n)
+    character(len=*), intent(in) :: etype             !< element type name
+    integer :: it
+    n = 0
+    it = element_kind_of(etype)
+    if (it == 0) return
+    if (element_types(it)%kernel == KERNEL_C3D8) n = c3d8_compact_size
+  end function solid_compact_geometry_size
+
+  !> The compact reference data of an element of a type with a fixed-size kernel (solid_compact_geometry_size
+  !> entries; gc(1) = 1 when valid): what the kernel rebuilds solid_element_geometry's arrays from, to the bit, at a
+  !> small cost per call (C3D8: 720 bytes instead of about 3.4 kB with the arrays' descriptors). gc = 0 (not valid)
+  !> for a type without one or coordinates of another size.
+  pure subroutine solid_compact_geometry(etype, coords0, gc)
+    character(len=*), intent(in) :: etype             !< element type name
+    real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
+    real(dp), intent(out) :: gc(:)                    !< (solid_compact_geometry_size(etype)) compact reference data
+    gc = 0.0_dp
+    if (solid_compact_geometry_size(etype) /= c3d8_compact_size .or. size(gc) /= c3d8_compact_size) return
+    if (size(coords0, 1) /= 3 .or. size(coords0, 2) /= 8) return
+    call c3d8_compact_geometry(coords0, gc)
+  end subroutine solid_compact_geometry
+
   !> Shape functions and reference derivatives dN/dX at parent point xi; detj = det(dX/dxi), jinv its inverse
   !> (dndx = 0 if detj <= 0).
   pure subroutine solid_reference_derivatives(family, nnode, ndim, coords0, xi, n_p, dndx_p, detj, jinv)
@@ -300,7 +287,8 @@ contains
   !> Never produces NaN: on failure (stat /= 0) f_int = 0, k_e = 0, the new state equals the old one.
   subroutine solid_element_compute(etype, coords0, u, du, mat, stress_old, stran_old, statev_old, time, dtime, &
       kstep, kinc, noel, nlgeom, want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, errmsg, &
-      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient, field_nodes, dfield_nodes)
+      energy_ip_old, energy_ip_new, geo, temp_nodes, dtemp_nodes, energy_hg, orient, field_nodes, dfield_nodes, &
+      generic_only, geo_compact)
     character(len=*), intent(in) :: etype             !< element type name (element_catalog)
     real(dp), intent(in) :: coords0(:, :)             !< (ndim, nnode) original coordinates
     real(dp), intent(in) :: u(:)                      !< (ndim*nnode) total displacement, current Newton estimate
@@ -337,11 +325,17 @@ contains
     real(dp), intent(in), optional :: orient(:, :, :) !< (3, 3, nip) local material axes T0 (columns) per point
     real(dp), intent(in), optional :: field_nodes(:, :)  !< (nfield, nnode) field variables at the increment's start
     real(dp), intent(in), optional :: dfield_nodes(:, :) !< (nfield, nnode) their increments (PREDEF, DPRED at points)
+    !> .true.: the generic path even where the type's fixed-size kernel would serve (tests and benchmarks compare
+    !> the two; the results are the same bits)
+    logical, intent(in), optional :: generic_only
+    !> compact reference data (solid_compact_geometry) instead of geo, for a type with a fixed-size kernel: the
+    !> kernel rebuilds the arrays it needs from it (the generic path, where it serves, computes them from coords0)
+    real(dp), intent(in), optional :: geo_compact(:)
 
     integer, parameter :: max_local_iter = 30      ! element-level Newton on the incompatible modes
     integer :: it, nnode, nne, ndim, nip, ntens, ndi, nshr, nextra, ndof, ndofe, nalpha, nsv, np
-    integer :: a, b, i, k, r, c, jstep(4), iter
-    logical :: fbar, last
+    integer :: a, b, i, k, r, c, jstep(4)
+    logical :: fbar
     real(dp) :: xref(3, maxnode), un(3, maxnode), u1(3, maxnode), dun(3, maxnode)
     type(solid_geometry_t), target :: gl          ! reference data computed here when the host has none
     type(solid_geometry_t), pointer :: gp         ! the reference data in use (no per-call copy of the host's)
@@ -352,11 +346,10 @@ contains
     integer :: nf
     real(dp) :: mf, hcc(maxnode)
     real(dp) :: fe(3 * maxnode), ke(3 * maxnode, 3 * maxnode), kl(maxnode, 3, 3, maxnode)
-    real(dp) :: alpha_n(maxalpha), alpha(maxalpha), dalpha(maxalpha), kaa(maxalpha, maxalpha)
-    real(dp) :: rhs(maxalpha, 3 * maxnode + 1), scale, g_shear, ghg, khg, qhg(3)
-    integer :: mh
+    real(dp) :: alpha_n(maxalpha), g_shear
     real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
     character(len=80) :: cmname
+    integer :: kgeo
     character(len=*), parameter :: here = 'solid_element_compute: '
 
     stat = 0
@@ -371,123 +364,15 @@ contains
     nsv = mat%nstatv
     np = nprops_of(mat)
 
-    ! ---- argument checks (bad input: stat = 2)
-    if (it == 0) then
-      call fail(2, here // 'unknown element type "' // trim(etype) // '"')
-      return
-    end if
-    nne = nnode + element_types(it)%nmode
-    ndofe = ndim * nne
-    nalpha = ndofe - ndof
-    fbar = element_types(it)%fbar
-    if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
-        size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
-        size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
-        size(stran_old, 2) /= nip .or. size(stress_new, 1) /= ntens .or. size(stress_new, 2) /= nip .or. &
-        size(stran_new, 1) /= ntens .or. size(stran_new, 2) /= nip .or. size(statev_old, 1) < nsv + nextra .or. &
-        size(statev_old, 2) /= nip .or. size(statev_new, 1) < nsv + nextra .or. size(statev_new, 2) /= nip) then
-      call fail(2, here // 'array sizes do not match element type ' // trim(etype))
-      return
-    end if
-    if (present(energy_ip_old)) then
-      if (size(energy_ip_old, 1) < 3 .or. size(energy_ip_old, 2) /= nip) then
-        call fail(2, here // 'energy_ip_old must be (3, nip)')
-        return
-      end if
-    end if
-    if (present(energy_ip_new)) then
-      if (size(energy_ip_new, 1) < 3 .or. size(energy_ip_new, 2) /= nip) then
-        call fail(2, here // 'energy_ip_new must be (3, nip)')
-        return
-      end if
-    end if
-    select case (mat%kind)
-    case (SOLID_MAT_ELASTIC)
-      if (mat%law%general) then
-        call elastic_law_check(mat%law, i, errmsg)
-        if (i == 0 .and. mat%law%kind == law_lamina .and. .not. (element_is_plane_stress(it) .and. .not. nlgeom)) &
-          errmsg = '*ELASTIC, TYPE=LAMINA: plane-stress elements without NLGEOM only (its constants give no '// &
-          'through-thickness stiffness; ENGINEERING CONSTANTS give it)'
-        if (len_trim(errmsg) > 0) i = 1
-      else
-        call elastic_check(mat%e, mat%nu, i, errmsg)
-      end if
-      if (i /= 0) then
-        call fail(2, here // trim(errmsg))
-        return
-      end if
-    case (SOLID_MAT_UMAT)
-      if (.not. associated(mat%umat)) then
-        call fail(2, here // 'material kind UMAT without a UMAT procedure')
-        return
-      end if
-    case default
-      call fail(2, here // 'unknown material kind')
-      return
-    end select
-    if (.not. (mat%thickness > 0.0_dp)) then
-      call fail(2, here // 'section thickness must be > 0')
-      return
-    end if
+    call check_arguments()
+    if (stat /= 0) return
 
-    eye = identity()
-    m = real(ndim, dp)
-    nf = merge(3, ndim, element_is_axisymmetric(it))
-    mf = real(nf, dp)
-    xref = 0.0_dp
-    un = 0.0_dp
-    u1 = 0.0_dp
-    dun = 0.0_dp
-    do a = 1, nnode
-      xref(1:ndim, a) = coords0(:, a)
-      u1(1:ndim, a) = u(ndim * (a - 1) + 1:ndim * a)
-      dun(1:ndim, a) = du(ndim * (a - 1) + 1:ndim * a)
-      un(1:ndim, a) = u1(1:ndim, a) - dun(1:ndim, a)
-    end do
-    ! incompatible-mode parameters of the last converged state, kept after NSTATV in the STATEV rows
-    alpha_n = 0.0_dp
-    do k = 1, nalpha
-      alpha_n(k) = statev_old(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1)
-    end do
+    call run_kernel(kgeo)   ! a type's fixed-size kernel where it covers the call (element_catalog: kernel)
+    if (kgeo /= 0) return
 
-    ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
-    gp => gl
-    if (present(geo)) then
-      if (geo%valid) gp => geo
-    end if
-    if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
-    if (.not. gp%valid) then
-      call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
-                'integration point, or radius <= 0 at a point of an axisymmetric element)')
-      return
-    end if
-
-    ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
-    fc0 = def_grad(un, gp%dndx_0c)
-    fc1 = def_grad(u1, gp%dndx_0c)
-    if (element_is_axisymmetric(it)) then
-      ! hoop stretch at the centre r_c / R_c: J_c is the 3D volume ratio there
-      fc0(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), un(1, 1:nne))
-      fc1(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), u1(1, 1:nne))
-    end if
-    jc0 = det3(fc0)
-    jc1 = det3(fc1)
-    if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
-      call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at the centre)')
-      return
-    end if
-    dndx_c = 0.0_dp
-    hcc = 0.0_dp
-    if (fbar) then
-      if (nlgeom) then
-        finv = inv3(fc1)
-        dndx_c(1:nne, 1:ndim) = matmul(gp%dndx_0c(1:nne, 1:ndim), finv(1:ndim, 1:ndim))
-        if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0c(1:nne) / fc1(3, 3)   ! N_a / r_c, current
-      else
-        dndx_c(1:nne, :) = gp%dndx_0m
-        if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0m(1:nne)
-      end if
-    end if
+    call reference_and_nodal_state()
+    if (stat == 0) call centre_operators()
+    if (stat /= 0) return
 
     jstep = [kstep, 1, merge(1, 0, nlgeom), 0]
     cmname = mat%cmname
@@ -498,64 +383,252 @@ contains
       if (stat /= 0) return
       f_int = fe(1:ndof)
       if (want_k) k_e = ke(1:ndof, 1:ndof)
-      if (element_types(it)%hourglass) then
-        ! ---- hourglass stiffness (Flanagan-Belytschko stiffness form on the total displacement, reference
-        ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
-        ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
-        ! (STATEV row nstatv+1) so that k is constant and the tangent consistent after the first increment.
-        if (mat%kind == SOLID_MAT_ELASTIC .and. mat%law%general) then
-          ghg = elastic_law_shear_modulus(mat%law)
-        else if (mat%kind == SOLID_MAT_ELASTIC) then
-          ghg = mat%e / (2 * (1 + mat%nu))
-        else
-          ghg = statev_old(nsv + 1, 1)
-          if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
+      if (element_types(it)%hourglass) call hourglass_terms()
+    else
+      call incompatible_modes()
+      if (stat /= 0) return
+    end if
+    if (.not. want_k) k_e = 0.0_dp
+
+  contains
+
+    !> The element type (its sizes with the incompatible modes: nne, ndofe, nalpha; fbar), the arguments' sizes
+    !> against it, the energies' shapes, the material and the section (bad input: stat = 2).
+    subroutine check_arguments()
+      integer :: i
+      if (it == 0) then
+        call fail(2, here // 'unknown element type "' // trim(etype) // '"')
+        return
+      end if
+      nne = nnode + element_types(it)%nmode
+      ndofe = ndim * nne
+      nalpha = ndofe - ndof
+      fbar = element_types(it)%fbar
+      if (size(coords0, 1) /= ndim .or. size(coords0, 2) /= nnode .or. size(u) /= ndof .or. size(du) /= ndof .or. &
+          size(f_int) /= ndof .or. size(k_e, 1) /= ndof .or. size(k_e, 2) /= ndof .or. &
+          size(stress_old, 1) /= ntens .or. size(stress_old, 2) /= nip .or. size(stran_old, 1) /= ntens .or. &
+          size(stran_old, 2) /= nip .or. size(stress_new, 1) /= ntens .or. size(stress_new, 2) /= nip .or. &
+          size(stran_new, 1) /= ntens .or. size(stran_new, 2) /= nip .or. size(statev_old, 1) < nsv + nextra .or. &
+          size(statev_old, 2) /= nip .or. size(statev_new, 1) < nsv + nextra .or. size(statev_new, 2) /= nip) then
+        call fail(2, here // 'array sizes do not match element type ' // trim(etype))
+        return
+      end if
+      if (present(energy_ip_old)) then
+        if (size(energy_ip_old, 1) < 3 .or. size(energy_ip_old, 2) /= nip) then
+          call fail(2, here // 'energy_ip_old must be (3, nip)')
+          return
         end if
-        statev_new(nsv + 1, 1) = ghg
-        ! (axisymmetric: hg_vsum has the 2 pi R weighted volume; no section thickness)
-        khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, element_is_axisymmetric(it))
-        do mh = 1, gp%nhg
-          qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
+      end if
+      if (present(energy_ip_new)) then
+        if (size(energy_ip_new, 1) < 3 .or. size(energy_ip_new, 2) /= nip) then
+          call fail(2, here // 'energy_ip_new must be (3, nip)')
+          return
+        end if
+      end if
+      select case (mat%kind)
+      case (SOLID_MAT_ELASTIC)
+        if (mat%law%general) then
+          call elastic_law_check(mat%law, i, errmsg)
+          if (i == 0 .and. mat%law%kind == law_lamina .and. .not. (element_is_plane_stress(it) .and. .not. nlgeom)) &
+            errmsg = '*ELASTIC, TYPE=LAMINA: plane-stress elements without NLGEOM only (its constants give no '// &
+            'through-thickness stiffness; ENGINEERING CONSTANTS give it)'
+          if (len_trim(errmsg) > 0) i = 1
+        else
+          call elastic_check(mat%e, mat%nu, i, errmsg)
+        end if
+        if (i /= 0) then
+          call fail(2, here // trim(errmsg))
+          return
+        end if
+      case (SOLID_MAT_UMAT)
+        if (.not. associated(mat%umat)) then
+          call fail(2, here // 'material kind UMAT without a UMAT procedure')
+          return
+        end if
+      case default
+        call fail(2, here // 'unknown material kind')
+        return
+      end select
+      if (.not. (mat%thickness > 0.0_dp)) then
+        call fail(2, here // 'section thickness must be > 0')
+        return
+      end if
+    end subroutine check_arguments
+
+    !> The type's fixed-size kernel (C3D8 under NLGEOM, without *ORIENTATION or a general elastic law) with the
+    !> host's reference data in either form, or computed now; kgeo = 0: the generic path serves (no kernel, or no
+    !> valid reference data: the generic path reports the inverted element).
+    subroutine run_kernel(kgeo)
+      integer, intent(out) :: kgeo  !< 1 geo, 2 geo_compact, 3 computed here; 0 the generic path
+      character(len=200) :: kmsg
+      kgeo = 0
+      if (.not. (element_types(it)%kernel == KERNEL_C3D8 .and. nlgeom .and. .not. present(orient) .and. &
+          .not. mat%law%general .and. .not. flag(generic_only))) return
+      if (present(geo)) then
+        if (geo%valid) kgeo = 1
+      end if
+      if (kgeo == 0 .and. present(geo_compact)) then
+        if (size(geo_compact) == c3d8_compact_size) then
+          if (geo_compact(1) == 1.0_dp) kgeo = 2
+        end if
+      end if
+      if (kgeo == 0) then
+        ! no reference data from the host: computed now (as the generic path would)
+        call solid_element_geometry(etype, coords0, gl)
+        if (gl%valid) kgeo = 3
+      end if
+      if (kgeo == 1) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gp=geo)
+      else if (kgeo == 3) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gp=gl)
+      else if (kgeo == 2) then
+        call c3d8_nlgeom(mat, coords0, u, du, stress_old, stran_old, statev_old, time, dtime, kstep, kinc, noel, &
+          want_k, f_int, k_e, stress_new, stran_new, statev_new, energy, pnewdt, stat, kmsg, energy_ip_old, &
+          energy_ip_new, temp_nodes, dtemp_nodes, field_nodes, dfield_nodes, gc=geo_compact)
+      end if
+      if (kgeo /= 0) then
+        if (stat /= 0) call fail(stat, trim(kmsg))
+      end if
+    end subroutine run_kernel
+
+    !> The reference data in use (gp: the host's copy, or computed now; stat = 1 when not valid), the nodal
+    !> coordinates and displacements at t_n and t_n+1 and the converged incompatible-mode parameters alpha_n.
+    subroutine reference_and_nodal_state()
+      ! ---- reference data (shape functions, dN/dX, weights): the host's copy or computed now
+      gp => gl
+      if (present(geo)) then
+        if (geo%valid) gp => geo
+      end if
+      if (.not. gp%valid) call solid_element_geometry(etype, coords0, gl)
+      if (.not. gp%valid) then
+        call fail(1, 'inverted element ' // itoa(noel) // ' (reference Jacobian <= 0 at the centre or at an ' // &
+                  'integration point, or radius <= 0 at a point of an axisymmetric element)')
+        return
+      end if
+
+      eye = identity()
+      m = real(ndim, dp)
+      nf = merge(3, ndim, element_is_axisymmetric(it))
+      mf = real(nf, dp)
+      xref = 0.0_dp
+      un = 0.0_dp
+      u1 = 0.0_dp
+      dun = 0.0_dp
+      do a = 1, nnode
+        xref(1:ndim, a) = coords0(:, a)
+        u1(1:ndim, a) = u(ndim * (a - 1) + 1:ndim * a)
+        dun(1:ndim, a) = du(ndim * (a - 1) + 1:ndim * a)
+        un(1:ndim, a) = u1(1:ndim, a) - dun(1:ndim, a)
+      end do
+      ! incompatible-mode parameters of the last converged state, kept after NSTATV in the STATEV rows
+      alpha_n = 0.0_dp
+      do k = 1, nalpha
+        alpha_n(k) = statev_old(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1)
+      end do
+    end subroutine reference_and_nodal_state
+
+    !> The element centre: J_c at t_n and t_n+1 (J <= 0: stat = 1), the spatial derivatives dndx_c (and hcc) of
+    !> the F-bar (B-bar) tangent.
+    subroutine centre_operators()
+      ! ---- element centre: J_c at t_n and t_n+1, spatial derivatives for the F-bar tangent
+      fc0 = def_grad(un, gp%dndx_0c)
+      fc1 = def_grad(u1, gp%dndx_0c)
+      if (element_is_axisymmetric(it)) then
+        ! hoop stretch at the centre r_c / R_c: J_c is the 3D volume ratio there
+        fc0(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), un(1, 1:nne))
+        fc1(3, 3) = 1.0_dp + dot_product(gp%hoop_0c(1:nne), u1(1, 1:nne))
+      end if
+      jc0 = det3(fc0)
+      jc1 = det3(fc1)
+      if (.not. (jc0 > 0.0_dp .and. jc1 > 0.0_dp)) then
+        call fail(1, 'inverted element ' // itoa(noel) // ' (J <= 0 at the centre)')
+        return
+      end if
+      dndx_c = 0.0_dp
+      hcc = 0.0_dp
+      if (fbar) then
+        if (nlgeom) then
+          finv = inv3(fc1)
+          dndx_c(1:nne, 1:ndim) = matmul(gp%dndx_0c(1:nne, 1:ndim), finv(1:ndim, 1:ndim))
+          if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0c(1:nne) / fc1(3, 3)   ! N_a / r_c, current
+        else
+          dndx_c(1:nne, :) = gp%dndx_0m
+          if (element_is_axisymmetric(it)) hcc(1:nne) = gp%hoop_0m(1:nne)
+        end if
+      end if
+    end subroutine centre_operators
+
+    !> Hourglass stiffness of a one-point element added to f_int, k_e and the energies.
+    subroutine hourglass_terms()
+      integer :: mh, a, b, i, r, c
+      real(dp) :: ghg, khg, qhg(3)
+      ! ---- hourglass stiffness (Flanagan-Belytschko stiffness form on the total displacement, reference
+      ! configuration): q_im = sum_a gamma_am u_ia, f_ia += k sum_m gamma_am q_im, k = c G V sum (dN/dX)^2.
+      ! G: *ELASTIC's shear modulus; for a UMAT the mean shear diagonal of DDSDDE at the first call, then kept
+      ! (STATEV row nstatv+1) so that k is constant and the tangent consistent after the first increment.
+      if (mat%kind == SOLID_MAT_ELASTIC .and. mat%law%general) then
+        ghg = elastic_law_shear_modulus(mat%law)
+      else if (mat%kind == SOLID_MAT_ELASTIC) then
+        ghg = mat%e / (2 * (1 + mat%nu))
+      else
+        ghg = statev_old(nsv + 1, 1)
+        if (.not. (ghg > 0.0_dp)) ghg = max(g_shear, 0.0_dp)
+      end if
+      statev_new(nsv + 1, 1) = ghg
+      ! (axisymmetric: hg_vsum has the 2 pi R weighted volume; no section thickness)
+      khg = hourglass_factor * ghg * gp%hg_vsum * merge(1.0_dp, mat%thickness, element_is_axisymmetric(it))
+      do mh = 1, gp%nhg
+        qhg(1:ndim) = matmul(u1(1:ndim, 1:nnode), gp%gamma(:, mh))
+        do a = 1, nnode
+          r = ndim * (a - 1)
+          f_int(r + 1:r + ndim) = f_int(r + 1:r + ndim) + khg * gp%gamma(a, mh) * qhg(1:ndim)
+          if (want_k) then
+            do b = 1, nnode
+              c = ndim * (b - 1)
+              do i = 1, ndim
+                k_e(r + i, c + i) = k_e(r + i, c + i) + khg * gp%gamma(a, mh) * gp%gamma(b, mh)
+              end do
+            end do
+          end if
+        end do
+        energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+        if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+      end do
+      if (allocated(gp%hoop_fl)) then
+        ! axisymmetric one point (CAX4R): the mean hoop strain at the point misses the variation of u_r / R over
+        ! the element, and u_r = Z - c, u_z = -R (c = <Z/R> / <1/R>) is a zero-energy mode that the
+        ! Flanagan-Belytschko vectors (orthogonal to every linear field) cannot see. Stabilisation: the shear
+        ! part of the energy of that variation, (1/2) 2 G int (u_r/R - <u_r/R>)^2 dV (the bulk part would lock),
+        ! zero for u_r = a R (constant hoop strain): the patch test is kept
+        khg = hourglass_factor * 2 * ghg
+        do mh = 1, size(gp%hoop_fl, 2)
+          qhg(1) = dot_product(gp%hoop_fl(:, mh), u1(1, 1:nnode))
           do a = 1, nnode
-            r = ndim * (a - 1)
-            f_int(r + 1:r + ndim) = f_int(r + 1:r + ndim) + khg * gp%gamma(a, mh) * qhg(1:ndim)
+            r = ndim * (a - 1) + 1
+            f_int(r) = f_int(r) + khg * gp%hoop_fl(a, mh) * qhg(1)
             if (want_k) then
               do b = 1, nnode
-                c = ndim * (b - 1)
-                do i = 1, ndim
-                  k_e(r + i, c + i) = k_e(r + i, c + i) + khg * gp%gamma(a, mh) * gp%gamma(b, mh)
-                end do
+                c = ndim * (b - 1) + 1
+                k_e(r, c) = k_e(r, c) + khg * gp%hoop_fl(a, mh) * gp%hoop_fl(b, mh)
               end do
             end if
           end do
-          energy(1) = energy(1) + 0.5_dp * khg * sum(qhg(1:ndim)**2)
-          if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * sum(qhg(1:ndim)**2)
+          energy(1) = energy(1) + 0.5_dp * khg * qhg(1)**2
+          if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * qhg(1)**2
         end do
-        if (allocated(gp%hoop_fl)) then
-          ! axisymmetric one point (CAX4R): the mean hoop strain at the point misses the variation of u_r / R over
-          ! the element, and u_r = Z - c, u_z = -R (c = <Z/R> / <1/R>) is a zero-energy mode that the
-          ! Flanagan-Belytschko vectors (orthogonal to every linear field) cannot see. Stabilisation: the shear
-          ! part of the energy of that variation, (1/2) 2 G int (u_r/R - <u_r/R>)^2 dV (the bulk part would lock),
-          ! zero for u_r = a R (constant hoop strain): the patch test is kept
-          khg = hourglass_factor * 2 * ghg
-          do mh = 1, size(gp%hoop_fl, 2)
-            qhg(1) = dot_product(gp%hoop_fl(:, mh), u1(1, 1:nnode))
-            do a = 1, nnode
-              r = ndim * (a - 1) + 1
-              f_int(r) = f_int(r) + khg * gp%hoop_fl(a, mh) * qhg(1)
-              if (want_k) then
-                do b = 1, nnode
-                  c = ndim * (b - 1) + 1
-                  k_e(r, c) = k_e(r, c) + khg * gp%hoop_fl(a, mh) * gp%hoop_fl(b, mh)
-                end do
-              end if
-            end do
-            energy(1) = energy(1) + 0.5_dp * khg * qhg(1)**2
-            if (present(energy_hg)) energy_hg = energy_hg + 0.5_dp * khg * qhg(1)**2
-          end do
-        end if
       end if
-    else
+    end subroutine hourglass_terms
+
+    !> Incompatible modes: Newton on the internal parameters alpha, then static condensation into f_int, k_e;
+    !> alpha into the STATEV rows after NSTATV.
+    subroutine incompatible_modes()
+      integer :: iter, k, i
+      logical :: last
+      real(dp) :: alpha(maxalpha), dalpha(maxalpha), kaa(maxalpha, maxalpha), rhs(maxalpha, 3 * maxnode + 1), scale
       ! ---- incompatible modes: Newton on the internal parameters alpha (f_alpha = 0) from the converged alpha_n,
       ! then static condensation f = f_u - K_ua K_aa^-1 f_a, K = K_uu - K_ua K_aa^-1 K_au (exact at f_a = 0, and
       ! f_u - K_ua K_aa^-1 f_a corrects a residual f_a to first order)
@@ -604,27 +677,22 @@ contains
       do k = 1, nalpha
         statev_new(nsv + 1 + (k - 1) / nip, mod(k - 1, nip) + 1) = alpha(k)
       end do
-    end if
-    if (.not. want_k) k_e = 0.0_dp
-
-  contains
+    end subroutine incompatible_modes
 
     !> One pass over the integration points at the current (u1, un) including the mode pseudo-nodes: material
     !> calls, new point state, fe(1:ndofe) and (want) ke(1:ndofe, 1:ndofe).
     subroutine element_pass(want)
       logical, intent(in) :: want
       integer :: ip
-      real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), j0, j1, vol, temp_ip, dtemp_ip
-      real(dp) :: fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3)
-      real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), dv, gc(3, 3), trc, trg
-      real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6), coords(3)
-      real(dp) :: sse, spd, scd, pn, a4(3, 3, 3, 3), q(3, 3), bc(maxnode, 3), t(3, 3)
+      real(dp) :: fg0(3, 3, maxip), fg1(3, 3, maxip), j0, j1
+      real(dp) :: fb0(3, 3), fb1(3, 3), g(3, 3), drot(3, 3)
+      real(dp) :: sig(3, 3), eps(3, 3), dndx(maxnode, 3), dv
+      real(dp) :: stress(6), stran(6), dstran(6), ddsdde(6, 6)
+      real(dp) :: sse, spd, scd, bc(maxnode, 3)
       real(dp) :: bcr(maxnode, 3), trs
       real(dp) :: kl8(8, 3, 3, 8)   ! C3D8: contiguous fixed-size accumulator of the vectorised kernel
-      real(dp) :: d8(8, 3), b8(8, 3), r8(8, 3)
-      real(dp) :: hc(maxnode), thk, lt1(maxip), f2m(2, 2), g2(2, 2), dt_ip, t_ip, a2(2, 2), dth(6), r33(3, 3)
-      real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3), s_unit(6), col_g(6, 6)
-      integer :: icol
+      real(dp) :: hc(maxnode), thk, lt1(maxip)
+      real(dp) :: tn(3, 3), t1(3, 3), drot_m(3, 3), fl0(3, 3), fl1(3, 3)
       logical :: k8, axi, local
       axi = element_is_axisymmetric(it)
       ! section thickness of plane elements; axisymmetric volumes are per 2 pi radians already (geometry)
@@ -633,7 +701,139 @@ contains
 
       fe = 0.0_dp
       energy = 0.0_dp
-      ! ---- first pass: kinematics at the integration points, checks, volume for CELENT
+      call first_pass(axi, fg0, fg1, lt1)
+      if (stat /= 0) return
+
+      ! ---- second pass: material calls, internal force, tangent
+      k8 = ndim == 3 .and. nne == 8
+      if (want) then
+        if (k8) then
+          kl8 = 0.0_dp
+        else
+          kl(1:nne, :, :, 1:nne) = 0.0_dp
+        end if
+      end if
+      do ip = 1, nip
+        j0 = det3(fg0(:, :, ip))
+        j1 = det3(fg1(:, :, ip))
+        fb0 = fg0(:, :, ip)
+        fb1 = fg1(:, :, ip)
+        if (fbar) then
+          ! (axisymmetric: the whole 3x3 F with its hoop stretch, m = 3, so that det Fbar = J_c)
+          fb0(1:nf, 1:nf) = (jc0 / j0)**(1.0_dp / mf) * fb0(1:nf, 1:nf)
+          fb1(1:nf, 1:nf) = (jc1 / j1)**(1.0_dp / mf) * fb1(1:nf, 1:nf)
+        end if
+
+        call strain_increment(ip, axi, fb0, fb1, g, drot)
+        if (stat /= 0) return
+        call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
+
+        local = present(orient)
+        drot_m = drot
+        fl0 = fb0
+        fl1 = fb1
+        if (local) then
+          ! local axes at the start and end of the increment; the material gets every tensor in their components
+          tn = orient(:, :, ip)
+          t1 = orient(:, :, ip)
+          if (nlgeom) then
+            tn = matmul(polar_rotation(fb0), tn)
+            t1 = matmul(polar_rotation(fb1), t1)
+          end if
+          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(tn), sig), tn), ntens, stress, 1.0_dp)
+          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(tn), eps), tn), ntens, stran, 2.0_dp)
+          call voigt_to_tensor(dstran, ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, dstran, 2.0_dp)
+          drot_m = matmul(transpose(tn), t1)
+          fl0 = matmul(matmul(transpose(tn), fb0), orient(:, :, ip))
+          fl1 = matmul(matmul(transpose(t1), fb1), orient(:, :, ip))
+        else
+          ! rotate the converged stress and strain by DROT (identity without NLGEOM)
+          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
+          sig = matmul(matmul(drot, sig), transpose(drot))
+          call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
+          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
+          eps = matmul(matmul(drot, eps), transpose(drot))
+          call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
+        end if
+
+        call point_material(ip, local, t1, drot_m, fl0, fl1, stress, stran, dstran, ddsdde, sse, spd, scd)
+        if (stat /= 0) return
+        if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
+        if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
+        if (element_is_plane_stress(it) .and. nlgeom) statev_new(nsv + nextra, ip) = lt1(ip)
+        stress_new(:, ip) = stress(1:ntens)
+        stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
+        if (present(energy_ip_new)) then
+          energy_ip_new(:, ip) = 0.0_dp
+          energy_ip_new(1:3, ip) = [sse, spd, scd]
+        end if
+
+        ! spatial derivatives and volume element
+        dndx = 0.0_dp
+        hc = 0.0_dp
+        if (nlgeom) then
+          finv = inv3(fg1(:, :, ip))
+          dndx(1:nne, 1:ndim) = matmul(gp%dndx_ref(1:nne, 1:ndim, ip), finv(1:ndim, 1:ndim))
+          dv = gp%wdet(ip) * j1 * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip) / fg1(3, 3, ip)   ! N_a / r, current radius
+        else
+          dndx(1:nne, 1:ndim) = gp%dndx_ref(1:nne, 1:ndim, ip)
+          dv = gp%wdet(ip) * thk
+          if (axi) hc(1:nne) = gp%hoop(:, ip)
+        end if
+        energy = energy + [sse, spd] * dv
+
+        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+        ! bc(b, k) = dN_b/dx_k at the centre (mean without NLGEOM) minus at the point: the F-bar (B-bar)
+        ! dilatation operator (0 for the other element types)
+        bc = 0.0_dp
+        if (fbar) bc(1:nne, 1:ndim) = dndx_c(1:nne, 1:ndim) - dndx(1:nne, 1:ndim)
+        ! axisymmetric: the dilatation of a radial nodal motion includes its hoop strain N_b / r
+        if (fbar .and. axi) bc(1:nne, 1) = bc(1:nne, 1) + hcc(1:nne) - hc(1:nne)
+        ! without NLGEOM the virtual strain is the B-bar one too (f = int Bbar^T sigma dV), so that
+        ! K = int Bbar^T C Bbar is symmetric for a symmetric DDSDDE; under NLGEOM f = int B^T sigma dv
+        ! (de Souza Neto et al., 1996)
+        trs = 0.0_dp
+        if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, nf == 3)) / mf
+        bcr = 0.0_dp
+        if (.not. nlgeom) bcr(1:nne, 1:ndim) = bc(1:nne, 1:ndim)
+        do a = 1, nne
+          do i = 1, ndim
+            r = ndim * (a - 1) + i
+            fe(r) = fe(r) + (dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) + trs * bcr(a, i)) * dv
+          end do
+          ! axisymmetric: the hoop virtual strain du_r / r
+          if (axi) fe(ndim * (a - 1) + 1) = fe(ndim * (a - 1) + 1) + sig(3, 3) * hc(a) * dv
+        end do
+
+        if (want) call point_tangent(ddsdde, sig, dndx, bc, bcr, hc, dv, k8, axi, kl8)
+      end do
+      if (want) then
+        if (k8) kl(1:8, :, :, 1:8) = kl8
+        do b = 1, nne
+          do k = 1, ndim
+            c = ndim * (b - 1) + k
+            do a = 1, nne
+              r = ndim * (a - 1)
+              ke(r + 1:r + ndim, c) = kl(a, 1:ndim, k, b)
+            end do
+          end do
+        end do
+      end if
+    end subroutine element_pass
+
+    !> First pass of element_pass: the deformation gradients at t_n and t_n+1 at the points (the hoop stretch of
+    !> axisymmetric types, the thickness stretch of plane stress under NLGEOM into lt1), J > 0 checked (stat = 1),
+    !> the volume for CELENT.
+    subroutine first_pass(axi, fg0, fg1, lt1)
+      logical, intent(in) :: axi                  !< axisymmetric type
+      real(dp), intent(out) :: fg0(3, 3, maxip), fg1(3, 3, maxip)  !< F at t_n and t_n+1 per point
+      real(dp), intent(inout) :: lt1(maxip)       !< ln of the thickness stretch at t_n+1 (plane stress, NLGEOM)
+      integer :: ip, i
+      real(dp) :: j0, j1, vol, f2m(2, 2), g2(2, 2), dt_ip, t_ip, a2(2, 2), fm(3, 3), r33(3, 3)
       vol = 0.0_dp
       do ip = 1, nip
         fg0(:, :, ip) = def_grad(un, gp%dndx_ref(:, :, ip))
@@ -714,268 +914,190 @@ contains
         end if
       end do
       celent = vol**(1.0_dp / m)
+    end subroutine first_pass
 
-      ! ---- second pass: material calls, internal force, tangent
-      k8 = ndim == 3 .and. nne == 8
-      if (want) then
-        if (k8) then
-          kl8 = 0.0_dp
-        else
-          kl(1:nne, :, :, 1:nne) = 0.0_dp
-        end if
-      end if
-      do ip = 1, nip
-        j0 = det3(fg0(:, :, ip))
-        j1 = det3(fg1(:, :, ip))
-        fb0 = fg0(:, :, ip)
-        fb1 = fg1(:, :, ip)
-        if (fbar) then
-          ! (axisymmetric: the whole 3x3 F with its hoop stretch, m = 3, so that det Fbar = J_c)
-          fb0(1:nf, 1:nf) = (jc0 / j0)**(1.0_dp / mf) * fb0(1:nf, 1:nf)
-          fb1(1:nf, 1:nf) = (jc1 / j1)**(1.0_dp / mf) * fb1(1:nf, 1:nf)
-        end if
-
-        if (nlgeom) then
-          ! Hughes-Winget: G = grad(du) w.r.t. x_mid, with the F-bar modified gradients
-          fm = 0.5_dp * (fb0 + fb1)
-          if (.not. (det3(fm) > 0.0_dp)) then
-            call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
-                      // itoa(ip) // ')')
-            return
-          end if
-          g = matmul(fb1 - fb0, inv3(fm))
-          ! DROT = (I - W/2)^-1 (I + W/2), W = (G - G^T)/2 (Hughes-Winget), in closed form: with A = W/2 (skew,
-          ! axial vector a), A^3 = -|a|^2 A gives (I - A)^-1 = I + (A + A^2)/(1 + |a|^2),
-          ! so DROT = I + 2 (A + A^2)/(1 + |a|^2)
-          wsk = 0.25_dp * (g - transpose(g))
-          drot = eye + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
-        else
-          ! small strain: grad(du) w.r.t. X, with the mean dilatation of the element for F-bar types (B-bar)
-          g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
-          if (axi) g(3, 3) = dot_product(gp%hoop(:, ip), dun(1, 1:nne))   ! hoop strain increment du_r / R
-          if (fbar) then
-            gc = def_grad(dun, gp%dndx_0m) - eye
-            ! axisymmetric: the mean dilatation includes the mean hoop strain (2 pi R weighted)
-            if (axi) gc(3, 3) = dot_product(gp%hoop_0m(1:nne), dun(1, 1:nne))
-            trg = 0.0_dp
-            trc = 0.0_dp
-            do i = 1, nf
-              trg = trg + g(i, i)
-              trc = trc + gc(i, i)
-            end do
-            do i = 1, nf
-              g(i, i) = g(i, i) + (trc - trg) / mf
-            end do
-          end if
-          drot = eye
-        end if
-        call tensor_to_voigt(0.5_dp * (g + transpose(g)), ntens, dstran, 2.0_dp)
-
-        local = present(orient)
-        drot_m = drot
-        fl0 = fb0
-        fl1 = fb1
-        if (local) then
-          ! local axes at the start and end of the increment; the material gets every tensor in their components
-          tn = orient(:, :, ip)
-          t1 = orient(:, :, ip)
-          if (nlgeom) then
-            tn = matmul(polar_rotation(fb0), tn)
-            t1 = matmul(polar_rotation(fb1), t1)
-          end if
-          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
-          call tensor_to_voigt(matmul(matmul(transpose(tn), sig), tn), ntens, stress, 1.0_dp)
-          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(transpose(tn), eps), tn), ntens, stran, 2.0_dp)
-          call voigt_to_tensor(dstran, ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, dstran, 2.0_dp)
-          drot_m = matmul(transpose(tn), t1)
-          fl0 = matmul(matmul(transpose(tn), fb0), orient(:, :, ip))
-          fl1 = matmul(matmul(transpose(t1), fb1), orient(:, :, ip))
-        else
-          ! rotate the converged stress and strain by DROT (identity without NLGEOM)
-          call voigt_to_tensor(stress_old(:, ip), ntens, sig, 1.0_dp)
-          sig = matmul(matmul(drot, sig), transpose(drot))
-          call tensor_to_voigt(sig, ntens, stress, 1.0_dp)
-          call voigt_to_tensor(stran_old(:, ip), ntens, eps, 0.5_dp)
-          eps = matmul(matmul(drot, eps), transpose(drot))
-          call tensor_to_voigt(eps, ntens, stran, 2.0_dp)
-        end if
-
-        sse = 0.0_dp
-        spd = 0.0_dp
-        scd = 0.0_dp
-        if (present(energy_ip_old)) then
-          sse = energy_ip_old(1, ip)
-          spd = energy_ip_old(2, ip)
-          scd = energy_ip_old(3, ip)
-        end if
-        ! temperature at the point (TEMP, DTEMP of the UMAT); *EXPANSION: mechanical strain increment = total -
-        ! alpha dT on the direct components (Abaqus subtracts the thermal strain before the material is called)
-        temp_ip = 0.0_dp
-        dtemp_ip = 0.0_dp
-        if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
-        if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
-        if (mat%law%general) then
-          call thermal_strain_increment(mat%law, temp_ip, dtemp_ip, ndi, nshr, dth(1:ntens))
-          dstran(1:ntens) = dstran(1:ntens) - dth(1:ntens)
-        else if (mat%alpha /= 0.0_dp) then
-          dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
-        end if
-        ddsdde = 0.0_dp
-        pn = SOLID_PNEWDT_LARGE
-        select case (mat%kind)
-        case (SOLID_MAT_ELASTIC)
-          if (mat%law%general) then
-            call elastic_law_update(mat%law, temp_ip, dtemp_ip, ndi, nshr, stress(1:ntens), stran(1:ntens), &
-              dstran(1:ntens), ddsdde(1:ntens, 1:ntens), sse)
-          else
-            call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), &
-              sse)
-          end if
-        case default
-          sv = 0.0_dp
-          if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
-          do i = 1, 3
-            ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
-            coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
-          end do
-          ! PREDEF, DPRED: the field variables interpolated to the point (start of the increment) and their increments
-          if (present(field_nodes) .and. present(dfield_nodes)) then
-            call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
-              nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
-              dtemp_ip, matmul(field_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)), &
-              matmul(dfield_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)))
-          else
-            call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
-              nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
-              dtemp_ip, no_field, no_field)
-          end if
-          statev_new(1:nsv, ip) = sv(1:nsv)
-        end select
-        pnewdt = min(pnewdt, pn)
-        if (ip == 1) g_shear = sum([(ddsdde(k, k), k = ndi + 1, ntens)]) / nshr
-        if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
-          call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
-                    // itoa(ip))
+    !> The strain increment's gradient g at point ip and the rotation increment drot: Hughes-Winget at the
+    !> mid-increment configuration under NLGEOM (J <= 0 there: stat = 1), the small-strain gradient otherwise (the
+    !> B-bar mean dilatation for F-bar types); fb0, fb1 the point's (F-bar modified) gradients.
+    subroutine strain_increment(ip, axi, fb0, fb1, g, drot)
+      integer, intent(in) :: ip                   !< integration point
+      logical, intent(in) :: axi                  !< axisymmetric type
+      real(dp), intent(in) :: fb0(3, 3), fb1(3, 3)
+      real(dp), intent(out) :: g(3, 3), drot(3, 3)
+      real(dp) :: fm(3, 3), wsk(3, 3), gc(3, 3), trc, trg
+      integer :: i
+      if (nlgeom) then
+        ! Hughes-Winget: G = grad(du) w.r.t. x_mid, with the F-bar modified gradients
+        fm = 0.5_dp * (fb0 + fb1)
+        if (.not. (det3(fm) > 0.0_dp)) then
+          call fail(1, 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' &
+                    // itoa(ip) // ')')
           return
         end if
-        if (local) then
-          ! back to global components: stress, strain and the tangent (column by column of unit global strains)
-          call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
-          call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, stress, 1.0_dp)
-          call voigt_to_tensor(stran(1:ntens), ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, stran, 2.0_dp)
-          call voigt_to_tensor(dstran(1:ntens), ntens, eps, 0.5_dp)
-          call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, dstran, 2.0_dp)
-          do icol = 1, ntens
-            s_unit = 0.0_dp
-            s_unit(icol) = 1.0_dp
-            call voigt_to_tensor(s_unit(1:ntens), ntens, eps, 0.5_dp)
-            call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, s_unit, 2.0_dp)
-            s_unit(1:ntens) = matmul(ddsdde(1:ntens, 1:ntens), s_unit(1:ntens))
-            call voigt_to_tensor(s_unit(1:ntens), ntens, sig, 1.0_dp)
-            call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, s_unit, 1.0_dp)
-            col_g(1:ntens, icol) = s_unit(1:ntens)
+        g = matmul(fb1 - fb0, inv3(fm))
+        ! DROT = (I - W/2)^-1 (I + W/2), W = (G - G^T)/2 (Hughes-Winget), in closed form: with A = W/2 (skew,
+        ! axial vector a), A^3 = -|a|^2 A gives (I - A)^-1 = I + (A + A^2)/(1 + |a|^2),
+        ! so DROT = I + 2 (A + A^2)/(1 + |a|^2)
+        wsk = 0.25_dp * (g - transpose(g))
+        drot = eye + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
+      else
+        ! small strain: grad(du) w.r.t. X, with the mean dilatation of the element for F-bar types (B-bar)
+        g = def_grad(dun, gp%dndx_ref(:, :, ip)) - eye
+        if (axi) g(3, 3) = dot_product(gp%hoop(:, ip), dun(1, 1:nne))   ! hoop strain increment du_r / R
+        if (fbar) then
+          gc = def_grad(dun, gp%dndx_0m) - eye
+          ! axisymmetric: the mean dilatation includes the mean hoop strain (2 pi R weighted)
+          if (axi) gc(3, 3) = dot_product(gp%hoop_0m(1:nne), dun(1, 1:nne))
+          trg = 0.0_dp
+          trc = 0.0_dp
+          do i = 1, nf
+            trg = trg + g(i, i)
+            trc = trc + gc(i, i)
           end do
-          ddsdde(1:ntens, 1:ntens) = col_g(1:ntens, 1:ntens)
+          do i = 1, nf
+            g(i, i) = g(i, i) + (trc - trg) / mf
+          end do
         end if
-        if (mat%kind == SOLID_MAT_ELASTIC .and. nsv > 0) statev_new(1:nsv, ip) = statev_old(1:nsv, ip)
-        if (size(statev_new, 1) > nsv) statev_new(nsv + 1:, ip) = statev_old(nsv + 1:, ip)
-        if (element_is_plane_stress(it) .and. nlgeom) statev_new(nsv + nextra, ip) = lt1(ip)
-        stress_new(:, ip) = stress(1:ntens)
-        stran_new(:, ip) = stran(1:ntens) + dstran(1:ntens)
-        if (present(energy_ip_new)) then
-          energy_ip_new(:, ip) = 0.0_dp
-          energy_ip_new(1:3, ip) = [sse, spd, scd]
-        end if
+        drot = eye
+      end if
+    end subroutine strain_increment
 
-        ! spatial derivatives and volume element
-        dndx = 0.0_dp
-        hc = 0.0_dp
-        if (nlgeom) then
-          finv = inv3(fg1(:, :, ip))
-          dndx(1:nne, 1:ndim) = matmul(gp%dndx_ref(1:nne, 1:ndim, ip), finv(1:ndim, 1:ndim))
-          dv = gp%wdet(ip) * j1 * thk
-          if (axi) hc(1:nne) = gp%hoop(:, ip) / fg1(3, 3, ip)   ! N_a / r, current radius
+    !> The material at point ip: the temperature and the thermal strain, *ELASTIC or the UMAT (in the local axes
+    !> when local: back to global components after it, the tangent column by column), non-finite results stat = 3.
+    subroutine point_material(ip, local, t1, drot_m, fl0, fl1, stress, stran, dstran, ddsdde, sse, spd, scd)
+      integer, intent(in) :: ip                   !< integration point
+      logical, intent(in) :: local                !< local material axes (*ORIENTATION)
+      real(dp), intent(in) :: t1(3, 3)            !< the local axes at t_n+1 (local only)
+      real(dp), intent(in) :: drot_m(3, 3), fl0(3, 3), fl1(3, 3)  !< DROT, DFGRD0, DFGRD1 as the material sees them
+      real(dp), intent(inout) :: stress(6), stran(6), dstran(6)   !< rotated old stress and strain, DSTRAN
+      real(dp), intent(out) :: ddsdde(6, 6)       !< the material's tangent (global components)
+      real(dp), intent(out) :: sse, spd, scd      !< the point's energies
+      real(dp) :: temp_ip, dtemp_ip, dth(6), coords(3), pn, sig(3, 3), eps(3, 3), s_unit(6), col_g(6, 6)
+      integer :: i, k, icol
+      sse = 0.0_dp
+      spd = 0.0_dp
+      scd = 0.0_dp
+      if (present(energy_ip_old)) then
+        sse = energy_ip_old(1, ip)
+        spd = energy_ip_old(2, ip)
+        scd = energy_ip_old(3, ip)
+      end if
+      ! temperature at the point (TEMP, DTEMP of the UMAT); *EXPANSION: mechanical strain increment = total -
+      ! alpha dT on the direct components (Abaqus subtracts the thermal strain before the material is called)
+      temp_ip = 0.0_dp
+      dtemp_ip = 0.0_dp
+      if (present(temp_nodes)) temp_ip = dot_product(gp%nfun(1:nnode, ip), temp_nodes(1:nnode))
+      if (present(dtemp_nodes)) dtemp_ip = dot_product(gp%nfun(1:nnode, ip), dtemp_nodes(1:nnode))
+      if (mat%law%general) then
+        call thermal_strain_increment(mat%law, temp_ip, dtemp_ip, ndi, nshr, dth(1:ntens))
+        dstran(1:ntens) = dstran(1:ntens) - dth(1:ntens)
+      else if (mat%alpha /= 0.0_dp) then
+        dstran(1:ndi) = dstran(1:ndi) - mat%alpha * dtemp_ip
+      end if
+      ddsdde = 0.0_dp
+      pn = SOLID_PNEWDT_LARGE
+      select case (mat%kind)
+      case (SOLID_MAT_ELASTIC)
+        if (mat%law%general) then
+          call elastic_law_update(mat%law, temp_ip, dtemp_ip, ndi, nshr, stress(1:ntens), stran(1:ntens), &
+            dstran(1:ntens), ddsdde(1:ntens, 1:ntens), sse)
         else
-          dndx(1:nne, 1:ndim) = gp%dndx_ref(1:nne, 1:ndim, ip)
-          dv = gp%wdet(ip) * thk
-          if (axi) hc(1:nne) = gp%hoop(:, ip)
+          call elastic_update(mat%e, mat%nu, ndi, nshr, stress(1:ntens), dstran(1:ntens), ddsdde(1:ntens, 1:ntens), &
+            sse)
         end if
-        energy = energy + [sse, spd] * dv
-
-        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
-        ! bc(b, k) = dN_b/dx_k at the centre (mean without NLGEOM) minus at the point: the F-bar (B-bar)
-        ! dilatation operator (0 for the other element types)
-        bc = 0.0_dp
-        if (fbar) bc(1:nne, 1:ndim) = dndx_c(1:nne, 1:ndim) - dndx(1:nne, 1:ndim)
-        ! axisymmetric: the dilatation of a radial nodal motion includes its hoop strain N_b / r
-        if (fbar .and. axi) bc(1:nne, 1) = bc(1:nne, 1) + hcc(1:nne) - hc(1:nne)
-        ! without NLGEOM the virtual strain is the B-bar one too (f = int Bbar^T sigma dV), so that
-        ! K = int Bbar^T C Bbar is symmetric for a symmetric DDSDDE; under NLGEOM f = int B^T sigma dv
-        ! (de Souza Neto et al., 1996)
-        trs = 0.0_dp
-        if (.not. nlgeom) trs = (sig(1, 1) + sig(2, 2) + merge(sig(3, 3), 0.0_dp, nf == 3)) / mf
-        bcr = 0.0_dp
-        if (.not. nlgeom) bcr(1:nne, 1:ndim) = bc(1:nne, 1:ndim)
-        do a = 1, nne
-          do i = 1, ndim
-            r = ndim * (a - 1) + i
-            fe(r) = fe(r) + (dot_product(sig(i, 1:ndim), dndx(a, 1:ndim)) + trs * bcr(a, i)) * dv
-          end do
-          ! axisymmetric: the hoop virtual strain du_r / r
-          if (axi) fe(ndim * (a - 1) + 1) = fe(ndim * (a - 1) + 1) + sig(3, 3) * hc(a) * dv
+      case default
+        sv = 0.0_dp
+        if (nsv > 0) sv(1:nsv) = statev_old(1:nsv, ip)
+        do i = 1, 3
+          ! Abaqus: the current coordinates under NLGEOM, the original ones otherwise
+          coords(i) = dot_product(gp%nfun(1:nnode, ip), xref(i, 1:nnode) + merge(u1(i, 1:nnode), 0.0_dp, nlgeom))
         end do
-
-        if (want) then
-          if (.not. (mat%kind == SOLID_MAT_UMAT .and. mat%unsymm)) then
-            ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
-            ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
-          end if
-          ! (axisymmetric: the full 3x3 spatial tangent, the hoop direction being the third)
-          call spatial_tangent(ddsdde, ntens, sig, merge(3, ndim, axi), nlgeom, a4, q)
-          ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then
-          ! K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t
-          ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
-          ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve 2D; kl is a contiguous local)
-          if (k8) then
-            d8 = dndx(1:8, :)
-            b8 = bc(1:8, :)
-            r8 = bcr(1:8, :) / mf
-            call k_point_c3d8(a4, q, d8, b8, r8, dv, kl8)
-          else
-            do b = 1, nne
-              do k = 1, ndim
-                t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
-                     + a4(:, :, k, 3) * dndx(b, 3)) * dv
-                ! axisymmetric: the column's hoop gradient L_33 = N_b / r for k = 1
-                if (axi .and. k == 1) t = t + a4(:, :, 3, 3) * hc(b) * dv
-                trs = (t(1, 1) + t(2, 2) + t(3, 3)) / mf
-                do i = 1, ndim
-                  kl(1:nne, i, k, b) = kl(1:nne, i, k, b) + t(i, 1) * dndx(1:nne, 1) &
-                    + t(i, 2) * dndx(1:nne, 2) + t(i, 3) * dndx(1:nne, 3) + trs * bcr(1:nne, i)
-                end do
-                ! and the row's hoop virtual strain for i = 1
-                if (axi) kl(1:nne, 1, k, b) = kl(1:nne, 1, k, b) + t(3, 3) * hc(1:nne)
-              end do
-            end do
-          end if
+        ! PREDEF, DPRED: the field variables interpolated to the point (start of the increment) and their increments
+        if (present(field_nodes) .and. present(dfield_nodes)) then
+          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+            nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
+            dtemp_ip, matmul(field_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)), &
+            matmul(dfield_nodes(:, 1:nnode), gp%nfun(1:nnode, ip)))
+        else
+          call call_umat(mat%umat, stress, sv, ddsdde, sse, spd, scd, stran, dstran, time, dtime, cmname, ndi, &
+            nshr, ntens, nsv, pr, np, coords, drot_m, pn, celent, fl0, fl1, noel, ip, jstep, kinc, temp_ip, &
+            dtemp_ip, no_field, no_field)
         end if
-      end do
-      if (want) then
-        if (k8) kl(1:8, :, :, 1:8) = kl8
+        statev_new(1:nsv, ip) = sv(1:nsv)
+      end select
+      pnewdt = min(pnewdt, pn)
+      if (ip == 1) g_shear = sum([(ddsdde(k, k), k = ndi + 1, ntens)]) / nshr
+      if (.not. (all(ieee_is_finite(stress(1:ntens))) .and. all(ieee_is_finite(ddsdde(1:ntens, 1:ntens))))) then
+        call fail(3, 'element ' // itoa(noel) // ': material returned a non-finite stress or DDSDDE at point ' &
+                  // itoa(ip))
+        return
+      end if
+      if (local) then
+        ! back to global components: stress, strain and the tangent (column by column of unit global strains)
+        call voigt_to_tensor(stress(1:ntens), ntens, sig, 1.0_dp)
+        call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, stress, 1.0_dp)
+        call voigt_to_tensor(stran(1:ntens), ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, stran, 2.0_dp)
+        call voigt_to_tensor(dstran(1:ntens), ntens, eps, 0.5_dp)
+        call tensor_to_voigt(matmul(matmul(t1, eps), transpose(t1)), ntens, dstran, 2.0_dp)
+        do icol = 1, ntens
+          s_unit = 0.0_dp
+          s_unit(icol) = 1.0_dp
+          call voigt_to_tensor(s_unit(1:ntens), ntens, eps, 0.5_dp)
+          call tensor_to_voigt(matmul(matmul(transpose(t1), eps), t1), ntens, s_unit, 2.0_dp)
+          s_unit(1:ntens) = matmul(ddsdde(1:ntens, 1:ntens), s_unit(1:ntens))
+          call voigt_to_tensor(s_unit(1:ntens), ntens, sig, 1.0_dp)
+          call tensor_to_voigt(matmul(matmul(t1, sig), transpose(t1)), ntens, s_unit, 1.0_dp)
+          col_g(1:ntens, icol) = s_unit(1:ntens)
+        end do
+        ddsdde(1:ntens, 1:ntens) = col_g(1:ntens, 1:ntens)
+      end if
+    end subroutine point_material
+
+    !> The point's contribution to the element tangent: column (b k) t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv,
+    !> then K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t, into kl (kl8 for a C3D8).
+    subroutine point_tangent(ddsdde, sig, dndx, bc, bcr, hc, dv, k8, axi, kl8)
+      real(dp), intent(inout) :: ddsdde(6, 6)     !< the material's tangent (symmetrised here unless UNSYMM)
+      real(dp), intent(in) :: sig(3, 3)           !< Cauchy stress
+      real(dp), intent(in) :: dndx(maxnode, 3), bc(maxnode, 3), bcr(maxnode, 3), hc(maxnode)  !< operators
+      real(dp), intent(in) :: dv                  !< volume element
+      logical, intent(in) :: k8, axi              !< the C3D8 accumulator; axisymmetric type
+      real(dp), intent(inout) :: kl8(8, 3, 3, 8)  !< the C3D8 accumulator
+      real(dp) :: a4(3, 3, 3, 3), q(3, 3), t(3, 3), trs, d8(8, 3), b8(8, 3), r8(8, 3)
+      integer :: b, k, i
+      if (.not. (mat%kind == SOLID_MAT_UMAT .and. mat%unsymm)) then
+        ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM
+        ddsdde(1:ntens, 1:ntens) = 0.5_dp * (ddsdde(1:ntens, 1:ntens) + transpose(ddsdde(1:ntens, 1:ntens)))
+      end if
+      ! (axisymmetric: the full 3x3 spatial tangent, the hoop direction being the third)
+      call spatial_tangent(ddsdde, ntens, sig, merge(3, ndim, axi), nlgeom, a4, q)
+      ! column (b k): t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv, then
+      ! K_(a i)(b k) += sum_j dN_a/dx_j t_ij + (1/m) bcr_ai tr t
+      ! (factorised: ~4 ndim^3 nnode^2 multiplications fewer than the direct quadruple sum)
+      ! (dndx, q, a4 and t are zero beyond ndim, so fixed 3-term sums also serve 2D; kl is a contiguous local)
+      if (k8) then
+        d8 = dndx(1:8, :)
+        b8 = bc(1:8, :)
+        r8 = bcr(1:8, :) / mf
+        call k_point_c3d8(tangent_kernel_level(), a4, q, d8, b8, r8, dv, kl8)
+      else
         do b = 1, nne
           do k = 1, ndim
-            c = ndim * (b - 1) + k
-            do a = 1, nne
-              r = ndim * (a - 1)
-              ke(r + 1:r + ndim, c) = kl(a, 1:ndim, k, b)
+            t = (q * bc(b, k) + a4(:, :, k, 1) * dndx(b, 1) + a4(:, :, k, 2) * dndx(b, 2) &
+                 + a4(:, :, k, 3) * dndx(b, 3)) * dv
+            ! axisymmetric: the column's hoop gradient L_33 = N_b / r for k = 1
+            if (axi .and. k == 1) t = t + a4(:, :, 3, 3) * hc(b) * dv
+            trs = (t(1, 1) + t(2, 2) + t(3, 3)) / mf
+            do i = 1, ndim
+              kl(1:nne, i, k, b) = kl(1:nne, i, k, b) + t(i, 1) * dndx(1:nne, 1) &
+                + t(i, 2) * dndx(1:nne, 2) + t(i, 3) * dndx(1:nne, 3) + trs * bcr(1:nne, i)
             end do
+            ! and the row's hoop virtual strain for i = 1
+            if (axi) kl(1:nne, 1, k, b) = kl(1:nne, 1, k, b) + t(3, 3) * hc(1:nne)
           end do
         end do
       end if
-    end subroutine element_pass
+    end subroutine point_tangent
 
     !> Record a failure: zero force and tangent, old state kept, cutback requested for an inverted element.
     subroutine fail(code, msg)
@@ -1019,6 +1141,13 @@ contains
     end function def_grad
 
   end subroutine solid_element_compute
+
+  !> An optional flag's value (.false. when absent).
+  pure logical function flag(f)
+    logical, intent(in), optional :: f
+    flag = .false.
+    if (present(f)) flag = f
+  end function flag
 
   !> Solve a x = b in place (b holds x on return) by Gaussian elimination with partial pivoting; stat 1 when a is
   !> singular (zero pivot).
@@ -1132,13 +1261,6 @@ contains
     if (nlgeom) q(1:ndim, 1:ndim) = q(1:ndim, 1:ndim) - (1.0_dp - 1.0_dp / m) * sig(1:ndim, 1:ndim)
   end subroutine spatial_tangent
 
-  !> Number of PROPS of a material (0 when none were given).
-  pure integer function nprops_of(mat)
-    type(solid_material_t), intent(in) :: mat
-    nprops_of = 0
-    if (allocated(mat%props)) nprops_of = size(mat%props)
-  end function nprops_of
-
   !> Symmetric tensor from Voigt components; shear_factor 1 for stress, 1/2 for engineering strain. Layout by
   !> ntens: 6 (11,22,33,12,13,23), 4 (11,22,33,12: plane strain), 3 (11,22,12: plane stress).
   pure subroutine voigt_to_tensor(v, ntens, t, shear_factor)
@@ -1198,40 +1320,6 @@ contains
     end do
   end function polar_rotation
 
-  pure function identity() result(e)
-    real(dp) :: e(3, 3)
-    e = 0.0_dp
-    e(1, 1) = 1.0_dp; e(2, 2) = 1.0_dp; e(3, 3) = 1.0_dp
-  end function identity
-
-  pure real(dp) function det3(a)
-    real(dp), intent(in) :: a(3, 3)
-    det3 = a(1, 1) * (a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)) - a(1, 2) * (a(2, 1) * a(3, 3) - a(2, 3) * a(3, 1)) &
-         + a(1, 3) * (a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1))
-  end function det3
-
-  !> Inverse of a 3x3 matrix by its adjugate (callers ensure det > 0).
-  pure function inv3(a) result(b)
-    real(dp), intent(in) :: a(3, 3)
-    real(dp) :: b(3, 3)
-    b(1, 1) = a(2, 2) * a(3, 3) - a(2, 3) * a(3, 2)
-    b(1, 2) = a(1, 3) * a(3, 2) - a(1, 2) * a(3, 3)
-    b(1, 3) = a(1, 2) * a(2, 3) - a(1, 3) * a(2, 2)
-    b(2, 1) = a(2, 3) * a(3, 1) - a(2, 1) * a(3, 3)
-    b(2, 2) = a(1, 1) * a(3, 3) - a(1, 3) * a(3, 1)
-    b(2, 3) = a(1, 3) * a(2, 1) - a(1, 1) * a(2, 3)
-    b(3, 1) = a(2, 1) * a(3, 2) - a(2, 2) * a(3, 1)
-    b(3, 2) = a(1, 2) * a(3, 1) - a(1, 1) * a(3, 2)
-    b(3, 3) = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)
-    b = b / det3(a)
-  end function inv3
-
-  pure function itoa(n) result(s)
-    integer, intent(in) :: n
-    character(len=:), allocatable :: s
-    character(len=16) :: buf
-    write (buf, '(i0)') n
-    s = trim(buf)
-  end function itoa
+  include 'solid_tensor3.inc'
 
 end module solid_element

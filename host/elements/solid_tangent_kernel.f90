@@ -1,42 +1,71 @@
-!> Tangent kernel of the C3D8 element (solid_element.f90): the contribution of one integration point to the
-!> element matrix, K_(a i)(b k) += int [dN_a/dx_j A_ijkl dN_b/dx_l + dN_a/dx_j q_ij (dN_b/dx_k|centre - dN_b/dx_k)] dv.
-!> In a file of its own so that it is compiled with -O3 (host/elements/CMakeLists.txt) and not inlined into the
-!> large element routine, where gfortran 12 does not vectorise it: the node loop then runs on packed doubles
-!> (no reassociation: -O3 does not imply -ffast-math).
+!> Tangent kernels of the C3D8 element (solid_element.f90, solid_c3d8.f90): the contribution of one integration
+!> point to the element matrix, K_(a i)(b k) += int [dN_a/dx_j A_ijkl dN_b/dx_l + dN_a/dx_j q_ij (dN_b/dx_k|centre
+!> - dN_b/dx_k)] dv (solid_tangent_kernel.inc). One source built three times (host/elements/CMakeLists.txt): for
+!> the build's baseline instruction set, for AVX2 and for AVX-512 (gfortran on x86-64; elsewhere the three are the
+!> same code), each at -O3 without fused multiply-add; tangent_kernel_level says which one this CPU runs, and the
+!> callers pass it. The three give the same bits (no operation differs, only the vector width), so a run gives the
+!> same results on every CPU that runs the same build; AVX-512 computes a C3D8 tangent about 4x faster than the
+!> baseline SSE2 (reports/bench/kernel/README.md).
 module solid_tangent_kernel
+  use, intrinsic :: iso_c_binding, only: c_int
   use ldfcz_kinds, only: dp
+  use solid_tangent_kernel_base, only: k_base => k_point_c3d8, ks_base => k_point_c3d8_spatial
+  use solid_tangent_kernel_avx2, only: k_avx2 => k_point_c3d8, ks_avx2 => k_point_c3d8_spatial
+  use solid_tangent_kernel_avx512, only: k_avx512 => k_point_c3d8, ks_avx512 => k_point_c3d8_spatial
   implicit none
   private
-  public :: k_point_c3d8
+  public :: tangent_kernel_level, k_point_c3d8, k_point_c3d8_spatial
+  public :: KERNEL_LEVEL_BASE, KERNEL_LEVEL_AVX2, KERNEL_LEVEL_AVX512
+
+  !> the kernels' builds: baseline, AVX2, AVX-512
+  integer, parameter :: KERNEL_LEVEL_BASE = 0, KERNEL_LEVEL_AVX2 = 1, KERNEL_LEVEL_AVX512 = 2
+
+  interface
+    !> host/elements/cpu_vector_level.c: the widest kernel build this CPU runs (a KERNEL_LEVEL_*)
+    pure function cpu_vector_level() bind(c, name='ldfcz_cpu_vector_level') result(level)
+      import :: c_int
+      integer(c_int) :: level
+    end function cpu_vector_level
+  end interface
 
 contains
 
-  !> Tangent contribution of one C3D8 integration point: kl(i, a, k, b) += sum_j dN_a/dx_j t_ij with
-  !> t_ij = [sum_l A_ijkl dN_b/dx_l + q_ij bc_bk] dv (fixed sizes, so the compiler unrolls and vectorises it).
-  pure subroutine k_point_c3d8(a4, q, dndx, bc, bcr, dv, kl)
-    real(dp), intent(in) :: a4(3, 3, 3, 3), q(3, 3), dndx(8, 3), bc(8, 3), dv
-    !> row-side dilatation operator / m: K_(a i)(b k) += bcr_ai tr(t) (small-strain B-bar virtual strain; 0 under NLGEOM)
-    real(dp), intent(in) :: bcr(8, 3)
-    real(dp), intent(inout) :: kl(8, 3, 3, 8)    !< kl(a, i, k, b): node a fastest (contiguous 8-vectors)
-    real(dp) :: t(3, 3), d1(8), d2(8), d3(8), t1, t2, t3, tr
-    integer :: a, b, k, i
-    d1 = dndx(1:8, 1)
-    d2 = dndx(1:8, 2)
-    d3 = dndx(1:8, 3)
-    do b = 1, 8
-      do k = 1, 3
-        t = (q * bc(b, k) + a4(:, :, k, 1) * d1(b) + a4(:, :, k, 2) * d2(b) + a4(:, :, k, 3) * d3(b)) * dv
-        tr = t(1, 1) + t(2, 2) + t(3, 3)
-        do i = 1, 3
-          t1 = t(i, 1)
-          t2 = t(i, 2)
-          t3 = t(i, 3)
-          do a = 1, 8
-            kl(a, i, k, b) = kl(a, i, k, b) + t1 * d1(a) + t2 * d2(a) + t3 * d3(a) + tr * bcr(a, i)
-          end do
-        end do
-      end do
-    end do
+  !> The kernel build for this CPU (KERNEL_LEVEL_*): AVX-512 or AVX2 where the CPU and the operating system support
+  !> them and the build has them, the baseline otherwise.
+  pure integer function tangent_kernel_level()
+    tangent_kernel_level = int(cpu_vector_level())
+  end function tangent_kernel_level
+
+  !> One point's tangent contribution with the small-strain row term (solid_tangent_kernel.inc), by the build of
+  !> the given level (KERNEL_LEVEL_*; from tangent_kernel_level, or lower).
+  pure subroutine k_point_c3d8(level, a4, q, dndx, bc, bcr, dv, kl)
+    integer, intent(in) :: level                 !< KERNEL_LEVEL_*
+    real(dp), intent(in) :: a4(3, 3, 3, 3), q(3, 3), dndx(8, 3), bc(8, 3), bcr(8, 3), dv
+    real(dp), intent(inout) :: kl(8, 3, 3, 8)    !< kl(a, i, k, b)
+    select case (level)
+    case (KERNEL_LEVEL_AVX512)
+      call k_avx512(a4, q, dndx, bc, bcr, dv, kl)
+    case (KERNEL_LEVEL_AVX2)
+      call k_avx2(a4, q, dndx, bc, bcr, dv, kl)
+    case default
+      call k_base(a4, q, dndx, bc, bcr, dv, kl)
+    end select
   end subroutine k_point_c3d8
+
+  !> One point's tangent contribution under NLGEOM (no row term; solid_tangent_kernel.inc), by the build of the given
+  !> level.
+  pure subroutine k_point_c3d8_spatial(level, a4, q, dndx, bc, dv, kl)
+    integer, intent(in) :: level                 !< KERNEL_LEVEL_*
+    real(dp), intent(in) :: a4(3, 3, 3, 3), q(3, 3), dndx(8, 3), bc(8, 3), dv
+    real(dp), intent(inout) :: kl(8, 3, 3, 8)    !< kl(a, i, k, b)
+    select case (level)
+    case (KERNEL_LEVEL_AVX512)
+      call ks_avx512(a4, q, dndx, bc, dv, kl)
+    case (KERNEL_LEVEL_AVX2)
+      call ks_avx2(a4, q, dndx, bc, dv, kl)
+    case default
+      call ks_base(a4, q, dndx, bc, dv, kl)
+    end select
+  end subroutine k_point_c3d8_spatial
 
 end module solid_tangent_kernel

@@ -38,6 +38,7 @@ module mumps_solver
   implicit none
   private
   public :: mumps_solver_t, mumps_analyse, mumps_factorize, mumps_solve, mumps_destroy
+  public :: mumps_set_values, mumps_factorize_values, mumps_forget_factors, mumps_factor_flops_estimate
   public :: mumps_factor_entries, mumps_pivot_order, mumps_is_analysed, mumps_is_factored
   public :: mumps_solution_rows, mumps_solution_distributed, mumps_factor_flops
 
@@ -161,15 +162,28 @@ contains
     ms%factored = .false.
   end subroutine mumps_analyse
 
-  !> Numeric factorization of the given values (same order as irn/jcn at the analysis). Workspace shortage
-  !> (INFO(1) = -8, -9, -14, -15, -17, -20: "increase ICNTL(14)") is retried with a doubled ICNTL(14).
+  !> Numeric factorization of the given values (same order as irn/jcn at the analysis): mumps_set_values, then
+  !> mumps_factorize_values.
   subroutine mumps_factorize(ms, values, stat, errmsg)
     type(mumps_solver_t), intent(inout) :: ms        !< analysed instance
     real(dp), intent(in) :: values(:)                !< matrix entries
     integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1) (-10: singular)
     character(len=*), intent(out) :: errmsg          !< reason on failure
+    call mumps_set_values(ms, values, stat, errmsg)
+    if (stat == 0) call mumps_factorize_values(ms, stat, errmsg)
+  end subroutine mumps_factorize
+
+  !> The values of the next factorization, copied into the instance (rounded to real32 when single): after this
+  !> call the caller's array may change while mumps_factorize_values runs (on another thread: sparse_system).
+  !> The instance's factors are no longer valid.
+  subroutine mumps_set_values(ms, values, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< analysed instance
+    real(dp), intent(in) :: values(:)                !< matrix entries
+    integer, intent(out) :: stat                     !< 0 on success; -1000 not analysed, -1001 wrong size,
+                                                     !< -1004 an entry beyond the single-precision range
+    character(len=*), intent(out) :: errmsg          !< reason on failure
     character(len=*), parameter :: here = 'mumps_factorize'
-    integer :: attempt
+    integer :: n_given
 
     stat = 0
     errmsg = ''
@@ -179,24 +193,54 @@ contains
       errmsg = here//': called before a successful analysis'
       return
     end if
-    if (ms%single) then
-      call factorize_single(ms, values, stat, errmsg)
+    if (ms%single .and. ms%distributed) then
+      n_given = size(ms%sid%A_loc)
+    else if (ms%single) then
+      n_given = size(ms%sid%A)
+    else if (ms%distributed) then
+      n_given = size(ms%id%A_loc)
+    else
+      n_given = size(ms%id%A)
+    end if
+    if (size(values) /= n_given) then
+      stat = -1001
+      errmsg = here//': value array size differs from the analysed pattern'
       return
     end if
-    if (ms%distributed) then
-      if (size(values) /= size(ms%id%A_loc)) then
-        stat = -1001
-        errmsg = here//': value array size differs from the analysed pattern'
+    if (ms%single) then
+      if (any(abs(values) > real(huge(1.0_sp), dp))) then
+        stat = -1004
+        errmsg = here//' (single precision): a matrix entry exceeds the single-precision range'
         return
       end if
+      if (ms%distributed) then
+        ms%sid%A_loc = real(values, sp)
+      else
+        ms%sid%A = real(values, sp)
+      end if
+    else if (ms%distributed) then
       ms%id%A_loc = values
     else
-      if (size(values) /= size(ms%id%A)) then
-        stat = -1001
-        errmsg = here//': value array size differs from the analysed pattern'
-        return
-      end if
       ms%id%A = values
+    end if
+  end subroutine mumps_set_values
+
+  !> Numeric factorization (JOB = 2) of the values given by mumps_set_values. Workspace shortage (INFO(1) = -8,
+  !> -9, -14, -15, -17, -20: "increase ICNTL(14)") is retried with a doubled ICNTL(14). Touches this instance
+  !> only: another instance may solve meanwhile on another thread (sequential MUMPS; sparse_system).
+  subroutine mumps_factorize_values(ms, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< instance with its values set
+    integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1) (-10: singular)
+    character(len=*), intent(out) :: errmsg          !< reason on failure
+    character(len=*), parameter :: here = 'mumps_factorize'
+    integer :: attempt
+
+    stat = 0
+    errmsg = ''
+    ms%factored = .false.
+    if (ms%single) then
+      call factorize_single(ms, stat, errmsg)
+      return
     end if
     do attempt = 0, max_workspace_retries
       ms%id%JOB = job_factorize
@@ -222,7 +266,7 @@ contains
       call size_solution_rows(ms%id%INFO(23), ms%id%ISOL_loc, ms%id%LSOL_loc)
     end if
     ms%factored = .true.
-  end subroutine mumps_factorize
+  end subroutine mumps_factorize_values
 
   !> Solve with the last factors: rhs in, solution out. Distributed (mumps_solution_distributed): every process
   !> gives the same rhs; out, its rhs holds its own solution entries (mumps_solution_rows), zero elsewhere.
@@ -272,6 +316,13 @@ contains
       rhs = ms%id%RHS
     end if
   end subroutine mumps_solve
+
+  !> The factors are no longer to be used (a failed refactorization of the matrix they precondition): solves
+  !> refuse until the next factorization.
+  pure subroutine mumps_forget_factors(ms)
+    type(mumps_solver_t), intent(inout) :: ms        !< instance
+    ms%factored = .false.
+  end subroutine mumps_forget_factors
 
   !> Terminate the instance (JOB = -2) and free the arrays given to it.
   subroutine mumps_destroy(ms)
@@ -348,6 +399,19 @@ contains
       flops = merge(ms%id%RINFOG(3), ms%id%RINFOG(1), ms%factored)
     end if
   end function mumps_factor_flops
+
+  !> The analysis' estimate of a factorization's operations (RINFOG(1)), the same for every instance analysed
+  !> alike; 0 before the analysis.
+  real(dp) function mumps_factor_flops_estimate(ms) result(flops)
+    type(mumps_solver_t), intent(in) :: ms           !< instance
+    flops = 0.0_dp
+    if (.not. ms%analysed) return
+    if (ms%single) then
+      flops = real(ms%sid%RINFOG(1), dp)
+    else
+      flops = ms%id%RINFOG(1)
+    end if
+  end function mumps_factor_flops_estimate
 
   !> The pivot order MUMPS used (SYM_PERM after the analysis: position of each variable), for checks.
   subroutine mumps_pivot_order(ms, position)
@@ -517,36 +581,16 @@ contains
     ms%factored = .false.
   end subroutine analyse_single
 
-  !> mumps_factorize for single-precision factors: the values rounded to real32 (those beyond its range make
-  !> the factorization fail, reported as a MUMPS error).
-  subroutine factorize_single(ms, values, stat, errmsg)
-    type(mumps_solver_t), intent(inout) :: ms        !< analysed instance
-    real(dp), intent(in) :: values(:)                !< matrix entries
+  !> mumps_factorize_values for single-precision factors (the values rounded to real32 by mumps_set_values).
+  subroutine factorize_single(ms, stat, errmsg)
+    type(mumps_solver_t), intent(inout) :: ms        !< instance with its values set
     integer, intent(out) :: stat                     !< 0 on success, else MUMPS INFOG(1)
     character(len=*), intent(out) :: errmsg          !< reason on failure
     character(len=*), parameter :: here = 'mumps_factorize (single precision)'
-    integer :: attempt, n_given
+    integer :: attempt
 
-    if (ms%distributed) then
-      n_given = size(ms%sid%A_loc)
-    else
-      n_given = size(ms%sid%A)
-    end if
-    if (size(values) /= n_given) then
-      stat = -1001
-      errmsg = here//': value array size differs from the analysed pattern'
-      return
-    end if
-    if (any(abs(values) > real(huge(1.0_sp), dp))) then
-      stat = -1004
-      errmsg = here//': a matrix entry exceeds the single-precision range'
-      return
-    end if
-    if (ms%distributed) then
-      ms%sid%A_loc = real(values, sp)
-    else
-      ms%sid%A = real(values, sp)
-    end if
+    stat = 0
+    errmsg = ''
     do attempt = 0, max_workspace_retries
       ms%sid%JOB = job_factorize
       call smumps(ms%sid)

@@ -302,7 +302,8 @@ module model_types
     real(dp) :: dt_min = 1.0e-5_dp
     real(dp) :: dt_max = 1.0_dp
     logical :: direct = .false.            !< *STATIC, DIRECT: fixed increments
-    logical :: extrapolate = .true.        !< *STEP, EXTRAPOLATION=LINEAR (Abaqus' default) or NO
+    logical :: extrapolate = .true.        !< *STEP, EXTRAPOLATION=LINEAR (Abaqus' default) or PARABOLIC; NO: false
+    logical :: parabolic = .false.         !< *STEP, EXTRAPOLATION=PARABOLIC: quadratic through the last two increments
     logical :: unsymm = .false.            !< *STEP, UNSYMM=YES: unsymmetric solver
     logical :: op_new = .false.            !< a *BOUNDARY, OP=NEW in this step removes inherited boundaries
     logical :: amp_step = .false.          !< *STEP, AMPLITUDE=STEP (default RAMP: loads vary linearly over the step)

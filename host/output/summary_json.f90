@@ -178,6 +178,8 @@ contains
     call json_put_real_or_null(w, 'element_loop_s', summary%t_assembly, known)
     call json_put_real_or_null(w, 'factorization_s', summary%t_factor, known)
     call json_put_real_or_null(w, 'solve_s', summary%t_solve, known)
+    call json_put_real_or_null(w, 'factorization_beside_s', summary%t_factor_beside, known)
+    call json_put_real_or_null(w, 'factorization_wait_s', summary%t_factor_wait, known)
     call json_put_real_or_null(w, 'output_s', summary%t_output, known)
     call json_put_real_or_null(w, 'solver_setup_s', summary%t_analysis, known)
     call json_put_real_or_null(w, 'communication_s', summary%t_comm, known)

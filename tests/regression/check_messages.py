@@ -148,15 +148,23 @@ def case_notes(a):
     notes = [x for x in log.splitlines() if x.startswith("ldfcz: note: ")]
     if "warning" in p.stderr or len(notes) != 3:
         fail("CAE deck: console %r, notes %s" % (p.stderr, notes))
-    # a warning that may change a result: on the console and in JOB.log
+    # a warning that may change a result: on the console and in JOB.log (a *BOUNDARY range reaching the
+    # rotations 4..6 of nodes that have none: it constrains nothing there)
     src = open(os.path.join(a.decks, "single", "c3d8_uniaxial.inp")).read()
+    with open(os.path.join(out, "rotations.inp"), "w") as f:
+        f.write(src.replace("TOP, 3, 3, 0.2", "TOP, 3, 3, 0.2\nBOTTOM, 4, 6", 1))
+    p = run(a.exe, ["-q", "-o", out, os.path.join(out, "rotations.inp")], out, 0)
+    log = open(os.path.join(out, "rotations.log")).read()
+    if "warning" not in p.stderr or "ldfcz: warning: " not in log:
+        fail("*BOUNDARY on dofs 4..6 without rotations: console %r; log without the warning" % p.stderr)
+    # EXTRAPOLATION=PARABOLIC is carried out (the quadratic in time): no warning
     with open(os.path.join(out, "parabolic.inp"), "w") as f:
         f.write(src.replace("*STEP, NLGEOM=YES", "*STEP, NLGEOM=YES, EXTRAPOLATION=PARABOLIC", 1))
     p = run(a.exe, ["-q", "-o", out, os.path.join(out, "parabolic.inp")], out, 0)
-    log = open(os.path.join(out, "parabolic.log")).read()
-    if "warning" not in p.stderr or "ldfcz: warning: " not in log or "PARABOLIC" not in log:
-        fail("EXTRAPOLATION=PARABOLIC: console %r; log without the warning" % p.stderr)
-    print("notes: 3 CAE boilerplate notes in JOB.log only; EXTRAPOLATION=PARABOLIC warned on the console and logged")
+    if "warning" in p.stderr or "ldfcz: warning: " in open(os.path.join(out, "parabolic.log")).read():
+        fail("EXTRAPOLATION=PARABOLIC: warned %r" % p.stderr)
+    print("notes: 3 CAE boilerplate notes in JOB.log only; a boundary on missing rotations warned on the console "
+          "and logged; EXTRAPOLATION=PARABOLIC without a warning")
 
 
 def case_cutbacks(a):

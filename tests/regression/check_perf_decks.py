@@ -199,6 +199,39 @@ def case_extrapolation_linear(a):
               '%.3e' % (dev / scale))
 
 
+def case_extrapolation_parabolic(a):
+    """*STEP, EXTRAPOLATION=PARABOLIC (Abaqus: quadratic extrapolation in time of the previous two incremental
+    solutions) starts each increment from the quadratic through the last three converged states. On a linear
+    problem (NLGEOM=NO, elastic) whose prescribed displacement grows as t^2 (a tabular amplitude sampled at the
+    fixed increments' ends) the solution is quadratic in time, so from the third increment on that start is the
+    solution itself and converges at its first residual check, where LINEAR needs a Newton correction; the
+    results are the same (the linear solution, to round-off: rtol 1e-9). The first increment starts from the
+    converged state and the second extrapolates linearly (one increment behind it) in both."""
+    def quadratic(text, how):
+        text = re.sub(r'(?im)^\*STEP, NLGEOM=YES', '*STEP, NLGEOM=NO, EXTRAPOLATION=' + how, text)
+        text = re.sub(r'(?im)^\*STATIC\s*\n[^\n]*', '*STATIC, DIRECT\n0.1, 1.0', text)
+        text = re.sub(r'(?im)^\*BOUNDARY\s*\nTOP, 3, 3', '*BOUNDARY, AMPLITUDE=QUAD\nTOP, 3, 3', text)
+        pairs = ['%g, %g' % (0.1 * k, (0.1 * k) ** 2) for k in range(11)]
+        table = '\n'.join(', '.join(pairs[i:i + 4]) for i in range(0, len(pairs), 4))   # 4 pairs a line
+        return re.sub(r'(?im)^\*STEP', '*AMPLITUDE, NAME=QUAD\n' + table + '\n*STEP', text, count=1)
+    d_par = variant(a, 'quadratic_parabolic', lambda t: quadratic(t, 'PARABOLIC'))
+    d_lin = variant(a, 'quadratic_linear', lambda t: quadratic(t, 'LINEAR'))
+    out2, out1 = os.path.join(a.out, 'parabolic'), os.path.join(a.out, 'linear')
+    rows2, _ = run_deck(a, d_par, out2)
+    rows1, _ = run_deck(a, d_lin, out1)
+    its2, its1 = sta_iterations(out2, d_par), sta_iterations(out1, d_lin)
+    print('iterations, parabolic:', its2, ' linear:', its1)
+    check('10 fixed increments each', len(its2) == 10 and len(its1) == 10, '%d, %d' % (len(its2), len(its1)))
+    check('parabolic increments 3-10 converge at the first check', all(x == 0 for x in its2[2:]), str(its2[2:]))
+    check('linear increments 3-10 need a correction', all(x >= 1 for x in its1[2:]), str(its1[2:]))
+    check('increments 1-2 the same', its2[:2] == its1[:2], '%s vs %s' % (its2[:2], its1[:2]))
+    for key in ('TOP.U3', 'TOP.RF3', 'TOP.U1'):
+        dev = max(abs(float(r2[key]) - float(r1[key])) for r2, r1 in zip(rows2, rows1))
+        scale = max(abs(float(r1[key])) for r1 in rows1) or 1.0
+        check('%s equal with parabolic and linear extrapolation (rtol 1e-9)' % key, dev <= 1e-9 * scale,
+              '%.3e' % (dev / scale))
+
+
 def case_extrapolation(a):
     """On a nonlinear deck with automatic increments (cohesive softening under a C3D8 block) the extrapolated and
     the non-extrapolated runs solve the same equations: the final reaction agrees within the Newton tolerance
