@@ -139,62 +139,7 @@ contains
     if (ctx%stat /= 0) return
     ir = ctx%ir
     istep = ctx%istep
-    ! FIXED (history data, Keywords Reference *BOUNDARY): the dofs held at their values at the start of the step;
-    ! not with TYPE or USER (as documented) nor AMPLITUDE (nothing to scale); a magnitude on its lines is refused
-    fixed = deck_has_param(ctx%params, 'FIXED')
-    if (fixed) then
-      if (.not. ctx%in_step) then
-        call ctx_fail(ctx, ir, 'FIXED only inside a step (history data)')
-        return
-      end if
-      if (deck_has_param(ctx%params, 'TYPE') .or. deck_has_param(ctx%params, 'USER') .or. &
-          deck_has_param(ctx%params, 'AMPLITUDE')) then
-        call ctx_fail(ctx, ir, 'FIXED cannot be combined with TYPE, USER or AMPLITUDE')
-        return
-      end if
-    end if
-    ! USER: the magnitudes come from the user subroutine DISP (history data only)
-    user = deck_has_param(ctx%params, 'USER')
-    if (user .and. .not. ctx%in_step) then
-      call ctx_fail(ctx, ir, 'USER only inside a step (history data)')
-      return
-    end if
-    ! TYPE=DISPLACEMENT (the default) or VELOCITY (in a step: the increment of the dof is v dt, v applied as a STEP
-    ! unless an amplitude is given, as Abaqus/Standard does in a static step)
-    v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
-    if (len(v) > 0 .and. v /= 'DISPLACEMENT' .and. v /= 'VELOCITY') then
-      call ctx_fail(ctx, ir, 'TYPE='//v//' is not supported (DISPLACEMENT, VELOCITY)')
-      return
-    end if
-    velocity = v == 'VELOCITY'
-    if (velocity .and. .not. ctx%in_step) then
-      call ctx_fail(ctx, ir, 'TYPE=VELOCITY only inside a step (history data)')
-      return
-    end if
-    v = deck_normalize(deck_param_value(ctx%params, 'OP'))
-    if (len(v) > 0 .and. v /= 'MOD' .and. v /= 'NEW') then
-      call ctx_fail(ctx, ir, 'OP must be MOD or NEW')
-      return
-    end if
-    if (v == 'NEW') then
-      if (.not. ctx%in_step) then
-        call ctx_fail(ctx, ir, 'OP=NEW only inside a step')
-        return
-      end if
-      ctx%model%steps(istep)%op_new = .true.
-    end if
-    iamp = 0
-    if (deck_has_param(ctx%params, 'AMPLITUDE')) then
-      if (.not. ctx%in_step) then
-        call ctx_fail(ctx, ir, 'AMPLITUDE= only inside a step')
-        return
-      end if
-      iamp = model_find_amplitude(ctx%model, deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE')))
-      if (iamp == 0) then
-        call ctx_fail(ctx, ir, 'undefined amplitude '//deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE')))
-        return
-      end if
-    end if
+    if (.not. parameters_ok()) return
     do i = ir + 1, ctx%ir_next - 1
       call ctx_split(ctx, i, f, n)
       bc = empty_bc
@@ -249,40 +194,111 @@ contains
           return
         end select
       else
-        if (.not. ctx_get_int(ctx, i, f(2), bc%first_dof)) return
-        bc%last_dof = bc%first_dof
-        if (n >= 3) then
-          if (len_trim(f(3)) > 0) then
-            if (.not. ctx_get_int(ctx, i, f(3), bc%last_dof)) return
-          end if
-        end if
-        if (n >= 4) then
-          if (len_trim(f(4)) > 0) then
-            if (.not. ctx_get_real(ctx, i, f(4), bc%value)) return
-          end if
-        end if
-        if (n > 4) then
-          call ctx_fail(ctx, i, 'too many fields')
-          return
-        end if
-        if (fixed .and. bc%value /= 0.0_dp) then
-          call ctx_fail(ctx, i, 'FIXED holds the dofs at their values at the start of the step: no magnitude')
-          return
-        end if
-        if (bc%first_dof < 1 .or. bc%last_dof > 6 .or. bc%last_dof < bc%first_dof) then
-          call ctx_fail(ctx, i, 'dof range '//itoa(bc%first_dof)//'..'//itoa(bc%last_dof)//' invalid')
-          return
-        end if
-        ! rotations (dofs 4..6) exist at the reference node of a *COUPLING only: checked when the model is complete
-        if (bc%last_dof > 3 .and. bc%user) then
-          call ctx_fail(ctx, i, 'USER (the subroutine DISP) on a rotational dof is not supported')
-          return
-        end if
+        if (.not. dof_line_ok(i)) return
       end if
       call push_step_or_model(bc)
     end do
 
   contains
+
+    !> The parameters (FIXED, USER, TYPE, OP, AMPLITUDE) into fixed, user, velocity and iamp; .false. after a
+    !> message when they are not valid.
+    logical function parameters_ok() result(ok)
+      ok = .false.
+      ! FIXED (history data, Keywords Reference *BOUNDARY): the dofs held at their values at the start of the step;
+      ! not with TYPE or USER (as documented) nor AMPLITUDE (nothing to scale); a magnitude on its lines is refused
+      fixed = deck_has_param(ctx%params, 'FIXED')
+      if (fixed) then
+        if (.not. ctx%in_step) then
+          call ctx_fail(ctx, ir, 'FIXED only inside a step (history data)')
+          return
+        end if
+        if (deck_has_param(ctx%params, 'TYPE') .or. deck_has_param(ctx%params, 'USER') .or. &
+            deck_has_param(ctx%params, 'AMPLITUDE')) then
+          call ctx_fail(ctx, ir, 'FIXED cannot be combined with TYPE, USER or AMPLITUDE')
+          return
+        end if
+      end if
+      ! USER: the magnitudes come from the user subroutine DISP (history data only)
+      user = deck_has_param(ctx%params, 'USER')
+      if (user .and. .not. ctx%in_step) then
+        call ctx_fail(ctx, ir, 'USER only inside a step (history data)')
+        return
+      end if
+      ! TYPE=DISPLACEMENT (the default) or VELOCITY (in a step: the increment of the dof is v dt, v applied as a STEP
+      ! unless an amplitude is given, as Abaqus/Standard does in a static step)
+      v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
+      if (len(v) > 0 .and. v /= 'DISPLACEMENT' .and. v /= 'VELOCITY') then
+        call ctx_fail(ctx, ir, 'TYPE='//v//' is not supported (DISPLACEMENT, VELOCITY)')
+        return
+      end if
+      velocity = v == 'VELOCITY'
+      if (velocity .and. .not. ctx%in_step) then
+        call ctx_fail(ctx, ir, 'TYPE=VELOCITY only inside a step (history data)')
+        return
+      end if
+      v = deck_normalize(deck_param_value(ctx%params, 'OP'))
+      if (len(v) > 0 .and. v /= 'MOD' .and. v /= 'NEW') then
+        call ctx_fail(ctx, ir, 'OP must be MOD or NEW')
+        return
+      end if
+      if (v == 'NEW') then
+        if (.not. ctx%in_step) then
+          call ctx_fail(ctx, ir, 'OP=NEW only inside a step')
+          return
+        end if
+        ctx%model%steps(istep)%op_new = .true.
+      end if
+      iamp = 0
+      if (deck_has_param(ctx%params, 'AMPLITUDE')) then
+        if (.not. ctx%in_step) then
+          call ctx_fail(ctx, ir, 'AMPLITUDE= only inside a step')
+          return
+        end if
+        iamp = model_find_amplitude(ctx%model, deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE')))
+        if (iamp == 0) then
+          call ctx_fail(ctx, ir, 'undefined amplitude '//deck_normalize(deck_param_value(ctx%params, 'AMPLITUDE')))
+          return
+        end if
+      end if
+      ok = .true.
+    end function parameters_ok
+
+    !> A data line of dofs: first dof[, last dof[, value]] into bc; .false. after a message when it is not valid.
+    logical function dof_line_ok(i) result(ok)
+      integer, intent(in) :: i  !< the line
+      ok = .false.
+      if (.not. ctx_get_int(ctx, i, f(2), bc%first_dof)) return
+      bc%last_dof = bc%first_dof
+      if (n >= 3) then
+        if (len_trim(f(3)) > 0) then
+          if (.not. ctx_get_int(ctx, i, f(3), bc%last_dof)) return
+        end if
+      end if
+      if (n >= 4) then
+        if (len_trim(f(4)) > 0) then
+          if (.not. ctx_get_real(ctx, i, f(4), bc%value)) return
+        end if
+      end if
+      if (n > 4) then
+        call ctx_fail(ctx, i, 'too many fields')
+        return
+      end if
+      if (fixed .and. bc%value /= 0.0_dp) then
+        call ctx_fail(ctx, i, 'FIXED holds the dofs at their values at the start of the step: no magnitude')
+        return
+      end if
+      if (bc%first_dof < 1 .or. bc%last_dof > 6 .or. bc%last_dof < bc%first_dof) then
+        call ctx_fail(ctx, i, 'dof range '//itoa(bc%first_dof)//'..'//itoa(bc%last_dof)//' invalid')
+        return
+      end if
+      ! rotations (dofs 4..6) exist at the reference node of a *COUPLING only: checked when the model is complete
+      if (bc%last_dof > 3 .and. bc%user) then
+        call ctx_fail(ctx, i, 'USER (the subroutine DISP) on a rotational dof is not supported')
+        return
+      end if
+      ok = .true.
+    end function dof_line_ok
 
     subroutine set_type(d1, d2, rot)
       integer, intent(in) :: d1, d2, rot(3)

@@ -88,7 +88,7 @@ contains
     real(dp) :: kl(8, 3, 3, 8), fe(24), fb0(3, 3), fb1(3, 3), fm(3, 3), g(3, 3), wsk(3, 3), drot(3, 3)
     real(dp) :: sig(3, 3), eps(3, 3), stress(6), stran(6), dstran(6), ddsdde(6, 6), s0(6), sse, spd, scd, pn
     real(dp) :: dndx(8, 3), bc(8, 3), a4(3, 3, 3, 3), q(3, 3), dv, temp_ip, dtemp_ip, finv(3, 3)
-    integer :: a, b, i, k, ip, nsv, np, nfld, level
+    integer :: a, b, k, ip, nsv, np, nfld, level
     logical :: elastic
 
     stat = 0
@@ -123,30 +123,8 @@ contains
     end if
     dndx_c = matmul(dndx_0c, inv3(fc1))
     ! first pass: kinematics at the points, checks, the current volume for CELENT
-    vol = 0.0_dp
-    ! F and J at the 8 points at once, the points in the vector lanes (each entry the same sum as f_of and det3)
-    do ip = 1, 8
-      dt(ip, :, :) = dref(:, :, ip)
-    end do
-    call f_points(un, dt, fs)
-    j0 = det_points(fs)
-    do ip = 1, 8
-      fg0(:, :, ip) = fs(ip, :, :)
-    end do
-    call f_points(u1, dt, fs)
-    j1 = det_points(fs)
-    do ip = 1, 8
-      fg1(:, :, ip) = fs(ip, :, :)
-    end do
-    do ip = 1, 8
-      if (.not. (j0(ip) > 0.0_dp .and. j1(ip) > 0.0_dp)) then
-        stat = 1
-        errmsg = 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')'
-        return
-      end if
-      vol = vol + wdet(ip) * j1(ip)
-    end do
-    celent = vol**third
+    call first_pass()
+    if (stat /= 0) return
     if (elastic) call elastic_isotropic_ddsdde(mat%e, mat%nu, 3, 3, cel)
     fe = 0.0_dp
     if (want_k) then
@@ -155,27 +133,8 @@ contains
     end if
     ! second pass: the material at each point, internal force, tangent
     do ip = 1, 8
-      fb0 = (jc0 / j0(ip))**third * fg0(:, :, ip)
-      fb1 = (jc1 / j1(ip))**third * fg1(:, :, ip)
-      ! Hughes-Winget: G = grad(du) w.r.t. x_mid with the F-bar gradients; DROT in closed form (solid_element)
-      fm = 0.5_dp * (fb0 + fb1)
-      if (.not. (det3(fm) > 0.0_dp)) then
-        stat = 1
-        errmsg = 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' // itoa(ip) // ')'
-        return
-      end if
-      g = matmul(fb1 - fb0, inv3(fm))
-      wsk = 0.25_dp * (g - transpose(g))
-      drot = identity() + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
-      eps = 0.5_dp * (g + transpose(g))
-      dstran = [eps(1, 1), eps(2, 2), eps(3, 3), 2.0_dp * eps(1, 2), 2.0_dp * eps(1, 3), 2.0_dp * eps(2, 3)]
-      ! the converged stress and strain rotated by DROT
-      sig = sym_of(stress_old(:, ip), 1.0_dp)
-      sig = matmul(matmul(drot, sig), transpose(drot))
-      stress = [sig(1, 1), sig(2, 2), sig(3, 3), sig(1, 2), sig(1, 3), sig(2, 3)]
-      eps = sym_of(stran_old(:, ip), 0.5_dp)
-      eps = matmul(matmul(drot, eps), transpose(drot))
-      stran = [eps(1, 1), eps(2, 2), eps(3, 3), 2.0_dp * eps(1, 2), 2.0_dp * eps(1, 3), 2.0_dp * eps(2, 3)]
+      call rotated_state(ip)
+      if (stat /= 0) return
       sse = 0.0_dp
       spd = 0.0_dp
       scd = 0.0_dp
@@ -211,25 +170,7 @@ contains
         energy_ip_new(:, ip) = 0.0_dp
         energy_ip_new(1:3, ip) = [sse, spd, scd]
       end if
-      ! spatial derivatives, volume element, internal force
-      finv = inv3(fg1(:, :, ip))
-      dndx = matmul(dref(:, :, ip), finv)
-      dv = wdet(ip) * j1(ip) * mat%thickness
-      energy = energy + [sse, spd] * dv
-      sig = sym_of(stress, 1.0_dp)
-      do a = 1, 8
-        do i = 1, 3
-          fe(3 * (a - 1) + i) = fe(3 * (a - 1) + i) + (sig(i, 1) * dndx(a, 1) + sig(i, 2) * dndx(a, 2) &
-            + sig(i, 3) * dndx(a, 3)) * dv
-        end do
-      end do
-      if (want_k) then
-        ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM (*ELASTIC's is symmetric)
-        if (.not. (elastic .or. mat%unsymm)) ddsdde = 0.5_dp * (ddsdde + transpose(ddsdde))
-        call spatial_tangent_3d(ddsdde, sig, a4, q)
-        bc = dndx_c - dndx
-        call k_point_c3d8_spatial(level, a4, q, dndx, bc, dv, kl)
-      end if
+      call force_and_tangent(ip)
     end do
     f_int = fe
     if (want_k) then
@@ -245,6 +186,89 @@ contains
     end if
 
   contains
+
+    !> F and J at the 8 points (the points in the vector lanes: each entry the same sum as f_of and det3), the
+    !> checks J > 0, the current volume and CELENT.
+    subroutine first_pass()
+      integer :: ip
+      vol = 0.0_dp
+      ! F and J at the 8 points at once, the points in the vector lanes (each entry the same sum as f_of and det3)
+      do ip = 1, 8
+        dt(ip, :, :) = dref(:, :, ip)
+      end do
+      call f_points(un, dt, fs)
+      j0 = det_points(fs)
+      do ip = 1, 8
+        fg0(:, :, ip) = fs(ip, :, :)
+      end do
+      call f_points(u1, dt, fs)
+      j1 = det_points(fs)
+      do ip = 1, 8
+        fg1(:, :, ip) = fs(ip, :, :)
+      end do
+      do ip = 1, 8
+        if (.not. (j0(ip) > 0.0_dp .and. j1(ip) > 0.0_dp)) then
+          stat = 1
+          errmsg = 'inverted element ' // itoa(noel) // ' (J <= 0 at integration point ' // itoa(ip) // ')'
+          return
+        end if
+        vol = vol + wdet(ip) * j1(ip)
+      end do
+      celent = vol**third
+    end subroutine first_pass
+
+    !> Point ip's increment: the F-bar gradients at t_n and t_n+1, G with respect to the mid-increment configuration
+    !> (Hughes-Winget), DROT in closed form, DSTRAN, and the converged stress and strain rotated by DROT.
+    subroutine rotated_state(ip)
+      integer, intent(in) :: ip
+        fb0 = (jc0 / j0(ip))**third * fg0(:, :, ip)
+        fb1 = (jc1 / j1(ip))**third * fg1(:, :, ip)
+        ! Hughes-Winget: G = grad(du) w.r.t. x_mid with the F-bar gradients; DROT in closed form (solid_element)
+        fm = 0.5_dp * (fb0 + fb1)
+        if (.not. (det3(fm) > 0.0_dp)) then
+          stat = 1
+          errmsg = 'inverted element ' // itoa(noel) // ' (mid-increment J <= 0 at integration point ' // &
+            itoa(ip) // ')'
+          return
+        end if
+        g = matmul(fb1 - fb0, inv3(fm))
+        wsk = 0.25_dp * (g - transpose(g))
+        drot = identity() + (2.0_dp / (1.0_dp + wsk(3, 2)**2 + wsk(1, 3)**2 + wsk(2, 1)**2)) * (wsk + matmul(wsk, wsk))
+        eps = 0.5_dp * (g + transpose(g))
+        dstran = [eps(1, 1), eps(2, 2), eps(3, 3), 2.0_dp * eps(1, 2), 2.0_dp * eps(1, 3), 2.0_dp * eps(2, 3)]
+        ! the converged stress and strain rotated by DROT
+        sig = sym_of(stress_old(:, ip), 1.0_dp)
+        sig = matmul(matmul(drot, sig), transpose(drot))
+        stress = [sig(1, 1), sig(2, 2), sig(3, 3), sig(1, 2), sig(1, 3), sig(2, 3)]
+        eps = sym_of(stran_old(:, ip), 0.5_dp)
+        eps = matmul(matmul(drot, eps), transpose(drot))
+        stran = [eps(1, 1), eps(2, 2), eps(3, 3), 2.0_dp * eps(1, 2), 2.0_dp * eps(1, 3), 2.0_dp * eps(2, 3)]
+    end subroutine rotated_state
+
+    !> Point ip's internal force and, when wanted, its tangent (spatial derivatives at t_n+1, volume element).
+    subroutine force_and_tangent(ip)
+      integer, intent(in) :: ip
+      integer :: a, i
+        ! spatial derivatives, volume element, internal force
+        finv = inv3(fg1(:, :, ip))
+        dndx = matmul(dref(:, :, ip), finv)
+        dv = wdet(ip) * j1(ip) * mat%thickness
+        energy = energy + [sse, spd] * dv
+        sig = sym_of(stress, 1.0_dp)
+        do a = 1, 8
+          do i = 1, 3
+            fe(3 * (a - 1) + i) = fe(3 * (a - 1) + i) + (sig(i, 1) * dndx(a, 1) + sig(i, 2) * dndx(a, 2) &
+              + sig(i, 3) * dndx(a, 3)) * dv
+          end do
+        end do
+        if (want_k) then
+          ! Abaqus uses only the symmetric part of DDSDDE unless *USER MATERIAL, UNSYMM (*ELASTIC's is symmetric)
+          if (.not. (elastic .or. mat%unsymm)) ddsdde = 0.5_dp * (ddsdde + transpose(ddsdde))
+          call spatial_tangent_3d(ddsdde, sig, a4, q)
+          bc = dndx_c - dndx
+          call k_point_c3d8_spatial(level, a4, q, dndx, bc, dv, kl)
+        end if
+    end subroutine force_and_tangent
 
     !> The UMAT at point ip (call_umat's contract without its copies of values the element does not reuse).
     subroutine umat_point(ip)
