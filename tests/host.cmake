@@ -230,9 +230,10 @@ foreach(case centrif_plane_stress centrif_axisymmetric centrif_3d rota centrif_n
   set_tests_properties(deck_rotational_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
 # *MODEL CHANGE against closed forms and the deck without the elements, *TIME POINTS hit exactly, *NODE PRINT,
-# GLOBAL=YES against the transformed components, *BOUNDARY, FIXED against the held value and the reaction
+# GLOBAL=YES against the transformed components, *BOUNDARY, FIXED against the held value and the reaction,
+# *NODE PRINT and *EL PRINT requests carried into later steps until respecified
 # (tests/regression/check_step_options.py)
-foreach(case model_change model_change_nlgeom time_points node_print_global boundary_fixed)
+foreach(case model_change model_change_nlgeom time_points node_print_global boundary_fixed print_carry)
   add_test(NAME deck_step_${case} COMMAND Python3::Interpreter
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_step_options.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/step_${case} --case ${case})

@@ -35,6 +35,7 @@ contains
     if (ctx%stat == 0) call check_element_sections(ctx, has_section)
     if (ctx%stat /= 0) return
     call carry_field_requests(ctx%model)
+    call carry_print_requests(ctx%model)
     if (ctx%stat == 0) call resolve_surfaces(ctx)
     if (ctx%stat == 0) call resolve_dloads(ctx)
     if (ctx%stat == 0) call finish_extras(ctx)
@@ -662,6 +663,28 @@ contains
       end associate
     end do
   end subroutine carry_field_requests
+
+  !> Data-file requests stay in effect in later steps until respecified (Abaqus Analysis User's Guide, "Requesting
+  !> output in multiple steps": output requests apply to the step that defines them and to all later steps until
+  !> they are respecified): a step without its own *NODE PRINT takes the previous step's *NODE PRINT requests, one
+  !> without *EL PRINT the previous step's *EL PRINT requests; a step with its own replaces them (as its own *OUTPUT,
+  !> FIELD does; that one request of a kind replaces all the earlier ones is inferred, docs/host.md).
+  pure subroutine carry_print_requests(model)
+    type(model_t), intent(inout) :: model  !< the model
+    integer :: is
+    do is = 2, model%nstep
+      associate (st => model%steps(is), prev => model%steps(is - 1))
+        if (st%nprint == 0 .and. prev%nprint > 0) then
+          st%prints = prev%prints(1:prev%nprint)
+          st%nprint = prev%nprint
+        end if
+        if (st%nelprint == 0 .and. prev%nelprint > 0) then
+          st%elprints = prev%elprints(1:prev%nelprint)
+          st%nelprint = prev%nelprint
+        end if
+      end associate
+    end do
+  end subroutine carry_print_requests
 
   !> Boundary node ids -> indices; dofs beyond the model dimension dropped (with a warning when none is left).
   subroutine resolve_bc(ctx, bc)

@@ -29,6 +29,10 @@ Cases (decks written into DIR):
             times the local columns (GLOBAL=NO, the default) within 1e-12, U the VTU frame's global U (1e-8:
             the frame's 9 digits), RF global of the prescribed local dof; GLOBAL=YES on a set without
             transformed nodes keeps the plain column names and values.
+  print_carry  data-file requests carried into later steps until respecified (Abaqus Analysis User's Guide,
+            "Requesting output in multiple steps"): step 1 prints node set TOP and element set BAR1, step 2
+            gives no print request and prints both, step 3 gives its own *NODE PRINT (BOT) and prints BOT, not
+            TOP, with BAR1's element table still carried; every increment of each step has its tables.
   boundary_fixed  *BOUNDARY, FIXED (Keywords Reference *BOUNDARY: the dofs held at their values at the start of
             the step): the bar of model_change without bar 2 (k = 1000) loaded by F = 10 in step 1 (u = 0.01), its
             top held by FIXED in step 2 while the force rises to 14: u stays 0.01 in every increment (1e-12: the
@@ -220,6 +224,36 @@ def case_node_print_global(exe, out):
               float(r["LOADED.U%d.GLOBAL" % (i + 1)]), 1e-8 * max(abs(float(x)) for x in u[6]))
 
 
+def case_print_carry(exe, out):
+    step = ["*STATIC", "0.5, 1."]
+    deck = bars(False) + ["*STEP"] + step + ["*CLOAD", "TOP, 3, 10.", "*NODE PRINT, NSET=TOP", "U3",
+                                             "*EL PRINT, ELSET=BAR1", "S33", "*END STEP"]
+    deck += ["*STEP"] + step + ["*CLOAD", "TOP, 3, 12.", "*END STEP"]
+    deck += ["*STEP"] + step + ["*CLOAD", "TOP, 3, 14.", "*NODE PRINT, NSET=BOT", "RF3", "*END STEP"]
+    rows = run(exe, out, "print_carry", deck)
+    with open(os.path.join(out, "print_carry", "print_carry.dat")) as f:
+        text = f.read()
+    tables = {}   # (step, increment) -> the sets printed
+    key = None
+    for line in text.splitlines():
+        w = line.split()
+        if len(w) >= 5 and w[0] == "STEP" and w[2] == "INCREMENT" and w[4] == "SUMMARY":
+            key = (int(w[1]), int(w[3]))
+            tables[key] = set()
+        elif key and "BELONGING TO NODE SET" in line:
+            tables[key].add("node " + w[-1])
+        elif key and "AND ELEMENT SET" in line:
+            tables[key].add("element " + w[-1])
+    want = {1: {"node TOP", "element BAR1"}, 2: {"node TOP", "element BAR1"}, 3: {"node BOT", "element BAR1"}}
+    incs = sorted((int(r["step"]), int(r["inc"])) for r in rows)
+    if sorted(tables) != incs:
+        fail("printed increments %s, converged %s" % (sorted(tables), incs))
+    for k in incs:
+        if tables[k] != want[k[0]]:
+            fail("step %d increment %d prints %s, want %s" % (k[0], k[1], sorted(tables[k]), sorted(want[k[0]])))
+    print("print_carry: %d increments, step 2 carries TOP and BAR1, step 3 prints BOT and BAR1" % len(incs))
+
+
 def case_boundary_fixed(exe, out):
     step = ["*STATIC", "0.5, 1."]
     prints = ["*NODE PRINT, NSET=TOP", "U3, RF3"]
@@ -256,7 +290,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     cases = {"model_change": case_model_change, "model_change_nlgeom": case_model_change_nlgeom,
              "time_points": case_time_points, "node_print_global": case_node_print_global,
-             "boundary_fixed": case_boundary_fixed}
+             "boundary_fixed": case_boundary_fixed, "print_carry": case_print_carry}
     if a.case not in cases:
         fail("unknown case " + a.case)
     cases[a.case](a.exe, a.out)
