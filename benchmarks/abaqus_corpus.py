@@ -79,9 +79,9 @@ CALCULIX_NOTES = [
      'CalculiX forms: *AMPLITUDE, USER (Abaqus: DEFINITION=USER), *TEMPERATURE, FILE= of a CalculiX .frd file, the '
      'load label P2NP, C3D8I elements of 10 nodes, *MEMBRANE: out of scope.'),
     ('segment1',
-     'runs, not comparable: its second step has no *NODE PRINT of its own and the reference prints the first '
-     'step\'s request again; ldfcz prints each step\'s own requests (whether Abaqus carries *NODE PRINT to later '
-     'steps, as it carries output requests in general, was not settled).'),
+     'its second step has no *NODE PRINT of its own and the reference prints the first step\'s request again: '
+     'ldfcz carries *NODE PRINT and *EL PRINT requests into later steps until a step gives its own, as Abaqus '
+     'carries output requests (Analysis User\'s Guide, "Requesting output in multiple steps"; docs/host.md).'),
     ('beam8p, beam8t, beam8p_mpc',
      'mismatch 3-5 %: C3D8 is fully integrated in CalculiX (2x2x2, its manual) and locks in bending; ldfcz\'s C3D8 '
      'has the mean-dilatation B-bar (Abaqus\'s C3D8 is selectively reduced), so these coarse bending meshes deflect '
