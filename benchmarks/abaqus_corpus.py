@@ -22,6 +22,11 @@ Two corpora, neither of them part of this project (fetch them yourself; nothing 
   python3 benchmarks/abaqus_corpus.py calculix --corpus DIR/test [--exe build/bin/ldfcz] [--report FILE]
   python3 benchmarks/abaqus_corpus.py select --corpus DIR/test
   python3 benchmarks/abaqus_corpus.py third-party --manifest benchmarks/abaqus_third_party.json --sources DIR [--report FILE]
+  python3 benchmarks/abaqus_corpus.py recheck --corpus DIR/test --deck JOB --edit 'OLD=>NEW' [--edit ...]
+
+`recheck` looks into one mismatch with CalculiX itself (Debian's calculix-ccx, `ccx` on the PATH): it runs the deck
+as published and with the edits (plain text replacements, e.g. the solver or NLGEOM taken out) through both ccx and
+ldfcz and prints how far each result is from each other one, and how far each program moves between the two decks.
 
 --sources DIR holds one git clone per repository, named owner+name (e.g. DIR/KianAghani+UEL, or its repo/ folder);
 the files are read at the manifest's commit with `git show`. The report (markdown) is stamped with the project's
@@ -95,9 +100,18 @@ CALCULIX_NOTES = [
     ('planestress3',
      'mismatch 2.3 %: CalculiX expands plane-stress elements into a layer of 3D bricks (its manual, "2D elements '
      '... are automatically expanded into 3D"); ldfcz\'s CPS4 is a plane-stress element.'),
-    ('beampic, beamwrite, beamwrite2',
-     'mismatch 1.2e-3 to 1.7e-3 of the largest displacement (tolerance 1e-3, the .dat files print 5 digits: '
-     '5e-5): C3D20R, not investigated further.'),
+    ('beampic',
+     'mismatch 1.7e-3: the reference was solved with CalculiX\'s iterative Cholesky solver; the same deck solved by '
+     'ccx with its direct solver (SPOOLES) agrees with ldfcz to 5.6e-6 (reports/corpus/recheck_beampic.md, `recheck '
+     '--deck beampic --edit \'SOLVER=ITERATIVE CHOLESKY=>SOLVER=SPOOLES\'`): the difference is the reference\'s '
+     'solver tolerance, not the model.'),
+    ('beamwrite, beamwrite2',
+     'mismatch 1.24e-3: a bar pulled by a follower pressure p under NLGEOM (p/E = 4.76e-4). Without NLGEOM ldfcz and '
+     'ccx agree to 1.3e-5; NLGEOM moves ccx by -1.00e-3 and ldfcz by +2.37e-4 (reports/corpus/recheck_beamwrite.md): '
+     'CalculiX\'s *ELASTIC under NLGEOM is St. Venant-Kirchhoff (second Piola-Kirchhoff stress linear in the Green '
+     'strain: the closed form for this bar is -(3/2 + 2 nu) p/E = -1.00e-3), Abaqus\'s (and ldfcz\'s) relates the '
+     'Cauchy stress to the logarithmic strain (Analysis User\'s Guide, "Linear elastic behavior": +p/(2E) = +2.38e-4). '
+     'The difference is the material\'s large-strain definition, and ldfcz keeps Abaqus\'s.'),
 ]
 
 
@@ -387,6 +401,75 @@ def cmd_calculix(a, argv):
     return 0
 
 
+def run_ccx(deck_text, job, where):
+    """Runs CalculiX's ccx on a deck text in folder where; its displacement tables (read_calculix_dat)."""
+    os.makedirs(where, exist_ok=True)
+    with open(os.path.join(where, job + '.inp'), 'w') as f:
+        f.write(deck_text)
+    subprocess.run(['ccx', '-i', job], cwd=where, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=600)
+    dat = os.path.join(where, job + '.dat')
+    return read_calculix_dat(dat) if os.path.exists(dat) else {}
+
+
+def as_calculix(tables):
+    """ldfcz's JOB.dat tables ({node: {U1..}}) in read_calculix_dat's form ({node: [u1, u2, u3]})."""
+    return {key: {n: [v.get('U%d' % k, 0.0) for k in (1, 2, 3)] for n, v in rows.items()}
+            for key, rows in tables.items()}
+
+
+def largest_shift(a, b):
+    """Relative change from result a to result b at the node and component where a is largest."""
+    key = max(a, key=lambda k: k[1])
+    node, comp = max(((n, k) for n, r in a[key].items() for k in range(len(r))), key=lambda nk: abs(a[key][nk[0]][nk[1]]))
+    ua, ub = a[key][node][comp], b.get(key, {}).get(node, [0.0] * 3)[comp]
+    return (ub - ua) / ua if ua else float('nan'), node, comp + 1
+
+
+def cmd_recheck(a, argv):
+    if shutil.which('ccx') is None:
+        sys.stderr.write('abaqus_corpus recheck: ccx not found (Debian package calculix-ccx)\n')
+        return 2
+    text = open(os.path.join(a.corpus, a.deck + '.inp')).read()
+    edited = text
+    for edit in a.edit:
+        old, sep, new = edit.partition('=>')
+        if not sep or old not in edited:
+            sys.stderr.write('abaqus_corpus recheck: edit %r: %r not in %s.inp\n' % (edit, old, a.deck))
+            return 2
+        edited = edited.replace(old, new)
+    work = os.path.abspath(a.work)
+    results = {'reference': read_calculix_dat(os.path.join(a.corpus, a.deck + '.dat.ref'))}
+    for tag, deck_text in (('', text), (' edited', edited)):
+        where = os.path.join(work, 'ccx' + tag.replace(' ', '_'))
+        results['ccx' + tag] = run_ccx(deck_text, a.deck, where)
+        deck = os.path.join(work, 'ldfcz_deck' + tag.replace(' ', '_'), a.deck + '.inp')
+        os.makedirs(os.path.dirname(deck), exist_ok=True)
+        with open(deck, 'w') as f:
+            f.write(deck_text)
+        where = os.path.join(work, 'ldfcz' + tag.replace(' ', '_'))
+        rc, msg, _ = run_ldfcz(os.path.abspath(a.exe), deck, where, a.timeout)
+        dat = os.path.join(where, a.deck + '.dat')
+        results['ldfcz' + tag] = as_calculix(read_ldfcz_dat(dat)) if rc == 0 and os.path.exists(dat) else {}
+        if rc != 0:
+            sys.stderr.write('ldfcz%s: exit %s: %s\n' % (tag, rc, msg))
+    lines = ['# recheck of %s against CalculiX (%s)' % (a.deck, '; '.join(a.edit)), ''] + stamp(argv, a.exe) + [
+        '', '| result | against | max abs difference / max abs reference value |', '|---|---|---|']
+    pairs = [('ccx', 'reference'), ('ldfcz', 'reference'), ('ldfcz', 'ccx'), ('ldfcz edited', 'ccx edited'),
+             ('ldfcz', 'ccx edited')]
+    for x, y in pairs:
+        status, err, _ = compare(results[y], {k: {n: {'U%d' % (i + 1): v for i, v in enumerate(r)}
+                                                   for n, r in rows.items()} for k, rows in results[x].items()}, a.tol)
+        lines.append('| %s | %s | %s |' % (x, y, '%.3e' % err if err is not None else status))
+    lines += ['', '| program | change from the deck as published to the edited deck (largest displacement) |',
+              '|---|---|']
+    for prog in ('ccx', 'ldfcz'):
+        if results[prog] and results[prog + ' edited']:
+            shift, node, comp = largest_shift(results[prog], results[prog + ' edited'])
+            lines.append('| %s | %+.3e (node %d, U%d) |' % (prog, shift, node, comp))
+    write_report(a.report, lines)
+    return 0
+
+
 def repo_dir(sources, repo):
     """The clone of repository owner/name under sources."""
     base = os.path.join(sources, repo.replace('/', '+'))
@@ -459,16 +542,19 @@ def cmd_third_party(a, argv):
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     sub = ap.add_subparsers(dest='cmd', required=True)
-    for name in ('calculix', 'select', 'third-party'):
+    for name in ('calculix', 'select', 'third-party', 'recheck'):
         p = sub.add_parser(name)
         p.add_argument('--exe', default=os.path.join(ROOT, 'build', 'bin', 'ldfcz'))
         p.add_argument('--work', default='corpus_runs', help='run directory (default ./corpus_runs)')
         p.add_argument('--report', help='markdown report to write (also printed)')
         p.add_argument('--timeout', type=int, default=300, help='seconds per deck (default 300)')
-        if name in ('calculix', 'select'):
+        if name in ('calculix', 'select', 'recheck'):
             p.add_argument('--corpus', required=True, help='the CalculiX test folder')
             p.add_argument('--tol', type=float, default=1e-3)
             p.add_argument('--only', help='comma-separated deck names')
+        if name == 'recheck':
+            p.add_argument('--deck', required=True, help='deck name (JOB of JOB.inp)')
+            p.add_argument('--edit', action='append', default=[], help="'OLD=>NEW' text replacement (repeatable)")
         else:
             p.add_argument('--manifest', default=os.path.join(ROOT, 'benchmarks', 'abaqus_third_party.json'))
             p.add_argument('--sources', required=True, help='folder of clones named owner+name')
@@ -478,6 +564,8 @@ def main(argv):
         return 0
     if a.cmd == 'calculix':
         return cmd_calculix(a, argv)
+    if a.cmd == 'recheck':
+        return cmd_recheck(a, argv)
     return cmd_third_party(a, argv)
 
 
