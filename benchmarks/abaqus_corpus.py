@@ -107,7 +107,8 @@ CALCULIX_NOTES = [
      'solver tolerance, not the model.'),
     ('beamwrite, beamwrite2',
      'mismatch 1.24e-3: a bar pulled by a follower pressure p under NLGEOM (p/E = 4.76e-4). Without NLGEOM ldfcz and '
-     'ccx agree to 1.3e-5; NLGEOM moves ccx by -1.00e-3 and ldfcz by +2.37e-4 (reports/corpus/recheck_beamwrite.md): '
+     'ccx agree to 1.3e-5; NLGEOM moves ccx by -1.00e-3 and ldfcz by +2.37e-4 (reports/corpus/recheck_beamwrite.md '
+     'and recheck_beamwrite2.md print the change from NLGEOM to none, of opposite sign): '
      'CalculiX\'s *ELASTIC under NLGEOM is St. Venant-Kirchhoff (second Piola-Kirchhoff stress linear in the Green '
      'strain: the closed form for this bar is -(3/2 + 2 nu) p/E = -1.00e-3), Abaqus\'s (and ldfcz\'s) relates the '
      'Cauchy stress to the logarithmic strain (Analysis User\'s Guide, "Linear elastic behavior": +p/(2E) = +2.38e-4). '
