@@ -123,6 +123,8 @@ contains
     integer, intent(in) :: c
     character(len=:), allocatable :: t
     select case (c)
+    case (5)
+      t = 'VTK_TRIANGLE'
     case (9)
       t = 'VTK_QUAD'
     case (10)
@@ -131,6 +133,8 @@ contains
       t = 'VTK_HEXAHEDRON'
     case (13)
       t = 'VTK_WEDGE'
+    case (22)
+      t = 'VTK_QUADRATIC_TRIANGLE'
     case (23)
       t = 'VTK_QUADRATIC_QUAD'
     case (24)

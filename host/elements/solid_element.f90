@@ -1,6 +1,7 @@
 !> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the element catalogue
 !> (element_catalog.f90: C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, C3D6, CPE4/CPE4I/CPE4R/CPE8/CPE8R,
-!> CPS4/CPS4I/CPS4R/CPS8/CPS8R, CAX4/CAX4R/CAX8/CAX8R; shape functions and rules in solid_shape.f90), calling their material exactly as Abaqus/Standard calls a UMAT
+!> CPS4/CPS4I/CPS4R/CPS8/CPS8R, CAX4/CAX4R/CAX8/CAX8R, the triangles CPE3/CPE6/CPS3/CPS6/CAX3/CAX6; shape
+!> functions and rules in solid_shape.f90), calling their material exactly as Abaqus/Standard calls a UMAT
 !> (docs/conventions.md). Types differ only by data: shape functions, integration rule, and the switches
 !> F-bar (C3D8, CPE4, CAX4: de Souza Neto, Peric, Dutko and Owen 1996, Int. J. Solids Struct. 33, 3277-3296),
 !> incompatible modes (condensed pseudo-nodes, element-level Newton), one point with Flanagan-Belytschko hourglass

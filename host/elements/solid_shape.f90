@@ -13,15 +13,19 @@
 !>          g, h) (the Abaqus Theory Manual's first-order wedge).
 !>   QUAD4  counter-clockwise (-1,-1), (1,-1), (1,1), (-1,1).
 !>   QUAD8  corners as QUAD4; mid-side 5 on 1-2, 6 on 2-3, 7 on 3-4, 8 on 4-1.
+!>   TRI3   (g, h), g, h >= 0, g + h <= 1: nodes 1 (0,0), 2 (1,0), 3 (0,1) counter-clockwise; N = (1 - g - h, g, h).
+!>   TRI6   corners as TRI3; mid-side 4 on 1-2, 5 on 2-3, 6 on 3-1; N_a = L_a (2 L_a - 1), N_(ij) = 4 L_i L_j.
 !> Rules: Gauss n x n (x n) with xi fastest, then eta, then zeta (points at -g, [0,] +g in that order); tetrahedra:
 !> 1 point at the centroid, or 4 points (volume coordinates a = 0.5854..., b = 0.1382...), point k nearest corner k;
-!> wedge: the triangle's centroid at r = -1/sqrt(3) (point 1, nodes 1-3 side) and r = +1/sqrt(3) (point 2).
-!> The 2x2x2 order is Abaqus' documented one; for 3x3x3, 3x3, the 4-point tetrahedron and the wedge the same
-!> convention is inferred (docs/elements.md).
+!> wedge: the triangle's centroid at r = -1/sqrt(3) (point 1, nodes 1-3 side) and r = +1/sqrt(3) (point 2);
+!> triangles: the centroid (CPE3, CPS3, CAX3), or 3 points at (1/6, 1/6), (2/3, 1/6), (1/6, 2/3) (weights 1/6:
+!> exact for quadratics; CPE6, CPS6, CAX6), point k nearest corner k.
+!> The 2x2x2 order is Abaqus' documented one; for 3x3x3, 3x3, the 4-point tetrahedron, the wedge and the 3-point
+!> triangle the same convention is inferred (docs/elements.md).
 module solid_shape
   use ldfcz_kinds, only: dp
   use element_catalog, only: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6, &
-    RULE_TET1, RULE_TET4, RULE_WEDGE2
+    FAM_TRI3, FAM_TRI6, RULE_TET1, RULE_TET4, RULE_WEDGE2, RULE_TRI1, RULE_TRI3
   implicit none
   private
   public :: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base, solid_node_parent
@@ -38,6 +42,8 @@ module solid_shape
      0.0_dp, -1.0_dp,   1.0_dp,  0.0_dp,   0.0_dp, 1.0_dp,   -1.0_dp, 0.0_dp], [2, 8])
   !> TET10 mid-side nodes 5..10: the two corners of their edge
   integer, parameter :: tet_edges(2, 6) = reshape([1, 2, 2, 3, 3, 1, 1, 4, 2, 4, 3, 4], [2, 6])
+  !> TRI6 mid-side nodes 4..6: the two corners of their edge (the first three edges of the tetrahedron's)
+  integer, parameter :: tri_edges(2, 3) = tet_edges(:, 1:3)
 
 contains
 
@@ -47,7 +53,7 @@ contains
     real(dp) :: xi(3)
     xi = 0.0_dp
     if (family == FAM_TET4 .or. family == FAM_TET10) xi = 0.25_dp
-    if (family == FAM_WEDGE6) xi(1:2) = 1.0_dp / 3
+    if (family == FAM_WEDGE6 .or. family == FAM_TRI3 .or. family == FAM_TRI6) xi(1:2) = 1.0_dp / 3
   end function solid_parent_centre
 
   !> Parent coordinates of node a of a family (the node tables of the module header; xi(3) = 0 in 2D).
@@ -73,6 +79,12 @@ contains
       end if
     case (FAM_WEDGE6)
       xi = wedge(:, a)
+    case (FAM_TRI3, FAM_TRI6)
+      if (a <= 3) then
+        xi(1:2) = tet(1:2, a)
+      else
+        xi(1:2) = 0.5_dp * (tet(1:2, tri_edges(1, a - 3)) + tet(1:2, tri_edges(2, a - 3)))
+      end if
     end select
   end function solid_node_parent
 
@@ -206,6 +218,28 @@ contains
         dndxi(a, k) = -xi(k) * q
         dndxi(a, i) = 0.5_dp * p * quad_nodes(i, a)
       end do
+    case (FAM_TRI3, FAM_TRI6)
+      ! area coordinates L1 = 1 - g - h, L2 = g, L3 = h
+      l(1:3) = [1 - xi(1) - xi(2), xi(1), xi(2)]
+      dl = 0.0_dp
+      dl(1, 1:2) = -1.0_dp
+      dl(2, 1) = 1.0_dp
+      dl(3, 2) = 1.0_dp
+      if (family == FAM_TRI3) then
+        n(1:3) = l(1:3)
+        dndxi(1:3, 1:2) = dl(1:3, 1:2)
+      else
+        do a = 1, 3
+          n(a) = l(a) * (2 * l(a) - 1)
+          dndxi(a, 1:2) = (4 * l(a) - 1) * dl(a, 1:2)
+        end do
+        do a = 4, 6
+          i = tri_edges(1, a - 3)
+          j = tri_edges(2, a - 3)
+          n(a) = 4 * l(i) * l(j)
+          dndxi(a, 1:2) = 4 * (dl(i, 1:2) * l(j) + l(i) * dl(j, 1:2))
+        end do
+      end if
     case default
       n = 0.0_dp
       dndxi = 0.0_dp
@@ -214,7 +248,7 @@ contains
 
   !> Parent coordinates xi and weight w of integration point ip of a rule (Abaqus numbering, see the module header).
   pure subroutine solid_gauss_point(rule, ndim, ip, xi, w)
-    integer, intent(in) :: rule    !< Gauss points per direction (1..3) or RULE_TET1 / RULE_TET4 / RULE_WEDGE2
+    integer, intent(in) :: rule    !< Gauss points per direction (1..3) or RULE_TET1, _TET4, _WEDGE2, _TRI1, _TRI3
     integer, intent(in) :: ndim    !< 2 or 3
     integer, intent(in) :: ip      !< integration point
     real(dp), intent(out) :: xi(3) !< parent coordinates (xi(3) = 0 in 2D)
@@ -238,6 +272,13 @@ contains
       ! the triangle's centroid (weight its area 1/2) x 2 Gauss points through the thickness (weight 1)
       xi = [1.0_dp / 3, 1.0_dp / 3, merge(-g2, g2, ip == 1)]
       w = 0.5_dp
+    case (RULE_TRI1)
+      xi(1:2) = 1.0_dp / 3
+      w = 0.5_dp
+    case (RULE_TRI3)
+      xi(1:2) = 1.0_dp / 6
+      if (ip > 1) xi(ip - 1) = 2.0_dp / 3
+      w = 1.0_dp / 6
     case (1, 2, 3)
       select case (rule)
       case (1)

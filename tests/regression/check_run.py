@@ -94,6 +94,21 @@ def case_c3d6_faces(d, job):
         close("FIXED.RF%d = 0" % i, row["FIXED.RF%d" % i], 0.0, 0.0, 1e-8)
 
 
+def case_tri_faces(d, job):
+    """Triangles (CPE3, CPS6, CAX3, CAX6) under a uniform pressure p = 10 MPa on every outer edge
+    (tests/regression/make_single_decks.py, tri_faces): u = -e X at the corner node 3 (x0 + 1, 1), e = p (1 - nu) / E
+    in plane stress, p (1 + nu)(1 - 2 nu) / E in plane strain, p (1 - 2 nu) / E axisymmetric (hydrostatic), and no
+    reaction. 1e-9 relative (the exact field is linear: every type reproduces it, one linear solve); reactions 1e-8 N
+    (1e-9 of the edge loads, 10 N per mm; an axisymmetric total over 2 pi is at most 2 pi 20 N)."""
+    row, _ = last_row(d, job)
+    kind = job.upper()[:3]
+    e = {"CPS": 10.0 * 0.7, "CPE": 10.0 * 1.3 * 0.4, "CAX": 10.0 * 0.4}[kind] / 1000.0
+    x3 = (2.0, 1.0) if kind == "CAX" else (1.0, 1.0)
+    for i in (1, 2):
+        close("N3.U%d = -e X" % i, row["N3.U%d" % i], -e * x3[i - 1], 1e-9)
+        close("FIXED.RF%d = 0" % i, row["FIXED.RF%d" % i], 0.0, 0.0, 1e-8)
+
+
 def case_cohesive_I(d, job):
     """Mode I: RF3 = T(0.0075) A0 (A0 = 1 mm^2); Eq. 20. The RF is summed from the UEL's RHS exactly."""
     row, _ = last_row(d, job)
