@@ -141,6 +141,8 @@ contains
       t = 'VTK_QUADRATIC_TETRA'
     case (25)
       t = 'VTK_QUADRATIC_HEXAHEDRON'
+    case (26)
+      t = 'VTK_QUADRATIC_WEDGE'
     case default
       t = '?'
     end select

@@ -65,6 +65,7 @@ ldfcz_add_deck_test(NAME deck_c3d8_uniaxial DECK ${LDFCZ_DECKS}/single/c3d8_unia
 # wedges, and its faces S1..S5 under a self-balanced uniform pressure
 ldfcz_add_deck_test(NAME deck_c3d6_uniaxial DECK ${LDFCZ_DECKS}/single/c3d6_uniaxial.inp CASE c3d6_uniaxial)
 ldfcz_add_deck_test(NAME deck_c3d6_faces DECK ${LDFCZ_DECKS}/single/c3d6_faces.inp CASE c3d6_faces)
+ldfcz_add_deck_test(NAME deck_c3d15_faces DECK ${LDFCZ_DECKS}/single/c3d15_faces.inp CASE c3d6_faces)
 # the triangles (CPE3, CPS6, CAX3, CAX6; all six types in test_solid_element): their edges S1..S3 under a
 # self-balanced uniform pressure against the closed form
 foreach(tri cpe3 cps6 cax3 cax6)

@@ -27,18 +27,20 @@ module element_catalog
   public :: element_kind_of, element_name, element_family, element_nnode, element_ndim, element_ndi, element_nshr
   public :: element_is_axisymmetric, element_is_plane_stress, element_face_nodes, element_vtk_cell
   public :: element_vtk_points, element_names_text, element_rule_text, element_kinematics_text, element_tensor6
-  public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6, FAM_TRI3, FAM_TRI6
-  public :: RULE_TET1, RULE_TET4, RULE_WEDGE2, RULE_TRI1, RULE_TRI3
+  public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6, FAM_TRI3, FAM_TRI6, &
+    FAM_WEDGE15
+  public :: RULE_TET1, RULE_TET4, RULE_WEDGE2, RULE_TRI1, RULE_TRI3, RULE_WEDGE9
   public :: KIN_3D, KIN_PLANE_STRAIN, KIN_PLANE_STRESS, KIN_AXISYMMETRIC
   public :: KERNEL_GENERIC, KERNEL_C3D8
 
   !> shape-function families (solid_shape: shape functions, parent coordinates, node order)
   integer, parameter :: FAM_HEX8 = 1, FAM_HEX20 = 2, FAM_TET4 = 3, FAM_TET10 = 4, FAM_QUAD4 = 5, FAM_QUAD8 = 6, &
-    FAM_WEDGE6 = 7, FAM_TRI3 = 8, FAM_TRI6 = 9
+    FAM_WEDGE6 = 7, FAM_TRI3 = 8, FAM_TRI6 = 9, FAM_WEDGE15 = 10
   !> integration rules: n > 0 Gauss points per direction; the tetrahedral centroid (1) and 4-point rules; the wedge's
-  !> triangle centroid times 2 Gauss points through the thickness; the triangle's centroid and its 3-point rule
-  !> (solid_shape: solid_gauss_point)
-  integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4, RULE_WEDGE2 = -12, RULE_TRI1 = -21, RULE_TRI3 = -23
+  !> triangle centroid times 2 Gauss points through the thickness, and the triangle's 3 points times 3; the
+  !> triangle's centroid and its 3-point rule (solid_shape: solid_gauss_point)
+  integer, parameter :: RULE_TET1 = -1, RULE_TET4 = -4, RULE_WEDGE2 = -12, RULE_TRI1 = -21, RULE_TRI3 = -23, &
+    RULE_WEDGE9 = -19
   !> kinematic classes: NDI, NSHR of the material call and the meaning of the coordinates
   integer, parameter :: KIN_3D = 1, KIN_PLANE_STRAIN = 2, KIN_PLANE_STRESS = 3, KIN_AXISYMMETRIC = 4
   !> element kernels (solid_element): the generic path, sized at run time, serves every type; a type with a
@@ -107,6 +109,15 @@ module element_catalog
     4, 1, 8, 0, 0, 0, 0, 0, &
     0, 0, 0, 0, 0, 0, 0, 0, &
     0, 0, 0, 0, 0, 0, 0, 0], [8, 6])
+  ! 15-node wedges: the same faces with their mid-side nodes (7-9 on 1-2, 2-3, 3-1; 10-12 on 4-5, 5-6, 6-4;
+  ! 13-15 on 1-4, 2-5, 3-6)
+  integer, parameter :: wedge15_faces(8, 6) = reshape([ &
+    1, 3, 2, 9, 8, 7, 0, 0, &
+    4, 5, 6, 10, 11, 12, 0, 0, &
+    1, 2, 5, 4, 7, 14, 10, 13, &
+    2, 3, 6, 5, 8, 15, 11, 14, &
+    3, 1, 4, 6, 9, 13, 12, 15, &
+    0, 0, 0, 0, 0, 0, 0, 0], [8, 6])
   ! triangles: S1 1-2, S2 2-3, S3 3-1; 6 nodes: mid-side nodes 4 (1-2), 5 (2-3), 6 (3-1)
   integer, parameter :: tri_faces(8, 6) = reshape([ &
     1, 2, 4, 0, 0, 0, 0, 0, &
@@ -118,10 +129,11 @@ module element_catalog
 
   !> The families. VTK cells: 12 hexahedron, 25 quadratic hexahedron, 10 tetrahedron, 24 quadratic tetrahedron,
   !> 9 quadrilateral, 23 quadratic quadrilateral, 5 triangle, 22 quadratic triangle (Abaqus' node order is VTK's
-  !> for all of these), 13 wedge: VTK's base triangle
+  !> for all of these), 13 wedge and 26 quadratic wedge: VTK's base triangle
   !> 0-1-2 has its right-hand normal pointing AWAY from the top triangle 3-4-5, Abaqus' 1-2-3 towards 4-5-6
-  !> (counterclockwise seen from the top), so the frames list the nodes 1, 3, 2, 4, 6, 5.
-  type(element_family_t), parameter :: element_families(9) = [ &
+  !> (counterclockwise seen from the top), so the frames list the nodes 1, 3, 2, 4, 6, 5 (and the mid-side nodes of
+  !> the edges VTK's order then names: 9, 8, 7 below, 12, 11, 10 above, 13, 15, 14 between).
+  type(element_family_t), parameter :: element_families(10) = [ &
     element_family_t('HEX8', 3, 8, 6, [4, 4, 4, 4, 4, 4], hex_faces, 12, ident20), &
     element_family_t('HEX20', 3, 20, 6, [8, 8, 8, 8, 8, 8], hex_faces, 25, ident20), &
     element_family_t('TET4', 3, 4, 4, [3, 3, 3, 3, 0, 0], tet_faces, 10, ident20), &
@@ -131,10 +143,12 @@ module element_catalog
     element_family_t('WEDGE6', 3, 6, 5, [3, 3, 4, 4, 4, 0], wedge_faces, 13, &
       [1, 3, 2, 4, 6, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]), &
     element_family_t('TRI3', 2, 3, 3, [2, 2, 2, 0, 0, 0], tri_faces, 5, ident20), &
-    element_family_t('TRI6', 2, 6, 3, [3, 3, 3, 0, 0, 0], tri_faces, 22, ident20)]
+    element_family_t('TRI6', 2, 6, 3, [3, 3, 3, 0, 0, 0], tri_faces, 22, ident20), &
+    element_family_t('WEDGE15', 3, 15, 5, [6, 6, 8, 8, 8, 0], wedge15_faces, 26, &
+      [1, 3, 2, 4, 6, 5, 9, 8, 7, 12, 11, 10, 13, 15, 14, 0, 0, 0, 0, 0])]
 
   !> The element types (docs/elements.md: the table generated from these rows).
-  type(element_type_t), parameter :: element_types(28) = [ &
+  type(element_type_t), parameter :: element_types(29) = [ &
     element_type_t('C3D8', FAM_HEX8, KIN_3D, 2, 8, fbar=.true., &
       formulation='F-bar under NLGEOM; mean-dilatation B-bar without', kernel=KERNEL_C3D8), &
     element_type_t('C3D8I', FAM_HEX8, KIN_3D, 2, 8, nmode=3, &
@@ -180,7 +194,8 @@ module element_catalog
     element_type_t('CPS6', FAM_TRI6, KIN_PLANE_STRESS, RULE_TRI3, 3, formulation='plane stress, displacement'), &
     element_type_t('CAX3', FAM_TRI3, KIN_AXISYMMETRIC, RULE_TRI1, 1, &
       formulation='axisymmetric, displacement (hoop strain at the centroid)'), &
-    element_type_t('CAX6', FAM_TRI6, KIN_AXISYMMETRIC, RULE_TRI3, 3, formulation='axisymmetric, displacement')]
+    element_type_t('CAX6', FAM_TRI6, KIN_AXISYMMETRIC, RULE_TRI3, 3, formulation='axisymmetric, displacement'), &
+    element_type_t('C3D15', FAM_WEDGE15, KIN_3D, RULE_WEDGE9, 9, formulation='displacement')]
 
 contains
 
@@ -348,6 +363,8 @@ contains
       t = '4 (tetrahedral)'
     case (RULE_WEDGE2)
       t = '1x2 (centroid x 2 through the thickness)'
+    case (RULE_WEDGE9)
+      t = '3x3 (3 in the triangle x 3 through the thickness)'
     case (RULE_TRI1)
       t = '1 (centroid)'
     case (RULE_TRI3)

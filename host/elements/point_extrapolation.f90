@@ -6,13 +6,14 @@
 !>     constant; 2 x 2 x 2: trilinear, the usual extrapolation of C3D8, C3D8I and C3D20R; 3 x 3 x 3: triquadratic);
 !>   the 4-point tetrahedron: linear (C3D10); the centroid rule: the constant (C3D4);
 !>   the wedge's 2 points: linear through the thickness, constant in the triangle (C3D6);
-!>   the triangle's 3 points: linear (CPE6, CPS6, CAX6); its centroid: the constant (CPE3, CPS3, CAX3).
+!>   the triangle's 3 points: linear (CPE6, CPS6, CAX6); its centroid: the constant (CPE3, CPS3, CAX3);
+!>   the 15-node wedge's 3 x 3 points: linear in the triangle times quadratic through the thickness (C3D15).
 !> A constant field is reproduced exactly at every node (the rows of the matrix sum to 1), and so is any field of the
 !> polynomial's degree. Which polynomial Abaqus fits for each rule is not documented in the pages found: inferred.
 module point_extrapolation
   use ldfcz_kinds, only: dp
   use element_catalog, only: element_types, element_family, element_nnode, element_ndim, &
-    RULE_TET1, RULE_TET4, RULE_WEDGE2, RULE_TRI1, RULE_TRI3
+    RULE_TET1, RULE_TET4, RULE_WEDGE2, RULE_TRI1, RULE_TRI3, RULE_WEDGE9
   use solid_shape, only: solid_gauss_point, solid_node_parent
   implicit none
   private
@@ -58,6 +59,8 @@ contains
       pw = reshape([0, 0, 0], [3, 1])
     case (RULE_TRI3)
       pw = reshape([0, 0, 0, 1, 0, 0, 0, 1, 0], [3, 3])
+    case (RULE_WEDGE9)
+      pw = reshape([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 0, 0, 2, 1, 0, 2, 0, 1, 2], [3, 9])
     case (RULE_TET4)
       pw = reshape([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1], [3, 4])
     case (RULE_WEDGE2)

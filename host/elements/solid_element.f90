@@ -1,5 +1,5 @@
 !> The continuum elements of the host, ONE kinematics and UMAT-calling path for every type of the element catalogue
-!> (element_catalog.f90: C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, C3D6, CPE4/CPE4I/CPE4R/CPE8/CPE8R,
+!> (element_catalog.f90: C3D8, C3D8I, C3D8R, C3D20, C3D20R, C3D4, C3D10, C3D6, C3D15, CPE4/CPE4I/CPE4R/CPE8/CPE8R,
 !> CPS4/CPS4I/CPS4R/CPS8/CPS8R, CAX4/CAX4R/CAX8/CAX8R, the triangles CPE3/CPE6/CPS3/CPS6/CAX3/CAX6; shape
 !> functions and rules in solid_shape.f90), calling their material exactly as Abaqus/Standard calls a UMAT
 !> (docs/conventions.md). Types differ only by data: shape functions, integration rule, and the switches

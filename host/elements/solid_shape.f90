@@ -11,6 +11,9 @@
 !>   WEDGE6 (g, h, r), g, h >= 0, g + h <= 1, -1 <= r <= 1: nodes 1 (0,0,-1), 2 (1,0,-1), 3 (0,1,-1) counter-clockwise
 !>          seen from +r, 4-6 above them on r = +1; N_a = L_a (1 - r)/2, N_(a+3) = L_a (1 + r)/2 with L = (1 - g - h,
 !>          g, h) (the Abaqus Theory Manual's first-order wedge).
+!>   WEDGE15 corners as WEDGE6; mid-side 7-9 on 1-2, 2-3, 3-1, 10-12 on 4-5, 5-6, 6-4, 13-15 on 1-4, 2-5, 3-6;
+!>          corner a: L_a ((2 L_a - 1)(1 + r_a r) - (1 - r^2)) / 2, triangle edge ij: 2 L_i L_j (1 + r_m r),
+!>          vertical edge above a: L_a (1 - r^2) (r_a, r_m = -1 below, +1 above).
 !>   QUAD4  counter-clockwise (-1,-1), (1,-1), (1,1), (-1,1).
 !>   QUAD8  corners as QUAD4; mid-side 5 on 1-2, 6 on 2-3, 7 on 3-4, 8 on 4-1.
 !>   TRI3   (g, h), g, h >= 0, g + h <= 1: nodes 1 (0,0), 2 (1,0), 3 (0,1) counter-clockwise; N = (1 - g - h, g, h).
@@ -18,6 +21,7 @@
 !> Rules: Gauss n x n (x n) with xi fastest, then eta, then zeta (points at -g, [0,] +g in that order); tetrahedra:
 !> 1 point at the centroid, or 4 points (volume coordinates a = 0.5854..., b = 0.1382...), point k nearest corner k;
 !> wedge: the triangle's centroid at r = -1/sqrt(3) (point 1, nodes 1-3 side) and r = +1/sqrt(3) (point 2);
+!> C3D15: the triangle's 3 points (below) fastest, then r = -sqrt(3/5), 0, +sqrt(3/5) (9 points);
 !> triangles: the centroid (CPE3, CPS3, CAX3), or 3 points at (1/6, 1/6), (2/3, 1/6), (1/6, 2/3) (weights 1/6:
 !> exact for quadratics; CPE6, CPS6, CAX6), point k nearest corner k.
 !> The 2x2x2 order is Abaqus' documented one; for 3x3x3, 3x3, the 4-point tetrahedron, the wedge and the 3-point
@@ -25,7 +29,7 @@
 module solid_shape
   use ldfcz_kinds, only: dp
   use element_catalog, only: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6, &
-    FAM_TRI3, FAM_TRI6, RULE_TET1, RULE_TET4, RULE_WEDGE2, RULE_TRI1, RULE_TRI3
+    FAM_TRI3, FAM_TRI6, FAM_WEDGE15, RULE_TET1, RULE_TET4, RULE_WEDGE2, RULE_TRI1, RULE_TRI3, RULE_WEDGE9
   implicit none
   private
   public :: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base, solid_node_parent
@@ -44,6 +48,8 @@ module solid_shape
   integer, parameter :: tet_edges(2, 6) = reshape([1, 2, 2, 3, 3, 1, 1, 4, 2, 4, 3, 4], [2, 6])
   !> TRI6 mid-side nodes 4..6: the two corners of their edge (the first three edges of the tetrahedron's)
   integer, parameter :: tri_edges(2, 3) = tet_edges(:, 1:3)
+  !> WEDGE15 mid-side nodes 7..15: the two corners of their edge
+  integer, parameter :: wedge_edges(2, 9) = reshape([1, 2, 2, 3, 3, 1, 4, 5, 5, 6, 6, 4, 1, 4, 2, 5, 3, 6], [2, 9])
 
 contains
 
@@ -53,7 +59,7 @@ contains
     real(dp) :: xi(3)
     xi = 0.0_dp
     if (family == FAM_TET4 .or. family == FAM_TET10) xi = 0.25_dp
-    if (family == FAM_WEDGE6 .or. family == FAM_TRI3 .or. family == FAM_TRI6) xi(1:2) = 1.0_dp / 3
+    if (any(family == [FAM_WEDGE6, FAM_WEDGE15, FAM_TRI3, FAM_TRI6])) xi(1:2) = 1.0_dp / 3
   end function solid_parent_centre
 
   !> Parent coordinates of node a of a family (the node tables of the module header; xi(3) = 0 in 2D).
@@ -77,8 +83,12 @@ contains
       else
         xi = 0.5_dp * (tet(:, tet_edges(1, a - 4)) + tet(:, tet_edges(2, a - 4)))
       end if
-    case (FAM_WEDGE6)
-      xi = wedge(:, a)
+    case (FAM_WEDGE6, FAM_WEDGE15)
+      if (a <= 6) then
+        xi = wedge(:, a)
+      else
+        xi = 0.5_dp * (wedge(:, wedge_edges(1, a - 6)) + wedge(:, wedge_edges(2, a - 6)))
+      end if
     case (FAM_TRI3, FAM_TRI6)
       if (a <= 3) then
         xi(1:2) = tet(1:2, a)
@@ -192,6 +202,8 @@ contains
           dndxi(i, 3) = 0.5_dp * (2 * k - 3) * l(a)
         end do
       end do
+    case (FAM_WEDGE15)
+      call wedge15_shape(xi, n, dndxi)
     case (FAM_QUAD4)
       do a = 1, 4
         p = 1 + quad_nodes(1, a) * xi(1)
@@ -246,9 +258,42 @@ contains
     end select
   end subroutine solid_shape_eval
 
+  !> The 15-node wedge's shape functions and derivatives (module header) at (g, h, r).
+  pure subroutine wedge15_shape(xi, n, dndxi)
+    real(dp), intent(in) :: xi(:)
+    real(dp), intent(out) :: n(:), dndxi(:, :)
+    real(dp) :: l(3), dl(3, 2), r, ra, c
+    integer :: a, i, j, m
+    l = [1 - xi(1) - xi(2), xi(1), xi(2)]
+    dl = reshape([-1.0_dp, 1.0_dp, 0.0_dp, -1.0_dp, 0.0_dp, 1.0_dp], [3, 2])
+    r = xi(3)
+    do a = 1, 6
+      i = modulo(a - 1, 3) + 1          ! the triangle corner of node a
+      ra = merge(-1.0_dp, 1.0_dp, a <= 3)
+      c = (2 * l(i) - 1) * (1 + ra * r) - (1 - r * r)
+      n(a) = 0.5_dp * l(i) * c
+      dndxi(a, 1:2) = 0.5_dp * dl(i, :) * c + 0.5_dp * l(i) * 2 * dl(i, :) * (1 + ra * r)
+      dndxi(a, 3) = 0.5_dp * l(i) * ((2 * l(i) - 1) * ra + 2 * r)
+    end do
+    do m = 7, 12                        ! mid-side nodes of the triangle edges, below then above
+      i = wedge_edges(1, m - 6) - merge(0, 3, m <= 9)
+      j = wedge_edges(2, m - 6) - merge(0, 3, m <= 9)
+      ra = merge(-1.0_dp, 1.0_dp, m <= 9)
+      n(m) = 2 * l(i) * l(j) * (1 + ra * r)
+      dndxi(m, 1:2) = 2 * (dl(i, :) * l(j) + l(i) * dl(j, :)) * (1 + ra * r)
+      dndxi(m, 3) = 2 * l(i) * l(j) * ra
+    end do
+    do m = 13, 15                       ! mid-side nodes of the vertical edges
+      i = m - 12
+      n(m) = l(i) * (1 - r * r)
+      dndxi(m, 1:2) = dl(i, :) * (1 - r * r)
+      dndxi(m, 3) = -2 * l(i) * r
+    end do
+  end subroutine wedge15_shape
+
   !> Parent coordinates xi and weight w of integration point ip of a rule (Abaqus numbering, see the module header).
   pure subroutine solid_gauss_point(rule, ndim, ip, xi, w)
-    integer, intent(in) :: rule    !< Gauss points per direction (1..3) or RULE_TET1, _TET4, _WEDGE2, _TRI1, _TRI3
+    integer, intent(in) :: rule    !< Gauss points per direction (1..3) or RULE_TET1, _TET4, _WEDGE2, _WEDGE9, _TRI1, _TRI3
     integer, intent(in) :: ndim    !< 2 or 3
     integer, intent(in) :: ip      !< integration point
     real(dp), intent(out) :: xi(3) !< parent coordinates (xi(3) = 0 in 2D)
@@ -272,6 +317,16 @@ contains
       ! the triangle's centroid (weight its area 1/2) x 2 Gauss points through the thickness (weight 1)
       xi = [1.0_dp / 3, 1.0_dp / 3, merge(-g2, g2, ip == 1)]
       w = 0.5_dp
+    case (RULE_WEDGE9)
+      ! the triangle's 3 points (weights 1/6) fastest, then 3 Gauss points through the thickness
+      k = modulo(ip - 1, 3)
+      m = (ip - 1) / 3 + 1
+      xi(1:2) = 1.0_dp / 6
+      if (k > 0) xi(k) = 2.0_dp / 3
+      pts = [-g3, 0.0_dp, g3]
+      wts = [5.0_dp / 9, 8.0_dp / 9, 5.0_dp / 9]
+      xi(3) = pts(m)
+      w = wts(m) / 6
     case (RULE_TRI1)
       xi(1:2) = 1.0_dp / 3
       w = 0.5_dp

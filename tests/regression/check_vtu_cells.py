@@ -8,7 +8,7 @@ one undistorted element (unit cube, tetrahedron or wedge on the unit corners; un
 with mid-side nodes at the edge midpoints is run with *OUTPUT, FIELD, and its last frame read with VTK
 (python3-vtk9): the cell must have the VTK type VTK defines for that node layout (hexahedron 12, 20-node
 hexahedron 25, tetrahedron 10, 10-node tetrahedron 24, wedge 13, quadrilateral 9, 8-node quadrilateral 23,
-triangle 5, 6-node triangle 22), a positive size from VTK's own vtkCellSizeFilter equal to the element's (1, 1/6
+triangle 5, 6-node triangle 22, 15-node wedge 26), a positive size from VTK's own vtkCellSizeFilter equal to the element's (1, 1/6
 or 1/2 in 3D, 1 or 1/2 in 2D, on the
 frame's points, the original coordinates; to 1e-7 relative, the precision of the ASCII frames), and in 3D every face of VTK's cell must point outward (normal . (face centre - cell centre) > 0): a node
 order that is not VTK's (the wedge's base triangle, which VTK orders clockwise seen from the top while Abaqus
@@ -26,12 +26,13 @@ from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 VTK_CELL = {(8, 3): 12, (20, 3): 25, (4, 3): 10, (10, 3): 24, (6, 3): 13, (4, 2): 9, (8, 2): 23, (3, 2): 5,
-            (6, 2): 22}
+            (6, 2): 22, (15, 3): 26}
 HEX = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
 HEX_EDGES = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (6, 7), (7, 8), (8, 5), (1, 5), (2, 6), (3, 7), (4, 8)]
 TET = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
 TET_EDGES = [(1, 2), (2, 3), (3, 1), (1, 4), (2, 4), (3, 4)]
 WEDGE = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (0, 1, 1)]
+WEDGE_EDGES = [(1, 2), (2, 3), (3, 1), (4, 5), (5, 6), (6, 4), (1, 4), (2, 5), (3, 6)]
 QUAD = [(0, 0), (1, 0), (1, 1), (0, 1)]
 QUAD_EDGES = [(1, 2), (2, 3), (3, 4), (4, 1)]
 TRI = [(0, 0), (1, 0), (0, 1)]
@@ -47,7 +48,7 @@ def element_nodes(name, nnode, ndim):
     """Abaqus-ordered nodes of one undistorted element and its size (volume or area)."""
     if ndim == 3:
         corners, edges, size = {8: (HEX, [], 1.0), 20: (HEX, HEX_EDGES, 1.0), 4: (TET, [], 1 / 6),
-                                10: (TET, TET_EDGES, 1 / 6), 6: (WEDGE, [], 0.5)}[nnode]
+                                10: (TET, TET_EDGES, 1 / 6), 6: (WEDGE, [], 0.5), 15: (WEDGE, WEDGE_EDGES, 0.5)}[nnode]
     else:
         corners, edges, size = {4: (QUAD, [], 1.0), 8: (QUAD, QUAD_EDGES, 1.0), 3: (TRI, [], 0.5),
                                 6: (TRI, TRI_EDGES, 0.5)}[nnode]
