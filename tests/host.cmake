@@ -240,6 +240,16 @@ foreach(case model_change model_change_nlgeom time_points node_print_global boun
   set_tests_properties(deck_step_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
 
+# *PRE-TENSION SECTION: a bar cut by the section against its closed forms (force, the length held while a load is
+# added: two springs, FIXED and OP=MOD, a normal given into the moving side, tetrahedra touching the section at an
+# edge or vertex, NLGEOM) and the node tables unchanged (tests/regression/check_pretension.py)
+foreach(case force_2d fixed_2d mod_2d reversed_3d tet_3d nlgeom_2d)
+  add_test(NAME deck_pretension_${case} COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_pretension.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/pretension_${case} --case ${case})
+  set_tests_properties(deck_pretension_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+
 # field output as ParaView reads it: tensors in VTK's order with names, principal values, requests carried over
 # to the next step, a warning for a variable that cannot be written (python3-vtk9 reads the frames)
 add_test(NAME deck_field_output COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_field_output.py
