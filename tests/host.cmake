@@ -212,6 +212,10 @@ ldfcz_add_restart_test(restart_model_change ${LDFCZ_RESTART_DECKS}/model_change.
 ldfcz_add_restart_test(restart_model_change_step_end ${LDFCZ_RESTART_DECKS}/model_change.inp --stop 10 --freq 1
   --rel 0 --dat --point end --no-refusals)
 
+# *PRE-TENSION SECTION (the sections' extra dofs are part of the checkpointed displacement): tightened by a force
+# in step 1, held by *BOUNDARY, FIXED in step 2 while a load is added; stopped within step 2
+ldfcz_add_restart_test(restart_pretension ${LDFCZ_RESTART_DECKS}/pretension_fixed.inp --modes stop,term --stop 5
+  --freq 1 --rel 0 --dat --point mid --no-refusals)
 # issue 36 item 4 (docs/host.md): *COUPLING against statics, rigid motion, beam theory and twin *EQUATION decks;
 # *EQUATION over node sets against the same equations node by node, a chain of equations against the direct ones
 # (tests/regression/check_couplings.py)
