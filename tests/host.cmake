@@ -213,8 +213,9 @@ ldfcz_add_restart_test(restart_model_change_step_end ${LDFCZ_RESTART_DECKS}/mode
   --rel 0 --dat --point end --no-refusals)
 
 # *PRE-TENSION SECTION (the sections' extra dofs are part of the checkpointed displacement): tightened by a force
-# in step 1, held by *BOUNDARY, FIXED in step 2 while a load is added; stopped within step 2
-ldfcz_add_restart_test(restart_pretension ${LDFCZ_RESTART_DECKS}/pretension_fixed.inp --modes stop,term --stop 5
+# in step 1, held by *BOUNDARY, FIXED in step 2 while a load is added; stopped within step 2 (by increment count:
+# the run is too short for a SIGTERM to land in time)
+ldfcz_add_restart_test(restart_pretension ${LDFCZ_RESTART_DECKS}/pretension_fixed.inp --modes stop --stop 5
   --freq 1 --rel 0 --dat --point mid --no-refusals)
 # issue 36 item 4 (docs/host.md): *COUPLING against statics, rigid motion, beam theory and twin *EQUATION decks;
 # *EQUATION over node sets against the same equations node by node, a chain of equations against the direct ones

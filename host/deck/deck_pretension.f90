@@ -12,7 +12,7 @@ module deck_pretension
   use element_catalog, only: element_face_nodes
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_surface, &
-    ctx_fail, ctx_fail_pos, ctx_pos, ctx_allow_params, ctx_required, ctx_split, ctx_get_real
+    ctx_fail, ctx_fail_pos, ctx_pos, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, ctx_note_pos
   implicit none
   private
   public :: read_pretension_section, finish_pretensions
@@ -130,9 +130,28 @@ contains
       if (ctx%stat /= 0) return
       ctx%model%pretensions(k)%dof0 = ndof
       ndof = ndof + ctx%model%ndim * size(ctx%model%pretensions(k)%nodes)
+      call note_section(ctx, ctx%model%pretensions(k))
     end do
     ctx%model%npret_dof = ndof
   end subroutine finish_pretensions
+
+  !> JOB.log's note of a section: its nodes, normal and moving elements.
+  subroutine note_section(ctx, p)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(pretension_t), intent(in) :: p         !< the section
+    character(len=16) :: b
+    character(len=:), allocatable :: n
+    integer :: d
+    n = ''
+    do d = 1, ctx%model%ndim
+      write (b, '(es12.5)') p%normal(d)
+      n = n//trim(adjustl(b))//merge(', ', ') ', d < ctx%model%ndim)
+    end do
+    call ctx_note_pos(ctx, p%pos, 'surface '//trim(ctx%model%surfaces(p%surface)%name)//': '// &
+      itoa(size(p%nodes))//' nodes, normal ('//trim(n)//trim(merge(' given   ', ' computed', p%normal_given))// &
+      ', '//itoa(size(p%elems))//' elements on the surface''s side; pre-tension node '// &
+      model_label_text(ctx%model, ctx%model%node_id(p%node), .true.))
+  end subroutine note_section
 
   !> Section k's pre-tension node: a node, or a node set of one node; no element may hold it ("The pre-tension
   !> node should not be attached to any element", Analysis User's Guide), and one section only.
