@@ -8,11 +8,11 @@
 module deck_pretension
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: pretension_t, model_t, etype_user, model_label_text
+  use model_types, only: pretension_t, model_t, boundary_t, etype_user, model_label_text
   use element_catalog, only: element_face_nodes
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_surface, &
-    ctx_fail, ctx_fail_pos, ctx_pos, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, ctx_note_pos
+    ctx_fail, ctx_fail_pos, ctx_pos, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, ctx_note_pos, ctx_warn_pos
   implicit none
   private
   public :: read_pretension_section, finish_pretensions
@@ -119,7 +119,7 @@ contains
   !> *TRANSFORM), its normal, the elements on its side, and a check that it cuts the mesh; then the extra dofs.
   subroutine finish_pretensions(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    integer :: k, ndof
+    integer :: k, ndof, is
     ndof = 0
     do k = 1, ctx%model%npretension
       call resolve_node(ctx, k)
@@ -131,9 +131,28 @@ contains
       ctx%model%pretensions(k)%dof0 = ndof
       ndof = ndof + ctx%model%ndim * size(ctx%model%pretensions(k)%nodes)
       call note_section(ctx, ctx%model%pretensions(k))
+      call warn_inactive(ctx, ctx%model%pretensions(k)%node, ctx%model%initial_bcs, ctx%model%n_initial_bc)
+      do is = 1, ctx%model%nstep
+        call warn_inactive(ctx, ctx%model%pretensions(k)%node, ctx%model%steps(is)%bcs, ctx%model%steps(is)%nbc)
+      end do
     end do
     ctx%model%npret_dof = ndof
   end subroutine finish_pretensions
+
+  !> A boundary on dofs 2.. of a pre-tension node (it has dof 1 only) constrains nothing: warned, as Abaqus warns
+  !> for inactive dofs.
+  subroutine warn_inactive(ctx, node, bcs, nbc)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    integer, intent(in) :: node                 !< the pre-tension node
+    type(boundary_t), intent(in) :: bcs(:)      !< boundaries
+    integer, intent(in) :: nbc                  !< in use
+    integer :: j
+    do j = 1, nbc
+      if (bcs(j)%last_dof < 2 .or. all(bcs(j)%nodes /= node)) cycle
+      call ctx_warn_pos(ctx, bcs(j)%pos, 'dofs 2.. of pre-tension node '//model_label_text(ctx%model, &
+        ctx%model%node_id(node), .true.)//' are not active (it has dof 1 only): constrained nothing there')
+    end do
+  end subroutine warn_inactive
 
   !> JOB.log's note of a section: its nodes, normal and moving elements.
   subroutine note_section(ctx, p)
