@@ -247,8 +247,8 @@ endforeach()
 
 # *PRE-TENSION SECTION: a bar cut by the section against its closed forms (force, the length held while a load is
 # added: two springs, FIXED and OP=MOD, a normal given into the moving side, tetrahedra touching the section at an
-# edge or vertex, NLGEOM) and the node tables unchanged (tests/regression/check_pretension.py)
-foreach(case force_2d fixed_2d mod_2d reversed_3d tet_3d nlgeom_2d)
+# edge or vertex, NLGEOM, the length prescribed) and the node tables unchanged (tests/regression/check_pretension.py)
+foreach(case force_2d fixed_2d mod_2d reversed_3d tet_3d nlgeom_2d length_2d)
   add_test(NAME deck_pretension_${case} COMMAND Python3::Interpreter
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_pretension.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/pretension_${case} --case ${case})

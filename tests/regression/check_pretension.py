@@ -26,6 +26,8 @@ Cases:
                 the relative displacement along that normal, so F = 5 compresses the bar (N = -F), u_P = F L / EA.
   tet_3d        C3D4 (each cube of a 10 x 2 x 2 grid in six tetrahedra): elements that touch the section at an
                 edge or a vertex only move with it when they lie on its side; the closed form of force_2d.
+  length_2d     the length change prescribed, *BOUNDARY P, 1, 2, 0.01 (dof 2 is not active: warned at its line):
+                N = EA u_P / L, the reaction at P equal to N.
   nlgeom_2d     force_2d under NLGEOM with F = 0.1 (strain 1e-4): the reactions -F and +F to 1e-6 (equilibrium to
                 the Newton tolerance),
                 u_P = F L / EA within 1e-3 (the strain measures differ by the order of the strain).
@@ -242,6 +244,25 @@ def case_tet_3d(exe, out):
     check_bar(bar, rows, F, "tet_3d")
 
 
+def case_length_2d(exe, out):
+    bar = Bar("CPE4")
+    up = 0.01
+    text = bar.deck([["*BOUNDARY", "P, 1, 2, %r" % up]])
+    path = os.path.join(out, "length_2d.inp")
+    with open(path, "w") as f:
+        f.write(text)
+    r = subprocess.run([exe, "-q", "--out", os.path.join(out, "length_2d"), path], capture_output=True, text=True)
+    line = text.split("\n").index("P, 1, 2, %r" % up) + 1
+    want = "length_2d.inp:%d: *BOUNDARY: dofs 2.. of pre-tension node 1000 are not active" % line
+    if r.returncode != 0 or want not in r.stderr:
+        fail("length_2d: exit %d, expected 0 and the warning '%s'; stderr: %s" % (r.returncode, want, r.stderr))
+    print("ok: warned at line %d (dof 2 of the pre-tension node is not active)" % line)
+    rows, _ = run(exe, out, "length_2d", text)
+    n_force = E * A * up / L
+    check_bar(bar, rows, n_force, "length_2d", f_applied=n_force)
+    check("length_2d bolt force (reaction at P)", last(rows, "P.RF1"), n_force, 1e-9 * n_force)
+
+
 def case_nlgeom_2d(exe, out):
     bar = Bar("CPE4")
     f = 0.1
@@ -253,7 +274,8 @@ def case_nlgeom_2d(exe, out):
 
 
 CASES = {"force_2d": case_force_2d, "fixed_2d": case_fixed_2d, "mod_2d": case_mod_2d,
-         "reversed_3d": case_reversed_3d, "tet_3d": case_tet_3d, "nlgeom_2d": case_nlgeom_2d}
+         "reversed_3d": case_reversed_3d, "tet_3d": case_tet_3d, "nlgeom_2d": case_nlgeom_2d,
+         "length_2d": case_length_2d}
 
 
 def main():
