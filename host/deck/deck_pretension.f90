@@ -330,6 +330,13 @@ contains
         nout = nout + face_area_vector(model, sf%relems(a), sf%rfaces(a))
       end do
       if (.not. norm2(nout) > 0.0_dp) nout = p%normal
+      do a = 1, size(sf%relems)
+        if (dot_product(face_area_vector(model, sf%relems(a), sf%rfaces(a)), nout) > 0.0_dp) cycle
+        call ctx_fail_pos(ctx, p%pos, 'surface '//trim(sf%name)//': face S'//itoa(sf%rfaces(a))//' of element '// &
+          model_label_text(model, model%elem_id(sf%relems(a)), .false.)//' faces the other way: a pre-tension '// &
+          'section is made of the faces of the elements on one side of the cut')
+        return
+      end do
       on_node = .false.
       on_node(p%nodes) = .true.
       moves = .false.
