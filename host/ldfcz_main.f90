@@ -41,7 +41,7 @@ program ldfcz
   logical :: out_open    !< JOB.log is open (an error is logged there too)
   type(interface_check_t) :: orient
   character(len=:), allocatable :: orient_text
-  character(len=400), allocatable :: routine_notes(:)   !< which routine each material and user element type runs
+  character(len=1000), allocatable :: routine_notes(:)  !< which routine each material and user element type runs (note_len)
   type(model_t) :: model
   type(user_routines_t) :: routines
   type(output_t) :: out

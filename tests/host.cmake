@@ -218,6 +218,11 @@ ldfcz_add_restart_test(restart_model_change ${LDFCZ_RESTART_DECKS}/model_change.
 ldfcz_add_restart_test(restart_model_change_step_end ${LDFCZ_RESTART_DECKS}/model_change.inp --stop 10 --freq 1
   --rel 0 --dat --point end --no-refusals)
 
+# *PRE-TENSION SECTION (the sections' extra dofs are part of the checkpointed displacement): tightened by a force
+# in step 1, held by *BOUNDARY, FIXED in step 2 while a load is added; stopped within step 2 (by increment count:
+# the run is too short for a SIGTERM to land in time)
+ldfcz_add_restart_test(restart_pretension ${LDFCZ_RESTART_DECKS}/pretension_fixed.inp --modes stop --stop 5
+  --freq 1 --rel 0 --dat --point mid --no-refusals)
 # issue 36 item 4 (docs/host.md): *COUPLING against statics, rigid motion, beam theory and twin *EQUATION decks;
 # *EQUATION over node sets against the same equations node by node, a chain of equations against the direct ones
 # (tests/regression/check_couplings.py)
@@ -244,6 +249,16 @@ foreach(case model_change model_change_nlgeom time_points node_print_global boun
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_step_options.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/step_${case} --case ${case})
   set_tests_properties(deck_step_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
+
+# *PRE-TENSION SECTION: a bar cut by the section against its closed forms (force, the length held while a load is
+# added: two springs, FIXED and OP=MOD, a normal given into the moving side, tetrahedra touching the section at an
+# edge or vertex, NLGEOM, the length prescribed) and the node tables unchanged (tests/regression/check_pretension.py)
+foreach(case force_2d fixed_2d mod_2d reversed_3d tet_3d nlgeom_2d length_2d)
+  add_test(NAME deck_pretension_${case} COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_pretension.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/pretension_${case} --case ${case})
+  set_tests_properties(deck_pretension_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
 
 # field output as ParaView reads it: tensors in VTK's order with names, principal values, requests carried over

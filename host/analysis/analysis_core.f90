@@ -29,6 +29,7 @@ module analysis_core
   use linear_constraints, only: constraint_set_t, constraints_build, constraints_extend, constraints_transform, &
     constraints_mark_masters
   use coupling_constraints, only: coupling_mark_used
+  use pretension_sections, only: pretension_element_dofs
   use node_rotations, only: node_rotation_t, node_rotations_build, element_to_global, element_to_local, &
     element_matrix_to_local
   implicit none
@@ -195,7 +196,8 @@ contains
     an%routines = routines
     an%ndim = model%ndim
     ! the displacement dofs of the nodes, then the rotational dofs of the couplings' reference nodes (model_dof)
-    an%ndof = model%ndim * model%nnode + model%nrot
+    ! and the extra dofs of the pre-tension sections' moving side (pretension_sections)
+    an%ndof = model%ndim * model%nnode + model%nrot + model%npret_dof
     call element_dof_maps(an, model, stat, errmsg)
     if (stat /= 0) return
     call section_materials(an, model, routines, stat, errmsg)
@@ -299,6 +301,12 @@ contains
       end do
       an%used(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)) = .true.
     end do
+    if (model%npretension > 0) then
+      ! the elements on a section's side hold its extra dofs instead of the section's nodes
+      call pretension_element_dofs(model, an%elem_ptr, an%elem_dof)
+      an%used = .false.
+      an%used(an%elem_dof) = .true.
+    end if
     call coupling_mark_used(model, an%used)
     an%max_ndofel = maxval(an%elem_ptr(2:) - an%elem_ptr(1:model%nelem))
     call color_elements(model%nelem, an%ndof, an%elem_ptr, an%elem_dof, an%eqs%ncolor, an%eqs%color_ptr, an%eqs%color_elem)

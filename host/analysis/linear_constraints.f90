@@ -9,6 +9,7 @@ module linear_constraints
   use model_types, only: model_t, boundary_t, model_dof, model_label_text
   use element_catalog, only: element_face_nodes
   use coupling_constraints, only: coupling_rows_t, coupling_rows
+  use pretension_sections, only: pretension_rows
   implicit none
   private
   public :: constraint_set_t, constraints_build, constraints_extend, constraints_transform, constraints_residual, &
@@ -102,6 +103,7 @@ contains
         end do
       end associate
     end do
+    if (model%npretension > 0) call add_pretensions(cs, model)
     do k = 1, model%ntie
       call add_tie(cs, model, k, used, stat, errmsg)
       if (stat /= 0) return
@@ -126,6 +128,19 @@ contains
     end subroutine fail
 
   end subroutine constraints_build
+
+  !> The rows of the pre-tension sections (pretension_sections): each extra dof of a section node is eliminated.
+  pure subroutine add_pretensions(cs, model)
+    type(constraint_set_t), intent(inout) :: cs  !< constraints
+    type(model_t), intent(in) :: model           !< the model
+    integer, allocatable :: slave(:), ptr(:), mdof(:)
+    real(dp), allocatable :: w(:)
+    integer :: r
+    call pretension_rows(model, slave, ptr, mdof, w)
+    do r = 1, size(slave)
+      call append_exact(cs, slave(r), mdof(ptr(r):ptr(r + 1) - 1), w(ptr(r):ptr(r + 1) - 1))
+    end do
+  end subroutine add_pretensions
 
   !> *TIE k: every node of the slave surface that is not a node of the master surface is tied to the master face
   !> it projects onto (within the position tolerance), u_s = sum_a N_a(xi) u_a for each displacement dof.

@@ -121,7 +121,8 @@ contains
     end if
   end subroutine hash_mesh
 
-  !> *COUPLING definitions: reference node, coupling nodes, type, dofs, weighting; the rotational dofs.
+  !> *COUPLING definitions: reference node, coupling nodes, type, dofs, weighting; the rotational dofs; the
+  !> pre-tension sections.
   subroutine hash_couplings(hs, model)
     type(hash_t), intent(inout) :: hs   !< the hash
     type(model_t), intent(in) :: model  !< the model
@@ -132,6 +133,13 @@ contains
         call hash_ints(hs, [c%ref, c%weighting, merge(1, 0, c%kinematic), merge(1, 0, c%dofs)])
         call hash_ints(hs, c%nodes)
         call hash_reals(hs, [c%radius])
+      end associate
+    end do
+    ! *PRE-TENSION SECTION (hashed only when present: older decks keep their fingerprint)
+    do k = 1, model%npretension
+      associate (p => model%pretensions(k))
+        call hash_ints(hs, [p%node, p%dof0, p%nodes, p%elems])
+        call hash_reals(hs, p%normal)
       end associate
     end do
   end subroutine hash_couplings

@@ -10,6 +10,7 @@ module deck_finish
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos, ctx_note_pos
   use output_registry, only: output_unprovided_requests
   use deck_finish_extras, only: finish_extras
+  use deck_pretension, only: finish_pretensions
   implicit none
   private
   public :: finish_model
@@ -39,6 +40,7 @@ contains
     if (ctx%stat == 0) call resolve_surfaces(ctx)
     if (ctx%stat == 0) call resolve_dloads(ctx)
     if (ctx%stat == 0) call finish_extras(ctx)
+    if (ctx%stat == 0) call finish_pretensions(ctx)
     if (ctx%stat == 0) call warn_unprovided_outputs(ctx)
   end subroutine finish_model
 

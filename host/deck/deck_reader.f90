@@ -28,6 +28,7 @@ module deck_reader
   use deck_orientation, only: read_orientation, read_transform
   use deck_declarations, only: read_ldfcz_declaration, track_declaration_owner
   use deck_couplings, only: read_coupling, read_coupling_kind
+  use deck_pretension, only: read_pretension_section
   use deck_model_change, only: read_model_change, read_time_points
   implicit none
   private
@@ -41,7 +42,7 @@ module deck_reader
     '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', '*DEPVAR', '*USER ELEMENT', &
     '*UEL PROPERTY', '*AMPLITUDE', '*BOUNDARY', '*CLOAD', '*DLOAD', '*DSLOAD', '*SURFACE', '*DENSITY', &
     '*INITIAL CONDITIONS', '*TEMPERATURE', '*FIELD', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*COUPLING', &
-    '*KINEMATIC', '*DISTRIBUTING', '*MODEL CHANGE', '*TIME POINTS', '*STEP', &
+    '*KINEMATIC', '*DISTRIBUTING', '*PRE-TENSION SECTION', '*MODEL CHANGE', '*TIME POINTS', '*STEP', &
     '*STATIC', '*VISCO', '*CONTROLS', '*OUTPUT', '*NODE OUTPUT', '*ELEMENT OUTPUT', '*NODE PRINT', '*EL PRINT', &
     '*MONITOR', '*END STEP', '*RESTART', '*LDFCZ SVARS', '*LDFCZ STATEV', '*LDFCZ BUILTIN', '*SECTION CONTROLS', &
     '*HOURGLASS STIFFNESS', '*ENERGY PRINT', '*PREPRINT', &
@@ -60,7 +61,7 @@ module deck_reader
     '*CONTACT PAIR', '*CONTACT', '*CONTACT INCLUSIONS', '*CONTACT PROPERTY ASSIGNMENT', '*SURFACE INTERACTION', &
     '*SURFACE BEHAVIOR', '*FRICTION', '*CLEARANCE', '*RIGID BODY', &
     '*SPRING', '*DASHPOT', '*MASS', '*ROTARY INERTIA', '*EMBEDDED ELEMENT', '*PHYSICAL CONSTANTS', &
-    '*DISTRIBUTION', '*DISTRIBUTION TABLE', '*PRE-TENSION SECTION', '*DSFLUX', '*CFLUX', '*FILM', &
+    '*DISTRIBUTION', '*DISTRIBUTION TABLE', '*DSFLUX', '*CFLUX', '*FILM', &
     '*ADAPTIVE MESH', '*IMPORT']
 
 
@@ -284,6 +285,8 @@ contains
       call read_coupling(ctx)
     case ('*KINEMATIC', '*DISTRIBUTING')
       call read_coupling_kind(ctx)
+    case ('*PRE-TENSION SECTION')
+      call read_pretension_section(ctx)
     case ('*MODEL CHANGE')
       call read_model_change(ctx)
     case ('*TIME POINTS')
@@ -413,7 +416,8 @@ contains
           '*SECTION CONTROLS', '*HOURGLASS STIFFNESS', &
           '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
           '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION', &
-          '*TRANSFORM', '*SYSTEM', '*COUPLING', '*KINEMATIC', '*DISTRIBUTING', '*TIME POINTS')
+          '*TRANSFORM', '*SYSTEM', '*COUPLING', '*KINEMATIC', '*DISTRIBUTING', '*TIME POINTS', &
+          '*PRE-TENSION SECTION')
       is_model_keyword = .true.
     case default
       is_model_keyword = .false.

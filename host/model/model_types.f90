@@ -7,7 +7,7 @@ module model_types
   public :: model_t, node_set_t, elem_set_t, material_t, section_t, user_element_type_t, amplitude_t
   public :: uel_property_t, boundary_t, node_print_t, step_t, source_pos_t, cload_t, dload_t, surface_t
   public :: dload_bx, dload_grav, dload_pressure, dload_user, dload_centrif, dload_rota, model_find_surface
-  public :: coupling_t, model_change_t, time_points_t, model_dof, model_dof_node, model_find_time_points
+  public :: coupling_t, pretension_t, model_change_t, time_points_t, model_dof, model_dof_node, model_find_time_points
   public :: initial_condition_t, init_stress, init_solution, equation_t, tie_t
   public :: etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
@@ -247,6 +247,22 @@ module model_types
     type(source_pos_t) :: kind_pos         !< the *KINEMATIC or *DISTRIBUTING line
   end type coupling_t
 
+  !> *PRE-TENSION SECTION with SURFACE=: the element-based surface that cuts a fastener and the pre-tension node
+  !> whose dof 1 is the relative displacement of the two sides along the normal (docs/host.md, "Pre-tension
+  !> sections"). The elements on the surface's side (the elements of its faces and the others on that side that
+  !> share its nodes) see the section nodes' displacement plus u_p n: extra dofs, eliminated (pretension_sections).
+  type :: pretension_t
+    integer :: surface = 0                 !< element-based surface (index)
+    integer :: node = 0                    !< pre-tension node (negative label until finish_model, then its index)
+    integer :: node_set = 0                !< NODE= given as a node set (of one node): its index
+    real(dp) :: normal(3) = 0.0_dp         !< unit normal (the data line's, or the faces' mean outward normal)
+    logical :: normal_given = .false.      !< the data line gave it
+    integer, allocatable :: nodes(:)       !< the section's nodes (finish_model)
+    integer, allocatable :: elems(:)       !< the elements on the surface's side that hold section nodes
+    integer :: dof0 = 0                    !< its extra dofs follow those of the earlier sections (ndim per node)
+    type(source_pos_t) :: pos              !< the *PRE-TENSION SECTION line
+  end type pretension_t
+
   !> One *MODEL CHANGE of a step: elements removed or added (docs/host.md, "Element removal and reactivation").
   type :: model_change_t
     integer, allocatable :: elems(:)       !< element indices (negative labels, and sets in elsets, until finish_model)
@@ -423,6 +439,9 @@ module model_types
     !> 2D), counted after the ndim*nnode displacement dofs; 0: none (model_dof)
     integer, allocatable :: node_rot(:)
     integer :: nrot = 0                    !< rotational dofs of the model
+    type(pretension_t), allocatable :: pretensions(:) !< *PRE-TENSION SECTION definitions
+    integer :: npretension = 0
+    integer :: npret_dof = 0               !< extra dofs of the sections (after the nodes' and the rotations')
     type(time_points_t), allocatable :: time_points(:) !< *TIME POINTS definitions
     integer :: ntime_points = 0
     logical :: has_model_change = .false.  !< some step has a *MODEL CHANGE

@@ -11,7 +11,7 @@ module routine_choice
   private
   public :: user_routines_choose
 
-  integer, parameter :: note_len = 400  !< longest JOB.log note
+  integer, parameter :: note_len = 1000 !< longest JOB.log note (a deck and a routine in deep folders: 400 cut them)
 
 contains
 

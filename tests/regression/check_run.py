@@ -405,7 +405,7 @@ def main():
     if a.bad:
         with open(a.deck) as f:
             first = f.readline()
-        m = re.match(r"\*\* EXPECT line=(\d+) keyword=(\*[A-Z ]+?)(?: file=(\S+))?\s*$", first)
+        m = re.match(r"\*\* EXPECT line=(\d+) keyword=(\*[A-Z -]+?)(?: file=(\S+))?\s*$", first)
         if not m:
             fail("the deck has no '** EXPECT line=N keyword=*KW' first line")
         line, kw, fname = m.group(1), m.group(2), m.group(3) or os.path.basename(a.deck)
