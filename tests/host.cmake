@@ -233,7 +233,8 @@ endforeach()
 # GLOBAL=YES against the transformed components, *BOUNDARY, FIXED against the held value and the reaction,
 # *NODE PRINT and *EL PRINT requests carried into later steps until respecified
 # (tests/regression/check_step_options.py)
-foreach(case model_change model_change_nlgeom time_points node_print_global boundary_fixed print_carry)
+foreach(case model_change model_change_nlgeom model_change_with_strain time_points node_print_global boundary_fixed
+    print_carry)
   add_test(NAME deck_step_${case} COMMAND Python3::Interpreter
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_step_options.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/step_${case} --case ${case})

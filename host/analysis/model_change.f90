@@ -3,8 +3,12 @@
 !> computed, and the forces it exerted on the rest of the model at the end of the previous step are ramped down to
 !> zero over the removal step; an element added back (strain-free, Abaqus' default) starts stress-free in the
 !> configuration its nodes have then: its reference is X + u_ref, u_ref the displacement at the reactivation, and
-!> its state starts at zero. The active set, the reactivation displacements and the forces to release are analysis
-!> state (analysis_state: the restart file holds them).
+!> its state starts at zero. An element added back WITH STRAIN keeps its initial configuration X: its state starts
+!> at zero and its first increment takes the whole displacement since the analysis began as its increment (the
+!> work flag from_zero, cleared when that increment converges), so that its strain is that of the total
+!> displacement. The active set, the reactivation displacements and the forces to release are analysis state
+!> (analysis_state: the restart file holds them); from_zero lives only until the step's first converged increment,
+!> before any checkpoint of the step.
 module model_change
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, etype_user
@@ -17,7 +21,7 @@ module model_change
   implicit none
   private
   public :: model_change_release, model_change_step_begin, model_change_resume
-  public :: element_active
+  public :: element_active, model_change_prescribable
 
 contains
 
@@ -28,6 +32,21 @@ contains
     element_active = .true.
     if (size(an%state%active) > 0) element_active = an%state%active(ie)
   end function element_active
+
+  !> (ndof) the dofs a *BOUNDARY prescribes in effect: those in use, and with *MODEL CHANGE also those of removed
+  !> elements, whose nodes stay in the model and move as prescribed (Abaqus: the nodes of removed elements remain
+  !> in the model), so that an element added back sees the displacement its nodes were given while it was out.
+  pure function model_change_prescribable(an, model) result(mask)
+    type(analysis_t), intent(in) :: an     !< the analysis
+    type(model_t), intent(in) :: model     !< the model
+    logical :: mask(an%ndof)
+    integer :: ie
+    mask = an%used
+    if (.not. model%has_model_change) return
+    do ie = 1, model%nelem
+      mask(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)) = .true.
+    end do
+  end function model_change_prescribable
 
   !> After the last increment of step is (converged, before its commit): the forces the elements that step is + 1
   !> removes exert on the rest of the model, -f_e summed at their nodes (this process's elements, summed over the
@@ -55,8 +74,9 @@ contains
   end subroutine model_change_release
 
   !> Start of step is (not a restart within it): its removals (inactive, their state zero, the forces they left
-  !> behind ramped down with the released loads) and strain-free reactivations (active, u_ref = the converged
-  !> displacement of their nodes, zero state, reference geometry at X + u_ref), then the dofs in use.
+  !> behind ramped down with the released loads), strain-free reactivations (active, u_ref = the converged
+  !> displacement of their nodes, zero state, reference geometry at X + u_ref) and reactivations with strain
+  !> (active, zero state, reference geometry at X, from_zero), then the dofs in use.
   subroutine model_change_step_begin(an, model, is)
     type(analysis_t), intent(inout) :: an  !< the analysis
     type(model_t), intent(in) :: model     !< the model
@@ -69,12 +89,15 @@ contains
         do j = 1, size(st%changes(k)%elems)
           ie = st%changes(k)%elems(j)
           s%active(ie) = .not. st%changes(k)%remove
-          s%shifted(ie) = s%active(ie)
-          if (s%active(ie)) s%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
+          s%shifted(ie) = s%active(ie) .and. st%changes(k)%strain_free
+          an%work%from_zero(ie) = s%active(ie) .and. .not. st%changes(k)%strain_free
+          if (s%shifted(ie)) s%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
             s%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
           if (.not. an%owned(ie)) cycle
           call element_state_allocate(an, model, ie, s%conv(ie))
           call element_state_allocate(an, model, ie, an%work%trial(ie))
+          ! with strain: the reference geometry at X again (a strain-free reactivation before may have moved it)
+          if (an%work%from_zero(ie)) call shifted_geometry(an, model, ie, .false.)
         end do
       end do
     end associate

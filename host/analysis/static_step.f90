@@ -20,7 +20,8 @@ module static_step
   use step_loads, only: loads_at_end
   use linear_constraints, only: constraints_apply, constraints_reactions
   use coupling_constraints, only: coupling_check_step
-  use model_change, only: model_change_release, model_change_step_begin, model_change_resume
+  use model_change, only: model_change_release, model_change_step_begin, model_change_resume, &
+    model_change_prescribable
   use step_control, only: step_control_init, step_control_cutback, step_control_converged, step_control_done, &
     step_control_dt, step_control_accuracy, step_control_exhausted, max_cutbacks
   use sparse_system, only: sparse_factor_count
@@ -345,7 +346,7 @@ contains
         call halt_on_error(out, run, errmsg, exit_input)
         return
       end if
-      an%eqs%prescribed = an%state%bc%on .and. an%used
+      an%eqs%prescribed = an%state%bc%on .and. model_change_prescribable(an, model)
       call analysis_number_equations(an, model, stat, errmsg)
       if (stat /= 0) then
         call halt_on_error(out, run, 'step '//itoa(is)//': '//errmsg, exit_input, echo=.false.)

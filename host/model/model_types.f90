@@ -252,7 +252,7 @@ module model_types
     integer, allocatable :: elems(:)       !< element indices (negative labels, and sets in elsets, until finish_model)
     integer, allocatable :: elsets(:)      !< element sets named on the data lines
     logical :: remove = .true.             !< REMOVE (else ADD)
-    logical :: strain_free = .true.        !< ADD=STRAIN FREE (the default; WITH STRAIN is refused)
+    logical :: strain_free = .true.        !< ADD=STRAIN FREE (the default), else ADD=WITH STRAIN
     type(source_pos_t) :: pos              !< the *MODEL CHANGE line
   end type model_change_t
 
