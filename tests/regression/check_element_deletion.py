@@ -8,7 +8,8 @@ ten increments; the UMAT (tests/regression/user_umat_delete.f90) sets state vari
 beyond a strain of 0.0105 in bar 2 (increment 6) and zeroes the stress in that increment only. The reaction at the
 top must be 2000 u3 up to increment 5 (both bars) and 1000 u3 from increment 6 on (bar 1 alone: bar 2 deleted),
 within 1e-9 of the largest force 20 (the linear element under a uniform strain is exact; the CSV has 16 digits);
-the log names the deleted element. The same deck without DELETE= (the host keeps calling the UMAT, which loads
+the log names the deleted element; the VTU frames' cell array STATUS (Abaqus' element status) is 1 for both
+elements up to increment 5 and 0 for element 2 from increment 6 on. The same deck without DELETE= (the host keeps calling the UMAT, which loads
 bar 2 again from zero) must differ from increment 7 on: the check can fail.
 """
 import argparse
@@ -16,6 +17,7 @@ import csv
 import os
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 
 
 def fail(msg):
@@ -33,6 +35,21 @@ def run(exe, deck, user, out):
     with open(os.path.join(out, job + ".log")) as f:
         log = f.read()
     return rows, log
+
+
+def frame_status(out):
+    """STATUS by element label in each frame after the initial one, in the order of JOB.pvd."""
+    pvd = ET.parse(os.path.join(out, "element_deletion.pvd")).getroot()
+    result = []
+    for ds in pvd.iter("DataSet"):
+        cells = {}
+        for arr in ET.parse(os.path.join(out, ds.get("file"))).getroot().iter("DataArray"):
+            if arr.get("Name") in ("element", "STATUS"):
+                cells[arr.get("Name")] = [int(float(x)) for x in arr.text.split()]
+        if "STATUS" not in cells:
+            fail("frame %s has no STATUS array" % ds.get("file"))
+        result.append(dict(zip(cells["element"], cells["STATUS"])))
+    return result[1:]
 
 
 def main():
@@ -54,6 +71,11 @@ def main():
             fail("increment %d: reaction %.15g, closed form %.15g" % (k, f, want))
     if "step 1 increment 6: 1 element(s) deleted" not in log or "(element 2" not in log:
         fail("the log does not name element 2 deleted in increment 6")
+    status = frame_status(os.path.join(a.out, "deletion"))
+    for k, st in enumerate(status, start=1):
+        if st != {1: 1, 2: 1 if k <= 5 else 0}:
+            fail("increment %d: STATUS %s" % (k, st))
+    print("STATUS of element 2 by increment: %s" % [st[2] for st in status])
     twin = os.path.join(a.out, "no_delete.inp")
     with open(a.deck) as f:
         text = f.read()
