@@ -193,6 +193,12 @@ ldfcz_add_restart_test(restart_loads_steps ${LDFCZ_RESTART_DECKS}/loads_steps.in
 # continuation begins step 2 from the loads, boundaries and increment size the file holds
 ldfcz_add_restart_test(restart_loads_step_end ${LDFCZ_RESTART_DECKS}/loads_steps.inp --stop 4 --freq 3 --rel 0 --dat
   --point end --no-refusals)
+# *MODEL CHANGE, ADD=WITH STRAIN at the start of step 2: stopped at the end of step 1 (the restart begins step 2
+# with the reactivation) and within step 2 (after it)
+ldfcz_add_restart_test(restart_model_change_with_strain ${LDFCZ_RESTART_DECKS}/model_change_with_strain.inp
+  --stop 4 --freq 1 --rel 0 --dat --point end --no-refusals)
+ldfcz_add_restart_test(restart_model_change_with_strain_mid ${LDFCZ_RESTART_DECKS}/model_change_with_strain.inp
+  --modes stop,term --stop 6 --freq 1 --rel 0 --dat --point mid --no-refusals)
 # element deletion by a UMAT's state variable (*DEPVAR, DELETE=): stopped after the deletion (increment 7 of 10);
 # the restart needs the deleted element from the restart file
 ldfcz_add_restart_test(restart_element_deletion ${LDFCZ_RESTART_DECKS}/element_deletion.inp --modes stop,term
