@@ -157,6 +157,9 @@ contains
     do ie = 1, model%nelem
       kind = model%elem_kind(ie)
       if (kind == etype_user .or. .not. an%owned(ie)) cycle
+      if (size(an%state%active) > 0) then
+        if (.not. an%state%active(ie)) cycle   ! removed or deleted: no stress to average in
+      end if
       if (.not. allocated(ext(kind)%e)) then
         call point_to_node_matrix(kind, ext(kind)%e, stat)
         if (stat /= 0) cycle
