@@ -77,7 +77,8 @@ CALCULIX_NOTES = [
      '*NODE PRINT, TIMEPOINTS= and *EL PRINT, GLOBAL= are CalculiX parameters (KG *NODE PRINT, *EL PRINT have '
      'neither; Abaqus names time points on *OUTPUT, which ldfcz reads). c3d15 with GLOBAL=YES taken out runs and '
      'matches CalculiX to 1.6e-5 (reports/corpus/recheck_c3d15.md).'),
-    ('modelchel, modelchel3', '*MODEL CHANGE, ADD=WITH STRAIN: refused (only strain-free reactivation, the default).'),
+    ('modelchel3', '*MODEL CHANGE, MECHSTRAINTORESIDUAL (the mechanical strain turned into a residual strain) is a '
+     'CalculiX parameter (its manual, *MODEL CHANGE); Abaqus\'s *MODEL CHANGE has none (KG *MODEL CHANGE).'),
     ('beamprb, beamrb, beamrb2',
      '*RIGID BODY, NSET=, ROT NODE= is CalculiX\'s form (KG *RIGID BODY takes ELSET=, PIN NSET=, TIE NSET=, no '
      'ROT NODE); beamrb and beamrb2 also turn the body by 10 degrees under NLGEOM: out of scope.'),

@@ -9,7 +9,7 @@ program ldfcz
   use model_types, only: model_t
   use deck_reader, only: read_deck
   use user_routines, only: user_routines_connect_units, user_routines_t, user_routines_load
-  use routine_choice, only: user_routines_choose
+  use routine_choice, only: user_routines_choose, note_len
     use deck_context, only: deck_message_t
   use command_words, only: abaqus_word, abaqus_word_t, deck_path, restart_base, WORD_NONE, WORD_JOB, WORD_INPUT, &
     WORD_USER, WORD_CPUS, WORD_ACCEPTED, WORD_REFUSED
@@ -41,7 +41,7 @@ program ldfcz
   logical :: out_open    !< JOB.log is open (an error is logged there too)
   type(interface_check_t) :: orient
   character(len=:), allocatable :: orient_text
-  character(len=1000), allocatable :: routine_notes(:)  !< which routine each material and user element type runs (note_len)
+  character(len=note_len), allocatable :: routine_notes(:)   !< which routine each material and user element type runs
   type(model_t) :: model
   type(user_routines_t) :: routines
   type(output_t) :: out

@@ -199,6 +199,17 @@ ldfcz_add_restart_test(restart_loads_steps ${LDFCZ_RESTART_DECKS}/loads_steps.in
 # continuation begins step 2 from the loads, boundaries and increment size the file holds
 ldfcz_add_restart_test(restart_loads_step_end ${LDFCZ_RESTART_DECKS}/loads_steps.inp --stop 4 --freq 3 --rel 0 --dat
   --point end --no-refusals)
+# *MODEL CHANGE, ADD=WITH STRAIN at the start of step 2: stopped at the end of step 1 (the restart begins step 2
+# with the reactivation) and within step 2 (after it)
+ldfcz_add_restart_test(restart_model_change_with_strain ${LDFCZ_RESTART_DECKS}/model_change_with_strain.inp
+  --stop 4 --freq 1 --rel 0 --dat --point end --no-refusals)
+ldfcz_add_restart_test(restart_model_change_with_strain_mid ${LDFCZ_RESTART_DECKS}/model_change_with_strain.inp
+  --modes stop,term --stop 6 --freq 1 --rel 0 --dat --point mid --no-refusals)
+# element deletion by a UMAT's state variable (*DEPVAR, DELETE=): stopped after the deletion (increment 7 of 10);
+# the restart needs the deleted element from the restart file
+ldfcz_add_restart_test(restart_element_deletion ${LDFCZ_RESTART_DECKS}/element_deletion.inp --modes stop,term
+  --stop 7 --freq 1 --rel 0 --dat --point mid --no-refusals
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_delete.f90)
 # *TEMPERATURE (with thermal expansion), *FIELD on an amplitude, OP=NEW of both, TYPE=VELOCITY boundaries on an
 # amplitude, then a displacement; stopped in step 2 (automatic increments); the recording UMAT's file compared
 ldfcz_add_restart_test(restart_fields_velocity ${LDFCZ_RESTART_DECKS}/fields_velocity.inp --modes stop,term --stop 7
@@ -244,7 +255,8 @@ endforeach()
 # GLOBAL=YES against the transformed components, *BOUNDARY, FIXED against the held value and the reaction,
 # *NODE PRINT and *EL PRINT requests carried into later steps until respecified
 # (tests/regression/check_step_options.py)
-foreach(case model_change model_change_nlgeom time_points node_print_global boundary_fixed print_carry)
+foreach(case model_change model_change_nlgeom model_change_with_strain time_points node_print_global boundary_fixed
+    print_carry)
   add_test(NAME deck_step_${case} COMMAND Python3::Interpreter
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_step_options.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/step_${case} --case ${case})
@@ -260,6 +272,13 @@ foreach(case force_2d fixed_2d mod_2d reversed_3d tet_3d nlgeom_2d length_2d)
     --out ${LDFCZ_RUNS}/pretension_${case} --case ${case})
   set_tests_properties(deck_pretension_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
+# *DEPVAR, DELETE=: two bars in parallel, one deleted by its UMAT's state variable: the force drops to the other's
+# share (closed form), the log names the element (tests/regression/check_element_deletion.py)
+add_test(NAME deck_element_deletion COMMAND Python3::Interpreter
+  ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_element_deletion.py --exe $<TARGET_FILE:ldfcz>
+  --deck ${LDFCZ_RESTART_DECKS}/element_deletion.inp
+  --user ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_delete.f90 --out ${LDFCZ_RUNS}/deck_element_deletion)
+set_tests_properties(deck_element_deletion PROPERTIES LABELS "deck" TIMEOUT 300)
 
 # field output as ParaView reads it: tensors in VTK's order with names, principal values, requests carried over
 # to the next step, a warning for a variable that cannot be written (python3-vtk9 reads the frames)

@@ -96,6 +96,9 @@ module analysis_core
     real(dp), allocatable :: temp_end(:)        !< (nnode) temperatures at the end of the increment
     real(dp), allocatable :: field_end(:)       !< (nfield*nnode) field variables at its end
     type(stop_request_t) :: stop                !< a stop asked in the last element loop
+    !> (nelem with *MODEL CHANGE, else 0) reactivated WITH STRAIN and its first increment not converged yet: the
+    !> element's increment starts from zero displacement (model_change; cleared by analysis_commit)
+    logical, allocatable :: from_zero(:)
   end type solver_work_t
 
   !> Times and counts of the element loops and of the sparse systems gone (run summary), and the loop trace.
@@ -456,6 +459,8 @@ contains
     an%work%temp_end = an%state%temp_start
     an%work%field_end = an%state%field_start
     an%work%trial = an%state%conv
+    allocate (an%work%from_zero(size(an%state%active)))
+    an%work%from_zero = .false.
     allocate (an%work%u(an%ndof), an%work%fint(an%ndof), an%work%fe(an%elem_ptr(model%nelem + 1) - 1))
     an%work%u = 0.0_dp
     an%work%fint = 0.0_dp
@@ -854,6 +859,20 @@ contains
     end if
   end subroutine element_shift
 
+  !> The displacement increment element ie sees (system components): u - u_conv, or u whole in the first increment
+  !> of an element reactivated WITH STRAIN (model_change: its strain is that of the displacement since the
+  !> analysis began).
+  subroutine element_increment(an, ie, n, ue, due)
+    type(analysis_t), intent(in) :: an  !< the analysis
+    integer, intent(in) :: ie, n        !< the element, its dofs
+    real(dp), intent(in) :: ue(n)       !< its current displacement
+    real(dp), intent(out) :: due(n)     !< its increment
+    due = ue - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    if (size(an%work%from_zero) > 0) then
+      if (an%work%from_zero(ie)) due = ue
+    end if
+  end subroutine element_increment
+
   !> A user element: the UEL through the procedure pointer, with the Abaqus arguments (docs/conventions.md).
   subroutine user_element_compute(an, model, ie, n, inc, want_k, fel, ke, pnewdt, stat, msg)
     type(analysis_t), intent(inout) :: an
@@ -887,7 +906,7 @@ contains
     msg = ''
     nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
     ue = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-    due(:, 1) = ue - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    call element_increment(an, ie, n, ue, due(:, 1))
     call element_shift(an, ie, n, ushift)
     ue = ue - ushift
     if (an%nr%elem_has(ie)) then
@@ -994,7 +1013,7 @@ contains
     msg = ''
     nn = model%conn_ptr(ie + 1) - model%conn_ptr(ie)
     ue(1:n) = an%work%u(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
-    due(1:n) = ue(1:n) - an%state%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
+    call element_increment(an, ie, n, ue(1:n), due(1:n))
     call element_shift(an, ie, n, ushift(1:n))
     ue(1:n) = ue(1:n) - ushift(1:n)
     if (an%nr%elem_has(ie)) then
@@ -1364,6 +1383,7 @@ contains
     type(analysis_t), intent(inout) :: an  !< analysis data
     integer :: ie
     an%state%u_conv = an%work%u
+    an%work%from_zero = .false.
     do ie = 1, size(an%state%conv)
       call element_state_copy(an%work%trial(ie), an%state%conv(ie))
     end do

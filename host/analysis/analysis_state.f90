@@ -9,7 +9,7 @@
 !> process holds its own elements' states only.
 module analysis_state
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t
+  use model_types, only: model_t, model_elements_leave
   use step_control, only: step_control_t
   use boundary_table, only: boundary_table_t, boundary_table_init, boundary_apply, boundary_step_begin
   use step_loads, only: loads_t, loads_init, loads_step_begin, initial_temperatures, initial_fields
@@ -56,8 +56,8 @@ module analysis_state
     real(dp), allocatable :: temp_start(:)    !< (nnode) temperatures at the start of the increment
     real(dp), allocatable :: field_start(:)   !< (nfield*nnode) field variables at its start (n of node a at
                                               !< (a-1)*nfield+n)
-    ! *MODEL CHANGE (model_change; size 0 in a model without it)
-    logical, allocatable :: active(:)         !< (nelem) the element is in the model (not removed)
+    ! *MODEL CHANGE and *DEPVAR, DELETE= (model_change; size 0 in a model without either)
+    logical, allocatable :: active(:)         !< (nelem) the element is in the model (not removed, not deleted)
     logical, allocatable :: shifted(:)        !< (nelem) reactivated strain-free: its reference is X + u_ref
     real(dp), allocatable :: u_ref(:)         !< (element dofs, elem_ptr layout) the displacement at reactivation
   end type analysis_state_t
@@ -84,7 +84,7 @@ contains
     s%last%fcl = s%last%du
     s%last%fremove = s%last%du
     s%u_conv = s%last%du
-    allocate (s%active(merge(model%nelem, 0, model%has_model_change)))
+    allocate (s%active(merge(model%nelem, 0, model_elements_leave(model))))
     s%active = .true.
     allocate (s%shifted(size(s%active)))
     s%shifted = .false.

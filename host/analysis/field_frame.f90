@@ -10,12 +10,13 @@
 !> the same arrays); a cell whose element does not provide it holds 0.
 module field_frame
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, step_t, etype_user, model_sdv_name
+  use model_types, only: model_t, step_t, etype_user, model_sdv_name, model_elements_leave
   use element_catalog, only: element_vtk_cell, element_vtk_points, element_tensor6, element_types
   use point_extrapolation, only: point_to_node_matrix
   use output_registry, only: output_variables, output_max_statev, output_component_name, output_block, OV_COORD, &
     OV_U, OV_RF, OV_ELEMENT, OV_S, OV_SP, OV_MISES, OV_LE, OV_E, OV_SDV, OV_COHESIVE, OV_OPENING, OV_TRACTION, &
-    OV_DELTA_MAX, OV_S_NODAL, OV_LE_NODAL, OV_DAMAGE, LOC_NODE, LOC_NODAL, PROV_CONTINUUM, PROV_STATEV, PROV_USER, &
+    OV_DELTA_MAX, OV_S_NODAL, OV_LE_NODAL, OV_DAMAGE, OV_STATUS, PROV_ACTIVITY, &
+    LOC_NODE, LOC_NODAL, PROV_CONTINUUM, PROV_STATEV, PROV_USER, &
     PROV_USER_OPENING, PROV_SVARS_TRACTION, PROV_SVARS_DELTA_MAX, PROV_SVARS_DAMAGE, VTU_NONE, VTU_REQUESTED, &
     BLOCK_BOTH, BLOCK_CONTINUUM, BLOCK_INTERFACE
   use stress_measures, only: mises_stress, principal_stresses
@@ -156,6 +157,9 @@ contains
     do ie = 1, model%nelem
       kind = model%elem_kind(ie)
       if (kind == etype_user .or. .not. an%owned(ie)) cycle
+      if (size(an%state%active) > 0) then
+        if (.not. an%state%active(ie)) cycle   ! removed or deleted: no stress to average in
+      end if
       if (.not. allocated(ext(kind)%e)) then
         call point_to_node_matrix(kind, ext(kind)%e, stat)
         if (stat /= 0) cycle
@@ -209,6 +213,8 @@ contains
       in_frame = any(model%elem_kind(1:model%nelem) /= etype_user)
     case (PROV_USER)
       in_frame = any(model%elem_kind(1:model%nelem) == etype_user)
+    case (PROV_ACTIVITY)
+      in_frame = model_elements_leave(model)
     case (PROV_USER_OPENING)
       do ie = 1, model%nelem
         if (model%elem_kind(ie) == etype_user .and. any(model%conn_ptr(ie + 1) - model%conn_ptr(ie) == [4, 8])) &
@@ -282,7 +288,7 @@ contains
     if (v == OV_SDV) a%name = model_sdv_name(model, sdv)
     nc = output_variables(v)%vtu_ncomp
     a%ncomp = nc
-    a%int32 = v == OV_ELEMENT .or. v == OV_COHESIVE
+    a%int32 = v == OV_ELEMENT .or. v == OV_COHESIVE .or. v == OV_STATUS
     read (output_variables(v)%vtu_components, *, iostat=i) names(1:nc)
     if (len_trim(output_variables(v)%vtu_components) > 0 .and. i == 0) a%comp_names = names(1:nc)
     allocate (a%v(nc, size(cells)))
@@ -291,6 +297,9 @@ contains
       ie = cells(c)
       if (v == OV_ELEMENT) then
         a%v(1, c) = model%elem_id(ie)
+      else if (v == OV_STATUS) then
+        a%v(1, c) = 1
+        if (size(an%state%active) > 0) a%v(1, c) = merge(1, 0, an%state%active(ie))
       else if (model%elem_kind(ie) == etype_user) then
         select case (v)
         case (OV_COHESIVE)

@@ -3,11 +3,15 @@
 !> computed, and the forces it exerted on the rest of the model at the end of the previous step are ramped down to
 !> zero over the removal step; an element added back (strain-free, Abaqus' default) starts stress-free in the
 !> configuration its nodes have then: its reference is X + u_ref, u_ref the displacement at the reactivation, and
-!> its state starts at zero. The active set, the reactivation displacements and the forces to release are analysis
-!> state (analysis_state: the restart file holds them).
+!> its state starts at zero. An element added back WITH STRAIN keeps its initial configuration X: its state starts
+!> at zero and its first increment takes the whole displacement since the analysis began as its increment (the
+!> work flag from_zero, cleared when that increment converges), so that its strain is that of the total
+!> displacement. The active set, the reactivation displacements and the forces to release are analysis state
+!> (analysis_state: the restart file holds them); from_zero lives only until the step's first converged increment,
+!> before any checkpoint of the step.
 module model_change
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, etype_user
+  use model_types, only: model_t, etype_user, model_find_material, model_elements_leave
   use analysis_core, only: analysis_t, element_state_allocate
   use coupling_constraints, only: coupling_mark_used
   use linear_constraints, only: constraints_mark_masters
@@ -17,7 +21,7 @@ module model_change
   implicit none
   private
   public :: model_change_release, model_change_step_begin, model_change_resume
-  public :: element_active
+  public :: element_active, model_change_prescribable, model_change_deletion
 
 contains
 
@@ -28,6 +32,21 @@ contains
     element_active = .true.
     if (size(an%state%active) > 0) element_active = an%state%active(ie)
   end function element_active
+
+  !> (ndof) the dofs a *BOUNDARY prescribes in effect: those in use, and with *MODEL CHANGE also those of removed
+  !> elements, whose nodes stay in the model and move as prescribed (Abaqus: the nodes of removed elements remain
+  !> in the model), so that an element added back sees the displacement its nodes were given while it was out.
+  pure function model_change_prescribable(an, model) result(mask)
+    type(analysis_t), intent(in) :: an     !< the analysis
+    type(model_t), intent(in) :: model     !< the model
+    logical :: mask(an%ndof)
+    integer :: ie
+    mask = an%used
+    if (.not. model_elements_leave(model)) return
+    do ie = 1, model%nelem
+      mask(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1)) = .true.
+    end do
+  end function model_change_prescribable
 
   !> After the last increment of step is (converged, before its commit): the forces the elements that step is + 1
   !> removes exert on the rest of the model, -f_e summed at their nodes (this process's elements, summed over the
@@ -55,8 +74,9 @@ contains
   end subroutine model_change_release
 
   !> Start of step is (not a restart within it): its removals (inactive, their state zero, the forces they left
-  !> behind ramped down with the released loads) and strain-free reactivations (active, u_ref = the converged
-  !> displacement of their nodes, zero state, reference geometry at X + u_ref), then the dofs in use.
+  !> behind ramped down with the released loads), strain-free reactivations (active, u_ref = the converged
+  !> displacement of their nodes, zero state, reference geometry at X + u_ref) and reactivations with strain
+  !> (active, zero state, reference geometry at X, from_zero), then the dofs in use.
   subroutine model_change_step_begin(an, model, is)
     type(analysis_t), intent(inout) :: an  !< the analysis
     type(model_t), intent(in) :: model     !< the model
@@ -69,12 +89,15 @@ contains
         do j = 1, size(st%changes(k)%elems)
           ie = st%changes(k)%elems(j)
           s%active(ie) = .not. st%changes(k)%remove
-          s%shifted(ie) = s%active(ie)
-          if (s%active(ie)) s%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
+          s%shifted(ie) = s%active(ie) .and. st%changes(k)%strain_free
+          an%work%from_zero(ie) = s%active(ie) .and. .not. st%changes(k)%strain_free
+          if (s%shifted(ie)) s%u_ref(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1) = &
             s%u_conv(an%elem_dof(an%elem_ptr(ie):an%elem_ptr(ie + 1) - 1))
           if (.not. an%owned(ie)) cycle
           call element_state_allocate(an, model, ie, s%conv(ie))
           call element_state_allocate(an, model, ie, an%work%trial(ie))
+          ! with strain: the reference geometry at X again (a strain-free reactivation before may have moved it)
+          if (an%work%from_zero(ie)) call shifted_geometry(an, model, ie, .false.)
         end do
       end do
     end associate
@@ -86,10 +109,56 @@ contains
   subroutine model_change_resume(an, model)
     type(analysis_t), intent(inout) :: an  !< the analysis (state read)
     type(model_t), intent(in) :: model     !< the model
-    if (.not. model%has_model_change) return
-    call reference_geometries(an, model, model%steps(an%state%progress%step)%nlgeom)
+    if (.not. model_elements_leave(model)) return
+    if (model%has_model_change) call reference_geometries(an, model, model%steps(an%state%progress%step)%nlgeom)
     call dofs_in_use(an, model)
   end subroutine model_change_resume
+
+  !> After a converged increment (committed): element deletion by a material's state variable (*DEPVAR, DELETE=k;
+  !> Analysis User's Guide "User-defined mechanical material behavior": 1 active, 0 deleted). An active element
+  !> whose variable k is 0 at every integration point leaves the model, as Abaqus/Standard removes an element once
+  !> all its points have failed (Analysis User's Guide "Damage evolution", element removal; the same rule for
+  !> DELETE= is inferred): its stress is zeroed (its state variables and strains are kept), it offers no resistance
+  !> from the next increment on (no ramp-down: only *MODEL CHANGE, REMOVE ramps forces down) and is never added
+  !> back by its variable. ndel: the elements deleted now (over the processes), first: the lowest label of them;
+  !> the dofs in use follow.
+  subroutine model_change_deletion(an, model, ndel, first)
+    type(analysis_t), intent(inout) :: an  !< the analysis (state committed)
+    type(model_t), intent(in) :: model     !< the model
+    integer, intent(out) :: ndel           !< elements deleted by this increment
+    integer, intent(out) :: first          !< the lowest label among them (0: none)
+    real(dp) :: gone(model%nelem)
+    integer :: ksec(model%nsection), ie, k, im
+    ndel = 0
+    first = 0
+    if (size(an%state%active) == 0) return
+    do k = 1, model%nsection
+      im = model_find_material(model, model%sections(k)%material)
+      ksec(k) = 0
+      if (im > 0) ksec(k) = model%materials(im)%delete_sdv
+    end do
+    if (all(ksec == 0)) return
+    gone = 0.0_dp
+    do ie = 1, model%nelem
+      if (.not. (an%owned(ie) .and. an%state%active(ie)) .or. model%elem_kind(ie) == etype_user) cycle
+      if (model%elem_section(ie) < 1) cycle
+      k = ksec(model%elem_section(ie))
+      if (k == 0) cycle
+      if (all(an%state%conv(ie)%statev(k, :) == 0.0_dp)) gone(ie) = 1.0_dp
+    end do
+    if (parallel_distributed(an%par)) call parallel_sum(an%par, gone)
+    do ie = 1, model%nelem
+      if (gone(ie) < 0.5_dp) cycle
+      ndel = ndel + 1
+      if (first == 0 .or. model%elem_id(ie) < first) first = model%elem_id(ie)
+      an%state%active(ie) = .false.
+      if (an%owned(ie)) then
+        an%state%conv(ie)%stress = 0.0_dp
+        an%work%trial(ie)%stress = 0.0_dp
+      end if
+    end do
+    if (ndel > 0) call dofs_in_use(an, model)
+  end subroutine model_change_deletion
 
   !> The reference data of this process's reactivated continuum elements: at X + u_ref under NLGEOM (strain-free
   !> in the configuration of their reactivation), at X otherwise (small displacements: the strain of u - u_ref on

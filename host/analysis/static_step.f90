@@ -12,7 +12,7 @@
 module static_step
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
-  use model_types, only: model_t
+  use model_types, only: model_t, model_label_text
   use analysis_core, only: analysis_t, analysis_number_equations, analysis_commit, analysis_restore
   use analysis_state, only: analysis_state_step_begin, last_increment_t
   use increment, only: increment_t, increment_time, increment_end
@@ -20,7 +20,8 @@ module static_step
   use step_loads, only: loads_at_end
   use linear_constraints, only: constraints_apply, constraints_reactions
   use coupling_constraints, only: coupling_check_step
-  use model_change, only: model_change_release, model_change_step_begin, model_change_resume
+  use model_change, only: model_change_release, model_change_step_begin, model_change_resume, &
+    model_change_prescribable, model_change_deletion
   use step_control, only: step_control_init, step_control_cutback, step_control_converged, step_control_done, &
     step_control_dt, step_control_accuracy, step_control_exhausted, max_cutbacks
   use sparse_system, only: sparse_factor_count
@@ -100,6 +101,8 @@ contains
           end do attempts
           if (run%halt) exit steps
           call accept(model, opt, an, run, summary, inc)
+          call delete_failed_elements(model, an, run, out, inc)
+          if (run%halt) exit steps
           call write_output(model, an, run, out, inc)
           call checkpoint(model, opt, an, run, out, summary, inc)
           call stop_if_asked(model, opt, an, run, out, summary, inc)
@@ -345,7 +348,7 @@ contains
         call halt_on_error(out, run, errmsg, exit_input)
         return
       end if
-      an%eqs%prescribed = an%state%bc%on .and. an%used
+      an%eqs%prescribed = an%state%bc%on .and. model_change_prescribable(an, model)
       call analysis_number_equations(an, model, stat, errmsg)
       if (stat /= 0) then
         call halt_on_error(out, run, 'step '//itoa(is)//': '//errmsg, exit_input, echo=.false.)
@@ -570,6 +573,32 @@ contains
     an%state%progress%kinc_total = an%state%progress%kinc_total + 1
     run%increments = run%increments + 1
   end subroutine accept
+
+  !> After the converged increment: the elements whose material's deletion variable (*DEPVAR, DELETE=) is 0 at
+  !> every point leave the model (model_change_deletion), said in the log; the equations follow.
+  subroutine delete_failed_elements(model, an, run, out, inc)
+    type(model_t), intent(in) :: model             !< the model
+    type(analysis_t), intent(inout) :: an          !< the analysis
+    type(run_t), intent(inout) :: run              !< the run's working data
+    type(output_t), intent(inout) :: out           !< output files
+    type(increment_t), intent(in) :: inc           !< the converged increment
+    integer :: ndel, first, stat
+    character(len=:), allocatable :: errmsg
+    call model_change_deletion(an, model, ndel, first)
+    if (ndel == 0) return
+    call output_log(out, 'ldfcz: step '//itoa(inc%step)//' increment '//itoa(inc%kinc)//': '//itoa(ndel)// &
+      ' element(s) deleted, their *DEPVAR, DELETE= state variable 0 at every point (element '// &
+      model_label_text(model, first, .false.)//trim(merge(' and others', '           ', ndel > 1))//')')
+    an%eqs%prescribed = an%state%bc%on .and. model_change_prescribable(an, model)
+    call analysis_number_equations(an, model, stat, errmsg)
+    if (stat /= 0) then
+      call halt_on_error(out, run, 'step '//itoa(inc%step)//': '//errmsg, exit_input, echo=.false.)
+      return
+    end if
+    if (allocated(run%r)) deallocate (run%r)
+    allocate (run%r(max(an%eqs%neq, 1)))
+    call newton_forget_factors(run%ns)   ! the tangent lost the deleted elements' stiffness
+  end subroutine delete_failed_elements
 
   !> The work of the reactions (trapezoidal) and of the external forces on the free dofs over the converged
   !> increment, and what the next increment takes from it (an%state%last), before the commit.

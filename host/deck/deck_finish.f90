@@ -305,6 +305,10 @@ contains
         call ctx_fail_pos(ctx, pos, 'material '//trim(name)//' has no *ELASTIC or *USER MATERIAL')
       else if (model%materials(im)%has_elastic .and. model%materials(im)%has_user) then
         call ctx_fail_pos(ctx, pos, 'material '//trim(name)//' has both *ELASTIC and *USER MATERIAL')
+      else if (model%materials(im)%delete_sdv > 0 .and. .not. model%materials(im)%has_user) then
+        pos = model%materials(im)%delete_pos
+        call ctx_fail_pos(ctx, pos, 'DELETE= of material '//trim(name)//' needs a *USER MATERIAL (its UMAT sets '// &
+          'the deletion variable)')
       end if
     end associate
   end subroutine section_material

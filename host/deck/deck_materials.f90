@@ -196,8 +196,9 @@ contains
     ctx%model%materials(imat)%user_pos = ctx_pos(ctx, min(ir + 1, ir_next - 1))
   end subroutine read_user_material
 
-  !> *DEPVAR: number of state variables of the user material; optional lines 'n, key, description' name state
-  !> variable n (the form Abaqus/CAE writes; Abaqus Keywords Guide, *DEPVAR): its field output is SDV_key.
+  !> *DEPVAR[, DELETE=k]: number of state variables of the user material; optional lines 'n, key, description' name
+  !> state variable n (the form Abaqus/CAE writes; Abaqus Keywords Guide, *DEPVAR): its field output is SDV_key.
+  !> DELETE=k: state variable k controls element deletion (model_change: element_deletion).
   subroutine read_depvar(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=flen), allocatable :: f(:)
@@ -207,10 +208,6 @@ contains
     call ctx_allow_params(ctx, [character(len=8) :: 'DELETE'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
-    if (deck_has_param(ctx%params, 'DELETE')) then
-      call ctx_fail(ctx, ir, 'DELETE= (element deletion) is not supported')
-      return
-    end if
     if (ctx%ir_next == ir + 1) then
       call ctx_fail(ctx, ir, 'a data line with the number of state variables is required')
       return
@@ -227,6 +224,9 @@ contains
     end if
     associate (m => ctx%model%materials(ctx%imat))
       m%nstatv = nstatv
+      m%delete_sdv = depvar_delete(ctx, nstatv)
+      if (ctx%stat /= 0) return
+      m%delete_pos = ctx_pos(ctx, ir)
       if (allocated(m%sdv_key)) deallocate (m%sdv_key, m%sdv_desc)
       allocate (m%sdv_key(nstatv), m%sdv_desc(nstatv))
       m%sdv_key = ''
@@ -255,6 +255,26 @@ contains
       end do
     end associate
   end subroutine read_depvar
+
+  !> *DEPVAR, DELETE=k: the state variable whose value 0 deletes the material point (1 active; Analysis User's Guide
+  !> "User-defined mechanical material behavior"), 1..nstatv; 0 without DELETE.
+  integer function depvar_delete(ctx, nstatv) result(k)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state (the *DEPVAR line)
+    integer, intent(in) :: nstatv               !< the number of state variables
+    character(len=:), allocatable :: v
+    integer :: ios
+    k = 0
+    if (.not. deck_has_param(ctx%params, 'DELETE')) return
+    v = trim(deck_param_value(ctx%params, 'DELETE'))
+    read (v, *, iostat=ios) k
+    if (ios /= 0 .or. len(v) == 0 .or. verify(v, '0123456789') /= 0) then
+      call ctx_fail(ctx, ctx%ir, 'DELETE='//v//' is not a state variable number')
+      k = 0
+    else if (k < 1 .or. k > nstatv) then
+      call ctx_fail(ctx, ctx%ir, 'DELETE='//v//' outside the state variables 1..'//itoa(nstatv))
+      k = 0
+    end if
+  end function depvar_delete
 
   !> A label as written, without enclosing double quotes (case preserved, as *DEPVAR keys are).
   pure function unquoted(field) result(t)

@@ -17,8 +17,8 @@ module deck_model_change
 
 contains
 
-  !> *MODEL CHANGE, TYPE=ELEMENT, REMOVE | ADD[=STRAIN FREE] (history data): element labels or element sets.
-  !> ADD=WITH STRAIN and TYPE=CONTACT PAIR are refused.
+  !> *MODEL CHANGE, TYPE=ELEMENT, REMOVE | ADD[=STRAIN FREE | WITH STRAIN] (history data): element labels or
+  !> element sets. TYPE=CONTACT PAIR is refused.
   subroutine read_model_change(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(model_change_t) :: mc
@@ -28,6 +28,11 @@ contains
     integer :: i, n, k, id, iset
     call ctx_need_step(ctx)
     if (ctx%stat /= 0) return
+    if (deck_has_param(ctx%params, 'MECHSTRAINTORESIDUAL')) then
+      call ctx_fail(ctx, ctx%ir, 'MECHSTRAINTORESIDUAL is a CalculiX extension that Abaqus does not have: '// &
+        'not supported')
+      return
+    end if
     call ctx_allow_params(ctx, [character(len=8) :: 'TYPE', 'REMOVE', 'ADD'])
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
@@ -45,10 +50,8 @@ contains
       return
     end if
     v = deck_normalize(deck_param_value(ctx%params, 'ADD'))
-    if (v == 'WITH STRAIN') then
-      call ctx_fail(ctx, ctx%ir, 'ADD=WITH STRAIN is not supported (only strain-free reactivation, the default)')
-      return
-    else if (v /= '' .and. v /= 'STRAIN FREE') then
+    mc%strain_free = v /= 'WITH STRAIN'
+    if (v /= '' .and. v /= 'STRAIN FREE' .and. v /= 'WITH STRAIN') then
       call ctx_fail(ctx, ctx%ir, 'ADD='//v//' is not one of STRAIN FREE, WITH STRAIN')
       return
     end if

@@ -13,7 +13,7 @@ module model_types
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
   public :: amplitude_value, amplitude_factor, transform_t
   public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes, output_request_t, model_sdv_name
-  public :: elastic_lamina
+  public :: elastic_lamina, model_elements_leave
 
   integer, parameter :: name_len = 80      !< longest name kept (set, material, type names)
   !> model_t%elem_kind of a user element (UEL); a continuum element's kind is its index in the element catalogue
@@ -62,6 +62,8 @@ module model_types
     integer :: nstatv = 0                  !< *DEPVAR
     character(len=name_len), allocatable :: sdv_key(:)  !< *DEPVAR output key of each state variable ('' none)
     character(len=name_len), allocatable :: sdv_desc(:) !< *DEPVAR description of each ('' none)
+    integer :: delete_sdv = 0              !< *DEPVAR, DELETE=: the state variable whose 0 deletes the point (0: none)
+    type(source_pos_t) :: delete_pos       !< the *DEPVAR line (messages about DELETE=)
     integer :: plastic_statev = 0          !< STATEV of an equivalent plastic strain, '**LDFCZ STATEV' (0: none)
     logical :: has_expansion = .false.     !< *EXPANSION given
     real(dp) :: alpha = 0.0_dp             !< isotropic thermal expansion coefficient [1/K]
@@ -268,7 +270,7 @@ module model_types
     integer, allocatable :: elems(:)       !< element indices (negative labels, and sets in elsets, until finish_model)
     integer, allocatable :: elsets(:)      !< element sets named on the data lines
     logical :: remove = .true.             !< REMOVE (else ADD)
-    logical :: strain_free = .true.        !< ADD=STRAIN FREE (the default; WITH STRAIN is refused)
+    logical :: strain_free = .true.        !< ADD=STRAIN FREE (the default), else ADD=WITH STRAIN
     type(source_pos_t) :: pos              !< the *MODEL CHANGE line
   end type model_change_t
 
@@ -721,5 +723,13 @@ contains
     end do
     name = 'SDV_'//key
   end function model_sdv_name
+
+  !> Elements may leave the model during the analysis: *MODEL CHANGE, or a material deleting failed points
+  !> (*DEPVAR, DELETE=); the analysis then keeps the active set (analysis_state).
+  pure logical function model_elements_leave(model) result(yes)
+    type(model_t), intent(in) :: model  !< the model
+    yes = model%has_model_change
+    if (model%nmat > 0) yes = yes .or. any(model%materials(1:model%nmat)%delete_sdv > 0)
+  end function model_elements_leave
 
 end module model_types

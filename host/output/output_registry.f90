@@ -7,16 +7,16 @@
 !> or routine provided. docs/host.md's output-variable table is generated from it (ldfcz_doc_tables outputs) and
 !> tested against it (test docs_tables). Adding a variable: docs/extending.md.
 module output_registry
-  use model_types, only: model_t, source_pos_t, etype_user, model_find_material, name_len
+  use model_types, only: model_t, source_pos_t, etype_user, model_find_material, name_len, model_elements_leave
   implicit none
   private
   public :: output_variable_t, output_variables, output_lookup, output_component_name, output_ncomp
   public :: output_unprovided_requests, output_max_statev, output_names_text, output_provider_text
   public :: OV_COORD, OV_U, OV_RF, OV_ELEMENT, OV_S, OV_SP, OV_MISES, OV_LE, OV_E, OV_SDV, OV_COHESIVE, OV_OPENING
-  public :: OV_TRACTION, OV_DELTA_MAX, OV_S_NODAL, OV_LE_NODAL, OV_DAMAGE
+  public :: OV_TRACTION, OV_DELTA_MAX, OV_S_NODAL, OV_LE_NODAL, OV_DAMAGE, OV_STATUS
   public :: LOC_NODE, LOC_POINT, LOC_ELEMENT, LOC_SVARS, LOC_NODAL
   public :: PROV_MODEL, PROV_SOLUTION, PROV_CONTINUUM, PROV_STATEV, PROV_USER, PROV_USER_OPENING, PROV_SVARS_TRACTION
-  public :: PROV_SVARS_DELTA_MAX, PROV_SVARS_DAMAGE
+  public :: PROV_SVARS_DELTA_MAX, PROV_SVARS_DAMAGE, PROV_ACTIVITY
   public :: BLOCK_BOTH, BLOCK_CONTINUUM, BLOCK_INTERFACE, output_block
   public :: VTU_NONE, VTU_ALWAYS, VTU_REQUESTED
   public :: USE_FIELD, USE_NODE_PRINT, USE_EL_PRINT, PRESET_PRESELECT, PRESET_ALL
@@ -28,9 +28,11 @@ module output_registry
   !> elements (stress, strain at the points), their materials' STATEV (*DEPVAR), the user elements, the user
   !> elements with 4 or 8 nodes (opening from the nodal displacements: top - bottom face, the cohesive layout), the
   !> SVARS positions a '**LDFCZ SVARS' line declares (TRACTION=, DELTA MAX=)
-  !> and DELTA MAX= with LENGTH PROPERTY= (the damage of the exponential law)
+  !> and DELTA MAX= with LENGTH PROPERTY= (the damage of the exponential law), a model whose elements may leave it
+  !> (*MODEL CHANGE, *DEPVAR, DELETE=)
   integer, parameter :: PROV_MODEL = 1, PROV_SOLUTION = 2, PROV_CONTINUUM = 3, PROV_STATEV = 4, PROV_USER = 5, &
-    PROV_USER_OPENING = 6, PROV_SVARS_TRACTION = 7, PROV_SVARS_DELTA_MAX = 8, PROV_SVARS_DAMAGE = 9
+    PROV_USER_OPENING = 6, PROV_SVARS_TRACTION = 7, PROV_SVARS_DELTA_MAX = 8, PROV_SVARS_DAMAGE = 9, &
+    PROV_ACTIVITY = 10
   !> the block of a frame an array is in (output_block, from the provider): the continuum elements' block, the
   !> interface (user) elements' block, or both (docs/host.md, "Frames")
   integer, parameter :: BLOCK_BOTH = 0, BLOCK_CONTINUUM = 1, BLOCK_INTERFACE = 2
@@ -65,10 +67,10 @@ module output_registry
 
   integer, parameter :: OV_COORD = 1, OV_U = 2, OV_RF = 3, OV_S_NODAL = 4, OV_LE_NODAL = 5, OV_ELEMENT = 6, &
     OV_S = 7, OV_SP = 8, OV_MISES = 9, OV_LE = 10, OV_E = 11, OV_SDV = 12, OV_COHESIVE = 13, OV_OPENING = 14, &
-    OV_TRACTION = 15, OV_DELTA_MAX = 16, OV_DAMAGE = 17
+    OV_TRACTION = 15, OV_DELTA_MAX = 16, OV_DAMAGE = 17, OV_STATUS = 18
 
   !> The variables, in the order the frames hold them (point data, then cell data).
-  type(output_variable_t), parameter :: output_variables(17) = [ &
+  type(output_variable_t), parameter :: output_variables(18) = [ &
     output_variable_t('COORD', '', '', 'COORD1 COORD2 COORD3', 3, '', LOC_NODE, 'mm', &
       'original coordinates (the points of the frames)', PROV_MODEL, vtu_mode=VTU_ALWAYS), &
     output_variable_t('U', '', 'U', 'U1 U2 U3', 3, '', LOC_NODE, 'mm', &
@@ -113,7 +115,10 @@ module output_registry
       PROV_SVARS_DELTA_MAX, vtu_mode=VTU_ALWAYS), &
     output_variable_t('', '', 'damage', '', 1, '', LOC_SVARS, '-', &
       'stiffness lost by the secant, 1 - exp(-Delta_max/delta) (exponential law, Eq. 20), mean over the points', &
-      PROV_SVARS_DAMAGE, vtu_mode=VTU_ALWAYS)]
+      PROV_SVARS_DAMAGE, vtu_mode=VTU_ALWAYS), &
+    output_variable_t('STATUS', '', 'STATUS', '', 1, '', LOC_ELEMENT, '-', &
+      'element status: 1 active, 0 removed (`*MODEL CHANGE`) or deleted (`*DEPVAR, DELETE=`)', PROV_ACTIVITY, &
+      vtu_mode=VTU_ALWAYS)]
 
 contains
 
@@ -254,6 +259,8 @@ contains
       t = 'user element types declaring `DELTA MAX=`'
     case (PROV_SVARS_DAMAGE)
       t = 'user element types declaring `DELTA MAX=` and `LENGTH PROPERTY=`'
+    case (PROV_ACTIVITY)
+      t = 'models with `*MODEL CHANGE` or `*DEPVAR, DELETE=`'
     case default
       t = '?'
     end select
@@ -358,6 +365,9 @@ contains
         why = 'written for the continuum elements only: the SVARS of the user elements are not state variables '// &
           '(their traction and Delta_max are written where **LDFCZ SVARS declares them, docs/uel.md)'
       end if
+    case (PROV_ACTIVITY)
+      if (.not. model_elements_leave(model)) why = 'not written: no element of this model can leave it (written '// &
+        'with *MODEL CHANGE or *DEPVAR, DELETE=)'
     case (PROV_SOLUTION)
       if (comp > model%ndim) then
         write (b, '(i0)') model%ndim

@@ -9,9 +9,9 @@ module routine_choice
   use user_routines, only: user_routines_t, uel_interface, umat_interface, builtin_routine, builtin_names
   implicit none
   private
-  public :: user_routines_choose
+  public :: user_routines_choose, note_len
 
-  integer, parameter :: note_len = 1000 !< longest JOB.log note (a deck and a routine in deep folders: 400 cut them)
+  integer, parameter :: note_len = 2000  !< longest JOB.log note (two deck paths and a routine path)
 
 contains
 

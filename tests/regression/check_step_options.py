@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""*MODEL CHANGE (element removal and strain-free reactivation), *TIME POINTS with *OUTPUT, TIME POINTS= and
+"""*MODEL CHANGE (element removal, strain-free reactivation and reactivation with strain), *TIME POINTS with *OUTPUT, TIME POINTS= and
 *NODE PRINT, GLOBAL=YES, against closed forms and twin decks.
 
   check_step_options.py --exe BIN --out DIR --case NAME
@@ -18,6 +18,14 @@ Cases (decks written into DIR):
             force F = E ln(y) + E ln(y / 1.2) at the top position y; the force at the end of step 2 against
             the closed form within 1e-3 (measured 2.8e-5; the hypoelastic integration's O(increment^2) error is
             2e-4 in deck_transform_roller_nlgeom); bar 2 measured from its original length would give 2 % more.
+  model_change_with_strain  a column of two C3D8 unit cubes (elements 1 at z in [0, 1] and 2 at [1, 2], E = 1000,
+            nu = 0, base encastred, the middle face MID and the top face TOP prescribed in z). Step 1 removes
+            element 2 and moves MID to 0.1 and TOP to 0.3 (element 2's nodes move while it is out). Step 2 adds it
+            back and moves TOP on to 0.4: WITH STRAIN (Abaqus: the initial configuration is not reset) its stress is
+            E times the total strain (u_TOP - u_MID) / 1 = 200 + 100 t in every increment of step 2 (the top
+            face's reaction); STRAIN FREE (the twin deck) it is E (u_TOP - 0.3) = 100 t. Every increment within
+            1e-9 of the closed form (the linear C3D8 under a uniform strain is exact); MECHSTRAINTORESIDUAL (a
+            CalculiX extension) is refused naming its line.
   time_points  the C3D8 uniaxial cube with *TIME POINTS (a list, and GENERATE) named by *OUTPUT, FIELD and
             *OUTPUT, HISTORY, TIME POINTS=, automatic increments of 0.3: JOB.csv has a row at every time point
             (exactly: within 1e-12), the field frames are exactly those times and the step's end; a second step
@@ -129,6 +137,53 @@ def case_model_change_nlgeom(exe, out):
     print("step 2: top at %.10g: bars carry %.10g (F = %.10g); bar 2 measured from length 1 would give %.10g"
           % (y, f, force1 + 50.0, 1000.0 * math.log(y) + 1000.0 * math.log(y - 0.2)))
     check("step 2: force of the bars at the top position", f, force1 + 50.0, 1e-3 * (force1 + 50.0))
+
+
+def column(free):
+    """Elements 1 (z in [0, 1]) and 2 (z in [1, 2]) of a column of unit cubes: step 1 removes 2 and moves its
+    nodes, step 2 adds it back (strain free or with strain) and moves the top on."""
+    pts = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    lines = ["*HEADING", "reactivation with strain", "*NODE"]
+    lines += ["%d, %d., %d., %d." % (4 * z + k + 1, p[0], p[1], z) for z in range(3) for k, p in enumerate(pts)]
+    lines += ["*ELEMENT, TYPE=C3D8, ELSET=E1", "1, 1, 2, 3, 4, 5, 6, 7, 8",
+              "*ELEMENT, TYPE=C3D8, ELSET=E2", "2, 5, 6, 7, 8, 9, 10, 11, 12",
+              "*NSET, NSET=BOT", "1, 2, 3, 4", "*NSET, NSET=MID", "5, 6, 7, 8", "*NSET, NSET=TOP", "9, 10, 11, 12",
+              "*ELSET, ELSET=ALL", "E1, E2", "*SOLID SECTION, ELSET=ALL, MATERIAL=M",
+              "*MATERIAL, NAME=M", "*ELASTIC", "1000., 0.", "*BOUNDARY", "BOT, ENCASTRE", "1, 1, 2", "2, 2, 2",
+              "4, 1, 1", "5, 1, 2", "6, 2, 2", "8, 1, 1", "9, 1, 2", "10, 2, 2", "12, 1, 1"]
+    step = ["*STATIC", "0.25, 1."]
+    lines += ["*STEP"] + step + ["*MODEL CHANGE, REMOVE", "2", "*BOUNDARY", "MID, 3, 3, 0.1", "TOP, 3, 3, 0.3",
+                                 "*NODE PRINT, NSET=TOP, TOTALS=YES", "RF3", "*END STEP"]
+    lines += ["*STEP"] + step + ["*MODEL CHANGE, ADD=%s" % ("STRAIN FREE" if free else "WITH STRAIN"), "E2",
+                                 "*BOUNDARY", "TOP, 3, 3, 0.4", "*END STEP"]
+    return lines
+
+
+def case_model_change_with_strain(exe, out):
+    want = {True: lambda t: 100.0 * t, False: lambda t: 200.0 + 100.0 * t}
+    for free in (False, True):
+        job = "with_strain" if not free else "strain_free"
+        rows = run(exe, out, job, column(free))
+        cols = [c for c in rows[0] if c.endswith("RF3")]
+        if len(cols) != 1:
+            fail("%s: expected one RF3 total column, got %s" % (job, cols))
+        for r in rows:
+            s, t = int(r["step"]), float(r["step_time"])
+            got = float(r[cols[0]])
+            w = 0.0 if s == 1 else want[free](t)
+            check("%s step %d time %g: force of element 2 (E times its strain)" % (job, s, t), got, w, 1e-9 * 300.0)
+            print("%s step %d time %.3f: top reaction %.12g (closed form %.12g)" % (job, s, t, got, w))
+    deck = column(False)
+    k = deck.index("*MODEL CHANGE, ADD=WITH STRAIN")
+    deck[k] = "*MODEL CHANGE, ADD, MECHSTRAINTORESIDUAL"
+    path = os.path.join(out, "mechstrain.inp")
+    with open(path, "w") as f:
+        f.write("\n".join(deck) + "\n")
+    r = subprocess.run([exe, "-q", "--out", os.path.join(out, "mechstrain"), path], capture_output=True, text=True)
+    where = "mechstrain.inp:%d" % (k + 1)
+    if r.returncode != 2 or where not in r.stderr or "MECHSTRAINTORESIDUAL" not in r.stderr:
+        fail("MECHSTRAINTORESIDUAL: expected exit 2 naming %s, got %d: %s" % (where, r.returncode, r.stderr))
+    print("MECHSTRAINTORESIDUAL refused: " + r.stderr.strip().splitlines()[-1])
 
 
 def frames(out, job):
@@ -289,6 +344,7 @@ def main():
     a = p.parse_args()
     os.makedirs(a.out, exist_ok=True)
     cases = {"model_change": case_model_change, "model_change_nlgeom": case_model_change_nlgeom,
+             "model_change_with_strain": case_model_change_with_strain,
              "time_points": case_time_points, "node_print_global": case_node_print_global,
              "boundary_fixed": case_boundary_fixed, "print_carry": case_print_carry}
     if a.case not in cases:
