@@ -1,10 +1,12 @@
 !> *COUPLING constraints on continuum nodes as linear constraint rows for linear_constraints (docs/host.md,
 !> "Coupling constraints"), in the linearized (small-rotation) form of the Abaqus Theory Manual:
 !> - kinematic: each constrained translation of a coupling node s follows the reference node R's rigid-body
-!>   motion, u_s = u_R + theta_R x (X_s - X_R); the coupling nodes' dofs are eliminated (as Abaqus eliminates them),
-!>   the reference node's translations and rotations (its rotational dofs, model_dof) are the masters;
+!>   motion, u_s = u_R + theta_R x (X_s - X_R), with an ORIENTATION in its local directions at s; the coupling nodes'
+!>   dofs are eliminated (as Abaqus eliminates them), the reference node's translations and rotations (its
+!>   rotational dofs, model_dof) are the masters;
 !> - distributing: the reference node moves with the coupling nodes' weighted mean, u_R = sum w_n u_n +
-!>   theta x (X_R - X_bar), theta_R = theta = T^-1 sum w_n r_n x u_n (the weighted least-squares rotation,
+!>   theta x (X_R - X_bar), the constrained components of theta_R = theta = T^-1 sum w_n r_n x u_n (the weighted
+!>   least-squares rotation; a released rotation has no row,
 !>   r_n = X_n - X_bar, T = sum w_n (r_n.r_n I - r_n r_n)), w_n the tributary area of node n on the surface times
 !>   the weighting function, normalized; a force and moment at R are then distributed as the Theory Manual's
 !>   "Distributing coupling constraints" gives them. The rows are solved for as many coupling-node dofs as the

@@ -81,9 +81,10 @@ contains
   !> The ORIENTATION of coupling c (Keywords Reference *COUPLING: the local system of the constrained dofs):
   !> resolved to its index; 3D only. Kinematic: the local directions are taken at each coupling node (Analysis
   !> User's Guide "Kinematic coupling constraints": local systems "at the constrained nodes"); a node on the axis of
-  !> a cylindrical system keeps its axial dof only (a warning; inferred). Distributing: every translation is constrained whatever the system;
-  !> constrained rotations about some local axes only (the others released) are supported where those axes are
-  !> global ones (taken at the reference node), and become the global rotational dofs.
+  !> a cylindrical system keeps its axial dof only (a warning; inferred). Distributing: every translation is
+  !> constrained whatever the system; constrained rotations about some local axes only (the others released) are
+  !> supported where those axes are global ones (taken at the reference node), and become the global rotational
+  !> dofs.
   subroutine coupling_orientation(ctx, c)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(coupling_t), intent(inout) :: c        !< the coupling (an element of ctx%model%couplings)
