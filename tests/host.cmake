@@ -224,7 +224,8 @@ endforeach()
 # *COUPLING, ORIENTATION= (local constrained dofs: cylindrical, rectangular) against *EQUATION twins with
 # hand-computed directions; partial rotational *DISTRIBUTING against statics, the all-rotations twin and Saint-Venant
 # torsion (tests/regression/check_coupling_local.py)
-foreach(case kinematic_cylindrical kinematic_rectangular distributing_partial distributing_torsion)
+foreach(case kinematic_cylindrical kinematic_rectangular kinematic_assembly distributing_partial
+    distributing_torsion)
   add_test(NAME deck_coupling_${case} COMMAND Python3::Interpreter
     ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_coupling_local.py --exe $<TARGET_FILE:ldfcz>
     --out ${LDFCZ_RUNS}/coupling_${case} --case ${case})

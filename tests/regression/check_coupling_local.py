@@ -20,6 +20,9 @@ Cases:
                 0.6)), *KINEMATIC 1, 2 (two local dofs per node: solved for two global components), R off the face
                 with a prescribed translation and rotation, against the twin with e_k . (u_s - u_R - theta x r_s) = 0
                 for k = 1, 2 as *EQUATIONs: 1e-9.
+  kinematic_assembly  the cylindrical case in Abaqus/CAE's layout (mesh in a *Part; reference node, surface,
+                *Orientation with a quoted datum name and *Coupling in the assembly) against the model-level deck:
+                1e-12 (the same equations).
   distributing_partial  *DISTRIBUTING 4, 4 (every translation and the rotation about x; dofs 5, 6 released) on an
                 L-shaped face (three of the four tip elements: the face's inertia T is not diagonal), R off the
                 face, force F and torque M about x at R. Statics, exact: the root reactions sum to -F and their
@@ -109,6 +112,38 @@ def case_kinematic_cylindrical(exe, out):
     orientation = ["*ORIENTATION, NAME=OR, SYSTEM=CYLINDRICAL", "0., 0.5, 0.5, 1., 0.5, 0.5"]
     oriented_pair(exe, out, "kinematic_cylindrical", beam, ref, orientation, ["*KINEMATIC", "2"], tangential,
                   [0.0, 0.0, 0.0], [0.01, 0.0, 0.0], warn="lies on the axis of cylindrical orientation OR")
+
+
+def case_kinematic_assembly(exe, out):
+    """The cylindrical case as Abaqus/CAE writes it: the mesh in a part, the reference node, the surface, the
+    *Orientation (a quoted datum name) and the *Coupling in the assembly; against the model-level deck."""
+    beam = Beam()
+    ref = [beam.L + 1.0, 0.5, 0.5]
+    flat = beam.mesh(ref)
+    part = [l for l in flat[flat.index("*NODE"):flat.index("*SURFACE, NAME=TIPS\nTIPE, S4")]
+            if not l.startswith("100000,") and l != "*NSET, NSET=REF\n100000"]
+    tip = flat[[i for i, l in enumerate(flat) if l.startswith("*ELSET, ELSET=TIPE")][0]].split("\n")[1]
+    bc = ["*BOUNDARY", "REF, 1, 3", "REF, 4, 4, 0.01", "REF, 5, 6"]
+    orient = ["0., 0.5, 0.5, 1., 0.5, 0.5"]
+    cae = ["*Heading", "CAE layout", "*Part, name=Beam"] + part + ["*Solid Section, elset=BEAM, material=M", ",",
+           "*End Part", "*Assembly, name=Assembly", "*Instance, name=I, part=Beam", "*End Instance",
+           "*Node", "100000, %r, %r, %r" % tuple(ref), "*Nset, nset=REF", "100000",
+           "*Elset, elset=_T_S4, internal, instance=I", tip, "*Surface, type=ELEMENT, name=T", "_T_S4, S4",
+           '*Orientation, name="Datum csys-1", system=CYLINDRICAL'] + orient + [
+           '*Coupling, constraint name=C1, ref node=REF, surface=T, orientation="Datum csys-1"', "*Kinematic", "2",
+           "*End Assembly", "*Material, name=M", "*Elastic", "%r, 0." % E, "*Boundary", "I.ROOT, ENCASTRE",
+           "*Step", "*Static", "1., 1."] + bc
+    for n in beam.root:
+        cae += ["*NODE PRINT, NSET=I.N%d" % n, "RF"]
+    for n in beam.tip:
+        cae += ["*NODE PRINT, NSET=I.N%d" % n, "U"]
+    a = run(exe, out, "kinematic_assembly", "\n".join(cae + ["*End Step"]) + "\n")[-1]
+    flat_deck = flat + ["*ORIENTATION, NAME=OR, SYSTEM=CYLINDRICAL"] + orient + [
+        "*COUPLING, CONSTRAINT NAME=C1, REF NODE=REF, SURFACE=TIPS, ORIENTATION=OR", "*KINEMATIC", "2",
+        "*BOUNDARY", "ROOT, ENCASTRE", "*STEP", "*STATIC", "1., 1."] + bc + beam.prints()[2:] + ["*END STEP"]
+    b = run(exe, out, "kinematic_model_level", "\n".join(flat_deck) + "\n")[-1]
+    a = {k[2:] if k.startswith("I.") else k: v for k, v in a.items()}
+    compare_rows(a, b, 1e-12)
 
 
 def case_kinematic_rectangular(exe, out):
@@ -204,7 +239,7 @@ def main():
     a = p.parse_args()
     os.makedirs(a.out, exist_ok=True)
     cases = {"kinematic_cylindrical": case_kinematic_cylindrical,
-             "kinematic_rectangular": case_kinematic_rectangular,
+             "kinematic_rectangular": case_kinematic_rectangular, "kinematic_assembly": case_kinematic_assembly,
              "distributing_partial": case_distributing_partial, "distributing_torsion": case_distributing_torsion}
     if a.case not in cases:
         fail("unknown case " + a.case)
