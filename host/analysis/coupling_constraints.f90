@@ -45,8 +45,9 @@ contains
     logical, intent(inout) :: used(:)   !< (ndof) dof of the analysis
     integer :: k, d, i, stat
     type(coupling_rows_t) :: rows
-    logical :: none(size(used))
-    none = .false.
+    logical, allocatable :: none(:)
+    if (model%ncoupling == 0) return
+    allocate (none(size(used)), source=.false.)
     do k = 1, model%ncoupling
       if (model%couplings(k)%kinematic) then
         ! only the reference dofs its rows hold (a coupling of dof 3 alone moves no coupling node with u_R1, u_R2 or
