@@ -69,9 +69,18 @@ CALCULIX_NOTES = [
      '*MPC types MEANROT, PLANE, STRAIGHT and DIST are CalculiX\'s; they are not among the Abaqus *MPC types (KG '
      '*MPC): out of scope.'),
     ('coupling6, coupling8, coupling9, coupling11, coupling12',
-     '*DISTRIBUTING given one rotation (dof 4 or 6): the translations are coupled whatever the data lines say (KG '
-     '*DISTRIBUTING; CalculiX likewise), the one rotation is a partial rotational coupling, which ldfcz refuses '
-     '(what Abaqus constrains then was not found in its documentation).'),
+     '*DISTRIBUTING given one rotation (dof 4 or 6): every translation and that rotation coupled, the others '
+     'released (inferred: docs/host.md, "Coupling constraints"); they print *SECTION PRINT only. In coupling12 '
+     '(L-shaped face) CalculiX\'s section moment, (129.93, 0.0065, -3.41), is not the applied (131.45, 0, 0), which '
+     'the Theory Manual\'s statically admissible distribution transmits exactly.'),
+    ('coupling7, coupling10',
+     '*COUPLING, ORIENTATION= with one rotation constrained about an oblique local axis: refused. Their *CLOAD at the '
+     'reference node is global in Abaqus (KG *CLOAD: local only at a *TRANSFORM node) and has components about the '
+     'released axes, which would act on nothing; CalculiX applies it in the local system (its section force is '
+     '7910.5 along local 3).'),
+    ('coupling3, cyl',
+     '*KINEMATIC 2 in a cylindrical system (a twist): run; they print *SECTION PRINT only; the torque from the root '
+     'reactions, 14.3824 and 73.593, against CalculiX\'s 14.3821 and 73.589 (3e-5, 5e-5).'),
     ('beamdelay', '*CLOAD, TIME DELAY is a CalculiX parameter (its manual, *CLOAD); Abaqus\'s *CLOAD has none.'),
     ('beamnlptp, beampo2, beampo6, c3d15',
      '*NODE PRINT, TIMEPOINTS= and *EL PRINT, GLOBAL= are CalculiX parameters (KG *NODE PRINT, *EL PRINT have '

@@ -243,6 +243,16 @@ foreach(case kinematic kinematic_twin distributing distributing_twin kinematic_2
     --out ${LDFCZ_RUNS}/coupling_${case} --case ${case})
   set_tests_properties(deck_coupling_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
+# *COUPLING, ORIENTATION= (local constrained dofs: cylindrical, rectangular) against *EQUATION twins with
+# hand-computed directions; partial rotational *DISTRIBUTING against statics, the all-rotations twin and Saint-Venant
+# torsion (tests/regression/check_coupling_local.py)
+foreach(case kinematic_cylindrical kinematic_rectangular kinematic_assembly distributing_partial
+    distributing_torsion)
+  add_test(NAME deck_coupling_${case} COMMAND Python3::Interpreter
+    ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_coupling_local.py --exe $<TARGET_FILE:ldfcz>
+    --out ${LDFCZ_RUNS}/coupling_${case} --case ${case})
+  set_tests_properties(deck_coupling_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
+endforeach()
 # CENTRIF and ROTA against the closed forms of a spinning disc (tests/regression/check_rotational_loads.py)
 foreach(case centrif_plane_stress centrif_axisymmetric centrif_3d rota centrif_nlgeom)
   add_test(NAME deck_rotational_${case} COMMAND Python3::Interpreter

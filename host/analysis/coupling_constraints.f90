@@ -1,10 +1,12 @@
 !> *COUPLING constraints on continuum nodes as linear constraint rows for linear_constraints (docs/host.md,
 !> "Coupling constraints"), in the linearized (small-rotation) form of the Abaqus Theory Manual:
 !> - kinematic: each constrained translation of a coupling node s follows the reference node R's rigid-body
-!>   motion, u_s = u_R + theta_R x (X_s - X_R); the coupling nodes' dofs are eliminated (as Abaqus eliminates them),
-!>   the reference node's translations and rotations (its rotational dofs, model_dof) are the masters;
+!>   motion, u_s = u_R + theta_R x (X_s - X_R), with an ORIENTATION in its local directions at s; the coupling nodes'
+!>   dofs are eliminated (as Abaqus eliminates them), the reference node's translations and rotations (its
+!>   rotational dofs, model_dof) are the masters;
 !> - distributing: the reference node moves with the coupling nodes' weighted mean, u_R = sum w_n u_n +
-!>   theta x (X_R - X_bar), theta_R = theta = T^-1 sum w_n r_n x u_n (the weighted least-squares rotation,
+!>   theta x (X_R - X_bar), the constrained components of theta_R = theta = T^-1 sum w_n r_n x u_n (the weighted
+!>   least-squares rotation; a released rotation has no row,
 !>   r_n = X_n - X_bar, T = sum w_n (r_n.r_n I - r_n r_n)), w_n the tributary area of node n on the surface times
 !>   the weighting function, normalized; a force and moment at R are then distributed as the Theory Manual's
 !>   "Distributing coupling constraints" gives them. The rows are solved for as many coupling-node dofs as the
@@ -13,7 +15,7 @@
 !> Exact without NLGEOM; under NLGEOM only where the rotation cannot enter (coupling_check_step).
 module coupling_constraints
   use ldfcz_kinds, only: dp
-  use model_types, only: model_t, coupling_t, model_dof, model_label_text
+  use model_types, only: model_t, coupling_t, model_dof, model_label_text, orientation_axes
   use element_catalog, only: element_face_nodes, element_is_axisymmetric
   use distributed_loads, only: surface_shape, line_shape
   use boundary_table, only: boundary_table_t
@@ -41,17 +43,22 @@ contains
   pure subroutine coupling_mark_used(model, used)
     type(model_t), intent(in) :: model  !< the model
     logical, intent(inout) :: used(:)   !< (ndof) dof of the analysis
-    integer :: k, d, i
+    integer :: k, d, i, stat
     type(coupling_rows_t) :: rows
+    logical, allocatable :: none(:)
+    if (model%ncoupling == 0) return
+    allocate (none(size(used)), source=.false.)
     do k = 1, model%ncoupling
       if (model%couplings(k)%kinematic) then
         ! only the reference dofs its rows hold (a coupling of dof 3 alone moves no coupling node with u_R1, u_R2 or
         ! theta_R3: those stay outside the analysis, like the dofs of a node without an element)
-        call kinematic_rows(model, model%couplings(k), rows)
+        call kinematic_rows(model, model%couplings(k), none, rows, stat)
         used(rows%mdof) = .true.
         cycle
       end if
+      ! a distributing coupling: its translations and the rotations it constrains (released ones hold nothing)
       do d = 1, 6
+        if (d > 3 .and. .not. model%couplings(k)%dofs(d)) cycle
         i = model_dof(model, model%couplings(k)%ref, d)
         if (i > 0) used(i) = .true.
       end do
@@ -71,21 +78,34 @@ contains
     stat = 0
     errmsg = ''
     if (model%couplings(k)%kinematic) then
-      call kinematic_rows(model, model%couplings(k), rows)
+      call kinematic_rows(model, model%couplings(k), excluded, rows, stat)
+      if (stat /= 0) then
+        stat = 2
+        errmsg = position(model%couplings(k))//': coupling '//trim(model%couplings(k)%name)//': a coupling node '// &
+          'has no free global components for its local constraints (boundaries or other constraints hold them)'
+      end if
     else
       call distributing_rows(model, model%couplings(k), excluded, rows, stat, errmsg)
     end if
   end subroutine coupling_rows
 
   !> Kinematic coupling c: u_s,d = u_R,d + (theta_R x (X_s - X_R))_d for every coupling node s and constrained
-  !> translation d.
-  pure subroutine kinematic_rows(model, c, rows)
+  !> translation d; with an ORIENTATION, d a local direction at s (kinematic_rows_local). stat 1: a node's local
+  !> constraints find no free global components (excluded).
+  pure subroutine kinematic_rows(model, c, excluded, rows, stat)
     type(model_t), intent(in) :: model         !< the model
     type(coupling_t), intent(in) :: c          !< the coupling
+    logical, intent(in) :: excluded(:)         !< (ndof) dofs not to eliminate (ORIENTATION only)
     type(coupling_rows_t), intent(out) :: rows !< its rows
+    integer, intent(out) :: stat               !< 0 ok, 1 no free components
     integer :: a, d, nd
     real(dp) :: r(3), g(3)
     nd = model%ndim
+    stat = 0
+    if (c%iorient > 0) then
+      call kinematic_rows_local(model, c, excluded, rows, stat)
+      return
+    end if
     call rows_init(rows)
     do a = 1, size(c%nodes)
       r = model%x(:, c%nodes(a)) - model%x(:, c%ref)
@@ -106,6 +126,66 @@ contains
       end do
     end do
   end subroutine kinematic_rows
+
+  !> Kinematic coupling c with an ORIENTATION (3D): at each coupling node s the local directions e_k of the
+  !> orientation at X_s (columns of orientation_axes), and for each constrained local dof k the row
+  !> e_k . u_s = e_k . (u_R + theta_R x r_s), r_s = X_s - X_R. The m rows of a node are solved for m of its global
+  !> components, chosen by complete pivoting among those not excluded: u_S = E_S^-1 (E G [u_R; theta_R] - E_M u_M),
+  !> G = [I, -[r_s]x]. A node on a cylindrical system's axis (no local directions 1, 2 there) gets the row of the
+  !> axial dof 3 only, when constrained (inferred: CalculiX takes an arbitrary normal to the axis instead).
+  pure subroutine kinematic_rows_local(model, c, excluded, rows, stat)
+    type(model_t), intent(in) :: model         !< the model
+    type(coupling_t), intent(in) :: c          !< the coupling
+    logical, intent(in) :: excluded(:)         !< (ndof) dofs not to eliminate
+    type(coupling_rows_t), intent(out) :: rows !< its rows
+    integer, intent(out) :: stat               !< 0 ok, 1 no free components
+    real(dp) :: t(3, 3), e(3, 3), g(3, 6), x(3, 9)
+    real(dp), allocatable :: es(:, :), xs(:, :)
+    integer :: a, i, j, m, ref_dof(6), node_dof(3)
+    integer, allocatable :: piv(:)
+    logical :: ok, is_slave(3)
+    stat = 0
+    call rows_init(rows)
+    ref_dof = [(model_dof(model, c%ref, j), j = 1, 6)]
+    do a = 1, size(c%nodes)
+      call orientation_axes(model%orientations(c%iorient), model%x(:, c%nodes(a)), t, ok)
+      m = count(c%dofs(1:3))
+      if (.not. ok) then
+        ! on a cylindrical system's axis: no radial or tangential direction, the axial one only (a warning at
+        ! finish_model; inferred)
+        m = 0
+        if (c%dofs(3) .and. model%orientations(c%iorient)%system == 2) then
+          m = 1
+          t(:, 3) = model%orientations(c%iorient)%b - model%orientations(c%iorient)%a
+          t(:, 3) = t(:, 3) / norm2(t(:, 3))
+        end if
+        if (m == 0) cycle
+        e(1, :) = t(:, 3)
+      else
+        e(1:m, :) = transpose(t(:, pack([1, 2, 3], c%dofs(1:3))))
+      end if
+      g(:, 1:3) = identity3()
+      g(:, 4:6) = -skew(model%x(:, c%nodes(a)) - model%x(:, c%ref))
+      node_dof = [(model_dof(model, c%nodes(a), j), j = 1, 3)]
+      call choose_pivots(e(1:m, :), excluded(node_dof), piv)
+      if (size(piv) < m) then
+        stat = 1
+        return
+      end if
+      ! x = E_S^-1 [E G, -E] : the weights of the reference dofs, then of the node's components
+      xs = reshape([matmul(e(1:m, :), g), -e(1:m, :)], [m, 9])
+      es = e(1:m, piv)
+      call solve_dense(es, xs, stat)
+      if (stat /= 0) return
+      x(1:m, :) = xs
+      is_slave = .false.
+      is_slave(piv) = .true.
+      do i = 1, m
+        call rows_add(rows, node_dof(piv(i)), [ref_dof, pack(node_dof, .not. is_slave)], &
+          [x(i, 1:6), pack(x(i, 7:9), .not. is_slave)])
+      end do
+    end do
+  end subroutine kinematic_rows_local
 
   !> Distributing coupling c: [u_R; theta_R] = B u_c solved for m coupling-node dofs S (complete pivoting over the
   !> dofs not excluded): u_S = B_S^-1 ([u_R; theta_R] - B_M u_M).
@@ -176,20 +256,21 @@ contains
     real(dp), allocatable :: w(:)
     real(dp) :: xbar(3), rr(3), r(3), t(3, 3), ti(3, 3), gn(3, 3), tt
     integer :: nd, nc, n, m, nrot, d
-    logical :: rot_needed
+    logical :: rot_needed, rot(3)
     stat = 0
     errmsg = ''
     nd = model%ndim
     nc = size(c%nodes)
     call coupling_weights(model, c, w, xbar)
     rr = model%x(:, c%ref) - xbar
-    nrot = 0
-    if (model_dof(model, c%ref, 6) > 0) nrot = merge(3, 1, nd == 3)
+    ! the rotations the coupling constrains (the others released: no row, their moment transmits nothing)
+    rot = [(c%dofs(d) .and. model_dof(model, c%ref, d) > 0, d = 4, 6)]
+    if (nd == 2) rot(1:2) = .false.
+    nrot = count(rot)
     m = nd + nrot
     allocate (b(m, nd * nc), ref_dof(m))
     ref_dof(1:nd) = [(model_dof(model, c%ref, d), d = 1, nd)]
-    if (nrot == 3) ref_dof(4:6) = [(model_dof(model, c%ref, d), d = 4, 6)]
-    if (nrot == 1) ref_dof(3) = model_dof(model, c%ref, 6)
+    ref_dof(nd + 1:) = pack([(model_dof(model, c%ref, d), d = 4, 6)], rot)
     b = 0.0_dp
     rot_needed = nrot > 0 .or. norm2(rr) > 1.0e-12_dp * max(1.0_dp, maxval(abs(model%x(:, c%nodes))))
     t = 0.0_dp
@@ -218,9 +299,10 @@ contains
       if (.not. rot_needed) cycle
       if (nd == 3) then
         ! theta = sum G_n u_n, G_n = w_n T^-1 [r_n]x ; u_R += theta x r_R = -[r_R]x theta
+        ! (full inertia T: a constrained rotation is the component of the group's least-squares rotation; inferred)
         gn = w(n) * matmul(ti, skew(r))
         b(1:3, (n - 1) * 3 + 1:n * 3) = b(1:3, (n - 1) * 3 + 1:n * 3) - matmul(skew(rr), gn)
-        if (nrot == 3) b(4:6, (n - 1) * 3 + 1:n * 3) = gn
+        if (nrot > 0) b(4:m, (n - 1) * 3 + 1:n * 3) = gn(pack([1, 2, 3], rot), :)
       else
         tt = w(n) * ti(1, 1)
         ! theta = sum tt (r_x u_y - r_y u_x); u_R += theta (-r_Ry, r_Rx)

@@ -269,13 +269,13 @@ contains
     type(model_t), intent(in) :: model                   !< the model
     integer, intent(out) :: stat                         !< 0 ok, 2 model error
     character(len=:), allocatable, intent(out) :: errmsg !< message
-    logical :: excluded(size(cs%of_dof))
+    logical, allocatable :: excluded(:)
     type(coupling_rows_t) :: rows
     integer :: k, i, is, nd
     character(len=16) :: b
     stat = 0
     errmsg = ''
-    excluded = .false.
+    allocate (excluded(size(cs%of_dof)), source=.false.)
     call exclude_prescribed(model%initial_bcs, model%n_initial_bc)
     do is = 1, model%nstep
       call exclude_prescribed(model%steps(is)%bcs, model%steps(is)%nbc)

@@ -133,6 +133,7 @@ contains
         call hash_ints(hs, [c%ref, c%weighting, merge(1, 0, c%kinematic), merge(1, 0, c%dofs)])
         call hash_ints(hs, c%nodes)
         call hash_reals(hs, [c%radius])
+        if (c%iorient /= 0) call hash_ints(hs, [c%iorient])
       end associate
     end do
     ! *PRE-TENSION SECTION (hashed only when present: older decks keep their fingerprint)

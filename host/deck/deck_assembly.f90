@@ -35,7 +35,7 @@ contains
     select case (kw)
     case ('*INSTANCE', '*END INSTANCE', '*END ASSEMBLY', '*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SURFACE', &
           '*EQUATION', '*TIE', '*MPC', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*PARAMETER', '*TRANSFORM', '*SYSTEM', &
-          '*COUPLING', '*KINEMATIC', '*DISTRIBUTING', '*PRE-TENSION SECTION')
+          '*COUPLING', '*KINEMATIC', '*DISTRIBUTING', '*PRE-TENSION SECTION', '*ORIENTATION')
       allowed_in_assembly = .true.
     case default
       allowed_in_assembly = .false.

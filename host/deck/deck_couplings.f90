@@ -17,7 +17,8 @@ module deck_couplings
 contains
 
   !> *COUPLING, CONSTRAINT NAME=, REF NODE= (a node or a node set of one node), SURFACE= (element-based)[,
-  !> INFLUENCE RADIUS=][, ADJUST=NO]; no data lines. ORIENTATION (local constrained directions) is refused.
+  !> INFLUENCE RADIUS=][, ADJUST=NO][, ORIENTATION=] (the *ORIENTATION, resolved in finish_model, whose local
+  !> directions the constrained dofs of the *KINEMATIC or *DISTRIBUTING lines are in; 3D only); no data lines.
   subroutine read_coupling(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(coupling_t) :: c
@@ -28,8 +29,11 @@ contains
       'ORIENTATION', 'ADJUST'])
     if (ctx%stat /= 0) return
     if (deck_has_param(ctx%params, 'ORIENTATION')) then
-      call ctx_fail(ctx, ctx%ir, 'ORIENTATION (constrained dofs in local directions) is not supported')
-      return
+      c%orientation = deck_normalize(deck_param_value(ctx%params, 'ORIENTATION'))
+      if (len_trim(c%orientation) == 0) then
+        call ctx_fail(ctx, ctx%ir, 'ORIENTATION= needs the name of an *ORIENTATION')
+        return
+      end if
     end if
     if (.not. ctx_only_value(ctx, ctx%ir, 'ADJUST', 'NO', ' (ldfcz does not move the reference node)')) return
     if (ctx%ir_next > ctx%ir + 1) then

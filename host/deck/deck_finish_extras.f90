@@ -5,7 +5,7 @@
 module deck_finish_extras
   use ldfcz_kinds, only: dp
   use model_types, only: model_t, coupling_t, boundary_t, source_pos_t, model_dof, model_label_text, etype_user, &
-    dload_centrif, dload_rota, init_stress
+    dload_centrif, dload_rota, init_stress, orientation_axes
   use element_catalog, only: element_face_nodes, element_is_axisymmetric
   use deck_lists, only: itoa, unique
   use deck_context, only: deck_context_t, ctx_fail_pos, ctx_warn_pos
@@ -64,6 +64,8 @@ contains
           end if
           call coupling_nodes(ctx, c)
           if (ctx%stat /= 0) return
+          if (len_trim(c%orientation) > 0) call coupling_orientation(ctx, c)
+          if (ctx%stat /= 0) return
           if (allocated(model%node_transform)) then
             if (model%node_transform(c%ref) /= 0 .or. any(model%node_transform(c%nodes) /= 0)) then
               call ctx_fail_pos(ctx, pos, 'coupling '//trim(c%name)//': a node with a *TRANSFORM (the coupling '// &
@@ -75,6 +77,71 @@ contains
       end do
     end associate
   end subroutine resolve_couplings
+
+  !> The ORIENTATION of coupling c (Keywords Reference *COUPLING: the local system of the constrained dofs):
+  !> resolved to its index; 3D only. Kinematic: the local directions are taken at each coupling node (Analysis
+  !> User's Guide "Kinematic coupling constraints": local systems "at the constrained nodes"); a node on the axis of
+  !> a cylindrical system keeps its axial dof only (a warning; inferred). Distributing: every translation is
+  !> constrained whatever the system; constrained rotations about some local axes only (the others released) are
+  !> supported where those axes are global ones (taken at the reference node), and become the global rotational
+  !> dofs.
+  subroutine coupling_orientation(ctx, c)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    type(coupling_t), intent(inout) :: c        !< the coupling (an element of ctx%model%couplings)
+    type(source_pos_t) :: pos
+    real(dp) :: t(3, 3)
+    logical :: ok, rot(3)
+    integer :: k, j
+    pos = c%pos
+    associate (model => ctx%model)
+      c%iorient = 0
+      do k = 1, model%norient
+        if (model%orientations(k)%name == c%orientation) c%iorient = k
+      end do
+      if (c%iorient == 0) then
+        call ctx_fail_pos(ctx, pos, 'ORIENTATION: undefined orientation '//trim(c%orientation))
+        return
+      end if
+      if (model%ndim /= 3) then
+        call ctx_fail_pos(ctx, pos, 'ORIENTATION (constrained dofs in local directions) is supported in 3D '// &
+          'models only')
+        return
+      end if
+      if (c%kinematic) then
+        do k = 1, size(c%nodes)
+          call orientation_axes(model%orientations(c%iorient), model%x(:, c%nodes(k)), t, ok)
+          if (ok) cycle
+          if (model%orientations(c%iorient)%system /= 2) then
+            call ctx_fail_pos(ctx, pos, 'coupling '//trim(c%name)//': orientation '//trim(c%orientation)// &
+              ' defines no local directions (coinciding points)')
+            return
+          end if
+          ! on the axis of a cylindrical system: local 1 and 2 undefined, the node keeps the axial dof 3 only
+          if (any(c%dofs(1:2))) call ctx_warn_pos(ctx, pos, 'coupling '//trim(c%name)//': coupling node '// &
+            model_label_text(model, model%node_id(c%nodes(k)), .true.)//' lies on the axis of cylindrical '// &
+            'orientation '//trim(c%orientation)//', which defines no radial or tangential direction there: its '// &
+            'local dofs 1, 2 are not constrained')
+        end do
+        return
+      end if
+      if (all(c%dofs(4:6)) .or. .not. any(c%dofs(4:6))) return
+      call orientation_axes(model%orientations(c%iorient), model%x(:, c%ref), t, ok)
+      rot = .false.
+      do k = 1, 3
+        if (.not. c%dofs(3 + k)) cycle
+        j = maxloc(abs(t(:, k)), 1)
+        if (.not. ok .or. abs(t(j, k)) < 1.0_dp - 1.0e-9_dp) then
+          pos = c%kind_pos
+          call ctx_fail_pos(ctx, pos, 'coupling '//trim(c%name)//': the rotation about local axis '//itoa(k)// &
+            ' of orientation '//trim(c%orientation)//' is constrained and others released, but that axis is '// &
+            'not a global axis (not supported: constrain all rotations, or give the axes globally)')
+          return
+        end if
+        rot(j) = .true.
+      end do
+      c%dofs(4:6) = rot
+    end associate
+  end subroutine coupling_orientation
 
   !> The coupling nodes of coupling c: the nodes of its surface's faces within its influence radius.
   subroutine coupling_nodes(ctx, c)
@@ -116,11 +183,10 @@ contains
 
   !> The rotational dofs of the reference nodes (model%node_rot, model%nrot): a kinematic coupling always moves its
   !> coupling nodes with the reference node's rotation; a distributing one couples the rotations when its dofs
-  !> include them (3D: all of 4..6; 2D: 6).
+  !> include them (3D: any of 4..6, the others released; 2D: 6).
   subroutine number_rotations(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     integer :: k, nr
-    type(source_pos_t) :: pos
     associate (model => ctx%model)
       allocate (model%node_rot(model%nnode))
       model%node_rot = 0
@@ -129,14 +195,8 @@ contains
       do k = 1, model%ncoupling
         associate (c => model%couplings(k))
           if (.not. c%kinematic) then
-            if (model%ndim == 3 .and. any(c%dofs(4:6)) .and. .not. all(c%dofs(4:6))) then
-              pos = c%kind_pos
-              call ctx_fail_pos(ctx, pos, 'the rotations of a distributing coupling: all (4..6) or none (partial '// &
-                'rotational coupling is not supported; the translations are always coupled)')
-              return
-            end if
             if (model%ndim == 2 .and. .not. c%dofs(6)) cycle
-            if (model%ndim == 3 .and. .not. c%dofs(4)) cycle
+            if (model%ndim == 3 .and. .not. any(c%dofs(4:6))) cycle
           end if
           if (model%node_rot(c%ref) /= 0) cycle
           model%node_rot(c%ref) = model%nrot + 1

@@ -241,9 +241,11 @@ module model_types
     integer :: ref_set = 0                 !< REF NODE given as a node set (of one node): its index
     integer :: surface = 0                 !< element-based surface of the coupling nodes
     logical :: kinematic = .true.          !< *KINEMATIC (else *DISTRIBUTING)
-    logical :: dofs(6) = .false.           !< constrained dofs (1..3 translations, 4..6 rotations of the reference)
+    logical :: dofs(6) = .false.           !< constrained dofs (1..3 translations, local with ORIENTATION; 4..6)
     integer :: weighting = 1               !< *DISTRIBUTING, WEIGHTING METHOD: 1 uniform, 2 linear, 3 quadratic, 4 cubic
     real(dp) :: radius = -1.0_dp           !< INFLUENCE RADIUS (< 0: every node of the surface)
+    character(len=name_len) :: orientation = '' !< ORIENTATION= ('' none): the constrained dofs' local system
+    integer :: iorient = 0                 !< its index in model%orientations (finish_model)
     integer, allocatable :: nodes(:)       !< the coupling nodes (finish_model)
     type(source_pos_t) :: pos              !< the *COUPLING line
     type(source_pos_t) :: kind_pos         !< the *KINEMATIC or *DISTRIBUTING line
