@@ -567,7 +567,7 @@ def main(argv):
         if name == 'recheck':
             p.add_argument('--deck', required=True, help='deck name (JOB of JOB.inp)')
             p.add_argument('--edit', action='append', default=[], help="'OLD=>NEW' text replacement (repeatable)")
-        else:
+        if name == 'third-party':
             p.add_argument('--manifest', default=os.path.join(ROOT, 'benchmarks', 'abaqus_third_party.json'))
             p.add_argument('--sources', required=True, help='folder of clones named owner+name')
     a = ap.parse_args(argv[1:])
