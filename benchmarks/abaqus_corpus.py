@@ -103,11 +103,9 @@ CALCULIX_NOTES = [
      'has the mean-dilatation B-bar (Abaqus\'s C3D8 is selectively reduced), so these coarse bending meshes deflect '
      'more: the element formulations differ, not the deck\'s meaning.'),
     ('beam20t',
-     'mismatch 10 %: CalculiX interpolates temperatures linearly (from the corner nodes) in C3D20 and C3D20R '
-     '("the linear interpolation of the initial temperatures is standard for the C3D20 and C3D20R element", its '
-     'manual, C3D10T); ldfcz interpolates them with the element\'s quadratic shape functions, the Abaqus '
-     'convention the same passage names for C3D10. The largest differences are the lateral expansions of the '
-     'cross-sections between heated node sets.'),
+     'C3D20 with nodal temperatures: matched once ldfcz interpolated temperatures in second-order hexahedra and '
+     'quadrilaterals with their first-order part as Abaqus does (docs/elements.md, TEMP); CalculiX interpolates '
+     'them linearly from the corner nodes (its manual, C3D10T), which gives the same field for this deck.'),
     ('planestress3',
      'mismatch 2.3 %: CalculiX expands plane-stress elements into a layer of 3D bricks (its manual, "2D elements '
      '... are automatically expanded into 3D"); ldfcz\'s CPS4 is a plane-stress element.'),

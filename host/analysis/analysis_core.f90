@@ -6,7 +6,8 @@ module analysis_core
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node, model_dof
-  use element_catalog, only: element_name
+  use element_catalog, only: element_name, element_family
+  use solid_shape, only: solid_first_order_temperature
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, solid_compact_geometry_size, solid_compact_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
@@ -1029,6 +1030,9 @@ contains
       t0(a) = an%state%temp_start(nd)
       dtn(a) = an%work%temp_end(nd) - an%state%temp_start(nd)
     end do
+    ! second-order quadrilaterals and hexahedra: the temperature field of their first-order part (as Abaqus)
+    call solid_first_order_temperature(element_family(model%elem_kind(ie)), t0(1:nn))
+    call solid_first_order_temperature(element_family(model%elem_kind(ie)), dtn(1:nn))
     if (model%nfield > 0) then
       fld0 = element_fields(an%state%field_start)
       dfld = element_fields(an%work%field_end) - fld0

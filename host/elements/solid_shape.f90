@@ -33,6 +33,7 @@ module solid_shape
   implicit none
   private
   public :: solid_shape_eval, solid_gauss_point, solid_parent_centre, solid_hourglass_base, solid_node_parent
+  public :: solid_first_order_temperature
 
   real(dp), parameter :: hex_nodes(3, 20) = reshape([ &
     -1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, -1.0_dp, -1.0_dp,   1.0_dp, 1.0_dp, -1.0_dp,   -1.0_dp, 1.0_dp, -1.0_dp, &
@@ -257,6 +258,50 @@ contains
       dndxi = 0.0_dp
     end select
   end subroutine solid_shape_eval
+
+  !> Nodal temperatures (or their increments) of a second-order quadrilateral or hexahedron replaced by those of
+  !> their first-order part, as Abaqus/Standard interpolates temperatures in second-order stress elements ("if the
+  !> underlying elements are of second order, the displacements are interpolated using quadratic functions,
+  !> whereas the temperature field is interpolated using linear shape functions": Analysis User's Guide, quoted in
+  !> the Eng-Tips thread 349349, 2012). Which linear field: the L2 projection, in parent coordinates, of the
+  !> element's quadratic interpolant onto the (bi/tri)linear one. It reproduces the integration-point temperatures
+  !> that thread measured in Abaqus for a CPS8 (weights 0.1958, -0.2333, -0.0624, -0.2333, 0.5915, 0.0751, 0.0751,
+  !> 0.5915 at its first point); for the hexahedron the same projection is **inferred**. The projected corner value
+  !> is T_a (1 - d/3) + sum over the d edges at corner a of (2 T_mid - T_other corner)/3 (d = 2 in 2D, 3 in 3D);
+  !> the mid-side nodes get the mean of their corners, so the element's own interpolation of the returned values is
+  !> that linear field. Linear fields are unchanged. Other families: t unchanged.
+  pure subroutine solid_first_order_temperature(family, t)
+    integer, intent(in) :: family     !< FAM_*
+    real(dp), intent(inout) :: t(:)   !< nodal values (nnode)
+    integer, parameter :: quad_e(2, 4) = reshape([1, 2, 2, 3, 3, 4, 4, 1], [2, 4])
+    integer, parameter :: hex_e(2, 12) = reshape([1, 2, 2, 3, 3, 4, 4, 1, 5, 6, 6, 7, 7, 8, 8, 5, 1, 5, 2, 6, 3, 7, &
+      4, 8], [2, 12])
+    select case (family)
+    case (FAM_QUAD8)
+      call project(t, 4, quad_e, 2.0_dp)
+    case (FAM_HEX20)
+      call project(t, 8, hex_e, 3.0_dp)
+    end select
+  contains
+    pure subroutine project(t, nc, edges, d)
+      real(dp), intent(inout) :: t(:)          !< nodal values
+      integer, intent(in) :: nc, edges(:, :)   !< corners; edge k joins corners edges(:, k), its mid-side node nc + k
+      real(dp), intent(in) :: d                !< edges at a corner
+      real(dp) :: tc(nc)
+      integer :: k, a, b
+      tc = t(1:nc) * (1.0_dp - d / 3)
+      do k = 1, size(edges, 2)
+        a = edges(1, k)
+        b = edges(2, k)
+        tc(a) = tc(a) + (2 * t(nc + k) - t(b)) / 3
+        tc(b) = tc(b) + (2 * t(nc + k) - t(a)) / 3
+      end do
+      t(1:nc) = tc
+      do k = 1, size(edges, 2)
+        t(nc + k) = 0.5_dp * (tc(edges(1, k)) + tc(edges(2, k)))
+      end do
+    end subroutine project
+  end subroutine solid_first_order_temperature
 
   !> The 15-node wedge's shape functions and derivatives (module header) at (g, h, r).
   pure subroutine wedge15_shape(xi, n, dndxi)
