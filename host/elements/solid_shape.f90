@@ -165,28 +165,7 @@ contains
         dndxi(a, j) = 0.25_dp * p * q * hex_nodes(j, a)
       end do
     case (FAM_TET4, FAM_TET10)
-      ! volume coordinates L1 = 1 - xi - eta - zeta, L2 = xi, L3 = eta, L4 = zeta
-      l = [1 - xi(1) - xi(2) - xi(3), xi(1), xi(2), xi(3)]
-      dl = 0.0_dp
-      dl(1, :) = -1.0_dp
-      dl(2, 1) = 1.0_dp
-      dl(3, 2) = 1.0_dp
-      dl(4, 3) = 1.0_dp
-      if (family == FAM_TET4) then
-        n(1:4) = l
-        dndxi(1:4, 1:3) = dl
-      else
-        do a = 1, 4
-          n(a) = l(a) * (2 * l(a) - 1)
-          dndxi(a, :) = (4 * l(a) - 1) * dl(a, :)
-        end do
-        do a = 5, 10
-          i = tet_edges(1, a - 4)
-          j = tet_edges(2, a - 4)
-          n(a) = 4 * l(i) * l(j)
-          dndxi(a, :) = 4 * (dl(i, :) * l(j) + l(i) * dl(j, :))
-        end do
-      end if
+      call simplex_shape(3, family == FAM_TET10, xi, n, dndxi)
     case (FAM_WEDGE6)
       ! L = (1 - g - h, g, h) in the triangle times the linear (1 -+ r)/2 through the thickness
       l(1:3) = [1 - xi(1) - xi(2), xi(1), xi(2)]
@@ -232,32 +211,47 @@ contains
         dndxi(a, i) = 0.5_dp * p * quad_nodes(i, a)
       end do
     case (FAM_TRI3, FAM_TRI6)
-      ! area coordinates L1 = 1 - g - h, L2 = g, L3 = h
-      l(1:3) = [1 - xi(1) - xi(2), xi(1), xi(2)]
-      dl = 0.0_dp
-      dl(1, 1:2) = -1.0_dp
-      dl(2, 1) = 1.0_dp
-      dl(3, 2) = 1.0_dp
-      if (family == FAM_TRI3) then
-        n(1:3) = l(1:3)
-        dndxi(1:3, 1:2) = dl(1:3, 1:2)
-      else
-        do a = 1, 3
-          n(a) = l(a) * (2 * l(a) - 1)
-          dndxi(a, 1:2) = (4 * l(a) - 1) * dl(a, 1:2)
-        end do
-        do a = 4, 6
-          i = tri_edges(1, a - 3)
-          j = tri_edges(2, a - 3)
-          n(a) = 4 * l(i) * l(j)
-          dndxi(a, 1:2) = 4 * (dl(i, 1:2) * l(j) + l(i) * dl(j, 1:2))
-        end do
-      end if
+      call simplex_shape(2, family == FAM_TRI6, xi, n, dndxi)
     case default
       n = 0.0_dp
       dndxi = 0.0_dp
     end select
   end subroutine solid_shape_eval
+
+  !> Shape functions of the linear or quadratic simplex of dimension nd (tetrahedron 3, triangle 2; module
+  !> header): L_1 = 1 - sum(xi), L_(k+1) = xi_k; corners L_a (or L_a (2 L_a - 1)), mid-side nodes 4 L_i L_j on the
+  !> edges tet_edges(:, 1:6) (their first three are the triangle's).
+  pure subroutine simplex_shape(nd, quadratic, xi, n, dndxi)
+    integer, intent(in) :: nd
+    logical, intent(in) :: quadratic
+    real(dp), intent(in) :: xi(:)
+    real(dp), intent(out) :: n(:), dndxi(:, :)
+    real(dp) :: l(nd + 1), dl(nd + 1, nd)
+    integer :: a, k, i, j
+    l(1) = 1.0_dp
+    dl = 0.0_dp
+    dl(1, :) = -1.0_dp
+    do k = 1, nd
+      l(1) = l(1) - xi(k)      ! (1 - xi) - eta - zeta, left to right
+      l(k + 1) = xi(k)
+      dl(k + 1, k) = 1.0_dp
+    end do
+    if (.not. quadratic) then
+      n(1:nd + 1) = l
+      dndxi(1:nd + 1, 1:nd) = dl
+      return
+    end if
+    do a = 1, nd + 1
+      n(a) = l(a) * (2 * l(a) - 1)
+      dndxi(a, 1:nd) = (4 * l(a) - 1) * dl(a, :)
+    end do
+    do a = nd + 2, size(n)
+      i = tet_edges(1, a - nd - 1)
+      j = tet_edges(2, a - nd - 1)
+      n(a) = 4 * l(i) * l(j)
+      dndxi(a, 1:nd) = 4 * (dl(i, :) * l(j) + l(i) * dl(j, :))
+    end do
+  end subroutine simplex_shape
 
   !> Nodal temperatures (or their increments) of a second-order quadrilateral or hexahedron replaced by those of
   !> their first-order part, as Abaqus/Standard interpolates temperatures in second-order stress elements ("if the
