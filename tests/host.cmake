@@ -66,6 +66,11 @@ ldfcz_add_deck_test(NAME deck_c3d8_uniaxial DECK ${LDFCZ_DECKS}/single/c3d8_unia
 ldfcz_add_deck_test(NAME deck_c3d6_uniaxial DECK ${LDFCZ_DECKS}/single/c3d6_uniaxial.inp CASE c3d6_uniaxial)
 ldfcz_add_deck_test(NAME deck_c3d6_faces DECK ${LDFCZ_DECKS}/single/c3d6_faces.inp CASE c3d6_faces)
 ldfcz_add_deck_test(NAME deck_c3d15_faces DECK ${LDFCZ_DECKS}/single/c3d15_faces.inp CASE c3d6_faces)
+# temperatures in second-order hexahedra and quadrilaterals: their first-order part (as Abaqus), a free expansion
+foreach(mt c3d20 cps8)
+  ldfcz_add_deck_test(NAME deck_${mt}_midside_temperature DECK ${LDFCZ_DECKS}/single/${mt}_midside_temperature.inp
+    CASE midside_temperature)
+endforeach()
 # the triangles (CPE3, CPS6, CAX3, CAX6; all six types in test_solid_element): their edges S1..S3 under a
 # self-balanced uniform pressure against the closed form
 foreach(tri cpe3 cps6 cax3 cax6)

@@ -109,6 +109,22 @@ def case_tri_faces(d, job):
         close("FIXED.RF%d = 0" % i, row["FIXED.RF%d" % i], 0.0, 0.0, 1e-8)
 
 
+def case_midside_temperature(d, job):
+    """A free C3D20 / CPS8 with temperature 100 at its mid-side nodes and 0 at its corners (make_single_decks.py,
+    midside_temperature): the first-order part of that field is uniform (200 in the cube, 400/3 in the square), so
+    node 3 moves by alpha T X (the corner (1, 1, 0) or (1, 1); plane stress: the in-plane free expansion) and no
+    reaction arises. 1e-9 relative (one linear solve of a stress-free state); reactions 1e-9 N (the element's forces
+    are of order E alpha T = 2 N: a quadratic temperature field would leave self-stress of that order and a
+    different displacement)."""
+    row, _ = last_row(d, job)
+    three_d = job.lower().startswith("c3d")
+    t = 200.0 if three_d else 400.0 / 3.0
+    x3 = (1.0, 1.0, 0.0) if three_d else (1.0, 1.0)
+    for i, x in enumerate(x3, start=1):
+        close("N3.U%d = alpha T X" % i, row["N3.U%d" % i], 1e-5 * t * x, 1e-9, 1e-15)
+        close("FIXED.RF%d = 0" % i, row["FIXED.RF%d" % i], 0.0, 0.0, 1e-9)
+
+
 def case_cohesive_I(d, job):
     """Mode I: RF3 = T(0.0075) A0 (A0 = 1 mm^2); Eq. 20. The RF is summed from the UEL's RHS exactly."""
     row, _ = last_row(d, job)
