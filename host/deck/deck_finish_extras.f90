@@ -4,6 +4,7 @@
 !> line that defines the offending item.
 module deck_finish_extras
   use ldfcz_kinds, only: dp
+  use ldfcz_sorting, only: sort_real
   use model_types, only: model_t, coupling_t, boundary_t, source_pos_t, model_dof, model_label_text, etype_user, &
     dload_centrif, dload_rota, init_stress, orientation_axes
   use element_catalog, only: element_face_nodes, element_is_axisymmetric
@@ -410,17 +411,7 @@ contains
   pure subroutine sort_unique(t)
     real(dp), allocatable, intent(inout) :: t(:)
     integer :: i, j
-    real(dp) :: v
-    do i = 2, size(t)
-      v = t(i)
-      j = i - 1
-      do while (j >= 1)
-        if (t(j) <= v) exit
-        t(j + 1) = t(j)
-        j = j - 1
-      end do
-      t(j + 1) = v
-    end do
+    call sort_real(t)
     j = 0
     do i = 1, size(t)
       if (j > 0) then

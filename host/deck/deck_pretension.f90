@@ -7,6 +7,7 @@
 !> relative displacement (docs/host.md, "Pre-tension sections"; the analysis side: host/analysis/pretension_sections).
 module deck_pretension
   use ldfcz_kinds, only: dp
+  use ldfcz_sorting, only: sort_int
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
   use model_types, only: pretension_t, model_t, boundary_t, etype_user, model_label_text
   use element_catalog, only: element_face_nodes
@@ -387,22 +388,8 @@ contains
       if (any(u == v(i))) cycle
       u = [u, v(i)]
     end do
-    call sort_ints(u)
+    call sort_int(u)
   end function unique_sorted
 
-  pure subroutine sort_ints(a)
-    integer, intent(inout) :: a(:)
-    integer :: i, j, t
-    do i = 2, size(a)
-      t = a(i)
-      j = i - 1
-      do while (j >= 1)
-        if (a(j) <= t) exit
-        a(j + 1) = a(j)
-        j = j - 1
-      end do
-      a(j + 1) = t
-    end do
-  end subroutine sort_ints
 
 end module deck_pretension

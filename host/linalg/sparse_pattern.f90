@@ -6,6 +6,7 @@
 !> Slot k of the CSR is also entry k of MUMPS' coordinate input (IRN(k) = row, JCN(k) = column).
 module sparse_pattern
   use ldfcz_kinds, only: i8
+  use ldfcz_sorting, only: sort_int
   implicit none
   private
   public :: build_pattern, build_slot_map, sort_int, find_in_row
@@ -189,23 +190,5 @@ contains
       end if
     end do
   end function find_in_row
-
-  !> Insertion sort of a short integer list (a matrix row holds at most a few hundred columns, a node of the METIS
-  !> graph ~26 neighbours in a hex mesh).
-  pure subroutine sort_int(a)
-    integer, intent(inout) :: a(:)  !< list to sort ascending
-    integer :: i, j, v
-
-    do i = 2, size(a)
-      v = a(i)
-      j = i - 1
-      do while (j >= 1)
-        if (a(j) <= v) exit
-        a(j + 1) = a(j)
-        j = j - 1
-      end do
-      a(j + 1) = v
-    end do
-  end subroutine sort_int
 
 end module sparse_pattern
