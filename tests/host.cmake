@@ -66,6 +66,8 @@ ldfcz_add_deck_test(NAME deck_c3d8_uniaxial DECK ${LDFCZ_DECKS}/single/c3d8_unia
 ldfcz_add_deck_test(NAME deck_c3d6_uniaxial DECK ${LDFCZ_DECKS}/single/c3d6_uniaxial.inp CASE c3d6_uniaxial)
 ldfcz_add_deck_test(NAME deck_c3d6_faces DECK ${LDFCZ_DECKS}/single/c3d6_faces.inp CASE c3d6_faces)
 ldfcz_add_deck_test(NAME deck_c3d15_faces DECK ${LDFCZ_DECKS}/single/c3d15_faces.inp CASE c3d6_faces)
+# a *SURFACE of several element-set lines (as Abaqus/CAE writes it) under two *DSLOAD lines: the applied resultant
+ldfcz_add_deck_test(NAME deck_surface_two_lines DECK ${LDFCZ_DECKS}/single/surface_two_lines.inp CASE surface_two_lines)
 # temperatures in second-order hexahedra and quadrilaterals: their first-order part (as Abaqus), a free expansion
 foreach(mt c3d20 cps8)
   ldfcz_add_deck_test(NAME deck_${mt}_midside_temperature DECK ${LDFCZ_DECKS}/single/${mt}_midside_temperature.inp

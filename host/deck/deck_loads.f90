@@ -133,7 +133,7 @@ contains
         call ctx_fail(ctx, i, 'undefined element set '//deck_normalize(f))
         return
       end if
-      allocate (dl%elems(0))
+      dl%elems = [integer ::]   ! (re)set: the caller reuses dl line after line
     end if
     ok = .true.
   end function element_target
@@ -278,7 +278,7 @@ contains
       dl%kind = dload_pressure
       dl%label = 0
       dl%elset = -isurf  ! a surface: expanded in finish_model
-      allocate (dl%elems(0))
+      dl%elems = [integer ::]   ! (re)set: the caller reuses dl line after line
       call push_dload(ctx%model%steps(ctx%istep)%dloads, ctx%model%steps(ctx%istep)%ndload, dl)
     end do
   end subroutine read_dsload

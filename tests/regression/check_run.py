@@ -125,6 +125,16 @@ def case_midside_temperature(d, job):
         close("FIXED.RF%d = 0" % i, row["FIXED.RF%d" % i], 0.0, 0.0, 1e-9)
 
 
+def case_surface_two_lines(d, job):
+    """decks/single/surface_two_lines.inp: a surface of two element-set lines (10 MPa on both top faces) and a
+    second *DSLOAD line on another surface (5 MPa on a side face): the bottom's total reactions are the applied
+    resultants, RF3 = 20 N, RF1 = 5 N (1e-9: the consistent face loads of a linear element sum exactly to p times
+    the area)."""
+    row, _ = last_row(d, job)
+    close("BOTTOM.RF3 = 20 N", row["BOTTOM.RF3"], 20.0, 1e-9)
+    close("BOTTOM.RF1 = 5 N", row["BOTTOM.RF1"], 5.0, 1e-9)
+
+
 def case_cohesive_I(d, job):
     """Mode I: RF3 = T(0.0075) A0 (A0 = 1 mm^2); Eq. 20. The RF is summed from the UEL's RHS exactly."""
     row, _ = last_row(d, job)
