@@ -302,12 +302,29 @@ contains
       call ctx_fail(ctx, ir, 'WRITE (or READ) is required')
       return
     end if
-    if (deck_has_param(ctx%params, 'NUMBER INTERVAL') .or. deck_has_param(ctx%params, 'TIME MARKS')) then
-      call ctx_fail(ctx, ir, 'only FREQUENCY=n is supported (restart data after every n-th increment)')
-      return
+    if (deck_has_param(ctx%params, 'NUMBER INTERVAL')) then
+      ! Abaqus: restart data at n evenly spaced times of the step; ldfcz's checkpoint is written after increments,
+      ! so it is written after every one (a superset: a restart can start from any of them); restart data only,
+      ! the analysis is unchanged
+      n = ctx_param_int(ctx, 'NUMBER INTERVAL', 1)
+      if (ctx%stat /= 0) return
+      if (n < 1) then
+        call ctx_fail(ctx, ir, 'NUMBER INTERVAL must be >= 1')
+        return
+      end if
+      if (deck_has_param(ctx%params, 'FREQUENCY')) then
+        call ctx_fail(ctx, ir, 'FREQUENCY and NUMBER INTERVAL are mutually exclusive')
+        return
+      end if
+      call ctx_warn(ctx, ir, 'NUMBER INTERVAL='//itoa(n)//': ldfcz writes its checkpoint after every increment '// &
+        'instead (restart data only; the analysis is unchanged)')
+      n = 1
+    else
+      if (deck_has_param(ctx%params, 'TIME MARKS')) call ctx_warn(ctx, ir, 'TIME MARKS applies to NUMBER '// &
+        'INTERVAL only: ignored (restart data only)')
+      n = ctx_param_int(ctx, 'FREQUENCY', 1)
+      if (ctx%stat /= 0) return
     end if
-    n = ctx_param_int(ctx, 'FREQUENCY', 1)
-    if (ctx%stat /= 0) return
     if (n < 0) then
       call ctx_fail(ctx, ir, 'FREQUENCY must be >= 0 (0: no restart file)')
       return

@@ -163,8 +163,20 @@ def case_notes(a):
     p = run(a.exe, ["-q", "-o", out, os.path.join(out, "parabolic.inp")], out, 0)
     if "warning" in p.stderr or "ldfcz: warning: " in open(os.path.join(out, "parabolic.log")).read():
         fail("EXTRAPOLATION=PARABOLIC: warned %r" % p.stderr)
+    # *RESTART, WRITE, NUMBER INTERVAL=n (restart data at n times of the step in Abaqus): accepted with a warning,
+    # ldfcz's checkpoint written after every increment; with FREQUENCY= as well: refused at its line
+    with open(os.path.join(out, "restart_interval.inp"), "w") as f:
+        f.write(src.replace("*STATIC", "*RESTART, WRITE, NUMBER INTERVAL=2\n*STATIC", 1))
+    p = run(a.exe, ["-q", "-o", out, os.path.join(out, "restart_interval.inp")], out, 0)
+    if "NUMBER INTERVAL=2: ldfcz writes its checkpoint after every increment" not in p.stderr or \
+            not os.path.exists(os.path.join(out, "restart_interval.rst")):
+        fail("*RESTART, NUMBER INTERVAL: console %r, restart file %s" % (
+            p.stderr, os.listdir(out)))
+    expect_message(a.exe, out, "restart_both", src.replace(
+        "*STATIC", "*RESTART, WRITE, FREQUENCY=1, NUMBER INTERVAL=2\n*STATIC", 1),
+        "FREQUENCY and NUMBER INTERVAL are mutually exclusive")
     print("notes: 3 CAE boilerplate notes in JOB.log only; a boundary on missing rotations warned on the console "
-          "and logged; EXTRAPOLATION=PARABOLIC without a warning")
+          "and logged; EXTRAPOLATION=PARABOLIC without a warning; *RESTART NUMBER INTERVAL warned, checkpoint written")
 
 
 def case_cutbacks(a):
