@@ -407,12 +407,13 @@ contains
     end if
   end function unknown_keyword_text
 
-  !> Keywords of model data (not allowed between *STEP and *END STEP).
+  !> Keywords of model data (not allowed between *STEP and *END STEP). *AMPLITUDE is model or history data in Abaqus
+  !> (a curve defined in a step is a model-wide name from there on), so it is not among them.
   pure logical function is_model_keyword(kw)
     character(len=*), intent(in) :: kw  !< keyword, upper case
     select case (kw)
     case ('*NODE', '*ELEMENT', '*NSET', '*ELSET', '*SOLID SECTION', '*MATERIAL', '*ELASTIC', '*USER MATERIAL', &
-          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*AMPLITUDE', '*HEADING', '*SURFACE', '*DENSITY', &
+          '*DEPVAR', '*USER ELEMENT', '*UEL PROPERTY', '*HEADING', '*SURFACE', '*DENSITY', &
           '*SECTION CONTROLS', '*HOURGLASS STIFFNESS', &
           '*INITIAL CONDITIONS', '*EXPANSION', '*EQUATION', '*TIE', '*MPC', '*PART', '*END PART', '*ASSEMBLY', &
           '*END ASSEMBLY', '*INSTANCE', '*END INSTANCE', '*NGEN', '*NFILL', '*NCOPY', '*ELGEN', '*ORIENTATION', &

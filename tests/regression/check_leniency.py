@@ -17,6 +17,7 @@ four increments; each case writes a lenient deck and its explicit twin:
   instance      the mesh inside the *INSTANCE of an empty *PART (CAE's independent instance) against the mesh in
                 the part
   amplitude     *AMPLITUDE, DEFINITION=EQUALLY SPACED, FIXED INTERVAL=0.5 against the TABULAR points
+  step_amp      *AMPLITUDE inside the step (history data in Abaqus) against the same curve in the model data
   controls      *SECTION CONTROL, NAME=SC, HOUR GLASS=ENHANCED (read without effect) and *CONTROLS with Abaqus'
                 other time-incrementation fields, against neither
   interval      *OUTPUT, FIELD, TIME INTERVAL=0.25 against NUMBER INTERVAL=4 (the same frames)
@@ -126,6 +127,10 @@ def main():
     twin(exe, out, "amplitude",
          deck(after_model=["*Amplitude, name=A, definition=EQUALLY SPACED, fixed interval=0.5", "0., 1., 0.5"],
               top="*Boundary, amplitude=A\nTOP, 3, 3, 0.02"),
+         deck(after_model=["*Amplitude, name=A", "0., 0., 0.5, 1., 1., 0.5"],
+              top="*Boundary, amplitude=A\nTOP, 3, 3, 0.02"))
+    twin(exe, out, "step_amp", deck(amp=["*Amplitude, name=A", "0., 0., 0.5, 1., 1., 0.5"],
+                                    top="*Boundary, amplitude=A\nTOP, 3, 3, 0.02"),
          deck(after_model=["*Amplitude, name=A", "0., 0., 0.5, 1., 1., 0.5"],
               top="*Boundary, amplitude=A\nTOP, 3, 3, 0.02"))
     twin(exe, out, "controls", deck(after_model=["*Section control, name=SC, hour glass=ENHANCED"],
