@@ -172,9 +172,17 @@ contains
     nc = ctx_param_int(ctx, 'CONSTANTS', 0)
     if (ctx%stat /= 0) return
     call ctx_block_fields(ctx, ir + 1, ir_next - 1, f, n)
-    if (n > nc) then
-      call ctx_fail(ctx, ir, 'CONSTANTS='//itoa(nc)//' but '//itoa(n)//' values given')
+    if (nc < 0) then
+      call ctx_fail(ctx, ir, 'CONSTANTS must not be negative')
       return
+    end if
+    ! more values than CONSTANTS: NPROPS = CONSTANTS, the rest not passed (a published deck with CONSTANTS=5 and 6
+    ! values completed in Abaqus; which values Abaqus keeps is inferred: the first CONSTANTS); warned, since the
+    ! UMAT may have expected them
+    if (n > nc) then
+      call ctx_warn(ctx, ir, 'CONSTANTS='//itoa(nc)//' but '//itoa(n)//' values given: values '//itoa(nc + 1)// &
+        ' to '//itoa(n)//' are not passed to the UMAT (NPROPS = '//itoa(nc)//')')
+      n = nc
     end if
     ! fewer values than CONSTANTS: NPROPS = CONSTANTS, the values not given (and empty fields) are 0, as Abaqus
     ! takes omitted numeric data (decks that ran in Abaqus do this); said, since a constant may be missing

@@ -10,6 +10,7 @@ four increments; each case writes a lenient deck and its explicit twin:
   blanks        *SOLIDSECTION, ELSET=E, MATERIAL=M and NL GEOM=YES (blanks on keyword lines are ignored)
   node          '1,' and '2, 1.' (omitted coordinates are 0) against the coordinates written out
   constants     *USER MATERIAL, CONSTANTS=10 with 9 values against the 10th written as 0.
+  constants_more  CONSTANTS=10 with an 11th value (not passed: NPROPS = 10, warned) against the 10 values
   depvar        *DEPVAR 11 with CAE's named lines '7, PEEQ, "equivalent plastic strain"': the same results, and
                 the VTU frames hold an array SDV_PEEQ equal to the twin's SDV7
   assembly      a lone *END ASSEMBLY after the model data
@@ -106,6 +107,8 @@ def main():
     twin(exe, out, "node", deck(nodes=["1,", "2, 1."] + NODES[2:]), base)
     twin(exe, out, "constants", deck(umat=["*User Material, constants=10, unsymm", PET[0], "200."]),
          deck(umat=["*User Material, constants=10, unsymm", PET[0], "200., 0."]))
+    twin(exe, out, "constants_more", deck(umat=["*User Material, constants=10, unsymm", PET[0], PET[1] + ", 7."]),
+         base)
     d1, d2 = twin(exe, out, "depvar", deck(depvar=["*Depvar", "11", '7, PEEQ, "equivalent plastic strain"']), base)
     named = vtu_array(os.path.join(d1, "depvar_lenient_0005.vtu"), "SDV_PEEQ")
     plain = vtu_array(os.path.join(d2, "depvar_explicit_0005.vtu"), "SDV7")
