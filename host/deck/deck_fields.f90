@@ -9,7 +9,7 @@ module deck_fields
     model_find_amplitude
   use deck_lists, only: itoa
   use deck_context, only: deck_context_t, flen, ctx_continued, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_elset, &
-    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_need_step, ctx_param_int
+    ctx_fail, ctx_pos, ctx_allow_params, ctx_split, ctx_get_real, ctx_need_step, ctx_param_int, ctx_warn
   implicit none
   private
   public :: read_initial_conditions, read_temperature, read_field
@@ -180,15 +180,12 @@ contains
     end if
   end subroutine read_predefined_params
 
-  !> The required VARIABLE=n (n >= 1) of TYPE=FIELD and *FIELD; the model's field count grows to n.
+  !> VARIABLE=n (n >= 1, default 1) of TYPE=FIELD and *FIELD; the model's field count grows to n.
   integer function field_variable(ctx) result(k)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
-    k = 0
-    if (.not. deck_has_param(ctx%params, 'VARIABLE')) then
-      call ctx_fail(ctx, ctx%ir, 'parameter VARIABLE= (the field variable number, 1, 2, ...) is required')
-      return
-    end if
-    k = ctx_param_int(ctx, 'VARIABLE', 0)
+    ! VARIABLE= defaults to 1 (the Keywords Reference gives *FIELD's default so; for *INITIAL CONDITIONS,
+    ! TYPE=FIELD the same default is inferred: a published deck without it completed in Abaqus)
+    k = ctx_param_int(ctx, 'VARIABLE', 1)
     if (ctx%stat /= 0) return
     if (k < 1) then
       call ctx_fail(ctx, ctx%ir, 'VARIABLE must be 1 or more, got '//itoa(k))
@@ -209,6 +206,7 @@ contains
     type(cload_t), allocatable :: tmp(:)
     character(len=flen), allocatable :: f(:)
     integer :: i, n, id, iset
+    if (ctx%ir_next == ctx%ir + 1) call ctx_warn(ctx, ctx%ir, 'no data lines: no node gets a value here')
     do i = ctx%ir + 1, ctx%ir_next - 1
       call ctx_split(ctx, i, f, n)
       cl = empty

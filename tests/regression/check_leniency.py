@@ -19,6 +19,7 @@ four increments; each case writes a lenient deck and its explicit twin:
                 the part
   amplitude     *AMPLITUDE, DEFINITION=EQUALLY SPACED, FIXED INTERVAL=0.5 against the TABULAR points
   step_amp      *AMPLITUDE inside the step (history data in Abaqus) against the same curve in the model data
+  field_var     *INITIAL CONDITIONS, TYPE=FIELD without VARIABLE= against VARIABLE=1 (the default)
   controls      *SECTION CONTROL, NAME=SC, HOUR GLASS=ENHANCED (read without effect) and *CONTROLS with Abaqus'
                 other time-incrementation fields, against neither
   interval      *OUTPUT, FIELD, TIME INTERVAL=0.25 against NUMBER INTERVAL=4 (the same frames)
@@ -136,6 +137,8 @@ def main():
                                     top="*Boundary, amplitude=A\nTOP, 3, 3, 0.02"),
          deck(after_model=["*Amplitude, name=A", "0., 0., 0.5, 1., 1., 0.5"],
               top="*Boundary, amplitude=A\nTOP, 3, 3, 0.02"))
+    twin(exe, out, "field_var", deck(after_model=["*Initial conditions, type=FIELD", "ALL, 20."]),
+         deck(after_model=["*Initial conditions, type=FIELD, variable=1", "ALL, 20."]))
     twin(exe, out, "controls", deck(after_model=["*Section control, name=SC, hour glass=ENHANCED"],
                                     section="*Solid Section, elset=E, material=M, controls=SC",
                                     controls=["*Controls, parameters=time incrementation", "8, 10, , 16"]),
