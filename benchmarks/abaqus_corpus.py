@@ -302,10 +302,13 @@ def blocker_class(message):
 
 
 def run_ldfcz(exe, deck, out, timeout, user=None, cwd=None, fflags=None):
-    """Exit status ('timeout' when killed), first error message and wall seconds of one run."""
-    if os.path.isdir(out):
-        shutil.rmtree(out)
-    cmd = [exe, '--quiet', '--threads', '1', '--out', out]
+    """Exit status ('timeout' when killed), first error message and wall seconds of one run. out None: no --out, the
+    files go to the working directory cwd (as Abaqus writes a job's files where it runs)."""
+    cmd = [exe, '--quiet', '--threads', '1']
+    if out is not None:
+        if os.path.isdir(out):
+            shutil.rmtree(out)
+        cmd += ['--out', out]
     if user:
         cmd += ['--user', user]
     if fflags:
@@ -528,8 +531,10 @@ def cmd_third_party(a, argv):
             continue
         deck = os.path.join(dest, entry['deck'])
         user = ','.join(os.path.join(dest, f) for f in entry['user'])
-        rc, msg, wall = run_ldfcz(os.path.abspath(a.exe), deck, os.path.join(work, name, 'out'), a.timeout, user,
-                                  cwd=os.path.dirname(deck), fflags=entry.get('fflags'))
+        # run where the deck lies, its files written there (Abaqus' working directory: GETOUTDIR is that folder,
+        # and routines read their own data files relative to it)
+        rc, msg, wall = run_ldfcz(os.path.abspath(a.exe), deck, None, a.timeout, user, cwd=os.path.dirname(deck),
+                                  fflags=entry.get('fflags'))
         msg = msg.replace(dest + '/', '')
         ran += rc == 0
         rows.append((entry, rc, msg, wall))
