@@ -66,6 +66,10 @@ ldfcz_add_deck_test(NAME deck_c3d8_uniaxial DECK ${LDFCZ_DECKS}/single/c3d8_unia
 ldfcz_add_deck_test(NAME deck_c3d6_uniaxial DECK ${LDFCZ_DECKS}/single/c3d6_uniaxial.inp CASE c3d6_uniaxial)
 ldfcz_add_deck_test(NAME deck_c3d6_faces DECK ${LDFCZ_DECKS}/single/c3d6_faces.inp CASE c3d6_faces)
 ldfcz_add_deck_test(NAME deck_c3d15_faces DECK ${LDFCZ_DECKS}/single/c3d15_faces.inp CASE c3d6_faces)
+# *INITIAL CONDITIONS, USER: SIGINI and SDVINI of the user library (a relieved initial stress in closed form; the
+# state variables at the points' coordinates)
+ldfcz_add_deck_test(NAME deck_user_initial_values DECK ${LDFCZ_DECKS}/single/user_initial_values.inp
+  CASE user_initial_values USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_initial_values.f90)
 # a *SURFACE of several element-set lines (as Abaqus/CAE writes it) under two *DSLOAD lines: the applied resultant
 ldfcz_add_deck_test(NAME deck_surface_two_lines DECK ${LDFCZ_DECKS}/single/surface_two_lines.inp CASE surface_two_lines)
 # temperatures in second-order hexahedra and quadrilaterals: their first-order part (as Abaqus), a free expansion

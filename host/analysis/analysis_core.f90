@@ -6,8 +6,8 @@ module analysis_core
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
   use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node, model_dof
-  use element_catalog, only: element_name, element_family
-  use solid_shape, only: solid_first_order_temperature
+  use element_catalog, only: element_name, element_family, element_types, element_nnode, element_ndim
+  use solid_shape, only: solid_first_order_temperature, solid_gauss_point, solid_shape_eval
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, solid_compact_geometry_size, solid_compact_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
@@ -1337,6 +1337,16 @@ contains
               '(initial stress and solution only for continuum elements)'
             return
           end if
+          if (ic%user) then
+            if (.not. an%owned(ie)) cycle
+            call user_initial_values(an, model, ic%kind, ie, stat)
+            if (stat /= 0) then
+              errmsg = ic%pos%file//':'//trim(c)//': *INITIAL CONDITIONS: USER needs the user library''s '// &
+                trim(merge('SIGINI', 'SDVINI', ic%kind == 1))//' (ldfcz --user FILE with that routine)'
+              return
+            end if
+            cycle
+          end if
           nv = size(ic%values)
           if (ic%kind == 1) then
             call solid_element_info(an%elem_tname(ie), nnode, ndim, nip, nt, ndi, nshr, nextra)
@@ -1370,6 +1380,66 @@ contains
       end associate
     end do
   end subroutine apply_initial_conditions
+
+  !> SIGINI (kind 1: the stress) or SDVINI (kind 2: the state variables, where NSTATV > 0) of the user library at
+  !> every integration point of continuum element ie, with the point's coordinates in the reference configuration
+  !> (Abaqus: COORDS of the material point); LAYER = KSPT = 1, LREBAR = 0, NAMES blank. stat = 2: no such routine.
+  subroutine user_initial_values(an, model, kind, ie, stat)
+    type(analysis_t), intent(inout) :: an  !< analysis data (its user routines, the element states)
+    type(model_t), intent(in) :: model     !< the model
+    integer, intent(in) :: kind, ie        !< 1 stress, 2 state variables; the element
+    integer, intent(out) :: stat           !< 0 ok, 2 the routine is missing
+    integer :: ip, nt, nsv, ncrds, noel, npt, layer, kspt, lrebar
+    real(dp) :: coords(3), sig(6)
+    character(len=80) :: names(2)
+    stat = 0
+    if ((kind == 1 .and. .not. associated(an%routines%sigini)) .or. &
+        (kind == 2 .and. .not. associated(an%routines%sdvini))) then
+      stat = 2
+      return
+    end if
+    associate (cv => an%state%conv(ie))
+      nt = size(cv%stress, 1)
+      nsv = an%mats(model%elem_section(ie))%nstatv
+      if (kind == 2 .and. nsv == 0) return
+      do ip = 1, size(cv%stress, 2)
+        coords = point_coordinates(model, ie, ip)
+        ncrds = model%ndim
+        noel = model%elem_id(ie)
+        npt = ip
+        layer = 1
+        kspt = 1
+        lrebar = 0
+        names = ''
+        if (kind == 1) then
+          sig(1:nt) = cv%stress(1:nt, ip)
+          call an%routines%sigini(sig(1:nt), coords(1:ncrds), nt, ncrds, noel, npt, layer, kspt, lrebar, names)
+          cv%stress(1:nt, ip) = sig(1:nt)
+        else
+          call an%routines%sdvini(cv%statev(1:nsv, ip), coords(1:ncrds), nsv, ncrds, noel, npt, layer, kspt)
+        end if
+      end do
+    end associate
+  end subroutine user_initial_values
+
+  !> Reference coordinates of integration point ip of continuum element ie (the catalogue's rule and shape
+  !> functions; 0 in the third component of 2D models).
+  function point_coordinates(model, ie, ip) result(x)
+    type(model_t), intent(in) :: model  !< the model
+    integer, intent(in) :: ie, ip       !< element, point
+    real(dp) :: x(3)
+    real(dp) :: xi(3), w, n(20), dn(20, 3)
+    integer :: kind, nn, nd, a
+    kind = model%elem_kind(ie)
+    nn = element_nnode(kind)
+    nd = element_ndim(kind)
+    call solid_gauss_point(element_types(kind)%rule, nd, ip, xi, w)
+    call solid_shape_eval(element_family(kind), xi(1:nd), n(1:nn), dn(1:nn, 1:nd))
+    x = 0.0_dp
+    do a = 1, nn
+      x(1:nd) = x(1:nd) + n(a) * model%x(1:nd, model%conn(model%conn_ptr(ie) + a - 1))
+    end do
+  end function point_coordinates
 
   !> Density of the material of section isec (0 without *DENSITY).
   pure real(dp) function model_density(model, isec) result(rho)

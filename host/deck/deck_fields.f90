@@ -29,9 +29,9 @@ contains
     if (ctx%stat /= 0) return
     v = deck_normalize(deck_param_value(ctx%params, 'TYPE'))
     if (deck_has_param(ctx%params, 'USER')) then
-      ! Abaqus calls SIGINI (STRESS), SDVINI (SOLUTION), HARDINI (HARDENING), ... for USER; ldfcz loads none of them
-      call ctx_fail(ctx, ctx%ir, 'USER (initial values from a user subroutine: SIGINI, SDVINI, ...) is not '// &
-        'supported: give the values on data lines (TYPE=STRESS, TYPE=SOLUTION)')
+      ! Abaqus calls SIGINI (STRESS) and SDVINI (SOLUTION) at every material point; HARDINI (HARDENING), ... need
+      ! materials ldfcz does not have
+      call read_user_initial_conditions(ctx, v)
       return
     end if
     if (v == 'PLASTIC STRAIN') then
@@ -124,6 +124,40 @@ contains
       ctx%model%inits(ctx%model%ninit) = ic
     end do
   end subroutine read_initial_conditions
+
+  !> *INITIAL CONDITIONS, TYPE=STRESS or SOLUTION, USER (no data lines): the user library's SIGINI or SDVINI gives
+  !> the values at every point of every continuum element (analysis_core, apply_initial_conditions).
+  subroutine read_user_initial_conditions(ctx, v)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: v           !< TYPE=
+    type(initial_condition_t) :: ic
+    type(initial_condition_t), allocatable :: tmp(:)
+    select case (v)
+    case ('STRESS')
+      ic%kind = init_stress
+    case ('SOLUTION')
+      ic%kind = init_solution
+    case default
+      call ctx_fail(ctx, ctx%ir, 'USER with TYPE='//v//' is not supported (TYPE=STRESS: SIGINI, TYPE=SOLUTION: '// &
+        'SDVINI)')
+      return
+    end select
+    if (ctx%ir_next > ctx%ir + 1) then
+      call ctx_fail(ctx, ctx%ir + 1, 'no data lines with USER (the routine gives the values at every point)')
+      return
+    end if
+    ic%user = .true.
+    ic%pos = ctx_pos(ctx, ctx%ir)
+    allocate (ic%elems(0), ic%values(0))
+    if (.not. allocated(ctx%model%inits)) allocate (ctx%model%inits(4))
+    if (ctx%model%ninit == size(ctx%model%inits)) then
+      allocate (tmp(2 * ctx%model%ninit))
+      tmp(1:ctx%model%ninit) = ctx%model%inits(1:ctx%model%ninit)
+      call move_alloc(tmp, ctx%model%inits)
+    end if
+    ctx%model%ninit = ctx%model%ninit + 1
+    ctx%model%inits(ctx%model%ninit) = ic
+  end subroutine read_user_initial_conditions
 
   !> *TEMPERATURE[, AMPLITUDE=][, OP=MOD|NEW] (history data): node or node set, temperature.
   subroutine read_temperature(ctx)

@@ -590,7 +590,10 @@ contains
       end do
       ! initial conditions: element ids and sets resolved
       do k = 1, model%ninit
-        if (model%inits(k)%elset > 0) then
+        if (model%inits(k)%user) then
+          ! USER: every continuum element (SIGINI / SDVINI at each of its points)
+          model%inits(k)%elems = pack([(ie, ie = 1, model%nelem)], model%elem_kind(1:model%nelem) /= etype_user)
+        else if (model%inits(k)%elset > 0) then
           model%inits(k)%elems = model%elsets(model%inits(k)%elset)%elems
         else
           id = -model%inits(k)%elems(1)

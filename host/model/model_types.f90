@@ -201,6 +201,7 @@ module model_types
     integer, allocatable :: elems(:)       !< element indices (a negative user id or empty until finish_model)
     integer :: elset = 0                   !< element set of the data line, 0: one element
     real(dp), allocatable :: values(:)     !< stress components (Abaqus order) or state variables
+    logical :: user = .false.              !< USER: every continuum element's points from SIGINI / SDVINI
     type(source_pos_t) :: pos
   end type initial_condition_t
 

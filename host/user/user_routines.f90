@@ -10,7 +10,8 @@ module user_routines
   use command_words, only: user_file_path
   implicit none
   private
-  public :: uel_interface, umat_interface, uexternaldb_interface, disp_interface, user_routines_t, &
+  public :: uel_interface, umat_interface, uexternaldb_interface, disp_interface, sigini_interface, &
+    sdvini_interface, user_routines_t, &
     user_routines_builtin, builtin_routine, builtin_names
   public :: user_routines_load
   public :: user_source_compile_command, user_routines_connect_units
@@ -46,6 +47,23 @@ module user_routines
       integer :: kstep, kinc, node, noel, jdof
       real(dp) :: u(3), time(3), coords(3)
     end subroutine disp_interface
+
+    !> Abaqus/Standard SIGINI(SIGMA, COORDS, NTENS, NCRDS, NOEL, NPT, LAYER, KSPT, LREBAR, NAMES): the initial
+    !> stress SIGMA(NTENS) at point NPT of element NOEL at COORDS (*INITIAL CONDITIONS, TYPE=STRESS, USER).
+    subroutine sigini_interface(sigma, coords, ntens, ncrds, noel, npt, layer, kspt, lrebar, names)
+      import :: dp
+      integer :: ntens, ncrds, noel, npt, layer, kspt, lrebar
+      real(dp) :: sigma(ntens), coords(ncrds)
+      character(len=80) :: names(2)
+    end subroutine sigini_interface
+
+    !> Abaqus/Standard SDVINI(STATEV, COORDS, NSTATV, NCRDS, NOEL, NPT, LAYER, KSPT): the initial state variables
+    !> at point NPT of element NOEL (*INITIAL CONDITIONS, TYPE=SOLUTION, USER).
+    subroutine sdvini_interface(statev, coords, nstatv, ncrds, noel, npt, layer, kspt)
+      import :: dp
+      integer :: nstatv, ncrds, noel, npt, layer, kspt
+      real(dp) :: statev(nstatv), coords(ncrds)
+    end subroutine sdvini_interface
   end interface
 
   !> The routines in use.
@@ -54,6 +72,8 @@ module user_routines
     procedure(umat_interface), pointer, nopass :: umat => null()  !< UMAT (null: none available)
     procedure(uexternaldb_interface), pointer, nopass :: uexternaldb => null() !< UEXTERNALDB of a user library
     procedure(disp_interface), pointer, nopass :: disp => null()  !< DISP of a user library (*BOUNDARY, USER)
+    procedure(sigini_interface), pointer, nopass :: sigini => null()  !< SIGINI of a user library
+    procedure(sdvini_interface), pointer, nopass :: sdvini => null()  !< SDVINI of a user library
     character(len=:), allocatable :: uel_origin                   !< 'built-in', the user file, or 'none'
     character(len=:), allocatable :: umat_origin
     type(c_ptr) :: handle = c_null_ptr                            !< dlopen handle of a user library
@@ -389,6 +409,8 @@ contains
     procedure(umat_interface), pointer :: pm
     procedure(uexternaldb_interface), pointer :: px
     procedure(disp_interface), pointer :: pd
+    procedure(sigini_interface), pointer :: ps
+    procedure(sdvini_interface), pointer :: pv
     f = c_dlsym(r%handle, 'uel_'//c_null_char)
     if (c_associated(f)) then
       call c_f_procpointer(f, pu)
@@ -410,6 +432,16 @@ contains
     if (c_associated(f)) then
       call c_f_procpointer(f, pd)
       r%disp => pd
+    end if
+    f = c_dlsym(r%handle, 'sigini_'//c_null_char)
+    if (c_associated(f)) then
+      call c_f_procpointer(f, ps)
+      r%sigini => ps
+    end if
+    f = c_dlsym(r%handle, 'sdvini_'//c_null_char)
+    if (c_associated(f)) then
+      call c_f_procpointer(f, pv)
+      r%sdvini => pv
     end if
   end subroutine take_user_symbols
 

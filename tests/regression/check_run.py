@@ -135,6 +135,29 @@ def case_surface_two_lines(d, job):
     close("BOTTOM.RF1 = 5 N", row["BOTTOM.RF1"], 5.0, 1e-9)
 
 
+def case_user_initial_values(d, job):
+    """decks/single/user_initial_values.inp with tests/regression/user_initial_values.f90: SIGINI's sigma11 = -100
+    relieved on the free face, u(1, 1, 1) = (1e-3, -3e-4, -3e-4) = -S sigma0 (1e-9 relative: one linear solve), and
+    the stress at the end below 1e-6 of the initial 100 (JOB.dat prints 5 digits); SDVINI's SDV1 = each point's z
+    (0.5 -+ 0.5/sqrt 3 for points 1-4 / 5-8 of the 2x2x2 rule, 5e-5: the printed digits) and SDV2 = its number
+    NPT (the order and the coordinates SDVINI was called with)."""
+    row, _ = last_row(d, job)
+    for i, want in ((1, 1e-3), (2, -3e-4), (3, -3e-4)):
+        close("N7.U%d" % i, row["N7.U%d" % i], want, 1e-9)
+    pts = {}
+    for line in open(os.path.join(d, job + ".dat")):
+        p = line.split()
+        if len(p) == 5 and p[0] == "1" and p[1].isdigit():
+            pts[int(p[1])] = [float(v) for v in p[2:]]
+    if sorted(pts) != list(range(1, 9)):
+        fail("the *EL PRINT table of element 1 has points %s" % sorted(pts))
+    g = 0.5 / math.sqrt(3.0)
+    for k, (s11, z, npt) in sorted(pts.items()):
+        close("point %d S11 = 0" % k, s11, 0.0, 0.0, 1e-6)
+        close("point %d SDV1 = z" % k, z, 0.5 - g if k <= 4 else 0.5 + g, 0.0, 5e-5)
+        close("point %d SDV2 = NPT" % k, npt, float(k), 0.0, 1e-12)
+
+
 def case_cohesive_I(d, job):
     """Mode I: RF3 = T(0.0075) A0 (A0 = 1 mm^2); Eq. 20. The RF is summed from the UEL's RHS exactly."""
     row, _ = last_row(d, job)

@@ -50,8 +50,6 @@ CASES = [
      (STEP, COUPLING + "*KINEMATIC\n1, 7\n" + STEP)], "*KINEMATIC", "1, 7"),
     ("kinematic_rotations_only", "*KINEMATIC of rotations only (continuum nodes have none)",
      [("8, 0., 1., 1.", REF), (STEP, COUPLING + "*KINEMATIC\n4, 6\n" + STEP)], "*KINEMATIC", "*KINEMATIC"),
-    ("distributing_rotations", "*DISTRIBUTING with some of the rotations", [("8, 0., 1., 1.", REF),
-     (STEP, COUPLING + "*DISTRIBUTING\n1, 4\n" + STEP)], "*DISTRIBUTING", "*DISTRIBUTING"),
     ("cload_node_without_element", "a force on a node of no element (it would act on nothing)",
      [("8, 0., 1., 1.", "8, 0., 1., 1.\n9, 3., 3., 3."), ("*END STEP", "*CLOAD\n9, 1, 1.0\n*END STEP")], "*CLOAD",
      "9, 1, 1.0"),
@@ -109,9 +107,15 @@ CASES = [
     ("initial_plastic_strain", "*INITIAL CONDITIONS, TYPE=PLASTIC STRAIN (no plastic material)",
      [(STEP, "*INITIAL CONDITIONS, TYPE=PLASTIC STRAIN\nCUBE, 1, 0.01, 0., 0., 0., 0., 0.\n" + STEP)],
      "*INITIAL CONDITIONS", "*INITIAL CONDITIONS, TYPE=PLASTIC"),
-    ("initial_user", "*INITIAL CONDITIONS, TYPE=SOLUTION, USER (SDVINI)",
+    ("initial_user", "*INITIAL CONDITIONS, TYPE=SOLUTION, USER without a user library holding SDVINI",
      [(STEP, "*INITIAL CONDITIONS, TYPE=SOLUTION, USER\n" + STEP)], "*INITIAL CONDITIONS",
      "*INITIAL CONDITIONS, TYPE=SOLUTION, USER"),
+    ("initial_user_temperature", "*INITIAL CONDITIONS, TYPE=TEMPERATURE, USER (no user routine for it)",
+     [(STEP, "*INITIAL CONDITIONS, TYPE=TEMPERATURE, USER\n" + STEP)], "*INITIAL CONDITIONS",
+     "*INITIAL CONDITIONS, TYPE=TEMPERATURE, USER"),
+    ("initial_user_data", "*INITIAL CONDITIONS, TYPE=STRESS, USER with a data line",
+     [(STEP, "*INITIAL CONDITIONS, TYPE=STRESS, USER\nCUBE, 1., 0., 0.\n" + STEP)], "*INITIAL CONDITIONS",
+     "CUBE, 1., 0., 0."),
 ]
 
 
