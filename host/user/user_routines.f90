@@ -152,7 +152,10 @@ contains
     integer :: k
     flang = index(compiler, 'flang') > 0
     k = index(source, '.', back=.true.)
-    form = ' -ffree-form'
+    ! free form: lines longer than 132 characters compile, as Intel Fortran (Abaqus' compiler) takes them (a
+    ! published routine with such lines ran in Abaqus)
+    form = ' -ffree-form -ffree-line-length-none'
+    if (flang) form = ' -ffree-form'
     if (k > 0) then
       select case (source(k + 1:))
       case ('f', 'F', 'for', 'FOR', 'f77', 'F77')

@@ -16,7 +16,8 @@ subroutine sdvini(statev, coords, nstatv, ncrds, noel, npt, layer, kspt)
   double precision :: statev(nstatv), coords(ncrds)
   statev = 0.0d0
   statev(1) = coords(3)
-  statev(2) = dble(npt)
+  ! the next line is longer than 132 characters on purpose: free-form sources compile as Intel Fortran takes them
+  statev(2) = dble(npt) + 0.0d0 * dble(noel + layer + kspt + ncrds + nstatv) + 0.0d0 * dble(noel + layer + kspt + ncrds + nstatv) + 0.0d0 * dble(npt)
 end subroutine sdvini
 
 subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, dstran, time, dtime, &
