@@ -20,7 +20,6 @@ contains
   subroutine read_initial_conditions(ctx)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(initial_condition_t) :: ic, empty
-    type(initial_condition_t), allocatable :: tmp(:)
     character(len=flen), allocatable :: f(:)
     character(len=:), allocatable :: v
     integer :: i, n, k, kind, id, last, m
@@ -114,14 +113,7 @@ contains
         if (len_trim(f(k)) == 0) cycle
         if (.not. ctx_get_real(ctx, i, f(k), ic%values(k - 1))) return
       end do
-      if (.not. allocated(ctx%model%inits)) allocate (ctx%model%inits(4))
-      if (ctx%model%ninit == size(ctx%model%inits)) then
-        allocate (tmp(2 * ctx%model%ninit))
-        tmp(1:ctx%model%ninit) = ctx%model%inits(1:ctx%model%ninit)
-        call move_alloc(tmp, ctx%model%inits)
-      end if
-      ctx%model%ninit = ctx%model%ninit + 1
-      ctx%model%inits(ctx%model%ninit) = ic
+      call push_initial_condition(ctx, ic)
     end do
   end subroutine read_initial_conditions
 
@@ -131,7 +123,6 @@ contains
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     character(len=*), intent(in) :: v           !< TYPE=
     type(initial_condition_t) :: ic
-    type(initial_condition_t), allocatable :: tmp(:)
     select case (v)
     case ('STRESS')
       ic%kind = init_stress
@@ -149,6 +140,14 @@ contains
     ic%user = .true.
     ic%pos = ctx_pos(ctx, ctx%ir)
     allocate (ic%elems(0), ic%values(0))
+    call push_initial_condition(ctx, ic)
+  end subroutine read_user_initial_conditions
+
+  !> Appends an initial condition to the model's list, doubling its capacity when full.
+  subroutine push_initial_condition(ctx, ic)
+    type(deck_context_t), intent(inout) :: ctx      !< reader state
+    type(initial_condition_t), intent(in) :: ic     !< the condition
+    type(initial_condition_t), allocatable :: tmp(:)
     if (.not. allocated(ctx%model%inits)) allocate (ctx%model%inits(4))
     if (ctx%model%ninit == size(ctx%model%inits)) then
       allocate (tmp(2 * ctx%model%ninit))
@@ -157,7 +156,7 @@ contains
     end if
     ctx%model%ninit = ctx%model%ninit + 1
     ctx%model%inits(ctx%model%ninit) = ic
-  end subroutine read_user_initial_conditions
+  end subroutine push_initial_condition
 
   !> *TEMPERATURE[, AMPLITUDE=][, OP=MOD|NEW] (history data): node or node set, temperature.
   subroutine read_temperature(ctx)
