@@ -25,7 +25,9 @@ Also refused (exit 2): a truncated restart file, a file that is not a restart fi
 and one of a build with another summary record.
 With --np N (the LDFCZ_MPI build) every run is `mpirun -np N`: one restart file per process (JOB.rst.RofN, read by a
 run with the same N; the first restart names rank 0's file JOB.rst.0ofN as it is on disk, the others JOB.rst), the reference and the restart distributed alike; --term sends SIGUSR1 to the launcher, which
-forwards it to every process (OpenMPI; SIGTERM to mpirun is tests/mpi/check_launcher_sigterm.py's), and the
+forwards it to every process (OpenMPI; SIGTERM to mpirun is tests/mpi/check_launcher_sigterm.py's; the processes
+advance in ~1 ms slices between SIGSTOP and SIGCONT, and are resumed only once each holds the forwarded signal
+pending, so that a fast run on a loaded machine cannot end before the stop), and the
 processes must stop together after the increment under way with the log, status note and closing summary of a
 serial stop (mpirun's own exit status is OpenMPI's, not checked).
 The refusals of damaged files are the serial run's code and are checked there only. Two distributed runs of one
@@ -71,6 +73,63 @@ def run(cmd, cwd, expect=None):
     return p
 
 
+def descendants(pid):
+    """The ldfcz processes started under pid (mpirun's children, or theirs), from /proc; not their own children
+    (the compiler a process runs for --user at its start, which it waits for)."""
+    parent = {}
+    for d in os.listdir("/proc"):
+        if d.isdigit():
+            try:
+                with open("/proc/%s/stat" % d) as f:
+                    st = f.read()
+            except OSError:
+                continue
+            name = st[st.index("(") + 1:st.rindex(")")]
+            parent[int(d)] = (int(st[st.rindex(")") + 2:].split()[1]), name)
+    found, todo = [], [pid]
+    while todo:
+        q = todo.pop()
+        for c, (pp, name) in parent.items():
+            if pp == q:
+                if name.startswith("ldfcz"):
+                    found.append(c)
+                else:
+                    todo.append(c)
+    return found
+
+
+def signal_all(pids, sig):
+    for q in pids:
+        try:
+            os.kill(q, sig)
+        except ProcessLookupError:
+            pass
+
+
+def task_status(pid):
+    """The /proc status texts of every thread of pid ([] when it is gone)."""
+    out = []
+    try:
+        for t in os.listdir("/proc/%d/task" % pid):
+            with open("/proc/%d/task/%s/status" % (pid, t)) as f:
+                out.append(f.read())
+    except OSError:
+        pass
+    return out
+
+
+def stopped(pid):
+    """Every thread of pid is stopped (or pid is gone): a signal sent now stays pending until SIGCONT."""
+    return all(re.search(r"^State:\s*[TZX]", st, re.M) for st in task_status(pid))
+
+
+def pending(pid, sig):
+    """Whether pid holds sig pending (in any thread, or process-wide) or is gone."""
+    sts = task_status(pid)
+    bit = 1 << (int(sig) - 1)
+    return not sts or any(int(v, 16) & bit for st in sts for v in re.findall(r"^(?:SigPnd|ShdPnd):\s*([0-9a-f]+)", st, re.M))
+
+
 def read_csv(path):
     with open(path) as f:
         lines = f.read().split("\n")
@@ -108,9 +167,23 @@ def interrupt(a, mode, base, run_deck, write_opt, out, cut, job):
         print("$ " + " ".join(cmd) + "  (SIGUSR1 to mpirun after %d rows)" % a.stop)
         p = subprocess.Popen(cmd, cwd=out, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         csv = os.path.join(cut, job + ".csv")
+        # the processes advance in slices of ~1 ms between SIGSTOP and SIGCONT (sent to them, not to mpirun), so that
+        # even a fast run on a loaded machine is caught after about K rows: SIGUSR1 goes to mpirun while they are
+        # stopped, and they are resumed only once each holds it pending (the run cannot end first)
         t0 = time.time()
         rows = 0
+        sent = False
         while p.poll() is None and time.time() - t0 < 300:
+            procs = descendants(p.pid)
+            if len(procs) < a.np:
+                time.sleep(0.001)
+                continue
+            signal_all(procs, signal.SIGSTOP)
+            t1 = time.time()
+            while not all(stopped(q) for q in procs):
+                if time.time() - t1 > 60:
+                    fail("the processes did not stop within 60 s of SIGSTOP")
+                time.sleep(0.0005)
             try:
                 with open(csv) as f:
                     rows = f.read().count("\n") - 1
@@ -118,8 +191,19 @@ def interrupt(a, mode, base, run_deck, write_opt, out, cut, job):
                 rows = 0
             if rows >= a.stop:
                 p.send_signal(signal.SIGUSR1)
+                t1 = time.time()
+                while not all(pending(q, signal.SIGUSR1) for q in procs):
+                    if time.time() - t1 > 60:
+                        signal_all(procs, signal.SIGCONT)
+                        fail("mpirun did not forward SIGUSR1 to every process within 60 s")
+                    time.sleep(0.01)
+                signal_all(procs, signal.SIGCONT)
+                sent = True
                 break
-            time.sleep(0.002)
+            signal_all(procs, signal.SIGCONT)
+            time.sleep(0.001)
+        if not sent:
+            fail("the run ended (exit %s) before %d CSV rows were seen: choose a smaller --stop" % (p.poll(), a.stop))
         p.wait(timeout=300)
         log = open(os.path.join(cut, job + ".log"), errors="replace").read()
         if "SIGUSR1 received: stopped after increment" not in log:
