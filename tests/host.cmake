@@ -403,7 +403,7 @@ ldfcz_add_deck_test(NAME deck_umat_arguments_small DECK ${LDFCZ_DECKS}/single/um
   CASE umat_arguments_small USER ${CMAKE_CURRENT_SOURCE_DIR}/regression/user_umat_args.f)
 
 # --user as Abaqus builds user code: preprocessing, lower-case include, two files, an object file, WRITE(7) to
-# JOB.msg, lazy binding, LLVM flang through --fc
+# JOB.msg, lazy binding, LLVM flang through --fc, a user include file named under another case, zeros after NPROPS
 add_test(NAME deck_user_files COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_user_files.py
   --exe $<TARGET_FILE:ldfcz> --decks ${LDFCZ_DECKS} --fixtures ${CMAKE_CURRENT_SOURCE_DIR}/regression
   --out ${LDFCZ_RUNS}/deck_user_files)

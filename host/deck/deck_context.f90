@@ -14,6 +14,7 @@ module deck_context
   private
   public :: deck_context_t, flen
   public :: ctx_fail, ctx_fail_kw, ctx_fail_pos, ctx_warn, ctx_warn_pos, ctx_pos, ctx_note, ctx_note_pos
+  public :: ctx_report_warning
   public :: deck_message_t
   public :: ctx_allow_params, ctx_need_step, ctx_required, ctx_param_int, ctx_only_value
   public :: ctx_block_fields, ctx_split, ctx_get_real, ctx_get_int, ctx_continued
@@ -169,6 +170,13 @@ contains
       if (t(1:7) == '*LDFCZ ') t = '*'//t
     end if
   end function shown
+
+  !> A warning already located ('file:line: *KEYWORD: what'; the reading of the files).
+  subroutine ctx_report_warning(ctx, located)
+    type(deck_context_t), intent(inout) :: ctx  !< reader state
+    character(len=*), intent(in) :: located     !< the located message
+    call report(ctx, 'warning: '//located, .true.)
+  end subroutine ctx_report_warning
 
   !> Warning at a stored source position.
   subroutine ctx_warn_pos(ctx, pos, msg)

@@ -6,7 +6,7 @@ module deck_lines
   use, intrinsic :: iso_fortran_env, only: iostat_eor
   implicit none
   private
-  public :: deck_record_t, deck_source_t, deck_param_t
+  public :: deck_record_t, deck_source_t, deck_param_t, file_name_t
   public :: deck_load, deck_split_fields, deck_keyword_parse, deck_upper, deck_parse_real, deck_parse_int
   public :: deck_where, deck_param_value, deck_has_param, deck_normalize
 
@@ -96,23 +96,26 @@ contains
   end function deck_where
 
   !> Read a deck file (and its *INCLUDE files) into records.
-  subroutine deck_load(path, src, stat, errmsg)
+  subroutine deck_load(path, src, stat, errmsg, warnings)
     character(len=*), intent(in) :: path          !< top-level file
     type(deck_source_t), intent(out) :: src       !< records
     integer, intent(out) :: stat                  !< 0 ok, 2 error
     character(len=:), allocatable, intent(out) :: errmsg !< message naming file and line
-    allocate (src%rec(256), src%files(4))
+    !> warnings of the reading of the files ('file:line: *KEYWORD: what'), for the reader to report with its own
+    type(file_name_t), allocatable, intent(out) :: warnings(:)
+    allocate (src%rec(256), src%files(4), warnings(0))
     stat = 0
     errmsg = ''
-    call load_file(path, src, 0, stat, errmsg)
+    call load_file(path, src, 0, stat, errmsg, warnings)
   end subroutine deck_load
 
-  recursive subroutine load_file(path, src, depth, stat, errmsg)
+  recursive subroutine load_file(path, src, depth, stat, errmsg, warnings)
     character(len=*), intent(in) :: path
     type(deck_source_t), intent(inout) :: src
     integer, intent(in) :: depth
     integer, intent(out) :: stat
     character(len=:), allocatable, intent(out) :: errmsg
+    type(file_name_t), allocatable, intent(inout) :: warnings(:)
     integer :: unit, ios, iline, fid, k, irec_cont
     character(len=:), allocatable :: line, text, incname, dir
     logical :: exists, cont_keyword
@@ -221,6 +224,18 @@ contains
 
   contains
 
+    !> Keep a warning of the reading for the reader to report.
+    subroutine add_warning(text)
+      character(len=*), intent(in) :: text
+      type(file_name_t), allocatable :: tmp(:)
+      integer :: nw
+      nw = size(warnings)
+      allocate (tmp(nw + 1))
+      tmp(1:nw) = warnings
+      tmp(nw + 1)%name = text
+      call move_alloc(tmp, warnings)
+    end subroutine add_warning
+
     !> If record ir is *INCLUDE, replace it by the records of the included file.
     recursive subroutine handle_include(ir)
       integer, intent(in) :: ir
@@ -229,12 +244,19 @@ contains
       call deck_keyword_parse(src%rec(ir)%text, kw, params)
       if (kw /= '*INCLUDE') return
       write (num, '(i0)') src%rec(ir)%line
-      if (.not. deck_has_param(params, 'INPUT')) then
+      if (deck_has_param(params, 'INPUT')) then
+        incname = deck_param_value(params, 'INPUT')
+      else if (deck_has_param(params, 'FILE')) then
+        ! FILE= for INPUT=: not in Abaqus' keyword reference, but Abaqus/Standard R2018x read the file so named in a
+        ! published run (its .dat lists the included keywords; docs/host.md, *INCLUDE); warned
+        incname = deck_param_value(params, 'FILE')
+        call add_warning(path//':'//trim(num)//': *INCLUDE: FILE= read as INPUT= (the documented parameter; '// &
+          'Abaqus/Standard accepts FILE= too)')
+      else
         stat = 2
         errmsg = path//':'//trim(num)//': *INCLUDE: parameter INPUT= is required'
         return
       end if
-      incname = deck_param_value(params, 'INPUT')
       if (len(incname) > 1) then
         if (incname(1:1) == '"' .and. incname(len(incname):len(incname)) == '"') incname = incname(2:len(incname) - 1)
       end if
@@ -261,7 +283,7 @@ contains
         errmsg = path//':'//trim(num)//': *INCLUDE: is a directory, not a file: '//incname
         return
       end if
-      call load_file(incname, src, depth + 1, st, emsg)
+      call load_file(incname, src, depth + 1, st, emsg, warnings)
       if (st /= 0) then
         stat = st
         errmsg = emsg

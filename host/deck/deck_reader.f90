@@ -4,10 +4,10 @@
 !> This module dispatches the keyword blocks to the readers of deck_mesh, deck_materials, deck_user_elements,
 !> deck_boundaries and deck_steps, which share the state in a deck_context_t, and lets deck_finish complete the model.
 module deck_reader
-  use deck_lines, only: deck_load, deck_keyword_parse, deck_where
+  use deck_lines, only: deck_load, deck_keyword_parse, deck_where, file_name_t
   use model_types, only: model_t
   use deck_context, only: deck_context_t, ctx_fail, ctx_fail_kw, ctx_warn, ctx_note, ctx_allow_params, ctx_need_step, &
-    scope_model, scope_assembly, no_blanks, deck_message_t
+    scope_model, scope_assembly, no_blanks, deck_message_t, ctx_report_warning
   use deck_suggest, only: deck_closest
   use deck_assembly, only: prescan_assembly, read_part_def, begin_assembly, end_assembly, begin_instance, &
     end_instance, allowed_in_assembly, mesh_keyword
@@ -78,10 +78,15 @@ contains
     !> for JOB.log: 'warning: file:line: *KW: ...', 'note: file:line: *KW: ...'
     type(deck_message_t), allocatable, intent(out), optional :: messages(:)
     type(deck_context_t) :: ctx
+    type(file_name_t), allocatable :: file_warnings(:)
+    integer :: iw
 
     if (present(warn_unit)) ctx%wu = warn_unit
-    call deck_load(path, ctx%src, stat, errmsg)
+    call deck_load(path, ctx%src, stat, errmsg, file_warnings)
     if (stat /= 0) return
+    do iw = 1, size(file_warnings)
+      call ctx_report_warning(ctx, file_warnings(iw)%name)
+    end do
     call apply_parameters(ctx%src, stat, errmsg)
     if (stat /= 0) return
     ctx%stat = stat

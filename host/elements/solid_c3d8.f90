@@ -15,7 +15,7 @@
 module solid_c3d8
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
-  use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, SOLID_MAT_ELASTIC, SOLID_PNEWDT_LARGE
+  use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, umat_props_pad, SOLID_MAT_ELASTIC, SOLID_PNEWDT_LARGE
   use solid_elastic, only: elastic_isotropic_ddsdde
   use solid_shape, only: solid_shape_eval, solid_gauss_point
   use element_catalog, only: FAM_HEX8
@@ -273,7 +273,7 @@ contains
     !> The UMAT at point ip (call_umat's contract without its copies of values the element does not reuse).
     subroutine umat_point(ip)
       integer, intent(in) :: ip
-      real(dp) :: c_time(2), c_dtime, c_props(max(1, np)), c_celent, c_coords(3), c_rpl, c_drpldt
+      real(dp) :: c_time(2), c_dtime, c_props(np + umat_props_pad), c_celent, c_coords(3), c_rpl, c_drpldt
       real(dp) :: c_ddsddt(6), c_drplde(6), c_predef(max(1, nfld)), c_dpred(max(1, nfld))
       integer :: c_ndi, c_nshr, c_ntens, c_nstatv, c_nprops, c_noel, c_npt, c_layer, c_kspt, c_jstep(4), c_kinc, j
       character(len=80) :: c_cmname

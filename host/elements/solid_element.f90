@@ -47,7 +47,7 @@ module solid_element
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
-  use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, &
+  use solid_types, only: solid_material_t, solid_geometry_t, nprops_of, umat_props_pad, SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, &
     SOLID_PNEWDT_LARGE
   use solid_c3d8, only: c3d8_nlgeom, c3d8_compact_geometry, c3d8_compact_size
   use element_catalog, only: element_types, element_kind_of, element_nnode, element_ndim, element_ndi, &
@@ -348,7 +348,7 @@ contains
     real(dp) :: mf, hcc(maxnode)
     real(dp) :: fe(3 * maxnode), ke(3 * maxnode, 3 * maxnode), kl(maxnode, 3, 3, maxnode)
     real(dp) :: alpha_n(maxalpha), g_shear
-    real(dp) :: sv(max(1, mat%nstatv)), pr(max(1, nprops_of(mat)))
+    real(dp) :: sv(max(1, mat%nstatv)), pr(nprops_of(mat) + umat_props_pad)
     character(len=80) :: cmname
     integer :: kgeo
     character(len=*), parameter :: here = 'solid_element_compute: '
@@ -377,6 +377,7 @@ contains
 
     jstep = [kstep, 1, merge(1, 0, nlgeom), 0]
     cmname = mat%cmname
+    pr = 0.0_dp
     if (np > 0) pr(1:np) = mat%props
 
     if (nalpha == 0) then

@@ -6,9 +6,12 @@ module solid_types
   use solid_elastic, only: elastic_law_t
   implicit none
   private
-  public :: solid_material_t, solid_geometry_t, nprops_of
+  public :: solid_material_t, solid_geometry_t, nprops_of, umat_props_pad
   public :: SOLID_MAT_ELASTIC, SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
 
+  !> Zeros the PROPS array a UMAT gets carries after its NPROPS values: a routine that reads PROPS past NPROPS
+  !> (a deck with CONSTANTS smaller than the routine's count) reads 0 every time, not whatever memory follows
+  integer, parameter :: umat_props_pad = 16
   integer, parameter :: SOLID_MAT_ELASTIC = 1    !< built-in *ELASTIC (isotropic, hypoelastic under NLGEOM)
   integer, parameter :: SOLID_MAT_UMAT = 2       !< Abaqus UMAT through a procedure pointer
   real(dp), parameter :: SOLID_PNEWDT_LARGE = 1.0e36_dp  !< PNEWDT handed to each UMAT call ("a large value")

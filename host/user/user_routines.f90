@@ -5,6 +5,7 @@
 module user_routines
   use, intrinsic :: iso_c_binding, only: c_ptr, c_funptr, c_char, c_int, c_null_char, c_null_ptr, c_associated, &
     c_f_procpointer, c_f_pointer, c_size_t
+  use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp
   use solid_umat_interface, only: umat_interface
   use command_words, only: user_file_path
@@ -324,6 +325,8 @@ contains
     k = index(base, '.', back=.true.)
     if (k > 1) base = base(1:k - 1)
     obj = outdir//'/ldfcz_user_'//base//'.o'
+    call case_blind_includes(file, outdir//'/ldfcz_user_include', log_unit, 0, stat, errmsg)
+    if (stat /= 0) return
     cmd = user_source_compile_command(fc, file, obj, incs//' -I'''//dir_of(file)//'''', flags)
     if (log_unit /= -1) write (log_unit, '(a)') 'ldfcz: compiling user routines: '//cmd
     call execute_command_line(cmd, wait=.true., exitstat=estat, cmdstat=cstat)
@@ -334,6 +337,148 @@ contains
     end if
     objs = objs//' '''//obj//''''
   end subroutine compile_user_file
+
+  !> The files a user file INCLUDEs ('name' or "name", Fortran's INCLUDE line or cpp's #include) that are not in
+  !> its directory under that name but are under another case (INCLUDE 'PARAM_UMAT.INC' beside param_umat.inc:
+  !> routines written on Windows, where Abaqus' compiler does not tell the cases apart) are copied into case_dir,
+  !> which the compiler searches first, under the name the source uses; each said on the console and in JOB.log. The
+  !> copies are searched in their turn (depth at most 5). Names with a directory and names found as written are left
+  !> alone.
+  recursive subroutine case_blind_includes(file, case_dir, log_unit, depth, stat, errmsg)
+    character(len=*), intent(in) :: file                 !< the user file (or an included file)
+    character(len=*), intent(in) :: case_dir             !< the directory of the copies (searched first)
+    integer, intent(in) :: log_unit                      !< JOB.log (-1: another process; nothing said)
+    integer, intent(in) :: depth                         !< include depth
+    integer, intent(out) :: stat                         !< 0 ok, 2 error
+    character(len=:), allocatable, intent(out) :: errmsg !< message
+    character(len=2048) :: line
+    character(len=:), allocatable :: name, dir, found, text
+    character(len=16) :: num
+    integer :: u, ios, iline
+    logical :: exists
+    stat = 0
+    errmsg = ''
+    if (depth > 5) return
+    dir = dir_of(file)
+    open (newunit=u, file=file, status='old', action='read', iostat=ios)
+    if (ios /= 0) return
+    iline = 0
+    do
+      read (u, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      iline = iline + 1
+      name = included_name(line)
+      if (len(name) == 0) cycle
+      if (index(name, '/') > 0) cycle
+      inquire (file=dir//'/'//name, exist=exists)
+      if (exists) cycle
+      inquire (file=case_dir//'/'//name, exist=exists)
+      if (exists) cycle
+      found = same_name_any_case(dir, name, case_dir)
+      if (len(found) == 0) cycle
+      call copy_text_file(dir//'/'//found, case_dir//'/'//name, stat)
+      if (stat /= 0) then
+        errmsg = '--user: cannot write '//case_dir//'/'//name
+        exit
+      end if
+      if (log_unit /= -1) then
+        write (num, '(i0)') iline
+        text = 'ldfcz: warning: --user: '//file//':'//trim(num)//': INCLUDE '''//name//''' is '//found// &
+          ' (file names compared without case, as Windows does)'
+        write (error_unit, '(a)') text
+        write (log_unit, '(a)') text
+      end if
+      call case_blind_includes(case_dir//'/'//name, case_dir, log_unit, depth + 1, stat, errmsg)
+      if (stat /= 0) exit
+    end do
+    close (u)
+  end subroutine case_blind_includes
+
+  !> The file named by an INCLUDE line ('' when the line is none): INCLUDE 'x' or INCLUDE "x" (any case, after
+  !> blanks; fixed-form comments in column 1 and free-form ! comments are no INCLUDE), or #include "x".
+  pure function included_name(line) result(name)
+    character(len=*), intent(in) :: line  !< a source line
+    character(len=:), allocatable :: name
+    character(len=:), allocatable :: t
+    character :: q
+    integer :: e
+    name = ''
+    if (len_trim(line) == 0) return
+    if (scan(line(1:1), 'cC*!') > 0) return
+    t = trim(adjustl(line))
+    if (t(1:1) == '#') t = trim(adjustl(t(2:)))
+    if (len(t) < 10) return
+    if (lower(t(1:7)) /= 'include') return
+    t = trim(adjustl(t(8:)))
+    q = t(1:1)
+    if (q /= "'" .and. q /= '"') return
+    e = index(t(2:), q)
+    if (e < 2) return
+    name = trim(t(2:e))
+  end function included_name
+
+  !> The entry of dir whose name equals name but for case ('' when none); dir listed into a file of work_dir.
+  function same_name_any_case(dir, name, work_dir) result(found)
+    character(len=*), intent(in) :: dir       !< directory
+    character(len=*), intent(in) :: name      !< name sought
+    character(len=*), intent(in) :: work_dir  !< where the listing is written (then deleted)
+    character(len=:), allocatable :: found
+    character(len=1024) :: entry
+    character(len=:), allocatable :: listing
+    integer :: u, ios, estat, cstat
+    found = ''
+    listing = work_dir//'/ldfcz_listing.txt'
+    call execute_command_line('ls -1A '''//dir//''' > '''//listing//''' 2>/dev/null', wait=.true., &
+      exitstat=estat, cmdstat=cstat)
+    if (cstat /= 0 .or. estat /= 0) return
+    open (newunit=u, file=listing, status='old', action='read', iostat=ios)
+    if (ios /= 0) return
+    do
+      read (u, '(a)', iostat=ios) entry
+      if (ios /= 0) exit
+      if (lower(trim(entry)) == lower(name)) then
+        found = trim(entry)
+        exit
+      end if
+    end do
+    close (u, status='delete')
+  end function same_name_any_case
+
+  !> Copies a text file line by line (stat 2 when either cannot be opened).
+  subroutine copy_text_file(from, to, stat)
+    character(len=*), intent(in) :: from  !< source
+    character(len=*), intent(in) :: to    !< copy
+    integer, intent(out) :: stat          !< 0 ok, 2 error
+    character(len=4096) :: line
+    integer :: uin, uout, ios
+    stat = 2
+    open (newunit=uin, file=from, status='old', action='read', iostat=ios)
+    if (ios /= 0) return
+    open (newunit=uout, file=to, status='replace', action='write', iostat=ios)
+    if (ios /= 0) then
+      close (uin)
+      return
+    end if
+    do
+      read (uin, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      write (uout, '(a)') trim(line)
+    end do
+    close (uin)
+    close (uout)
+    stat = 0
+  end subroutine copy_text_file
+
+  !> Lower-case copy.
+  pure function lower(s) result(t)
+    character(len=*), intent(in) :: s  !< text
+    character(len=len(s)) :: t
+    integer :: i
+    t = s
+    do i = 1, len(s)
+      if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
+    end do
+  end function lower
 
   !> flang's run time has its own unit 7: a small routine of the same compiler connects it to JOB.msg.
   subroutine add_flang_units(fc, outdir, objs, stat, errmsg)

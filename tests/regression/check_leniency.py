@@ -23,6 +23,8 @@ four increments; each case writes a lenient deck and its explicit twin:
   controls      *SECTION CONTROL, NAME=SC, HOUR GLASS=ENHANCED (read without effect) and *CONTROLS with Abaqus'
                 other time-incrementation fields, against neither
   interval      *OUTPUT, FIELD, TIME INTERVAL=0.25 against NUMBER INTERVAL=4 (the same frames)
+  include_file  the material in a file read by *INCLUDE, FILE= (as Abaqus/Standard read it in a published run;
+                warned) against the material in the deck
 """
 import argparse
 import filecmp
@@ -53,14 +55,19 @@ def deck(**o):
         model = o["part"](mesh + sets + section)
     else:
         model = mesh + sets + section + o.get("after_model", [])
-    mat = ["*Material, name=M", "**LDFCZ BUILTIN, UMAT=LEONOV"] + o.get("umat", [
-        "*User Material, constants=10, unsymm"] + PET) + o.get("depvar", ["*Depvar", "11"])
+    mat = o.get("material", material(o))
     q = o.get("prefix", "")
     step = [o.get("step", "*Step, nlgeom=YES, inc=100"), "*Static", "0.25, 1., 1e-5, 0.25"] + o.get("amp", []) + [
         "*Boundary", q + "X0, 1, 1", q + "Y0, 2, 2", q + "Z0, 3, 3", o.get("top", q + "TOP, 3, 3, 0.02")] + \
         o.get("controls", []) + ["*Node print, nset=%sTOP" % q, "U, RF", "*Node print, nset=%sALL" % q, "U",
         o.get("output", "*Output, field, number interval=4"), "*Element output", "S, SDV", "*End step"]
     return ["*Heading", "leniency twin"] + o.get("before", []) + model + mat + step
+
+
+def material(o):
+    """The material block (o: the deck's options: umat, depvar)."""
+    return ["*Material, name=M", "**LDFCZ BUILTIN, UMAT=LEONOV"] + o.get("umat", [
+        "*User Material, constants=10, unsymm"] + PET) + o.get("depvar", ["*Depvar", "11"])
 
 
 def run(exe, out, job, lines):
@@ -75,8 +82,10 @@ def run(exe, out, job, lines):
     return d, p.stderr
 
 
-def twin(exe, out, name, lenient, explicit):
+def twin(exe, out, name, lenient, explicit, warning=None):
     d1, warn = run(exe, out, name + "_lenient", lenient)
+    if warning is not None and warning not in warn:
+        fail("%s: no warning '%s' (stderr: %s)" % (name, warning, warn))
     d2, _ = run(exe, out, name + "_explicit", explicit)
     same = filecmp.cmp(os.path.join(d1, name + "_lenient.csv"), os.path.join(d2, name + "_explicit.csv"),
                        shallow=False)
@@ -150,6 +159,10 @@ def main():
     print("interval     the same frames (JOB.pvd times %s): %s" % (", ".join(frames[0]), same))
     if not same:
         fail("TIME INTERVAL=0.25 and NUMBER INTERVAL=4 wrote different frames")
+    with open(os.path.join(out, "leniency_material.inp"), "w") as f:
+        f.write("\n".join(material({})) + "\n")
+    twin(exe, out, "include_file", deck(material=["*Include, file=leniency_material.inp"]), base,
+         warning="*INCLUDE: FILE= read as INPUT=")
     print("PASS")
 
 

@@ -21,6 +21,9 @@
 6. UEXTERNALDB (in umat_threads.f) is called as Abaqus documents: LOP 0 once at the start, 1 at the start of
    every increment attempt (TIME at its start, DTIME its size), 2 at the end of every converged increment (TIME
    at its end: the CSV row's times), 3 once at the end; KSTEP/KINC of the increment.
+7. A routine written on Windows (user_files/case_include): INCLUDE 'PAST_NPROPS.INC' beside past_nprops.inc compiles,
+   with a warning naming the file, line and the name found; the same routine reads the 16 PROPS after NPROPS and
+   reports their sum to JOB.msg: 0 exactly (ldfcz passes zeros there, not whatever memory follows); RF3 as case 1.
 """
 import argparse
 import csv
@@ -171,6 +174,22 @@ def main():
     check_rf("thread utilities", row, "TOP.RF3", 1.0)
     check_threads(out, job)
     check_uexternaldb(out, job)
+
+    out = os.path.join(a.out, "case_include")
+    console = []
+    row, job = run(a.exe, out, ["--user", os.path.join(fx, "case_include", "umat_case_include.f") + "," +
+                                os.path.join(fx, "elastic_helper.f90")], deck, quiet=False, console=console)
+    check_rf("INCLUDE under another case", row, "TOP.RF3", 1.0)
+    log = read(os.path.join(out, job + ".log"))
+    want = "umat_case_include.f:12: INCLUDE 'PAST_NPROPS.INC' is past_nprops.inc"
+    if want not in log:
+        fail("no warning '%s' in JOB.log" % want)
+    print("INCLUDE 'PAST_NPROPS.INC' found as past_nprops.inc, warned: ok")
+    sums = re.findall(r"PAST_NPROPS: sum of \|PROPS\(NPROPS\+1:NPROPS\+16\)\| =\s*(\S+)",
+                      read(os.path.join(out, job + ".msg")))
+    if not sums or any(float(v) != 0.0 for v in sums):
+        fail("PROPS after NPROPS are not 0: %s" % sums)
+    print("the 16 PROPS after NPROPS read 0 in %d calls: ok" % len(sums))
 
     out = os.path.join(a.out, "bad_mutex")
     shutil.rmtree(out, ignore_errors=True)
