@@ -8,6 +8,7 @@ module analysis_core
   use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node, model_dof
   use element_catalog, only: element_name, element_family, element_types, element_nnode, element_ndim
   use solid_shape, only: solid_first_order_temperature, solid_gauss_point, solid_shape_eval
+  use solid_types, only: umat_props_pad
   use solid_element, only: solid_material_t, solid_element_info, solid_element_compute, SOLID_MAT_ELASTIC, &
     solid_geometry_t, solid_element_geometry, solid_compact_geometry_size, solid_compact_geometry, &
     SOLID_MAT_UMAT, SOLID_PNEWDT_LARGE
@@ -945,8 +946,9 @@ contains
     else
       allocate (props(0), jprops(0))
     end if
-    if (size(props) == 0) props = [0.0_dp]
-    if (size(jprops) == 0) jprops = [0]
+    ! zeros after NPROPS and NJPROPS, as for a UMAT: a routine reading past them reads 0 on every run
+    props = [props, spread(0.0_dp, 1, umat_props_pad)]
+    jprops = [jprops, spread(0, 1, umat_props_pad)]
     nsv = model%utypes(iu)%nsvars
     ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
     sv = an%state%conv(ie)%svars

@@ -1,6 +1,7 @@
 C     A fixed-form user UEL that records the arguments the host passes on every call (test deck_uel_arguments):
 C     one line per call in <output directory>/uel_args.txt with KSTEP, KINC, JELEM, JTYPE, LFLAGS(1:5),
-C     TIME(1:2), DTIME, PERIOD, PARAMS(1:3), NDLOAD, NRHS, MLVARX, then behaves as the spring bed of
+C     TIME(1:2), DTIME, PERIOD, PARAMS(1:3), NDLOAD, NRHS, MLVARX and the sum of |PROPS| and |JPROPS| over
+C     the 16 entries after NPROPS and NJPROP (0: the host pads both with zeros), then behaves as the spring bed of
 C     user_uel_elastic.f (stiffness PROPS(1) per unit area between node K and node K+4). Run with --threads 1.
       SUBROUTINE UEL(RHS,AMATRX,SVARS,ENERGY,NDOFEL,NRHS,NSVARS,
      1 PROPS,NPROPS,COORDS,MCRD,NNODE,U,DU,V,A,JTYPE,TIME,DTIME,
@@ -17,9 +18,13 @@ C     user_uel_elastic.f (stiffness PROPS(1) per unit area between node K and no
       CALL GETOUTDIR(OUTDIR, LENOUT)
       OPEN(NEWUNIT=IU, FILE=OUTDIR(1:LENOUT)//'/uel_args.txt',
      1 POSITION='APPEND', ACTION='WRITE')
-      WRITE(IU,'(9(I0,1X),7(ES23.15,1X),3(I0,1X))') KSTEP, KINC, JELEM,
-     1 JTYPE, (LFLAGS(I), I = 1, 5), TIME(1), TIME(2), DTIME, PERIOD,
-     2 PARAMS(1), PARAMS(2), PARAMS(3), NDLOAD, NRHS, MLVARX
+      PAST = 0.0D0
+      DO K = 1, 16
+        PAST = PAST + ABS(PROPS(NPROPS + K)) + ABS(JPROPS(NJPROP + K))
+      END DO
+      WRITE(IU,'(9(I0,1X),7(ES23.15,1X),3(I0,1X),ES10.3)') KSTEP, KINC,
+     1 JELEM, JTYPE, (LFLAGS(I), I = 1, 5), TIME(1), TIME(2), DTIME,
+     2 PERIOD, PARAMS(1), PARAMS(2), PARAMS(3), NDLOAD, NRHS, MLVARX, PAST
       CLOSE(IU)
       SK = PROPS(1)/4.0D0
       DO I = 1, NDOFEL
