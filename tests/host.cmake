@@ -463,6 +463,11 @@ foreach(case compliance twins temperature lamina)
     --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/elastic_${case} --case ${case})
   set_tests_properties(deck_elastic_${case} PROPERTIES LABELS "deck" TIMEOUT 300)
 endforeach()
+# hybrid names read as the constant-dilatation types: C3D8H against an independent constant-pressure mixed solution
+# of a nearly incompressible cantilever, its C3D8 twin, the names refused (tests/regression/check_hybrid.py)
+add_test(NAME deck_hybrid_names COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_hybrid.py
+  --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/hybrid_names)
+set_tests_properties(deck_hybrid_names PROPERTIES LABELS "deck" TIMEOUT 300)
 # Abaqus' lenient input forms against their explicit twins, bit for bit (tests/regression/check_leniency.py)
 add_test(NAME deck_leniency COMMAND Python3::Interpreter ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_leniency.py
   --exe $<TARGET_FILE:ldfcz> --out ${LDFCZ_RUNS}/leniency)

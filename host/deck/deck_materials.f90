@@ -158,11 +158,22 @@ contains
     real(dp) :: r
     call need_material(ctx)
     if (ctx%stat /= 0) return
-    call ctx_allow_params(ctx, [character(len=12) :: 'CONSTANTS', 'UNSYMM', 'TYPE'])
+    call ctx_allow_params(ctx, [character(len=18) :: 'CONSTANTS', 'UNSYMM', 'TYPE', 'HYBRID FORMULATION'])
     if (ctx%stat /= 0) return
     ir = ctx%ir
     ir_next = ctx%ir_next
     imat = ctx%imat
+    ! HYBRID FORMULATION: how Abaqus' hybrid elements treat the routine's volumetric response. INCREMENTAL (the
+    ! default) is what ldfcz's reading of the hybrid names does (docs/elements.md, Hybrid names); TOTAL and
+    ! INCOMPRESSIBLE need an independent pressure the elements here do not have
+    if (deck_has_param(ctx%params, 'HYBRID FORMULATION')) then
+      if (deck_normalize(deck_param_value(ctx%params, 'HYBRID FORMULATION')) /= 'INCREMENTAL') then
+        call ctx_fail(ctx, ir, 'HYBRID FORMULATION='//deck_param_value(ctx%params, 'HYBRID FORMULATION')// &
+          ' is not supported (only INCREMENTAL, the default: the hybrid names are read as the constant-dilatation '// &
+          'types, without an independent pressure; docs/elements.md)')
+        return
+      end if
+    end if
     if (deck_has_param(ctx%params, 'TYPE')) then
       if (deck_normalize(deck_param_value(ctx%params, 'TYPE')) /= 'MECHANICAL') then
         call ctx_fail(ctx, ir, 'only TYPE=MECHANICAL is supported')

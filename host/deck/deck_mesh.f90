@@ -4,7 +4,8 @@ module deck_mesh
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_upper, deck_param_value, deck_has_param, deck_normalize
   use model_types, only: node_set_t, elem_set_t, etype_user, model_find_nset, model_find_elset, model_find_user_type
-  use element_catalog, only: element_kind_of, element_nnode, element_ndim, element_names_text
+  use element_catalog, only: element_kind_of, element_nnode, element_ndim, element_names_text, element_hybrid_twin, &
+    element_name
   use deck_lists, only: itoa, add_member, grow_int
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_warn, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_def_name, ctx_find_nset, ctx_find_elset, ctx_is_label, ctx_get_label, ctx_enter_instance, ctx_continued, &
@@ -152,6 +153,14 @@ contains
     if (ctx%stat /= 0) return
     iu = 0
     kind = element_kind_of(tname)
+    if (kind == 0 .and. is_hybrid_name(tname)) then
+      ! a hybrid name whose type has a constant element dilatation: read as that type (element_hybrid_twin)
+      kind = element_hybrid_twin(tname)
+      if (kind > 0) call ctx_warn(ctx, ctx%ir, 'hybrid type '//tname//' read as '//trim(element_name(kind))// &
+        ', whose volumetric strain is constant over the element: the same equations as a constant-pressure hybrid '// &
+        'element for a linear elastic material, nearly the same otherwise (no independent pressure: an exactly '// &
+        'incompressible material is not possible; docs/elements.md)')
+    end if
     if (kind > 0) then
       nn = element_nnode(kind)
       call set_dim(ctx, element_ndim(kind))
@@ -175,7 +184,8 @@ contains
         else if (is_hybrid_name(tname)) then
           ! hybrid (mixed u-p) types are not implemented: the F-bar / B-bar elements are the route for nearly
           ! incompressible materials (docs/elements.md)
-          call ctx_fail(ctx, ctx%ir, 'hybrid element type '//tname//' is not supported: for nearly '// &
+          call ctx_fail(ctx, ctx%ir, 'hybrid element type '//tname//' is not supported (the hybrid names read '// &
+            'are those of the constant-dilatation types: C3D8H, C3D8RH, CPE4H, CPE4RH, CAX4H, CAX4RH): for nearly '// &
             'incompressible materials use C3D8, CPE4 or CAX4 (F-bar under NLGEOM, B-bar without: no volumetric '// &
             'locking; docs/elements.md)')
         else

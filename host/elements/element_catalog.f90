@@ -24,7 +24,8 @@ module element_catalog
   implicit none
   private
   public :: element_family_t, element_type_t, element_families, element_types
-  public :: element_kind_of, element_name, element_family, element_nnode, element_ndim, element_ndi, element_nshr
+  public :: element_kind_of, element_hybrid_twin, element_name, element_family, element_nnode, element_ndim
+  public :: element_ndi, element_nshr
   public :: element_is_axisymmetric, element_is_plane_stress, element_face_nodes, element_vtk_cell
   public :: element_vtk_points, element_names_text, element_rule_text, element_kinematics_text, element_tensor6
   public :: FAM_HEX8, FAM_HEX20, FAM_TET4, FAM_TET10, FAM_QUAD4, FAM_QUAD8, FAM_WEDGE6, FAM_TRI3, FAM_TRI6, &
@@ -227,6 +228,24 @@ contains
     integer, intent(in) :: kind
     known = kind >= 1 .and. kind <= size(element_types)
   end function known
+
+  !> The kind that reads an Abaqus hybrid name (the type's name followed by H: C3D8H, C3D8RH, CPE4H, CAX4RH), 0 when
+  !> none does: a type whose volumetric strain is constant over the element (the F-bar / mean-dilatation B-bar types
+  !> and the one-point types). With a constant element pressure, Abaqus' hybrid formulation of such a type solves the
+  !> same discrete equations for a linear elastic material (the mixed / selectively reduced equivalence of Malkus and
+  !> Hughes 1978) and nearly the same ones otherwise: inferred, said where the reader warns (docs/elements.md).
+  pure integer function element_hybrid_twin(name) result(kind)
+    character(len=*), intent(in) :: name  !< element type name ending in H
+    integer :: n, k
+    kind = 0
+    n = len_trim(name)
+    if (n < 5) return
+    if (name(n:n) /= 'H' .and. name(n:n) /= 'h') return
+    k = element_kind_of(name(1:n - 1))
+    if (.not. known(k)) return
+    if (element_types(k)%kinematics == KIN_PLANE_STRESS) return
+    if (element_types(k)%fbar .or. element_types(k)%hourglass) kind = k
+  end function element_hybrid_twin
 
   !> Abaqus name of a kind ('' outside the catalogue).
   pure function element_name(kind) result(name)
