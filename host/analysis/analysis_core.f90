@@ -5,6 +5,7 @@ module analysis_core
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp, i8
+  use ldfcz_text, only: upper_case
   use model_types, only: model_t, material_t, etype_user, orientation_axes, model_dof_node, model_dof
   use element_catalog, only: element_name, element_family, element_types, element_nnode, element_ndim
   use solid_shape, only: solid_first_order_temperature, solid_gauss_point, solid_shape_eval
@@ -1470,16 +1471,5 @@ contains
     type(analysis_t), intent(inout) :: an  !< analysis data
     an%work%u = an%state%u_conv
   end subroutine analysis_restore
-
-  !> s in upper case (ASCII letters).
-  pure function upper_case(s) result(u)
-    character(len=*), intent(in) :: s  !< text
-    character(len=len(s)) :: u
-    integer :: i
-    u = s
-    do i = 1, len(u)
-      if (u(i:i) >= 'a' .and. u(i:i) <= 'z') u(i:i) = achar(iachar(u(i:i)) - 32)
-    end do
-  end function upper_case
 
 end module analysis_core

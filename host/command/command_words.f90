@@ -3,6 +3,7 @@
 !> extension). docs/host.md, "Abaqus' command line", maps every word to ldfcz's options. Pure lookups: the program
 !> (ldfcz_main) acts on them.
 module command_words
+  use ldfcz_text, only: lower_case
   implicit none
   private
   public :: abaqus_word, abaqus_word_t, deck_path, user_file_path, restart_base, user_extensions
@@ -80,10 +81,10 @@ contains
     if (arg(1:1) == '-') return
     k = index(arg, '=')
     if (k > 0) then
-      key = lower(arg(1:k - 1))
+      key = lower_case(arg(1:k - 1))
       value = arg(k + 1:)
     else
-      key = lower(arg)
+      key = lower_case(arg)
     end if
     if (len(key) == 0 .or. verify(key, 'abcdefghijklmnopqrstuvwxyz_') /= 0) return
     nmatch = 0
@@ -179,15 +180,5 @@ contains
     end associate
     base = path(1:k - 1)
   end subroutine restart_base
-
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s
-    character(len=len(s)) :: t
-    integer :: i
-    t = s
-    do i = 1, len(s)
-      if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
-    end do
-  end function lower
 
 end module command_words

@@ -2,6 +2,7 @@
 !> for an old one (docs/performance.md, "OpenBLAS kernels"), and the line of JOB.log that says what runs.
 module blas_kernels
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+  use ldfcz_text, only: lower_case
   implicit none
   private
   public :: blas_kernels_restart, blas_kernels_note
@@ -49,7 +50,7 @@ contains
     call get_environment_variable('OPENBLAS_CORETYPE', asked, status=status)
     if (len_trim(chose) > 0) then
       ! restarted by blas_kernels_restart
-      if (lower(core) == lower(best)) then
+      if (lower_case(core) == lower_case(best)) then
         what = 'OpenBLAS kernels '//trim(core)//' (OpenBLAS took this CPU for '//trim(chose)// &
           ': ldfcz restarted itself with OPENBLAS_CORETYPE='//trim(best)//'; set OPENBLAS_CORETYPE to choose)'
       else
@@ -68,17 +69,6 @@ contains
       what = 'OpenBLAS kernels '//trim(core)
     end if
   end subroutine blas_kernels_note
-
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s
-    character(len=len_trim(s)) :: t
-    integer :: i, c
-    t = s(1:len_trim(s))
-    do i = 1, len(t)
-      c = iachar(t(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-    end do
-  end function lower
 
   !> Blank everything from the first NUL on.
   pure subroutine c_to_fortran(s)

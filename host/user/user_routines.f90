@@ -7,6 +7,7 @@ module user_routines
     c_f_procpointer, c_f_pointer, c_size_t
   use, intrinsic :: iso_fortran_env, only: error_unit
   use ldfcz_kinds, only: dp
+  use ldfcz_text, only: lower_case
   use solid_umat_interface, only: umat_interface
   use command_words, only: user_file_path
   implicit none
@@ -408,7 +409,7 @@ contains
     t = trim(adjustl(line))
     if (t(1:1) == '#') t = trim(adjustl(t(2:)))
     if (len(t) < 10) return
-    if (lower(t(1:7)) /= 'include') return
+    if (lower_case(t(1:7)) /= 'include') return
     t = trim(adjustl(t(8:)))
     q = t(1:1)
     if (q /= "'" .and. q /= '"') return
@@ -436,7 +437,7 @@ contains
     do
       read (u, '(a)', iostat=ios) entry
       if (ios /= 0) exit
-      if (lower(trim(entry)) == lower(name)) then
+      if (lower_case(trim(entry)) == lower_case(name)) then
         found = trim(entry)
         exit
       end if
@@ -468,17 +469,6 @@ contains
     close (uout)
     stat = 0
   end subroutine copy_text_file
-
-  !> Lower-case copy.
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s  !< text
-    character(len=len(s)) :: t
-    integer :: i
-    t = s
-    do i = 1, len(s)
-      if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
-    end do
-  end function lower
 
   !> flang's run time has its own unit 7: a small routine of the same compiler connects it to JOB.msg.
   subroutine add_flang_units(fc, outdir, objs, stat, errmsg)
@@ -666,29 +656,19 @@ contains
     character(len=*), intent(in) :: dir                  !< directory to write the copies into
     integer, intent(out) :: stat                         !< 0 ok, 2 error
     character(len=:), allocatable, intent(out) :: errmsg !< message
-    character(len=512) :: line
     character(len=16), parameter :: names(3) = [character(len=16) :: 'ABA_PARAM.INC', 'aba_param.inc', &
       'Aba_Param.inc']
-    integer :: uin, uout, ios, k
+    integer :: k
     integer(c_int) :: rc
     stat = 0
     errmsg = ''
     rc = c_mkdir(dir//c_null_char, int(o'755', c_int))
     do k = 1, size(names)
-      open (newunit=uin, file=inc, status='old', action='read', iostat=ios)
-      if (ios == 0) open (newunit=uout, file=dir//'/'//trim(names(k)), status='replace', action='write', iostat=ios)
-      if (ios /= 0) then
-        stat = 2
+      call copy_text_file(inc, dir//'/'//trim(names(k)), stat)
+      if (stat /= 0) then
         errmsg = '--user: cannot write '//dir//'/'//trim(names(k))
         return
       end if
-      do
-        read (uin, '(a)', iostat=ios) line
-        if (ios /= 0) exit
-        write (uout, '(a)') trim(line)
-      end do
-      close (uin)
-      close (uout)
     end do
   end subroutine make_case_copies
 
