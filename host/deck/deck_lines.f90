@@ -2,6 +2,7 @@
 !> file and line, keyword-line parameters, comma-separated data fields and strict number parsing.
 module deck_lines
   use ldfcz_kinds, only: dp
+  use ldfcz_text, only: upper_case
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use, intrinsic :: iso_fortran_env, only: iostat_eor
   implicit none
@@ -46,12 +47,7 @@ contains
   pure function deck_upper(s) result(u)
     character(len=*), intent(in) :: s  !< input
     character(len=len(s)) :: u
-    integer :: i, c
-    u = s
-    do i = 1, len(s)
-      c = iachar(s(i:i))
-      if (c >= iachar('a') .and. c <= iachar('z')) u(i:i) = achar(c - 32)
-    end do
+    u = upper_case(s)
   end function deck_upper
 
   !> Upper case, trimmed, inner runs of blanks collapsed to one ("SOLID   section" -> "SOLID SECTION").

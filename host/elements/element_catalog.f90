@@ -21,6 +21,7 @@
 !> local(3) is its mid-side node (8-node quadrilaterals).
 module element_catalog
   use ldfcz_kinds, only: dp
+  use ldfcz_text, only: upper_case
   implicit none
   private
   public :: element_family_t, element_type_t, element_families, element_types
@@ -211,10 +212,7 @@ contains
     last = len_trim(name)
     if (first == 0) return
     if (last - first + 1 > len(up)) return
-    up = name(first:last)
-    do i = 1, len(up)
-      if (up(i:i) >= 'a' .and. up(i:i) <= 'z') up(i:i) = achar(iachar(up(i:i)) - 32)
-    end do
+    up = upper_case(name(first:last))
     do i = 1, size(element_types)
       if (up == element_types(i)%name) then
         kind = i

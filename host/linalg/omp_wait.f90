@@ -8,6 +8,7 @@
 !> read by the runtime when the program loads, before any of ldfcz's code runs, so ldfcz cannot change it: it says
 !> so in JOB.log instead.
 module omp_wait
+  use ldfcz_text, only: upper_case
   implicit none
   private
   public :: omp_wait_note
@@ -19,27 +20,18 @@ contains
   subroutine omp_wait_note(nthreads, what)
     integer, intent(in) :: nthreads                     !< threads of the element loop
     character(len=:), allocatable, intent(out) :: what  !< the warning, or ''
-    character(len=32) :: v
+    character(len=32) :: v, u
     integer :: status
     what = ''
     if (nthreads <= 1) return
     call get_environment_variable('OMP_WAIT_POLICY', v, status=status)
-    if (status == 0 .and. upper(v) == 'ACTIVE') what = 'OMP_WAIT_POLICY=active'
+    if (status == 0 .and. upper_case(adjustl(v)) == 'ACTIVE') what = 'OMP_WAIT_POLICY=active'
     call get_environment_variable('GOMP_SPINCOUNT', v, status=status)
-    if (status == 0 .and. (upper(v) == 'INFINITE' .or. upper(v) == 'INFINITY')) what = 'GOMP_SPINCOUNT='//trim(v)
+    u = upper_case(adjustl(v))
+    if (status == 0 .and. (u == 'INFINITE' .or. u == 'INFINITY')) what = 'GOMP_SPINCOUNT='//trim(v)
     if (len(what) > 0) what = 'warning: '//what//': the idle threads of the element loop spin through every '// &
       'factorization and solve, taking a core from MUMPS (factorizations 2.2x slower on 2 shared cores, '// &
       'docs/performance.md); unset it, or use OMP_WAIT_POLICY=passive'
   end subroutine omp_wait_note
-
-  pure function upper(s) result(u)
-    character(len=*), intent(in) :: s
-    character(len=len_trim(adjustl(s))) :: u
-    integer :: i
-    u = trim(adjustl(s))
-    do i = 1, len(u)
-      if (u(i:i) >= 'a' .and. u(i:i) <= 'z') u(i:i) = achar(iachar(u(i:i)) - 32)
-    end do
-  end function upper
 
 end module omp_wait
