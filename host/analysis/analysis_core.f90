@@ -25,7 +25,8 @@ module analysis_core
   use increment, only: increment_t, increment_time, increment_end
   use solver_options, only: solver_options_t, newton_auto
   use solver_text, only: itoa, rtoa
-  use abaqus_host_state, only: abaqus_set_caller, abaqus_stop_requested, abaqus_stop_element, abaqus_stop_message
+  use abaqus_host_state, only: abaqus_set_caller, abaqus_stop_requested, abaqus_stop_element, abaqus_stop_message, &
+    abaqus_request_stop
   use parallel_context, only: parallel_t, parallel_distributed, parallel_sum, parallel_min, parallel_max, &
     parallel_any, parallel_lowest
   use element_partition, only: partition_elements
@@ -44,6 +45,9 @@ module analysis_core
   real(dp), parameter :: pnewdt_large = SOLID_PNEWDT_LARGE  !< PNEWDT handed to each user-routine call
   integer, parameter :: n_cost_class = 3  !< cost classes of elements (cost_class)
   integer, parameter :: mdload = 8   !< MDLOAD: distributed loads of a user element at most (Un on one element)
+  integer, parameter :: svars_guard = 4   !< guard entries on each side of the SVARS copy a UEL gets
+  !> what the guard entries hold: a finite value no routine writes by chance (check_svars_guards)
+  real(dp), parameter :: svars_guard_value = -1.2345678901234567e307_dp
 
   !> Local material axes of a continuum element with an *ORIENTATION (unallocated: none).
   type :: elem_axes_t
@@ -951,9 +955,12 @@ contains
     props = [props, spread(0.0_dp, 1, umat_props_pad)]
     jprops = [jprops, spread(0, 1, umat_props_pad)]
     nsv = model%utypes(iu)%nsvars
-    ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md)
-    sv = an%state%conv(ie)%svars
-    if (size(sv) == 0) sv = [0.0_dp]   ! NSVARS = 0: one defined entry to pass
+    ! a fresh copy of the converged SVARS and ENERGY on every call (docs/conventions.md), between two guard bands
+    ! of svars_guard entries that the routine must leave alone (a write outside SVARS(1:NSVARS) stops the run below)
+    allocate (sv(max(nsv, 1) + 2 * svars_guard))
+    sv = svars_guard_value
+    sv(svars_guard + 1:svars_guard + nsv) = an%state%conv(ie)%svars
+    if (nsv == 0) sv(svars_guard + 1) = 0.0_dp   ! NSVARS = 0: one defined entry to pass
     energy = an%state%conv(ie)%energy
     rhs = 0.0_dp
     ke = 0.0_dp
@@ -968,8 +975,8 @@ contains
     ! reuses a factorization or skips the tangent). LFLAGS(5) = 1: the start of an increment extrapolated from
     ! the previous one. PARAMS(1:3) (the dynamic procedures' integration parameters) are 0 in a static step.
     lflags = [1, merge(1, 0, nlgeom), merge(1, 5, want_k), 0, merge(1, 0, inc%extrapolated)]
-    call an%routines%uel(rhs, ke, sv, energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, nn, &
-      ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
+    call an%routines%uel(rhs, ke, sv(svars_guard + 1), energy, n, 1, nsv, props, model%utypes(iu)%nprops, xc, mcrd, &
+      nn, ue, due, v, acc, model%utypes(iu)%jtype, time, dtime, kstep, kinc, model%elem_id(ie), params, ndload, jdltyp, &
       adlmag, predef, 1 + nf, lflags, n, ddlmag, mdload, pnewdt, jprops, model%utypes(iu)%njprops, period)
     fel = -rhs(:, 1)
     if (.not. (all(ieee_is_finite(fel)) .and. all(ieee_is_finite(ke)))) then
@@ -978,11 +985,33 @@ contains
       msg = 'element '//trim(b)//' (UEL): returned a non-finite RHS or AMATRX'
       return
     end if
-    if (nsv > 0) an%work%trial(ie)%svars = sv(1:nsv)
+    call check_svars_guards(sv, nsv, model%elem_id(ie))
+    if (nsv > 0) an%work%trial(ie)%svars = sv(svars_guard + 1:svars_guard + nsv)
     an%work%trial(ie)%energy = energy
     ! AMATRX symmetrised unless the type is UNSYMM (Abaqus)
     if (want_k .and. .not. model%utypes(iu)%unsymm) ke = 0.5_dp * (ke + transpose(ke))
   end subroutine user_element_compute
+
+  !> A UEL that wrote outside SVARS(1:NSVARS) (into the guard bands around the copy it was given: SVARS(0), a loop
+  !> one too long) asks the run to stop, naming the element and the first index written: in Abaqus such a write lands
+  !> in another element's state without a word; here it would be lost, so neither run could be trusted.
+  subroutine check_svars_guards(sv, nsv, label)
+    real(dp), intent(in) :: sv(:)    !< the guarded copy (svars_guard entries, max(NSVARS, 1), svars_guard entries)
+    integer, intent(in) :: nsv       !< NSVARS
+    integer, intent(in) :: label     !< element label
+    integer :: k, first
+    first = huge(1)
+    do k = 1, svars_guard
+      if (sv(k) /= svars_guard_value) first = min(first, k - svars_guard)
+    end do
+    do k = svars_guard + max(nsv, 1) + 1, size(sv)
+      if (sv(k) /= svars_guard_value .and. first == huge(1)) first = k - svars_guard
+    end do
+    if (first == huge(1)) return
+    call abaqus_request_stop('element '//itoa(label)//' (UEL): the routine wrote SVARS('//itoa(first)// &
+      '), outside SVARS(1:'//itoa(nsv)//') (NSVARS = '//itoa(nsv)//'; Abaqus would have overwritten another '// &
+      'element''s state there without a word): correct the index in the routine')
+  end subroutine check_svars_guards
 
   !> A continuum element (solid_element_compute) with its section's material, and its distributed loads. Fixed-size
   !> work arrays (at most 20 nodes, 60 dofs): no heap allocation per call.
