@@ -24,9 +24,9 @@
 7. A routine written on Windows (user_files/case_include): INCLUDE 'PAST_NPROPS.INC' beside past_nprops.inc compiles,
    with a warning naming the file, line and the name found; the same routine reads the 16 PROPS after NPROPS and
    reports their sum to JOB.msg: 0 exactly (ldfcz passes zeros there, not whatever memory follows); RF3 as case 1.
-8. A UEL that writes SVARS(0) (user_uel_svars_zero.f: a loop index starting one too low, as in a published UEL)
-   stops the run with a non-zero exit and a message naming the element and SVARS(0) (in Abaqus the write would land
-   in another element's state); the same spring bed without the slip (case 3's routine) runs.
+8. A UEL that writes SVARS(0) (user_uel_elastic.f compiled with --fflags -DLDFCZ_TEST_SVARS_SLIP: a loop index
+   starting one too low, as in a published UEL) stops the run with a non-zero exit and a message naming the element
+   and SVARS(0) (in Abaqus the write would land in another element's state); without the flag it runs (case 3).
 """
 import argparse
 import csv
@@ -197,8 +197,9 @@ def main():
     out = os.path.join(a.out, "svars_zero")
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    p = subprocess.run([a.exe, "-q", "-o", out, "--user", os.path.join(a.fixtures, "user_uel_svars_zero.f"),
-                        os.path.join(a.decks, "single", "user_uel.inp")], capture_output=True, text=True)
+    p = subprocess.run([a.exe, "-q", "-o", out, "--fflags", "-DLDFCZ_TEST_SVARS_SLIP", "--user",
+                        os.path.join(a.fixtures, "user_uel_elastic.f"), os.path.join(a.decks, "single", "user_uel.inp")],
+                       capture_output=True, text=True)
     if p.returncode == 0 or not re.search(r"element 1 \(UEL\): the routine wrote SVARS\(0\), outside SVARS\(1:1\)",
                                           p.stderr):
         fail("SVARS(0): want a non-zero exit naming element 1 and SVARS(0), got %d: %s" % (p.returncode,

@@ -55,5 +55,14 @@ C
           ENERGY(2) = ENERGY(2) + 0.5D0*F*(U(IT) - U(IB))
         END DO
       END DO
+#ifdef LDFCZ_TEST_SVARS_SLIP
+C     compiled with --fflags -DLDFCZ_TEST_SVARS_SLIP (test deck_user_files, case 8): the index slip of a published
+C     UEL, a loop over SVARS whose index starts at 0, writing SVARS(0); ldfcz must stop, naming it
+      K = 0
+      DO I = 1, NSVARS
+        SVARS(K) = 0.0D0
+        K = K + 1
+      END DO
+#endif
       RETURN
       END
