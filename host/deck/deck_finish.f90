@@ -4,7 +4,8 @@ module deck_finish
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_where, deck_keyword_parse, deck_param_t
   use model_types, only: model_t, boundary_t, cload_t, dload_t, dload_user, dload_grav, dload_centrif, dload_rota, source_pos_t, &
-    etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes, elastic_lamina
+    etype_user, model_find_elset, model_find_material, model_label_text, orientation_axes, elastic_lamina, &
+    model_find_orientation
   use element_catalog, only: element_is_plane_stress
   use deck_lists, only: itoa, grow_int, unique
   use deck_context, only: deck_context_t, ctx_fail_kw, ctx_fail_pos, ctx_warn_pos, ctx_note_pos
@@ -268,9 +269,7 @@ contains
             return
           end if
           if (len_trim(sec%orientation) > 0) then
-            do k = 1, model%norient
-              if (model%orientations(k)%name == sec%orientation) sec%iorient = k
-            end do
+            sec%iorient = model_find_orientation(model, sec%orientation)
             if (sec%iorient == 0) then
               call ctx_fail_pos(ctx, pos, 'undefined orientation '//trim(sec%orientation))
               return

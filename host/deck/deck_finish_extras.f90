@@ -5,10 +5,11 @@
 module deck_finish_extras
   use ldfcz_kinds, only: dp
   use ldfcz_sorting, only: sort_real
-  use model_types, only: model_t, coupling_t, boundary_t, source_pos_t, model_dof, model_label_text, etype_user, &
-    dload_centrif, dload_rota, init_stress, orientation_axes
-  use element_catalog, only: element_face_nodes, element_is_axisymmetric
+  use model_types, only: model_t, coupling_t, boundary_t, source_pos_t, model_dof, model_label_text, &
+    dload_centrif, dload_rota, init_stress, orientation_axes, model_find_orientation
+  use element_catalog, only: element_is_axisymmetric
   use deck_lists, only: itoa, unique
+  use deck_surface_nodes, only: surface_face_nodes
   use deck_context, only: deck_context_t, ctx_fail_pos, ctx_warn_pos
   implicit none
   private
@@ -95,10 +96,7 @@ contains
     integer :: k, j
     pos = c%pos
     associate (model => ctx%model)
-      c%iorient = 0
-      do k = 1, model%norient
-        if (model%orientations(k)%name == c%orientation) c%iorient = k
-      end do
+      c%iorient = model_find_orientation(model, c%orientation)
       if (c%iorient == 0) then
         call ctx_fail_pos(ctx, pos, 'ORIENTATION: undefined orientation '//trim(c%orientation))
         return
@@ -148,25 +146,13 @@ contains
   subroutine coupling_nodes(ctx, c)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(coupling_t), intent(inout) :: c        !< the coupling (an element of ctx%model%couplings)
-    integer :: j, ie, loc(8), nfn
+    integer :: j
     integer, allocatable :: nodes(:)
     type(source_pos_t) :: pos
     pos = c%pos
-    associate (model => ctx%model, sf => ctx%model%surfaces(c%surface))
-      allocate (nodes(0))
-      do j = 1, size(sf%relems)
-        ie = sf%relems(j)
-        nfn = 0
-        if (model%elem_kind(ie) /= etype_user) call element_face_nodes(model%elem_kind(ie), sf%rfaces(j), loc, nfn)
-        if (nfn == 0) then
-          call ctx_fail_pos(ctx, pos, 'surface '//trim(sf%name)//': element '// &
-            model_label_text(model, model%elem_id(ie), .false.)//' has no face S'//itoa(sf%rfaces(j))// &
-            ' (couplings need continuum element faces)')
-          return
-        end if
-        nodes = [nodes, model%conn(model%conn_ptr(ie) + loc(1:nfn) - 1)]
-      end do
-      call unique(nodes)
+    call surface_face_nodes(ctx, c%surface, pos, 'couplings need continuum element faces', nodes)
+    if (ctx%stat /= 0) return
+    associate (model => ctx%model)
       if (c%radius > 0.0_dp) nodes = pack(nodes, [(norm2(model%x(:, nodes(j)) - model%x(:, c%ref)) <= c%radius, &
         j = 1, size(nodes))])
       if (size(nodes) == 0) then

@@ -6,7 +6,7 @@
 module deck_orientation
   use ldfcz_kinds, only: dp
   use deck_lines, only: deck_param_value, deck_normalize
-  use model_types, only: orientation_t, transform_t
+  use model_types, only: orientation_t, transform_t, model_find_orientation
   use deck_context, only: deck_context_t, flen, ctx_fail, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, &
     ctx_get_int, ctx_get_label, ctx_def_name, ctx_pos, ctx_find_nset
   implicit none
@@ -108,12 +108,10 @@ contains
       if (o%extra_axis == 0 .and. o%extra_angle /= 0.0_dp) o%extra_axis = 1
     end if
     associate (model => ctx%model)
-      do k = 1, model%norient
-        if (model%orientations(k)%name == o%name) then
-          call ctx_fail(ctx, ctx%ir, 'orientation '//trim(o%name)//' defined twice')
-          return
-        end if
-      end do
+      if (model_find_orientation(model, o%name) > 0) then
+        call ctx_fail(ctx, ctx%ir, 'orientation '//trim(o%name)//' defined twice')
+        return
+      end if
       if (.not. allocated(model%orientations)) allocate (model%orientations(2))
       if (model%norient == size(model%orientations)) then
         allocate (tmp(2 * model%norient))

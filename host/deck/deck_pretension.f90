@@ -7,11 +7,11 @@
 !> relative displacement (docs/host.md, "Pre-tension sections"; the analysis side: host/analysis/pretension_sections).
 module deck_pretension
   use ldfcz_kinds, only: dp
-  use ldfcz_sorting, only: sort_int
   use deck_lines, only: deck_param_value, deck_has_param, deck_normalize
-  use model_types, only: pretension_t, model_t, boundary_t, etype_user, model_label_text
+  use model_types, only: pretension_t, model_t, boundary_t, model_label_text
   use element_catalog, only: element_face_nodes
   use deck_lists, only: itoa
+  use deck_surface_nodes, only: surface_face_nodes
   use deck_context, only: deck_context_t, flen, ctx_is_label, ctx_get_label, ctx_find_nset, ctx_find_surface, &
     ctx_fail, ctx_fail_pos, ctx_pos, ctx_allow_params, ctx_required, ctx_split, ctx_get_real, ctx_note_pos, ctx_warn_pos
   implicit none
@@ -217,28 +217,14 @@ contains
   subroutine section_nodes(ctx, p)
     type(deck_context_t), intent(inout) :: ctx  !< reader state
     type(pretension_t), intent(inout) :: p      !< the section (an element of ctx%model%pretensions)
-    integer :: j, ie, loc(8), nfn
     integer, allocatable :: nodes(:)
-    associate (model => ctx%model, sf => ctx%model%surfaces(p%surface))
-      allocate (nodes(0))
-      do j = 1, size(sf%relems)
-        ie = sf%relems(j)
-        nfn = 0
-        if (model%elem_kind(ie) /= etype_user) call element_face_nodes(model%elem_kind(ie), sf%rfaces(j), loc, nfn)
-        if (nfn == 0) then
-          call ctx_fail_pos(ctx, p%pos, 'surface '//trim(sf%name)//': element '// &
-            model_label_text(model, model%elem_id(ie), .false.)//' has no face S'//itoa(sf%rfaces(j))// &
-            ' (a pre-tension section is made of continuum element faces)')
-          return
-        end if
-        nodes = [nodes, model%conn(model%conn_ptr(ie) + loc(1:nfn) - 1)]
-      end do
-      if (size(nodes) == 0) then
-        call ctx_fail_pos(ctx, p%pos, 'surface '//trim(sf%name)//' has no face')
-        return
-      end if
-      p%nodes = unique_sorted(nodes)
-    end associate
+    call surface_face_nodes(ctx, p%surface, p%pos, 'a pre-tension section is made of continuum element faces', nodes)
+    if (ctx%stat /= 0) return
+    if (size(nodes) == 0) then
+      call ctx_fail_pos(ctx, p%pos, 'surface '//trim(ctx%model%surfaces(p%surface)%name)//' has no face')
+      return
+    end if
+    p%nodes = nodes
   end subroutine section_nodes
 
   !> A node of section k in an earlier section, or with a *TRANSFORM (the constraint ties global components), is
@@ -377,19 +363,5 @@ contains
     real(dp) :: c(3)
     c = [a(2) * b(3) - a(3) * b(2), a(3) * b(1) - a(1) * b(3), a(1) * b(2) - a(2) * b(1)]
   end function cross
-
-  !> The distinct values of v, ascending.
-  pure function unique_sorted(v) result(u)
-    integer, intent(in) :: v(:)
-    integer, allocatable :: u(:)
-    integer :: i
-    allocate (u(0))
-    do i = 1, size(v)
-      if (any(u == v(i))) cycle
-      u = [u, v(i)]
-    end do
-    call sort_int(u)
-  end function unique_sorted
-
 
 end module deck_pretension

@@ -11,6 +11,7 @@ module model_types
   public :: initial_condition_t, init_stress, init_solution, equation_t, tie_t
   public :: etype_user, name_len, max_node_dof
   public :: model_find_nset, model_find_elset, model_find_material, model_find_amplitude, model_find_user_type
+  public :: model_find_orientation
   public :: amplitude_value, amplitude_factor, transform_t
   public :: instance_t, model_label_text, el_print_t, orientation_t, orientation_axes, output_request_t, model_sdv_name
   public :: elastic_lamina, model_elements_leave
@@ -600,6 +601,16 @@ contains
     end do
     k = 0
   end function model_find_nset
+
+  !> Index of an *ORIENTATION by (upper-case) name, 0 if absent.
+  pure integer function model_find_orientation(model, name) result(k)
+    type(model_t), intent(in) :: model  !< the model
+    character(len=*), intent(in) :: name!< upper-case name
+    do k = 1, model%norient
+      if (model%orientations(k)%name == name) return
+    end do
+    k = 0
+  end function model_find_orientation
 
   !> Index of an element set by (upper-case) name, 0 if absent.
   pure integer function model_find_elset(model, name) result(k)
